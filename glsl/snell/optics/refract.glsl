@@ -1,0 +1,74 @@
+/*
+description: Snell refraction of a direction at an interface, with an explicit
+  policy for total internal reflection (TIR).
+use: SnellRefraction r = snellRefract(incident, normal, eta, SNELL_TIR_CRITICAL);
+  incident  direction of travel towards the surface (need not be normalized)
+  normal    surface normal (need not be normalized); flipped to face the
+            incident ray when it points away from it
+  eta       n_incident / n_transmitted (1.0f / 1.5f entering glass from air)
+  policy    SNELL_TIR_ZERO      direction (0,0,0) on TIR, as GLSL refract()
+            SNELL_TIR_CRITICAL  transmission angle clamped to the critical angle:
+                                the ray tangent to the surface (Wyman 2005,
+                                Oliveira & Brauwers 2007 sec. 5)
+            SNELL_TIR_REFLECT   mirror reflection on TIR
+contract:
+  - r.direction is unit length, or (0,0,0) exactly when r.valid is false or
+    (TIR and SNELL_TIR_ZERO);
+  - r.tir is true when eta^2 (1 - cos_i^2) > 1;
+  - r.valid is false (direction 0, tir false) when incident or normal is zero,
+    denormal-small, NaN or infinite, or eta is not a finite positive number;
+  - at normal incidence under CRITICAL the tangent is undefined, but TIR cannot
+    happen there (sin_i = 0), so the case does not arise.
+source: Snell's law in vector form: t = eta i + (eta cos_i - cos_t) n with
+  cos_t = sqrt(1 - eta^2 (1 - cos_i^2)) (GLSL 4.50 spec, refract()).
+*/
+#ifndef SNELL_OPTICS_REFRACT_GLSL
+#define SNELL_OPTICS_REFRACT_GLSL
+#include "../prelude.glsl"
+#include "safe_normalize.glsl"
+
+#define SNELL_TIR_ZERO 0
+#define SNELL_TIR_CRITICAL 1
+#define SNELL_TIR_REFLECT 2
+
+struct SnellRefraction {
+  vec3 direction;
+  bool tir;
+  bool valid;
+};
+
+SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int policy) {
+  SnellRefraction r;
+  r.direction = vec3(0.0f, 0.0f, 0.0f);
+  r.tir = false;
+  r.valid = false;
+  vec3 i = snellSafeNormalize(incident);
+  vec3 n = snellSafeNormalize(normal);
+  // eta > 0 is false for NaN; eta < FLT_MAX is false for +Inf.
+  if (dot(i, i) == 0.0f || dot(n, n) == 0.0f || !(eta > 0.0f) || !(eta < SNELL_FLT_MAX)) {
+    return r;
+  }
+  r.valid = true;
+  float cosI = -dot(n, i);
+  if (cosI < 0.0f) {
+    n = -n;
+    cosI = -cosI;
+  }
+  cosI = min(cosI, 1.0f);
+  float sin2T = eta * eta * (1.0f - cosI * cosI);
+  if (sin2T > 1.0f) {
+    r.tir = true;
+    if (policy == SNELL_TIR_REFLECT) {
+      r.direction = snellSafeNormalize(i + (2.0f * cosI) * n);
+    } else if (policy == SNELL_TIR_CRITICAL) {
+      // sin_t = 1: the transmitted ray grazes the surface along i's tangent part.
+      r.direction = snellSafeNormalize(i + cosI * n);
+    }
+    return r;
+  }
+  float cosT = sqrt(1.0f - sin2T);
+  r.direction = snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
+  return r;
+}
+
+#endif

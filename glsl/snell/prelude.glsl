@@ -1,0 +1,72 @@
+/*
+description: the language bridge. Every file in glsl/snell includes this first, so
+  one body compiles as GLSL (330 core, 450 core, ES 310), as C++17 with GLM (through
+  <snell/bridge.hpp>) and as HLSL (through hlsl_like/snell/bridge.hlsl).
+use: GLSL: `#include "snell/prelude.glsl"` after your `#version` line (and, on ES,
+  after `precision highp float; precision highp sampler2D;`).
+options:
+  SNELL_FN             qualifier before every function (C++: inline; else empty)
+  SNELL_TEX2D          type of a texture parameter (GLSL sampler2D, C++ const
+                       snell::Texture2D&, HLSL Texture2D<float4>)
+  SNELL_TEXEL_FETCH(tex, px, lod)  vec4 at integer texel px (ivec2) of mip lod;
+                       callers clamp px into the level first (GL leaves
+                       out-of-range fetches undefined)
+  SNELL_SAMPLE_LOD(tex, uv, lod)   vec4 filtered by the texture's own
+                       filter state at explicit mip level lod (float)
+  SNELL_TEXTURE_SIZE(tex, lod)     ivec2 size of mip level lod
+  Define any hook before this file to redirect reads (reversed-Z, linear depth,
+  texture arrays, a Hi-Z chain).
+contract: macros only; no function is defined here.
+*/
+#ifndef SNELL_PRELUDE_GLSL
+#define SNELL_PRELUDE_GLSL
+
+#if defined(__cplusplus)
+#  ifndef SNELL_CXX_BRIDGE
+#    error "C++: include <snell/snell.hpp> (or a family header), not a .glsl file"
+#  endif
+#  define SNELL_LANG_CXX 1
+#elif defined(SNELL_HLSL)
+#  define SNELL_LANG_HLSL 1
+#else
+#  define SNELL_LANG_GLSL 1
+#endif
+
+#ifndef SNELL_FN
+#  if defined(SNELL_LANG_CXX)
+#    define SNELL_FN inline
+#  else
+#    define SNELL_FN
+#  endif
+#endif
+
+#if defined(SNELL_LANG_GLSL)
+#  ifndef SNELL_TEX2D
+#    define SNELL_TEX2D sampler2D
+#  endif
+#  ifndef SNELL_TEXEL_FETCH
+#    define SNELL_TEXEL_FETCH(tex, px, lod) texelFetch(tex, px, lod)
+#  endif
+#  ifndef SNELL_SAMPLE_LOD
+#    define SNELL_SAMPLE_LOD(tex, uv, lod) textureLod(tex, uv, lod)
+#  endif
+#  ifndef SNELL_TEXTURE_SIZE
+#    define SNELL_TEXTURE_SIZE(tex, lod) textureSize(tex, lod)
+#  endif
+#endif
+
+/* Matrix times column vector: GLSL and GLM write m * v, HLSL mul(m, v). */
+#if defined(SNELL_LANG_HLSL)
+#  define SNELL_MUL(m, v) mul(m, v)
+#else
+#  define SNELL_MUL(m, v) ((m) * (v))
+#endif
+
+/* Shared numeric constants: #defines, because a global `const` is a uniform in
+   HLSL and has different linkage rules in C++. */
+#define SNELL_PI 3.14159265358979f
+#define SNELL_EPS 1e-6f
+/* Largest finite float; results that would be infinite are clamped to it. */
+#define SNELL_FLT_MAX 3.402823466e38f
+
+#endif
