@@ -37,6 +37,10 @@ struct CaseSpec {
   std::uint16_t discrete = 0;  // bit k: output float k (v[k/4][k%4]) compared exactly
   int outputs = 16;            // how many output floats are meaningful
   Tolerance tol;
+  // Textures the case samples: GLSL uniforms bound on the GPU, the same
+  // snell::Texture2D objects read by the C++ build. setup() fills them first.
+  std::vector<snell::gpu::ParityTexture> textures = {};
+  std::function<void()> setup = {};
 };
 
 std::vector<CaseSpec>& registry();

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs what snell's build, tests and examples need on Debian 12, if missing.
+# Run as root (or with sudo). Only Debian packages; nothing is downloaded otherwise.
+set -euo pipefail
+packages=(
+  cmake g++ make pkg-config
+  libglm-dev                      # the core's only dependency
+  libgtest-dev libbenchmark-dev   # tests and benchmarks
+  glslang-tools spirv-tools spirv-cross  # offline GLSL/HLSL compilation checks
+  libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev  # Mesa llvmpipe, no GPU needed
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "snell: all build dependencies are installed"
+  exit 0
+fi
+if [ "$(id -u)" -ne 0 ]; then
+  echo "snell: missing packages: ${missing[*]}" >&2
+  echo "snell: run this script as root (sudo bash scripts/install-deps.sh)" >&2
+  exit 1
+fi
+echo "snell: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -q
+apt-get install -y -q --no-install-recommends "${missing[@]}"

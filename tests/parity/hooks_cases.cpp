@@ -1,0 +1,97 @@
+// Parity of the texture hooks (SNELL_SAMPLE_LOD, SNELL_TEXEL_FETCH,
+// SNELL_TEXTURE_SIZE): GL's sampler against snell::Texture2D.
+#include <snell/bridge.hpp>
+
+#include "parity_registry.hpp"
+
+namespace parity_hooks {
+using namespace snell;
+using snell::gpu::SnellParityOut;
+Texture2D parityTexNearest, parityTexLinear, parityTexTrilinear, parityTexMipNearest, parityTexMagLinear;
+#include "cases/hooks.glsl"
+}  // namespace parity_hooks
+
+namespace {
+using snell_parity::InputGen;
+using snell_parity::ParityIO;
+using namespace parity_hooks;
+
+// A non-power-of-two texture with random texels and explicitly built levels
+// (37x29 down to 1x1), so no driver-specific mip generation is involved.
+void buildTextures() {
+  InputGen g(5);
+  auto level = [&](int w, int h) {
+    snell::Image img(w, h);
+    for (glm::vec4& t : img.texels) t = glm::vec4(g.uniform(-2, 2), g.uniform(0, 1), g.uniform(0, 100), g.uniform(-1, 1));
+    return img;
+  };
+  snell::Texture2D base(level(37, 29));
+  for (int w = 37, h = 29; w > 1 || h > 1;) {
+    w = std::max(1, w / 2);
+    h = std::max(1, h / 2);
+    base.addLevel(level(w, h));
+  }
+  auto with = [&](snell::Filter mag, snell::Filter min, snell::MipFilter mip) {
+    snell::Texture2D t = base;
+    t.magFilter = mag;
+    t.minFilter = min;
+    t.mipFilter = mip;
+    return t;
+  };
+  using F = snell::Filter;
+  using M = snell::MipFilter;
+  parityTexNearest = with(F::Nearest, F::Nearest, M::None);
+  parityTexLinear = with(F::Linear, F::Linear, M::None);
+  parityTexTrilinear = with(F::Linear, F::Linear, M::Linear);
+  parityTexMipNearest = with(F::Nearest, F::Nearest, M::Nearest);
+  parityTexMagLinear = with(F::Linear, F::Nearest, M::Nearest);
+}
+
+// uv over [-0.25, 1.25] (clamp-to-edge), texel centres and edges exactly, lods
+// beyond both ends of the chain, texel fetches over every level.
+std::vector<ParityIO> hookInputs() {
+  InputGen g(6);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < 12000; ++i) {
+    ParityIO in{};
+    float u = g.uniform(-0.25f, 1.25f), w = g.uniform(-0.25f, 1.25f);
+    if (g.chance(0.2f)) {  // exactly on a texel centre or edge of level 0
+      u = (static_cast<float>(g.integer(0, 37)) + (g.chance(0.5f) ? 0.5f : 0.0f)) / 37.0f;
+      w = (static_cast<float>(g.integer(0, 29)) + (g.chance(0.5f) ? 0.5f : 0.0f)) / 29.0f;
+    }
+    float lod = g.uniform(-1.0f, 7.0f);
+    if (g.chance(0.2f)) lod = static_cast<float>(g.integer(-1, 7)) * 0.5f;  // level boundaries, c = 0.5
+    const int level = g.integer(0, 5);
+    const glm::ivec2 size = parityTexMipNearest.size(level);
+    in.v[0] = glm::vec4(u, w, lod, 0.0f);
+    in.v[1] = glm::vec4(static_cast<float>(g.integer(0, size.x - 1)), static_cast<float>(g.integer(0, size.y - 1)),
+                        static_cast<float>(level), 0.0f);
+    v.push_back(in);
+  }
+  return v;
+}
+
+ParityIO run(SnellParityOut (*entry)(glm::vec4, glm::vec4, glm::vec4, glm::vec4), const ParityIO& in) {
+  return snell::gpu::toParityIO(entry(in.v[0], in.v[1], in.v[2], in.v[3]));
+}
+
+std::vector<snell::gpu::ParityTexture> allTextures() {
+  return {{"parityTexNearest", &parityTexNearest},
+          {"parityTexLinear", &parityTexLinear},
+          {"parityTexTrilinear", &parityTexTrilinear},
+          {"parityTexMipNearest", &parityTexMipNearest},
+          {"parityTexMagLinear", &parityTexMagLinear}};
+}
+}  // namespace
+
+// Nearest reads and fetches select texels: exact. Filtered reads: llvmpipe
+// computes bilinear weights in reduced fixed-point precision, hence the tolerance.
+SNELL_PARITY_CASE({"SNELL_TEXEL_FETCH_and_SIZE", "hooks.glsl", "caseHookNearest", hookInputs,
+                   [](const ParityIO& in) { return run(caseHookNearest, in); }, 0x3FF, 10, {0.0f, 0.0f},
+                   allTextures(), buildTextures});
+SNELL_PARITY_CASE({"SNELL_SAMPLE_LOD", "hooks.glsl", "caseHookLinear", hookInputs,
+                   [](const ParityIO& in) { return run(caseHookLinear, in); }, 0, 4, {1e-4f, 1e-4f}, allTextures(),
+                   buildTextures});
+SNELL_PARITY_CASE({"SNELL_SAMPLE_LOD_mipmaps", "hooks.glsl", "caseHookMipmaps", hookInputs,
+                   [](const ParityIO& in) { return run(caseHookMipmaps, in); }, 0x00F0, 12, {1e-4f, 1e-4f},
+                   allTextures(), buildTextures});
