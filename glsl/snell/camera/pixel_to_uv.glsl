@@ -1,0 +1,43 @@
+/*
+description: integer pixel <-> viewport uv (GL window conventions).
+use: vec2 uv = snellPixelToUv(ivec2(gl_FragCoord.x, gl_FragCoord.y), size);   // pixel centre
+     ivec2 px = snellUvToPixel(uv, size);   // ready for SNELL_TEXEL_FETCH
+  size    viewport (or texture level) size in pixels, e.g. SNELL_TEXTURE_SIZE(tex, 0)
+contract:
+  - pixel (i, j) covers uv [i, i+1]/W x [j, j+1]/H, origin bottom-left (row 0 is
+    the bottom row, as glReadPixels and texel fetches order it).
+  - snellPixelToUv returns the pixel centre ((i + 0.5)/W, (j + 0.5)/H), not
+    clamped: pixels outside the viewport give uv outside [0,1]. A size component
+    <= 0 gives 0 for that component.
+  - snellUvToPixel returns the pixel containing uv, floor(uv * size), clamped into
+    [0, size - 1] (clamp-to-edge: uv outside [0,1] gives an edge pixel, so the
+    result is always a legal texelFetch coordinate). A uv component on a pixel
+    boundary belongs to the pixel above/right of it; uv = 1 to the last pixel.
+    NaN uv gives pixel 0 in that component; a size with a component <= 0
+    gives (0,0).
+  - snellUvToPixel(snellPixelToUv(p, size), size) == p for every p inside the
+    viewport (sizes up to 2^22).
+source: OpenGL 4.5 core spec sec. 8.14.2 (texel coordinates u = s W), sec. 14.5
+  (fragment centres at (i + 0.5, j + 0.5)).
+*/
+#ifndef SNELL_CAMERA_PIXEL_TO_UV_GLSL
+#define SNELL_CAMERA_PIXEL_TO_UV_GLSL
+#include "../prelude.glsl"
+#include "conventions.glsl"
+
+SNELL_FN vec2 snellPixelToUv(ivec2 px, ivec2 size) {
+  float u = size.x > 0 ? (float(px.x) + 0.5f) / float(size.x) : 0.0f;
+  float v = size.y > 0 ? (float(px.y) + 0.5f) / float(size.y) : 0.0f;
+  return vec2(u, v);
+}
+
+SNELL_FN ivec2 snellUvToPixel(vec2 uv, ivec2 size) {
+  if (size.x <= 0 || size.y <= 0) {
+    return ivec2(0, 0);
+  }
+  float x = isnan(uv.x) ? 0.0f : clamp(floor(uv.x * float(size.x)), 0.0f, float(size.x - 1));
+  float y = isnan(uv.y) ? 0.0f : clamp(floor(uv.y * float(size.y)), 0.0f, float(size.y - 1));
+  return ivec2(int(x), int(y));
+}
+
+#endif

@@ -1,0 +1,300 @@
+// glsl/snell/camera/perspective.glsl, view_to_clip.glsl, view_to_uv.glsl,
+// pixel_to_uv.glsl and uv_depth_to_view.glsl, checked against GLM (matrices,
+// glm::inverse and glm::project in double) and against exact arithmetic.
+#include <gtest/gtest.h>
+
+#include <snell/camera.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace {
+
+using namespace snell;
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+const int kAll[] = {SNELL_DEPTH_GL, SNELL_DEPTH_ZERO_ONE, SNELL_DEPTH_REVERSED, SNELL_DEPTH_INFINITE_GL,
+                    SNELL_DEPTH_INFINITE_REVERSED};
+
+struct Cam {
+  float fovy, aspect, n, f;
+};
+
+Cam randomCam(std::mt19937& rng) {
+  std::uniform_real_distribution<float> fovy(0.2f, 2.8f), aspect(0.3f, 3.0f), logNear(-2.0f, 0.5f),
+      logRatio(1.0f, 3.0f);
+  const float n = std::pow(10.0f, logNear(rng));
+  return {fovy(rng), aspect(rng), n, n * std::pow(10.0f, logRatio(rng))};
+}
+
+// A view-space point inside the frustum, at view distance in [n, f].
+glm::vec3 randomPointInFrustum(std::mt19937& rng, const Cam& c) {
+  std::uniform_real_distribution<float> t(0.0f, 1.0f), s(-1.0f, 1.0f);
+  const float v = c.n * std::pow(c.f / c.n, t(rng));
+  const float ty = std::tan(c.fovy * 0.5f);
+  return glm::vec3(s(rng) * v * ty * c.aspect, s(rng) * v * ty, -v);
+}
+
+// The GLM matrix of each convention in double; reversed Z is perspectiveZO with
+// near/far swapped, infinite reversed Z is written out (GLM has none).
+glm::dmat4 glmProjection(const Cam& c, int conv) {
+  const double fovy = c.fovy, aspect = c.aspect, n = c.n, f = c.f;
+  switch (conv) {
+    case SNELL_DEPTH_GL: return glm::perspective(fovy, aspect, n, f);
+    case SNELL_DEPTH_ZERO_ONE: return glm::perspectiveZO(fovy, aspect, n, f);
+    case SNELL_DEPTH_REVERSED: return glm::perspectiveZO(fovy, aspect, f, n);
+    case SNELL_DEPTH_INFINITE_GL: return glm::infinitePerspective(fovy, aspect, n);
+    default: {
+      glm::dmat4 m = glm::perspectiveZO(fovy, aspect, f, n);
+      m[2][2] = 0.0;
+      m[3][2] = n;
+      return m;
+    }
+  }
+}
+
+void expectMatNear(const glm::mat4& got, const glm::dmat4& want, double rel, const char* what) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      EXPECT_NEAR(got[i][j], want[i][j], rel * std::abs(want[i][j]) + 1e-30) << what << " [" << i << "][" << j << "]";
+}
+
+bool isZero(const glm::mat4& m) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      if (m[i][j] != 0.0f) return false;
+  return true;
+}
+
+TEST(CameraProjection, PerspectiveMatchesGlm) {
+  std::mt19937 rng(10);
+  for (int i = 0; i < 2000; ++i) {
+    const Cam c = randomCam(rng);
+    // Same float operations as GLM: bit-identical to glm::perspective / perspectiveZO.
+    const glm::mat4 gl = glm::perspective(c.fovy, c.aspect, c.n, c.f);
+    ASSERT_EQ(snellPerspective(c.fovy, c.aspect, c.n, c.f), gl);
+    ASSERT_EQ(snellPerspectiveWithDepth(c.fovy, c.aspect, c.n, c.f, SNELL_DEPTH_GL), gl);
+    ASSERT_EQ(snellPerspectiveWithDepth(c.fovy, c.aspect, c.n, c.f, SNELL_DEPTH_ZERO_ONE),
+              glm::perspectiveZO(c.fovy, c.aspect, c.n, c.f));
+    ASSERT_EQ(snellPerspectiveWithDepth(c.fovy, c.aspect, c.n, c.f, SNELL_DEPTH_REVERSED),
+              glm::perspectiveZO(c.fovy, c.aspect, c.f, c.n));
+    for (int conv : kAll) {
+      expectMatNear(snellPerspectiveWithDepth(c.fovy, c.aspect, c.n, c.f, conv), glmProjection(c, conv), 2e-6,
+                    "projection");
+      // The analytic inverse against glm::inverse in double.
+      expectMatNear(snellPerspectiveInverse(c.fovy, c.aspect, c.n, c.f, conv), glm::inverse(glmProjection(c, conv)),
+                    2e-6, "inverse");
+    }
+  }
+}
+
+TEST(CameraProjection, PerspectiveInvalidParametersGiveZeroMatrix) {
+  for (int conv : kAll) {
+    EXPECT_TRUE(isZero(snellPerspectiveWithDepth(0.0f, 1.0f, 0.1f, 10.0f, conv)));
+    EXPECT_TRUE(isZero(snellPerspectiveWithDepth(-1.0f, 1.0f, 0.1f, 10.0f, conv)));
+    EXPECT_TRUE(isZero(snellPerspectiveWithDepth(3.2f, 1.0f, 0.1f, 10.0f, conv)));
+    EXPECT_TRUE(isZero(snellPerspectiveWithDepth(kNaN, 1.0f, 0.1f, 10.0f, conv)));
+    EXPECT_TRUE(isZero(snellPerspectiveWithDepth(1.0f, 0.0f, 0.1f, 10.0f, conv)));
+    EXPECT_TRUE(isZero(snellPerspectiveWithDepth(1.0f, kInf, 0.1f, 10.0f, conv)));
+    EXPECT_TRUE(isZero(snellPerspectiveWithDepth(1.0f, 1.0f, 0.0f, 10.0f, conv)));
+    EXPECT_TRUE(isZero(snellPerspectiveWithDepth(1.0f, 1.0f, -0.1f, 10.0f, conv)));
+    EXPECT_TRUE(isZero(snellPerspectiveInverse(1.0f, 1.0f, kNaN, 10.0f, conv)));
+  }
+  for (int conv : {SNELL_DEPTH_GL, SNELL_DEPTH_ZERO_ONE, SNELL_DEPTH_REVERSED}) {
+    EXPECT_TRUE(isZero(snellPerspectiveWithDepth(1.0f, 1.0f, 1.0f, 1.0f, conv)));
+    EXPECT_TRUE(isZero(snellPerspectiveWithDepth(1.0f, 1.0f, 1.0f, kInf, conv)));
+    EXPECT_TRUE(isZero(snellPerspectiveInverse(1.0f, 1.0f, 2.0f, 1.0f, conv)));
+  }
+  EXPECT_FALSE(isZero(snellPerspectiveWithDepth(1.0f, 1.0f, 1.0f, kNaN, SNELL_DEPTH_INFINITE_GL)));
+  EXPECT_TRUE(isZero(snellPerspectiveWithDepth(1.0f, 1.0f, 0.1f, 10.0f, 5)));
+  EXPECT_TRUE(isZero(snellPerspectiveWithDepth(1.0f, 1.0f, 0.1f, 10.0f, -1)));
+  // A zero matrix projects everything to w = 0: invalid downstream.
+  const glm::mat4 z = snellPerspective(kNaN, 1.0f, 0.1f, 10.0f);
+  EXPECT_FALSE(snellViewToUv(z, glm::vec3(0.0f, 0.0f, -1.0f)).valid);
+}
+
+TEST(CameraProjection, ViewToUvMatchesGlmProject) {
+  // glm::project with an identity model matrix and the viewport (0, 0, 1, 1)
+  // returns exactly (uv, window depth) under GL conventions.
+  std::mt19937 rng(11);
+  for (int i = 0; i < 20000; ++i) {
+    const Cam c = randomCam(rng);
+    const glm::vec3 p = randomPointInFrustum(rng, c);
+    const glm::dmat4 proj = glm::perspective(double(c.fovy), double(c.aspect), double(c.n), double(c.f));
+    const glm::dvec3 w = glm::projectNO(glm::dvec3(p), glm::dmat4(1.0), proj, glm::dvec4(0, 0, 1, 1));
+    const glm::mat4 m = snellPerspective(c.fovy, c.aspect, c.n, c.f);
+    const SnellScreenPoint sp = snellViewToUv(m, p);
+    ASSERT_TRUE(sp.valid);
+    ASSERT_NEAR(sp.uv.x, w.x, 2e-6);
+    ASSERT_NEAR(sp.uv.y, w.y, 2e-6);
+    ASSERT_NEAR(snellNdcZToDepth(sp.ndcZ, SNELL_DEPTH_GL), w.z, 2e-6);
+    // The projected point lies in the viewport and in the depth range.
+    ASSERT_GE(sp.uv.x, -1e-6f);
+    ASSERT_LE(sp.uv.x, 1.0f + 1e-6f);
+    // snellViewToClip is the plain matrix product.
+    const glm::vec4 clip = snellViewToClip(m, p);
+    const glm::vec4 want = m * glm::vec4(p, 1.0f);
+    ASSERT_EQ(clip, want);
+  }
+}
+
+TEST(CameraProjection, BehindCameraAndHostileInputs) {
+  const glm::mat4 m = snellPerspective(1.0f, 1.0f, 0.1f, 100.0f);
+  for (glm::vec3 p : {glm::vec3(0, 0, 0), glm::vec3(1, 2, 0), glm::vec3(0, 0, 1), glm::vec3(3, -2, 5),
+                      glm::vec3(kNaN, 0, -1), glm::vec3(0, kInf, -1), glm::vec3(0, 0, -kInf)}) {
+    const SnellScreenPoint sp = snellViewToUv(m, p);
+    EXPECT_FALSE(sp.valid) << p.x << " " << p.y << " " << p.z;
+    EXPECT_EQ(sp.uv, glm::vec2(0.0f));
+    EXPECT_EQ(sp.ndcZ, 0.0f);
+  }
+  // w <= 0, NaN, Inf: invalid, ndc zero.
+  for (glm::vec4 c : {glm::vec4(1, 1, 1, 0), glm::vec4(1, 1, 1, -0.0f), glm::vec4(1, 1, 1, -2),
+                      glm::vec4(kNaN, 0, 0, 1), glm::vec4(0, 0, 0, kNaN), glm::vec4(0, kInf, 0, 1),
+                      glm::vec4(0, 0, 0, kInf)}) {
+    const SnellNdc n = snellClipToNdc(c);
+    EXPECT_FALSE(n.valid);
+    EXPECT_EQ(n.ndc, glm::vec3(0.0f));
+  }
+  // Tiny positive w (a point just in front of the eye's plane): valid, clamped finite.
+  const SnellNdc tiny = snellClipToNdc(glm::vec4(1e30f, -1e30f, 0.5f, 1e-30f));
+  EXPECT_TRUE(tiny.valid);
+  EXPECT_TRUE(std::isfinite(tiny.ndc.x) && std::isfinite(tiny.ndc.y));
+  EXPECT_EQ(tiny.ndc.x, std::numeric_limits<float>::max());
+  EXPECT_EQ(tiny.ndc.y, -std::numeric_limits<float>::max());
+  // A point in front but off screen: valid, uv outside [0,1].
+  const SnellScreenPoint off = snellViewToUv(m, glm::vec3(50.0f, 0.0f, -1.0f));
+  EXPECT_TRUE(off.valid);
+  EXPECT_GT(off.uv.x, 1.0f);
+  // Near-plane point: NDC z = -1 (GL), window depth 0.
+  const SnellScreenPoint nearPt = snellViewToUv(m, glm::vec3(0.0f, 0.0f, -0.1f));
+  EXPECT_TRUE(nearPt.valid);
+  EXPECT_NEAR(nearPt.ndcZ, -1.0f, 1e-6f);
+}
+
+TEST(CameraProjection, PixelUvRoundTripsAndCentres) {
+  std::mt19937 rng(12);
+  std::uniform_int_distribution<int> sizeDist(1, 8192);
+  for (int i = 0; i < 200; ++i) {
+    const glm::ivec2 size(sizeDist(rng), sizeDist(rng));
+    std::uniform_int_distribution<int> px(0, size.x - 1), py(0, size.y - 1);
+    for (int k = 0; k < 200; ++k) {
+      const glm::ivec2 p(px(rng), py(rng));
+      const glm::vec2 uv = snellPixelToUv(p, size);
+      // Pixel centre (i + 0.5)/W, correctly rounded (float division of exact operands).
+      ASSERT_EQ(uv.x, static_cast<float>((p.x + 0.5) / size.x));
+      ASSERT_EQ(uv.y, static_cast<float>((p.y + 0.5) / size.y));
+      ASSERT_EQ(snellUvToPixel(uv, size), p);
+    }
+    // Corners.
+    ASSERT_EQ(snellUvToPixel(glm::vec2(0.0f), size), glm::ivec2(0));
+    ASSERT_EQ(snellUvToPixel(glm::vec2(1.0f), size), size - 1);
+  }
+  // Exact pixel boundaries (power-of-two size: uv = i/W exact) belong to pixel i.
+  const glm::ivec2 s(256, 64);
+  for (int x = 0; x < 256; ++x) {
+    ASSERT_EQ(snellUvToPixel(glm::vec2(float(x) / 256.0f, float(x % 64) / 64.0f), s), glm::ivec2(x, x % 64));
+  }
+  // Clamp to edge, NaN, bad sizes.
+  EXPECT_EQ(snellUvToPixel(glm::vec2(-0.5f, 1.5f), s), glm::ivec2(0, 63));
+  EXPECT_EQ(snellUvToPixel(glm::vec2(kInf, -kInf), s), glm::ivec2(255, 0));
+  EXPECT_EQ(snellUvToPixel(glm::vec2(kNaN, 0.5f), s), glm::ivec2(0, 32));
+  EXPECT_EQ(snellUvToPixel(glm::vec2(0.5f), glm::ivec2(0, 10)), glm::ivec2(0));
+  EXPECT_EQ(snellPixelToUv(glm::ivec2(3, 4), glm::ivec2(0, 10)), glm::vec2(0.0f, 0.45f));
+  // Pixels outside the viewport are not clamped by snellPixelToUv.
+  EXPECT_EQ(snellPixelToUv(glm::ivec2(-1, 10), glm::ivec2(10, 10)), glm::vec2(-0.05f, 1.05f));
+}
+
+TEST(CameraProjection, UvDepthToViewReconstructsGlmProjectedPoints) {
+  std::mt19937 rng(13);
+  int checked = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Cam c = randomCam(rng);
+    const glm::vec3 p = randomPointInFrustum(rng, c);
+    for (int conv : kAll) {
+      // uv and depth-buffer value of p from the GLM matrix in double.
+      const glm::dvec4 clip = glmProjection(c, conv) * glm::dvec4(glm::dvec3(p), 1.0);
+      const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
+      const bool glNdc = conv == SNELL_DEPTH_GL || conv == SNELL_DEPTH_INFINITE_GL;
+      const double depth = glNdc ? 0.5 * ndc.z + 0.5 : ndc.z;
+      const glm::vec2 uv(glm::dvec2(ndc) * 0.5 + 0.5);
+      const float d = static_cast<float>(depth);
+      const glm::mat4 inv = snellPerspectiveInverse(c.fovy, c.aspect, c.n, c.f, conv);
+      const SnellViewPoint r = snellUvDepthToView(uv, d, inv, conv);
+      ASSERT_TRUE(r.valid) << conv;
+      // The float depth encodes p's distance only up to its rounding (plus the
+      // GL 2d - 1 step): tolerance from dv/dd of the exact depth of this convention.
+      const double v = -double(p.z), n = c.n, f = c.f;
+      double dvdd = 0.0;
+      switch (conv) {
+        case SNELL_DEPTH_GL:
+        case SNELL_DEPTH_ZERO_ONE: dvdd = v * v * (f - n) / (f * n); break;
+        case SNELL_DEPTH_REVERSED: dvdd = v * v * (f - n) / (f * n); break;
+        case SNELL_DEPTH_INFINITE_GL: dvdd = v * v / n; break;
+        default: dvdd = v * v / n; break;
+      }
+      // Depth error budget, in units of float ulp(1) = 1.19e-7: 0.5 for storing d, ~2
+      // for zc + C wc in the float inverse matrix (C is -1 + O(n/f): cancellation),
+      // 1 more for GL's 2d - 1.
+      const double relV = (glNdc ? 4 * 1.2e-7 : 3 * 1.2e-7) * dvdd / v;
+      if (relV > 0.01) continue;  // depth does not resolve this distance
+      ++checked;
+      const double tol = (relV * 1.1 + 4e-6) * glm::length(glm::dvec3(p));
+      ASSERT_NEAR(r.position.x, p.x, tol) << conv;
+      ASSERT_NEAR(r.position.y, p.y, tol) << conv;
+      ASSERT_NEAR(r.position.z, p.z, tol) << conv;
+
+      // From the linear distance instead: no depth quantization; z exact.
+      const SnellViewPoint q = snellUvDistanceToView(uv, -p.z, inv);
+      ASSERT_TRUE(q.valid);
+      ASSERT_EQ(q.position.z, p.z);
+      const double tol2 = 4e-6 * glm::length(glm::dvec3(p));
+      ASSERT_NEAR(q.position.x, p.x, tol2) << conv;
+      ASSERT_NEAR(q.position.y, p.y, tol2) << conv;
+    }
+  }
+  EXPECT_GT(checked, 80000);  // of 100,000: most distances are resolved by the depth
+}
+
+TEST(CameraProjection, UvDepthToViewEdgeCases) {
+  const float n = 0.1f, f = 50.0f;
+  for (int conv : kAll) {
+    const glm::mat4 inv = snellPerspectiveInverse(1.0f, 1.3f, n, f, conv);
+    const bool reversed = conv == SNELL_DEPTH_REVERSED || conv == SNELL_DEPTH_INFINITE_REVERSED;
+    // Near plane: z = -n at the centre.
+    const SnellViewPoint nearPt = snellUvDepthToView(glm::vec2(0.5f), reversed ? 1.0f : 0.0f, inv, conv);
+    EXPECT_TRUE(nearPt.valid);
+    EXPECT_NEAR(nearPt.position.z, -n, 1e-6f);
+    // Far plane: z = -f (finite), invalid at infinity.
+    const SnellViewPoint farPt = snellUvDepthToView(glm::vec2(0.25f), reversed ? 0.0f : 1.0f, inv, conv);
+    if (conv == SNELL_DEPTH_INFINITE_GL || conv == SNELL_DEPTH_INFINITE_REVERSED) {
+      EXPECT_FALSE(farPt.valid) << conv;
+      EXPECT_EQ(farPt.position, glm::vec3(0.0f));
+    } else {
+      EXPECT_TRUE(farPt.valid) << conv;
+      EXPECT_NEAR(farPt.position.z, -f, 1e-3f * f) << conv;
+    }
+    // Hostile inputs.
+    EXPECT_FALSE(snellUvDepthToView(glm::vec2(kNaN, 0.5f), 0.5f, inv, conv).valid);
+    EXPECT_FALSE(snellUvDepthToView(glm::vec2(0.5f, kInf), 0.5f, inv, conv).valid);
+    EXPECT_FALSE(snellUvDepthToView(glm::vec2(0.5f), kNaN, inv, conv).valid);
+    EXPECT_EQ(snellUvDepthToView(glm::vec2(0.5f), kNaN, inv, conv).position, glm::vec3(0.0f));
+    EXPECT_FALSE(snellUvDepthToView(glm::vec2(0.5f), 0.5f, glm::mat4(0.0f), conv).valid);
+    EXPECT_FALSE(snellUvDistanceToView(glm::vec2(0.5f), 0.0f, inv).valid);
+    EXPECT_FALSE(snellUvDistanceToView(glm::vec2(0.5f), -1.0f, inv).valid);
+    EXPECT_FALSE(snellUvDistanceToView(glm::vec2(0.5f), kNaN, inv).valid);
+    EXPECT_FALSE(snellUvDistanceToView(glm::vec2(0.5f), kInf, inv).valid);
+    EXPECT_FALSE(snellUvDistanceToView(glm::vec2(kNaN), 1.0f, inv).valid);
+    EXPECT_FALSE(snellUvDistanceToView(glm::vec2(0.5f), 1.0f, glm::mat4(0.0f)).valid);
+    // Depth out of [0,1] is clamped: same as the plane value.
+    EXPECT_EQ(snellUvDepthToView(glm::vec2(0.3f), -2.0f, inv, conv).position,
+              snellUvDepthToView(glm::vec2(0.3f), 0.0f, inv, conv).position);
+  }
+  EXPECT_FALSE(snellUvDepthToView(glm::vec2(0.5f), 0.5f, snellPerspectiveInverse(1.0f, 1.0f, n, f, 0), 7).valid);
+}
+
+}  // namespace
