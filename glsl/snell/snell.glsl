@@ -3,4 +3,5 @@
 #define SNELL_SNELL_GLSL
 #include "optics.glsl"
 #include "camera.glsl"
+#include "intersect.glsl"
 #endif

@@ -2,4 +2,5 @@
 #pragma once
 #include "bridge.hpp"
 #include "camera.hpp"
+#include "intersect.hpp"
 #include "optics.hpp"
