@@ -6,7 +6,7 @@
 # Usage: check_glsl.sh <glslangValidator> <repo root>
 set -u
 validator=$1
-root=$2
+root=$(cd "$2" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail=0

@@ -14,7 +14,9 @@ use: SnellRefraction r = snellRefract(incident, normal, eta, SNELL_TIR_CRITICAL)
 contract:
   - r.direction is unit length, or (0,0,0) exactly when r.valid is false or
     (TIR and SNELL_TIR_ZERO);
-  - r.tir is true when eta^2 (1 - cos_i^2) > 1;
+  - r.tir is true when eta^2 (1 - cos_i^2) > 1, evaluated as
+    (1 - eta^2) + eta^2 cos_i^2 < 0;
+  - eta = 1 returns the normalized incident direction (up to rounding);
   - r.valid is false (direction 0, tir false) when incident or normal is zero,
     denormal-small, NaN or infinite, or eta is not a finite positive number;
   - at normal incidence under CRITICAL the tangent is undefined, but TIR cannot
@@ -55,8 +57,12 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
     cosI = -cosI;
   }
   cosI = min(cosI, 1.0f);
-  float sin2T = eta * eta * (1.0f - cosI * cosI);
-  if (sin2T > 1.0f) {
+  // cos_t^2 = 1 - eta^2 (1 - cos_i^2), written as (1 - eta^2) + eta^2 cos_i^2: the
+  // same value, but exact for eta = 1 and accurate near grazing incidence, where
+  // 1 - cos_i^2 would round away the small cos_i^2.
+  float eta2 = eta * eta;
+  float cos2T = (1.0f - eta2) + eta2 * (cosI * cosI);
+  if (cos2T < 0.0f) {
     r.tir = true;
     if (policy == SNELL_TIR_REFLECT) {
       r.direction = snellSafeNormalize(i + (2.0f * cosI) * n);
@@ -66,7 +72,7 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
     }
     return r;
   }
-  float cosT = sqrt(1.0f - sin2T);
+  float cosT = sqrt(cos2T);
   r.direction = snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
   return r;
 }

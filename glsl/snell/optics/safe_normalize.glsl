@@ -1,8 +1,11 @@
 /*
 description: normalize that never produces NaN or infinity.
 use: vec3 n = snellSafeNormalize(v);
-v|v| when every component is finite and |v|^2 is a normal
-  float above 1e-30; otherwise (0,0,0). Callers test dot(n, n) == 0 for "invalid".
+options: -
+contract: returns v / |v| when every component is finite and |v|^2 is a normal
+  float above 1e-30 and below FLT_MAX; otherwise (0,0,0) (zero, denormal-small,
+  NaN, infinite, or so large that |v|^2 overflows). Callers test dot(n, n) == 0
+  for "invalid".
 source: -
 */
 #ifndef SNELL_OPTICS_SAFE_NORMALIZE_GLSL
