@@ -1,6 +1,8 @@
-// All of snell's C++ API: the same functions as glsl/snell/snell.glsl.
+// All of snell's C++ API: the same functions as glsl/snell/snell.glsl, which this
+// header compiles inside namespace snell.
 #pragma once
 #include "bridge.hpp"
-#include "camera.hpp"
-#include "intersect.hpp"
-#include "optics.hpp"
+
+namespace snell {
+#include "snell/snell.glsl"
+}  // namespace snell
