@@ -32,10 +32,16 @@ using snell::gpu::Context;
 
 const fs::path kRoot = SNELL_SOURCE_DIR;
 
-// One context per backend for the whole run: creating one costs more than most cases.
+// One context per backend for the whole run: creating one costs more than most
+// cases. Released by main() before exit: destroying a context from a static
+// destructor races Mesa's own exit-time teardown.
+std::map<Backend, std::unique_ptr<Context>>& contexts() {
+  static std::map<Backend, std::unique_ptr<Context>> all;
+  return all;
+}
+
 Context& contextFor(Backend backend) {
-  static std::map<Backend, std::unique_ptr<Context>> contexts;
-  auto& slot = contexts[backend];
+  auto& slot = contexts()[backend];
   if (!slot) slot = std::make_unique<Context>(backend);
   slot->makeCurrent();
   return *slot;
@@ -124,5 +130,7 @@ int main(int argc, char** argv) {
                               });
     }
   }
-  return RUN_ALL_TESTS();
+  const int result = RUN_ALL_TESTS();
+  snell_parity::contexts().clear();
+  return result;
 }

@@ -1,0 +1,220 @@
+// The parity runner: execute a GLSL function on the GL driver, one case per
+// compute invocation, and compare with the C++ build of the same text.
+//
+// A case entry has the fixed shape
+//   SnellParityOut caseFoo(vec4 a, vec4 b, vec4 c, vec4 d)
+// and lives in a file written in the common subset, so the same file is
+// #included into the generated compute shader here and into a C++ namespace
+// for the CPU side (with snell::gpu::SnellParityOut as the struct). Fixed
+// shapes keep the runner generic: 4 vec4 in, 4 vec4 out, bools as 0/1.
+//
+//   auto gpu = runParityGpu(ctx, {"glsl", "tests/parity/cases"}, "optics.glsl",
+//                           "caseSnellRefract", inputs);
+//   auto report = compareParity(gpu, cpu, 0x30, 6, 1e-5f, 1e-5f);
+#pragma once
+
+#include "context.hpp"
+#include "error.hpp"
+#include "include_flattener.hpp"
+#include "program.hpp"
+#include "resources.hpp"
+
+#include <snell/bridge.hpp>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace snell::gpu {
+
+// One case's inputs or outputs: four vec4 = 16 floats; float k is v[k / 4][k % 4].
+struct ParityIO {
+  glm::vec4 v[4];
+};
+
+// C++ twin of the GLSL struct the generated shader declares for case entries.
+struct SnellParityOut {
+  glm::vec4 a, b, c, d;
+};
+
+inline ParityIO toParityIO(const SnellParityOut& o) {
+  ParityIO r{};
+  r.v[0] = o.a;
+  r.v[1] = o.b;
+  r.v[2] = o.c;
+  r.v[3] = o.d;
+  return r;
+}
+
+// A texture the case samples. The case file declares `uniform sampler2D
+// <uniform>;` itself (inside `#if defined(SNELL_LANG_GLSL)`; the C++ side
+// declares a snell::Texture2D of the same name); the runner uploads `texture`
+// with all its levels and filter state, binds it to a unit and sets the sampler.
+// A texture the compiler removed (unused by this entry) is skipped.
+struct ParityTexture {
+  std::string uniform;
+  const snell::Texture2D* texture;
+};
+
+constexpr int kParityLocalSize = 64;
+
+// The generated compute shader. `in`/`out` are GLSL keywords, hence the names.
+inline std::string parityShaderSource(const std::string& caseFile, const std::string& entry) {
+  std::string s;
+  s += "#version 450 core\n";
+  s += "layout(local_size_x = " + std::to_string(kParityLocalSize) + ") in;\n";
+  s += "layout(std430, binding = 0) readonly buffer SnellParityInputs { vec4 snellParityIn[]; };\n";
+  s += "layout(std430, binding = 1) writeonly buffer SnellParityOutputs { vec4 snellParityResult[]; };\n";
+  s += "uniform int snellParityCount;\n";
+  s += "struct SnellParityOut { vec4 a; vec4 b; vec4 c; vec4 d; };\n";
+  s += "#include \"" + caseFile + "\"\n";
+  s += "void main() {\n";
+  s += "  uint i = gl_GlobalInvocationID.x;\n";
+  s += "  if (i >= uint(snellParityCount)) return;\n";
+  s += "  SnellParityOut o = " + entry +
+       "(snellParityIn[4u * i], snellParityIn[4u * i + 1u], snellParityIn[4u * i + 2u], snellParityIn[4u * i + 3u]);\n";
+  s += "  snellParityResult[4u * i] = o.a;\n";
+  s += "  snellParityResult[4u * i + 1u] = o.b;\n";
+  s += "  snellParityResult[4u * i + 2u] = o.c;\n";
+  s += "  snellParityResult[4u * i + 3u] = o.d;\n";
+  s += "}\n";
+  return s;
+}
+
+// Runs `entry` from `caseFile` (found through searchPaths) on every input.
+// Inputs are split into chunks that respect the driver's SSBO size and
+// work-group count limits (llvmpipe: 128 MiB, 65535 groups).
+inline std::vector<ParityIO> runParityGpu(const Context& ctx, const std::vector<std::filesystem::path>& searchPaths,
+                                          const std::string& caseFile, const std::string& entry,
+                                          const std::vector<ParityIO>& inputs,
+                                          const std::vector<ParityTexture>& textures = {}) {
+  ctx.makeCurrent();
+  const GlApi& gl = ctx.gl();
+  const FlatSource src =
+      flattenGlslSource(parityShaderSource(caseFile, entry), "<parity " + entry + ">", searchPaths);
+  const Program program = Program::compute(gl, src);
+
+  std::vector<Texture> uploaded;
+  uploaded.reserve(textures.size());
+  GLint maxUnits = 0;
+  gl.GetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &maxUnits);
+  if (textures.size() > static_cast<std::size_t>(maxUnits))
+    throw Error("runParityGpu: " + std::to_string(textures.size()) + " textures, the driver has " +
+                std::to_string(maxUnits) + " texture units");
+  for (std::size_t t = 0; t < textures.size(); ++t) {
+    if (textures[t].texture == nullptr) throw Error("runParityGpu: texture '" + textures[t].uniform + "' is null");
+    uploaded.emplace_back(gl, *textures[t].texture);
+    uploaded.back().bind(static_cast<int>(t));  // texture t on unit t
+    if (program.hasUniform(textures[t].uniform)) program.setSampler(textures[t].uniform, static_cast<int>(t));
+  }
+
+  GLint maxGroups = 0, maxBlockBytes = 0;
+  gl.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxGroups);
+  gl.GetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlockBytes);
+  checkGl(gl, "runParityGpu limits query");
+  const std::size_t byGroups = static_cast<std::size_t>(std::max(maxGroups, 1)) * kParityLocalSize;
+  const std::size_t byBytes = static_cast<std::size_t>(std::max(maxBlockBytes, 1)) / sizeof(ParityIO);
+  const std::size_t chunk = std::max<std::size_t>(1, std::min(byGroups, byBytes));
+
+  std::vector<ParityIO> out(inputs.size());
+  StorageBuffer in(gl), result(gl);
+  for (std::size_t first = 0; first < inputs.size(); first += chunk) {
+    const std::size_t n = std::min(chunk, inputs.size() - first);
+    in.upload(inputs.data() + first, n * sizeof(ParityIO));
+    result.allocate(n * sizeof(ParityIO));
+    in.bindBase(0);
+    result.bindBase(1);
+    program.set("snellParityCount", static_cast<int>(n));
+    program.dispatch(static_cast<GLuint>((n + kParityLocalSize - 1) / kParityLocalSize));
+    gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    result.download(out.data() + first, n * sizeof(ParityIO));
+  }
+  return out;
+}
+
+// Counts are per case: a case mismatches if any of its outputs does.
+struct ParityReport {
+  std::size_t cases = 0, mismatches = 0;
+  float maxAbs = 0, maxRel = 0;  // over finite continuous outputs; maxRel only where |cpu| > absTol
+  std::size_t firstMismatch = SIZE_MAX;
+  std::string firstMismatchText;
+  bool ok() const { return mismatches == 0; }
+};
+
+namespace detail {
+inline std::string formatFloat(float f) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(f));
+  return buf;
+}
+inline std::string formatIO(const ParityIO& io) {
+  std::string s = "(";
+  for (int i = 0; i < 4; ++i) {
+    s += i ? ", (" : "(";
+    for (int k = 0; k < 4; ++k) s += (k ? ", " : "") + formatFloat(io.v[i][k]);
+    s += ")";
+  }
+  return s + ")";
+}
+}  // namespace detail
+
+// Discrete outputs (bit k of discreteMask: output float k) must be equal,
+// NaN == NaN. Continuous ones pass if |g - c| <= absTol + relTol * |c|; a NaN
+// or infinity on either side must be matched exactly (NaN by NaN, inf by the
+// same inf). `inputs`, if given, are printed with the first mismatch.
+inline ParityReport compareParity(const std::vector<ParityIO>& gpu, const std::vector<ParityIO>& cpu,
+                                  std::uint16_t discreteMask, int outputs, float absTol, float relTol,
+                                  const std::vector<ParityIO>* inputs = nullptr) {
+  if (gpu.size() != cpu.size())
+    throw std::invalid_argument("compareParity: " + std::to_string(gpu.size()) + " GPU results but " +
+                                std::to_string(cpu.size()) + " CPU results");
+  if (outputs < 0 || outputs > 16) throw std::invalid_argument("compareParity: outputs must be in 0..16");
+  if (inputs && inputs->size() != gpu.size())
+    throw std::invalid_argument("compareParity: inputs and results differ in count");
+  ParityReport r;
+  r.cases = gpu.size();
+  for (std::size_t i = 0; i < gpu.size(); ++i) {
+    bool caseBad = false;
+    for (int k = 0; k < outputs; ++k) {
+      const float g = gpu[i].v[k / 4][k % 4];
+      const float c = cpu[i].v[k / 4][k % 4];
+      const bool discrete = (discreteMask >> k) & 1u;
+      bool good;
+      std::string why;
+      if (std::isnan(g) || std::isnan(c)) {
+        good = std::isnan(g) && std::isnan(c);
+      } else if (discrete || std::isinf(g) || std::isinf(c)) {
+        good = g == c;
+      } else {
+        const float diff = std::fabs(g - c);
+        const float tol = absTol + relTol * std::fabs(c);
+        good = diff <= tol;
+        r.maxAbs = std::max(r.maxAbs, diff);
+        if (std::fabs(c) > absTol) r.maxRel = std::max(r.maxRel, diff / std::fabs(c));
+        why = " (|diff| " + detail::formatFloat(diff) + " > tol " + detail::formatFloat(tol) + ")";
+      }
+      if (good) continue;
+      if (!caseBad && r.firstMismatch == SIZE_MAX) {
+        r.firstMismatch = i;
+        r.firstMismatchText = "case " + std::to_string(i) + ", output " + std::to_string(k) + " (v[" +
+                              std::to_string(k / 4) + "]." + "xyzw"[k % 4] + ", " +
+                              (discrete ? "discrete" : "continuous") + "): gpu " + detail::formatFloat(g) +
+                              ", cpu " + detail::formatFloat(c) + why;
+        if (inputs) r.firstMismatchText += "; inputs " + detail::formatIO((*inputs)[i]);
+        r.firstMismatchText += "; gpu outputs " + detail::formatIO(gpu[i]) + ", cpu outputs " + detail::formatIO(cpu[i]);
+      }
+      caseBad = true;
+    }
+    if (caseBad) ++r.mismatches;
+  }
+  return r;
+}
+
+}  // namespace snell::gpu
