@@ -13,7 +13,8 @@ options:
                        out-of-range fetches undefined)
   SNELL_SAMPLE_LOD(tex, uv, lod)   vec4 filtered by the texture's own
                        filter state at explicit mip level lod (float)
-  SNELL_TEXTURE_SIZE(tex, lod)     ivec2 size of mip level lod
+  SNELL_TEXTURE_SIZE(tex, lod)     ivec2 size of mip level lod (0 <= lod < levels;
+                       base level 0)
   Define any hook before this file to redirect reads (reversed-Z, linear depth,
   texture arrays, a Hi-Z chain).
 contract: macros only; no function is defined here.
@@ -51,7 +52,9 @@ contract: macros only; no function is defined here.
 #    define SNELL_SAMPLE_LOD(tex, uv, lod) textureLod(tex, uv, lod)
 #  endif
 #  ifndef SNELL_TEXTURE_SIZE
-#    define SNELL_TEXTURE_SIZE(tex, lod) textureSize(tex, lod)
+/* Level size from the base size: Mesa 22.3 llvmpipe evaluates textureSize with
+   one invocation's lod for a whole SIMD batch when lod varies per invocation. */
+#    define SNELL_TEXTURE_SIZE(tex, lod) max(textureSize(tex, 0) >> (lod), ivec2(1, 1))
 #  endif
 #endif
 

@@ -112,7 +112,8 @@ class Texture2D {
   vec4 sampleLod(vec2 uv, float lod) const {
     if (levels_.empty()) return vec4(0.0f);
     const int q = levelCount() - 1;
-    // c: the magnification/minification switch-over point (sec. 8.14.2).
+    // c: the magnification/minification switch-over point (sec. 8.14.2). Mesa
+    // 22.3 llvmpipe uses c = 0 for every filter pair; this follows the spec.
     const bool cHalf = magFilter == Filter::Linear && minFilter == Filter::Nearest &&
                        mipFilter != MipFilter::None;
     const float c = cHalf ? 0.5f : 0.0f;
@@ -121,6 +122,8 @@ class Texture2D {
       case MipFilter::None:
         return filterLevel(0, uv, minFilter);
       case MipFilter::Nearest: {
+        // The spec's ceil(lod + 0.5) - 1 takes the lower level at exact
+        // half-integer lods; llvmpipe rounds those up.
         int d = lod <= 0.5f ? 0 : static_cast<int>(std::ceil(lod + 0.5f)) - 1;
         return filterLevel(std::min(d, q), uv, minFilter);
       }

@@ -62,7 +62,7 @@ class ParityTest : public ::testing::Test {
         snell::gpu::runParityGpu(ctx, {kRoot / "glsl", kRoot / "tests" / "parity" / "cases"}, spec_->glslFile,
                                  spec_->entry, inputs, spec_->textures);
     const snell::gpu::ParityReport r =
-        snell::gpu::compareParity(gpu, cpu, spec_->discrete, spec_->outputs, spec_->tol.abs, spec_->tol.rel);
+        snell::gpu::compareParity(gpu, cpu, spec_->discrete, spec_->outputs, spec_->tol.abs, spec_->tol.rel, &inputs);
     // The figures the closing notes quote.
     std::cout << "[parity] " << spec_->function << " backend=" << snell::gpu::backendName(backend_)
               << " cases=" << r.cases << " mismatches=" << r.mismatches << " maxAbs=" << r.maxAbs
