@@ -8,6 +8,7 @@ packages=(
   libgtest-dev libbenchmark-dev   # tests and benchmarks
   glslang-tools spirv-tools spirv-cross  # offline GLSL/HLSL compilation checks
   libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev  # Mesa llvmpipe, no GPU needed
+  libembree-dev nlohmann-json3-dev libtinyobjloader-dev libstb-dev libcli11-dev  # the lab
 )
 missing=()
 for p in "${packages[@]}"; do

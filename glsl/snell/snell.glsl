@@ -4,4 +4,5 @@
 #include "optics.glsl"
 #include "camera.glsl"
 #include "intersect.glsl"
+#include "shade.glsl"
 #endif
