@@ -3,4 +3,10 @@
 #define SNELL_INTERSECT_GLSL
 #include "intersect/hit.glsl"
 #include "intersect/depth_surface.glsl"
+#include "intersect/surface_point.glsl"
+#include "intersect/single_sample.glsl"
+#include "intersect/plane_refine.glsl"
+#include "intersect/plane_normal.glsl"
+#include "intersect/plane_depth.glsl"
+#include "intersect/depth_pyramid.glsl"
 #endif

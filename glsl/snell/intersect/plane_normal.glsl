@@ -1,0 +1,95 @@
+/*
+description: Mayer & Assarsson's planar approximation, method 1 (normal-based):
+  the depth and normal stored behind the ray origin define a plane; the ray is
+  intersected with it, the intersection projected and the buffers sampled
+  there; optionally the plane is rebuilt at that sample and the ray
+  re-intersected, N times (step 5). Constant time for a fixed N.
+use: SnellHit h = snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, surface,
+                                            normalLod, SNELL_PLANE_ITERATIONS);
+  origin     view-space ray start W (z < 0): front-face point (back-face buffer)
+             or exit point (opaque scene buffer)
+  dir        ray direction (any length)
+  depthTex   the depth texture `surface` describes (read at level surface.lod)
+  normalTex  view-space normals (xyz, any length, either orientation) matching
+             depthTex texel for texel at level 0; it may be mipmapped and filtered
+             (Mayer & Assarsson: "a more blurred mip level gives a more complete
+             representation of the scene for drastic refraction effects")
+  normalLod  the level normals are read at (SNELL_SAMPLE_LOD, the texture's filters)
+  iterations refinement iterations, clamped to [0, SNELL_PLANE_MAX_ITERATIONS]
+contract:
+  - plane k (k = 0 .. N): uv_0 = projection of W, uv_k = projection of P_(k-1);
+    B_k = snellSurfacePoint(depthTex, uv_k, surface) (texel centre point),
+    n_k = xyz of SNELL_SAMPLE_LOD(normalTex, B_k.uv, normalLod) (the same texel
+    centre); P_k = snellRayPlane(W, dir, B_k, n_k). The hit is
+    snellHitOnSurface(P_N): position P_N (on the ray), uv its projection, valid
+    when the surface exists there.
+  - exact (up to float rounding) for a planar surface with exact normals, for
+    every N >= 0: every plane is the surface's plane.
+  - fetches = 2 (N + 1) + 1 on success (a depth and a normal read per plane,
+    one final depth read); on failure the reads issued so far (lookups at an
+    off-screen uv included).
+  - rays towards the camera are accepted: the plane is intersected wherever it
+    lies ahead of W (t >= 0).
+  - valid = false (snellHitMiss, finite): origin/dir NaN/Inf, |dir|^2 below 1e-30
+    or overflowing, W at or behind the camera plane (fetches 0); B_k empty or off
+    screen; n_k zero/NaN, the ray parallel to plane k or the plane behind W
+    (snellRayPlane invalid); P_k behind the camera; the final sample empty or off
+    screen.
+source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
+  steps 1-5 and "Method 1: Normal-based"; plane intersection in
+  optics/ray_plane.glsl.
+*/
+#ifndef SNELL_INTERSECT_PLANE_NORMAL_GLSL
+#define SNELL_INTERSECT_PLANE_NORMAL_GLSL
+#include "../prelude.glsl"
+#include "../camera/conventions.glsl"
+#include "../camera/view_to_uv.glsl"
+#include "../optics/ray_plane.glsl"
+#include "hit.glsl"
+#include "depth_surface.glsl"
+#include "surface_point.glsl"
+#include "plane_refine.glsl"
+
+SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
+                                            SnellDepthSurface s, float normalLod, int iterations) {
+  float len2 = dot(dir, dir);
+  if (!SNELL_CAMERA_FINITE(origin.x) || !SNELL_CAMERA_FINITE(origin.y) || !SNELL_CAMERA_FINITE(origin.z) ||
+      !SNELL_CAMERA_FINITE(len2) || !(len2 >= 1e-30f)) {
+    return snellHitMiss(0);
+  }
+  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  if (!w.valid) {
+    return snellHitMiss(0);
+  }
+  int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
+  int fetches = 0;
+  vec2 uv = w.uv;
+  vec3 p = origin;
+  for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
+    if (k > n) {
+      break;
+    }
+    if (k > 0) {
+      SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+      if (!sp.valid) {
+        return snellHitMiss(fetches);
+      }
+      uv = sp.uv;
+    }
+    SnellSurfacePoint b = snellSurfacePoint(depthTex, uv, s);
+    fetches += 1;
+    if (!b.valid) {
+      return snellHitMiss(fetches);
+    }
+    vec4 nt = SNELL_SAMPLE_LOD(normalTex, b.uv, normalLod);
+    fetches += 1;
+    SnellRayPlaneHit ph = snellRayPlane(origin, dir, b.position, vec3(nt.x, nt.y, nt.z));
+    if (!ph.valid) {
+      return snellHitMiss(fetches);
+    }
+    p = ph.position;
+  }
+  return snellHitOnSurface(p, depthTex, s, fetches);
+}
+
+#endif

@@ -1,0 +1,142 @@
+// On the GL driver (llvmpipe, both backends):
+//  1. the analytic depth scenes rendered by a fragment shader
+//     (tests/support/depth_scenes.frag) agree with the CPU buffers computed in
+//     double (tests/support/depth_scenes.hpp);
+//  2. the depth min/max pyramid built by the GL pass examples/glsl/depth_pyramid.frag
+//     (snellDepthPyramidBase / snellDepthMinMaxReduce on the GPU) equals the one
+//     snell::snellBuildDepthPyramid builds in C++, bit for bit, on every level.
+#include <gtest/gtest.h>
+
+#include <snell/depth_pyramid.hpp>
+#include <snell/gpu/context.hpp>
+#include <snell/gpu/include_flattener.hpp>
+#include <snell/gpu/program.hpp>
+#include <snell/gpu/resources.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+#include "support/depth_scenes.hpp"
+#include "support/depth_scenes_gpu.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace snell::gpu;
+using snell_test::DepthScene;
+
+const fs::path kRoot = SNELL_SOURCE_DIR;
+
+std::vector<DepthScene> scenes(int w, int h, int conv) {
+  return {snell_test::slantedPlane(w, h, conv), snell_test::sphereBack(w, h, conv), snell_test::stepEdge(w, h, conv),
+          snell_test::silhouette(w, h, conv), snell_test::thinSpike(w, h, conv)};
+}
+
+class DepthPyramidGpu : public ::testing::TestWithParam<Backend> {};
+
+TEST_P(DepthPyramidGpu, AnalyticScenesRenderTheSameOnGpuAndCpu) {
+  Context ctx(GetParam());
+  for (int conv : {SNELL_DEPTH_GL, SNELL_DEPTH_REVERSED, SNELL_DEPTH_INFINITE_REVERSED}) {
+    for (const DepthScene& sc : scenes(200, 150, conv)) {
+      const snell_test::GpuSceneBuffers g = snell_test::renderDepthSceneGpu(ctx, sc);
+      const snell::Image& c = sc.depth.level(0);
+      const snell::Image& cn = sc.normals.level(0);
+      int coverageDiff = 0, covered = 0;
+      double maxDepth = 0.0, maxNormal = 0.0;
+      for (std::size_t i = 0; i < c.texels.size(); ++i) {
+        const bool cv = c.texels[i].x != sc.emptyDepth, gv = g.depth.texels[i].x != sc.emptyDepth;
+        covered += cv;
+        if (cv != gv) {
+          ++coverageDiff;
+          continue;
+        }
+        if (!cv) continue;
+        maxDepth = std::max(maxDepth, double(std::fabs(c.texels[i].x - g.depth.texels[i].x)));
+        maxNormal = std::max(maxNormal, double(glm::length(glm::vec3(cn.texels[i]) - glm::vec3(g.normals.texels[i]))));
+      }
+      std::printf("[scene] %s conv %d covered %d coverage differences %d max |depth diff| %.3g max |normal diff| %.3g\n",
+                  sc.name.c_str(), conv, covered, coverageDiff, maxDepth, maxNormal);
+      SCOPED_TRACE(sc.name + " convention " + std::to_string(conv));
+      EXPECT_GT(covered, 1000);
+      // Float (GPU) against double (CPU) evaluation: texel centres within a float
+      // rounding of a silhouette edge may fall either way; allow 0.2% of them.
+      EXPECT_LE(coverageDiff, covered / 500 + 2);
+      EXPECT_LT(maxDepth, 2e-5);
+      // Box faces: a texel centre within rounding of an edge may take the other face's normal.
+      if (sc.kind != snell_test::kSceneSpike) {
+        EXPECT_LT(maxNormal, 1e-4);
+      }
+    }
+  }
+}
+
+TEST_P(DepthPyramidGpu, GlPassEqualsCppBuilderOnEveryLevel) {
+  Context ctx(GetParam());
+  const GlApi& gl = ctx.gl();
+  const Program program = Program::graphics(
+      gl, flattenGlslSource(R"(#version 450 core
+void main() {
+  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
+  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+}
+)", "pyramid_fullscreen.vert", {}),
+      flattenGlslFile(kRoot / "examples" / "glsl" / "depth_pyramid.frag", {kRoot / "glsl"}));
+  VertexArray vao(gl);
+  for (int conv : {SNELL_DEPTH_GL, SNELL_DEPTH_REVERSED}) {
+    for (const DepthScene& sc : {snell_test::sphereBack(203, 117, conv), snell_test::silhouette(128, 64, conv),
+                                 snell_test::thinSpike(97, 160, conv)}) {
+      const snell::Texture2D cpu = snell::snellBuildDepthPyramid(sc.depth, sc.surface());
+      const Texture depth(gl, sc.depth);
+      std::vector<std::unique_ptr<Framebuffer>> levels;
+      int w = sc.width, h = sc.height, mismatches = 0, texels = 0;
+      for (int lod = 0; lod < cpu.levelCount(); ++lod) {
+        levels.push_back(std::make_unique<Framebuffer>(gl, w, h, 1, false));
+        Framebuffer& fb = *levels.back();
+        fb.bind();
+        gl.ActiveTexture(GL_TEXTURE0);
+        gl.BindTexture(GL_TEXTURE_2D, lod == 0 ? depth.id() : levels[levels.size() - 2]->colorTexture(0));
+        program.set("baseLevel", lod == 0 ? 1 : 0);
+        program.set("sourceLod", 0);
+        program.setSampler("source", 0);
+        program.set("emptyDepth", sc.emptyDepth);
+        if (program.hasUniform("zNear")) program.set("zNear", sc.zNear);
+        if (program.hasUniform("zFar")) program.set("zFar", sc.zFar);
+        if (program.hasUniform("convention")) program.set("convention", sc.convention);
+        vao.bind();
+        program.use();
+        gl.Disable(GL_DEPTH_TEST);
+        gl.DrawArrays(GL_TRIANGLES, 0, 3);
+        checkGl(gl, "pyramid pass");
+        const snell::Image got = fb.readColor(0);
+        const snell::Image& want = cpu.level(lod);
+        ASSERT_EQ(got.width, want.width);
+        ASSERT_EQ(got.height, want.height);
+        for (std::size_t i = 0; i < want.texels.size(); ++i) {
+          ++texels;
+          if (std::memcmp(&got.texels[i], &want.texels[i], sizeof(glm::vec4)) != 0) {
+            if (mismatches == 0)
+              ADD_FAILURE() << sc.name << " level " << lod << " texel " << i << ": gpu (" << got.texels[i].x << ", "
+                            << got.texels[i].y << ", " << got.texels[i].z << ", " << got.texels[i].w << ") cpu ("
+                            << want.texels[i].x << ", " << want.texels[i].y << ", " << want.texels[i].z << ", "
+                            << want.texels[i].w << ")";
+            ++mismatches;
+          }
+        }
+        w = std::max(1, w / 2);
+        h = std::max(1, h / 2);
+      }
+      gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+      std::printf("[pyramid] %s conv %d levels %d texels %d mismatches %d\n", sc.name.c_str(), conv, cpu.levelCount(),
+                  texels, mismatches);
+      EXPECT_EQ(mismatches, 0) << sc.name;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, DepthPyramidGpu, ::testing::Values(Backend::OSMesa, Backend::EGL),
+                         [](const ::testing::TestParamInfo<Backend>& i) { return std::string(backendName(i.param)); });
+
+}  // namespace

@@ -1,0 +1,310 @@
+// Registrations of the plane-family intersect/ parity cases (cases/plane.glsl):
+// hit, depth surface, surface point, single sample, the two plane strategies
+// with refinement, and the depth pyramid reduction.
+//
+// Textures: two analytic scenes of tests/support/depth_scenes.hpp at 160x120
+// (sphereBack, GL convention, a back-face buffer; silhouette, reversed Z, an
+// opaque buffer with many empty texels), their normal mips and depth pyramids.
+// Rays: >= 12,000 per case, most of them realistic (refracted rays from the
+// sphere's front face into its back faces, rays from in front of the annulus),
+// the rest off screen, towards the camera, from behind the camera, hostile.
+//
+// Comparison: valid flags, fetch counts and the hit's level-0 texel compare
+// EXACTLY; uv and positions with the tolerance stated at each case. The pyramid
+// reduction compares every output exactly (min/max select, the mean is a sum in
+// fixed order and one division).
+#include <snell/depth_pyramid.hpp>
+#include <snell/intersect.hpp>
+
+#include <cmath>
+#include <limits>
+
+#include "parity_registry.hpp"
+#include "support/depth_scenes.hpp"
+
+namespace parity_plane {
+using namespace snell;
+using snell::gpu::SnellParityOut;
+Texture2D planeDepthA, planeNormalA, planePyramidA, planeDepthB, planeNormalB, planePyramidB;
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#include "cases/plane.glsl"
+#pragma GCC diagnostic pop
+}  // namespace parity_plane
+
+namespace {
+using snell_parity::InputGen;
+using snell_parity::ParityIO;
+using namespace parity_plane;
+
+constexpr int kInputs = 12000;
+constexpr int kW = 160, kH = 120;
+
+const snell_test::DepthScene& sceneA() {
+  static const snell_test::DepthScene s = snell_test::sphereBack(kW, kH, SNELL_DEPTH_GL);
+  return s;
+}
+const snell_test::DepthScene& sceneB() {
+  static const snell_test::DepthScene s = snell_test::silhouette(kW, kH, SNELL_DEPTH_REVERSED);
+  return s;
+}
+
+void buildTextures() {
+  static bool built = false;
+  if (built) return;
+  built = true;
+  const snell_test::DepthScene& a = sceneA();
+  const snell_test::DepthScene& b = sceneB();
+  planeDepthA = a.depth;
+  planeNormalA = snellBuildNormalMips(a.normals);
+  planePyramidA = snellBuildDepthPyramid(a.depth, a.surface());
+  planeDepthB = b.depth;
+  planeNormalB = snellBuildNormalMips(b.normals);
+  planePyramidB = snellBuildDepthPyramid(b.depth, b.surface());
+}
+
+std::vector<snell::gpu::ParityTexture> textures() {
+  return {{"planeDepthA", &planeDepthA},   {"planeNormalA", &planeNormalA}, {"planePyramidA", &planePyramidA},
+          {"planeDepthB", &planeDepthB},   {"planeNormalB", &planeNormalB}, {"planePyramidB", &planePyramidB}};
+}
+
+ParityIO run(SnellParityOut (*entry)(glm::vec4, glm::vec4, glm::vec4, glm::vec4), const ParityIO& in) {
+  buildTextures();
+  return snell::gpu::toParityIO(entry(in.v[0], in.v[1], in.v[2], in.v[3]));
+}
+
+glm::vec4 matrixEntries(const snell_test::DepthScene& s) {
+  return glm::vec4(s.clipFromView[0][0], s.clipFromView[1][1], s.clipFromView[2][2], s.clipFromView[3][2]);
+}
+
+// A ray for scene `which`: origin, dir.
+struct Ray {
+  glm::vec3 o, d;
+};
+Ray sceneRay(InputGen& g, int which) {
+  const snell_test::DepthScene& sc = which ? sceneB() : sceneA();
+  const float k = g.uniform(0.0f, 1.0f);
+  if (which == 0 && k < 0.7f) {
+    // Refracted ray from the sphere's front face (centre, radius of sphereBack).
+    const glm::dvec3 c(0.3, -0.2, -6.0);
+    const double r = 2.2;
+    for (;;) {
+      const glm::dvec2 uv(g.uniform(0.0f, 1.0f), g.uniform(0.0f, 1.0f));
+      const glm::dvec3 q = sc.pixelRay(uv);
+      const double a = glm::dot(q, q), b = -2.0 * glm::dot(q, c), cc = glm::dot(c, c) - r * r;
+      const double disc = b * b - 4.0 * a * cc;
+      if (disc < 0.0) continue;
+      const glm::dvec3 w = (-b - std::sqrt(disc)) / (2.0 * a) * q;
+      const glm::dvec3 n = (w - c) / r, i = glm::normalize(q);
+      const double eta = 1.0 / double(g.uniform(1.05f, 2.4f)), ci = -glm::dot(i, n);
+      const double kk = 1.0 - eta * eta * (1.0 - ci * ci);
+      const glm::dvec3 t = eta * i + (eta * ci - std::sqrt(kk)) * n;
+      return {glm::vec3(w), glm::vec3(t)};
+    }
+  }
+  // A point in the frustum 1..6 in front of the camera, a direction mostly away from it.
+  const float dist = g.uniform(1.0f, 6.0f);
+  const glm::vec3 o(g.uniform(-1.0f, 1.0f) * dist * float(sc.tanHalfX), g.uniform(-1.0f, 1.0f) * dist * float(sc.tanHalfY),
+                    -dist);
+  glm::vec3 d = g.unitVector();
+  if (g.chance(0.85f)) d.z = -std::fabs(d.z) - 0.3f;
+  return {o, d};
+}
+
+void hostileRay(InputGen& g, Ray& r) {
+  const float k = g.uniform(0.0f, 1.0f);
+  if (k < 0.02f) r.o = g.hostileVector();
+  else if (k < 0.04f) r.d = g.hostileVector();
+  else if (k < 0.05f) r.d = glm::vec3(0.0f);
+  else if (k < 0.06f) r.o.z = g.uniform(0.0f, 3.0f);  // at or behind the camera
+  else if (k < 0.08f) r.o.x *= 4.0f;                   // off screen
+  else if (k < 0.10f) r.d = -r.d;                      // towards the camera
+}
+
+std::vector<ParityIO> rayInputs(std::uint32_t seed, bool unitDir) {
+  buildTextures();
+  InputGen g(seed);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    const int which = g.chance(0.6f) ? 0 : 1;
+    const snell_test::DepthScene& sc = which ? sceneB() : sceneA();
+    Ray r = sceneRay(g, which);
+    if (unitDir) r.d = glm::normalize(r.d);
+    hostileRay(g, r);
+    int iterations = g.integer(0, 4);
+    if (g.chance(0.03f)) iterations = g.chance(0.5f) ? -1 : 20;  // clamped
+    static const float lods[] = {0.0f, 0.0f, 0.5f, 1.0f, 2.3f};
+    const float normalLod = lods[g.integer(0, 4)];
+    const int levels = (which ? planePyramidB : planePyramidA).levelCount();
+    const int maxLod = g.chance(0.8f) ? levels - 1 : g.integer(0, levels - 1);
+    ParityIO in{};
+    in.v[0] = glm::vec4(r.o, float(which));
+    in.v[1] = glm::vec4(r.d, float(iterations));
+    in.v[2] = matrixEntries(sc);
+    in.v[3] = glm::vec4(normalLod, float(maxLod), 0.0f, 0.0f);
+    v.push_back(in);
+  }
+  return v;
+}
+
+std::vector<ParityIO> uvInputs(std::uint32_t seed, bool withLod) {
+  buildTextures();
+  InputGen g(seed);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    const int which = g.chance(0.5f) ? 0 : 1;
+    glm::vec2 uv(g.uniform(-0.1f, 1.1f), g.uniform(-0.1f, 1.1f));
+    if (g.chance(0.1f)) uv = glm::vec2(float(g.integer(0, kW)) / kW, float(g.integer(0, kH)) / kH);  // texel edges
+    if (g.chance(0.03f)) uv = glm::vec2(g.hostile(), g.hostile());
+    const int levels = (which ? planePyramidB : planePyramidA).levelCount();
+    ParityIO in{};
+    in.v[0] = glm::vec4(uv, 0.0f, float(which));
+    in.v[1] = glm::vec4(0.0f, 0.0f, 0.0f, withLod && g.chance(0.5f) ? float(g.integer(1, levels - 1)) : 0.0f);
+    in.v[2] = matrixEntries(which ? sceneB() : sceneA());
+    v.push_back(in);
+  }
+  return v;
+}
+
+std::vector<ParityIO> hitMissInputs() {
+  InputGen g(601);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    ParityIO in{};
+    in.v[0] = glm::vec4(float(g.integer(-5, 1000)), 0.0f, 0.0f, 0.0f);
+    v.push_back(in);
+  }
+  return v;
+}
+
+std::vector<ParityIO> surfaceInputs() {
+  InputGen g(602);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    ParityIO in{};
+    in.v[2] = glm::vec4(g.uniform(0.1f, 5.0f), g.uniform(0.1f, 5.0f), g.uniform(-2.0f, 1.0f), g.uniform(-5.0f, 5.0f));
+    in.v[3] = glm::vec4(g.uniform(0.01f, 2.0f), g.uniform(2.0f, 1000.0f), float(g.integer(-1, 5)),
+                        g.chance(0.5f) ? float(g.integer(0, 1)) : g.uniform(0.0f, 1.0f));
+    // Matrix entries stay finite: the case reads them back through products with 0,
+    // which a GPU compiler may fold (NaN * 0).
+    if (g.chance(0.05f)) in.v[3].x = g.hostile();
+    v.push_back(in);
+  }
+  return v;
+}
+
+std::vector<ParityIO> uvZInputs() {
+  InputGen g(603);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    const float b = 1.0f / std::tan(0.5f * g.uniform(0.3f, 2.5f));
+    ParityIO in{};
+    in.v[0] = glm::vec4(g.uniform(-0.2f, 1.2f), g.uniform(-0.2f, 1.2f), -std::pow(10.0f, g.uniform(-2.0f, 3.0f)), 0.0f);
+    in.v[1] = g.chance(0.3f) ? glm::vec4(g.uniform(-0.3f, 0.3f), g.uniform(-0.3f, 0.3f), 0.0f, 0.0f) : glm::vec4(0.0f);
+    in.v[2] = glm::vec4(b / g.uniform(0.5f, 2.0f), b, -1.0f - g.uniform(0.0f, 0.1f), -g.uniform(0.01f, 2.0f));
+    const float k = g.uniform(0.0f, 1.0f);
+    if (k < 0.03f) in.v[0].z = g.uniform(0.0f, 5.0f);  // behind
+    else if (k < 0.05f) in.v[0].z = 0.0f;
+    else if (k < 0.08f) in.v[0].x = g.hostile();
+    else if (k < 0.10f) in.v[0].z = g.hostile();
+    else if (k < 0.12f) in.v[2].x = 0.0f;  // singular
+    v.push_back(in);
+  }
+  return v;
+}
+
+std::vector<ParityIO> hitOnSurfaceInputs() {
+  InputGen g(604);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    const int which = g.chance(0.5f) ? 0 : 1;
+    Ray r = sceneRay(g, which);
+    glm::vec3 p = r.o + g.uniform(0.0f, 5.0f) * glm::normalize(r.d);
+    if (g.chance(0.05f)) p = g.hostileVector();
+    if (g.chance(0.03f)) p.z = g.uniform(0.0f, 1.0f);
+    ParityIO in{};
+    in.v[0] = glm::vec4(p, float(which));
+    in.v[1] = glm::vec4(0.0f, 0.0f, 0.0f, float(g.integer(0, 20)));
+    in.v[2] = matrixEntries(which ? sceneB() : sceneA());
+    v.push_back(in);
+  }
+  return v;
+}
+
+std::vector<ParityIO> pyramidBaseInputs() {
+  InputGen g(605);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    const float n = std::pow(10.0f, g.uniform(-2.0f, 0.5f));
+    float d = g.uniform(0.0f, 1.0f);
+    const float empty = g.chance(0.5f) ? 0.0f : 1.0f;
+    if (g.chance(0.15f)) d = empty;
+    if (g.chance(0.05f)) d = g.hostile();
+    ParityIO in{};
+    in.v[0] = glm::vec4(d, n, n * std::pow(10.0f, g.uniform(0.3f, 4.0f)), float(g.integer(0, 4)));
+    if (g.chance(0.03f)) in.v[0].y = g.hostile();
+    in.v[1] = glm::vec4(empty, 0.0f, 0.0f, 0.0f);
+    v.push_back(in);
+  }
+  return v;
+}
+
+std::vector<ParityIO> reduceInputs() {
+  buildTextures();
+  InputGen g(606);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    const int which = g.chance(0.5f) ? 0 : 1;
+    const Texture2D& p = which ? planePyramidB : planePyramidA;
+    const int lod = g.integer(0, p.levelCount() - 2);
+    const glm::ivec2 next = p.size(lod + 1);
+    ParityIO in{};
+    in.v[0] = glm::vec4(float(g.integer(0, next.x - 1)), float(g.integer(0, next.y - 1)), float(lod), float(which));
+    v.push_back(in);
+  }
+  return v;
+}
+
+// Hit outputs: 0-1 uv, 2 valid, 3 fetches, 4-6 position, 8-9 texel.
+constexpr std::uint16_t kHitDiscrete = 0x030C;
+}  // namespace
+
+SNELL_PARITY_CASE({"snellHitMiss", "plane.glsl", "caseSnellHitMiss", hitMissInputs,
+                   [](const ParityIO& in) { return run(caseSnellHitMiss, in); }, 0x03FF, 10, {0.0f, 0.0f}});
+SNELL_PARITY_CASE({"snellDepthSurface", "plane.glsl", "caseSnellDepthSurface", surfaceInputs,
+                   [](const ParityIO& in) { return run(caseSnellDepthSurface, in); }, 0x0FFF, 12, {0.0f, 0.0f}});
+// One fetch and a linearization (a division: GL may use x * (1/y), 2.5 ulp).
+SNELL_PARITY_CASE({"snellSampleSurface", "plane.glsl", "caseSnellSampleSurface", [] { return uvInputs(607, true); },
+                   [](const ParityIO& in) { return run(caseSnellSampleSurface, in); }, 0x0002, 2, {1e-5f, 1e-5f},
+                   textures(), buildTextures});
+// Cramer's rule: a handful of products and two divisions.
+SNELL_PARITY_CASE({"snellUvZToView", "plane.glsl", "caseSnellUvZToView", uvZInputs,
+                   [](const ParityIO& in) { return run(caseSnellUvZToView, in); }, 0x0008, 4, {1e-5f, 1e-5f}});
+SNELL_PARITY_CASE({"snellSurfacePoint", "plane.glsl", "caseSnellSurfacePoint", [] { return uvInputs(608, false); },
+                   [](const ParityIO& in) { return run(caseSnellSurfacePoint, in); }, 0x0038, 6, {1e-5f, 1e-5f},
+                   textures(), buildTextures});
+// Positions: 1e-4 relative (plane intersections amplify ulp differences of the
+// reconstruction by 1/cos of the ray-plane angle); the texel must be the same.
+SNELL_PARITY_CASE({"snellIntersectSingleSample", "plane.glsl", "caseSnellIntersectSingleSample",
+                   [] { return rayInputs(609, false); },
+                   [](const ParityIO& in) { return run(caseSnellIntersectSingleSample, in); }, kHitDiscrete, 10,
+                   {1e-4f, 1e-4f}, textures(), buildTextures});
+SNELL_PARITY_CASE({"snellHitOnSurface", "plane.glsl", "caseSnellHitOnSurface", hitOnSurfaceInputs,
+                   [](const ParityIO& in) { return run(caseSnellHitOnSurface, in); }, kHitDiscrete, 10,
+                   {1e-5f, 1e-5f}, textures(), buildTextures});
+SNELL_PARITY_CASE({"snellIntersectPlaneNormal", "plane.glsl", "caseSnellIntersectPlaneNormal",
+                   [] { return rayInputs(610, false); },
+                   [](const ParityIO& in) { return run(caseSnellIntersectPlaneNormal, in); }, kHitDiscrete, 10,
+                   {1e-4f, 1e-4f}, textures(), buildTextures});
+SNELL_PARITY_CASE({"snellDepthPlaneAt", "plane.glsl", "caseSnellDepthPlaneAt", [] { return rayInputs(611, true); },
+                   [](const ParityIO& in) { return run(caseSnellDepthPlaneAt, in); }, 0x0088, 8, {1e-4f, 1e-4f},
+                   textures(), buildTextures});
+SNELL_PARITY_CASE({"snellIntersectPlaneDepth", "plane.glsl", "caseSnellIntersectPlaneDepth",
+                   [] { return rayInputs(612, false); },
+                   [](const ParityIO& in) { return run(caseSnellIntersectPlaneDepth, in); }, kHitDiscrete, 10,
+                   {1e-4f, 1e-4f}, textures(), buildTextures});
+SNELL_PARITY_CASE({"snellDepthPyramidBase", "plane.glsl", "caseSnellDepthPyramidBase", pyramidBaseInputs,
+                   [](const ParityIO& in) { return run(caseSnellDepthPyramidBase, in); }, 0x0009, 4, {1e-5f, 1e-5f}});
+SNELL_PARITY_CASE({"snellDepthMinMaxReduce", "plane.glsl", "caseSnellDepthMinMaxReduce", reduceInputs,
+                   [](const ParityIO& in) { return run(caseSnellDepthMinMaxReduce, in); }, 0x000F, 4, {0.0f, 0.0f},
+                   textures(), buildTextures});

@@ -1,0 +1,289 @@
+// glsl/snell/intersect/plane_normal.glsl and plane_depth.glsl (Mayer & Assarsson,
+// methods 1 and 2, with refinement) against the analytic scenes of
+// tests/support/depth_scenes.hpp: hits compared with DepthScene::referenceHit,
+// a dense double-precision march through the continuous surface.
+#include <gtest/gtest.h>
+
+#include <snell/depth_pyramid.hpp>
+#include <snell/intersect.hpp>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "support/depth_scenes.hpp"
+
+namespace {
+
+using namespace snell;
+using snell_test::DepthScene;
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+struct TestRay {
+  glm::dvec3 o, d;
+  glm::dvec3 ref;
+};
+
+// Refracted rays entering the sphere of sphereBack through its front face.
+std::vector<TestRay> sphereRays(const DepthScene& sc, int count, unsigned seed) {
+  const glm::dvec3 c(0.3, -0.2, -6.0);
+  const double r = 2.2;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<TestRay> rays;
+  while (static_cast<int>(rays.size()) < count) {
+    const glm::dvec3 q = sc.pixelRay({u(rng), u(rng)});
+    const double a = glm::dot(q, q), b = -2.0 * glm::dot(q, c), cc = glm::dot(c, c) - r * r, disc = b * b - 4 * a * cc;
+    if (disc < 0.0) continue;
+    const glm::dvec3 w = (-b - std::sqrt(disc)) / (2.0 * a) * q, n = (w - c) / r, i = glm::normalize(q);
+    const double eta = 1.0 / (1.1 + 0.5 * u(rng)), ci = -glm::dot(i, n), k = 1.0 - eta * eta * (1.0 - ci * ci);
+    const glm::dvec3 t = eta * i + (eta * ci - std::sqrt(k)) * n;
+    const auto ref = sc.referenceHit(w, t);
+    if (!ref) continue;
+    rays.push_back({w, t, *ref});
+  }
+  return rays;
+}
+
+// Rays from points between the camera and a full-screen plane, towards it.
+std::vector<TestRay> planeRays(const DepthScene& sc, int count, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0), s(-1.0, 1.0);
+  std::vector<TestRay> rays;
+  while (static_cast<int>(rays.size()) < count) {
+    const glm::dvec2 uv(0.1 + 0.8 * u(rng), 0.1 + 0.8 * u(rng));
+    const double surf = sc.surfaceZ(uv);
+    const glm::dvec3 o = sc.pixelRay(uv) * (-surf * (0.3 + 0.5 * u(rng)));
+    const glm::dvec3 d = glm::normalize(glm::dvec3(0.4 * s(rng), 0.4 * s(rng), -1.0));
+    const auto ref = sc.referenceHit(o, d);
+    if (!ref) continue;
+    const glm::dvec2 ruv = sc.project(*ref);
+    if (ruv.x < 0.02 || ruv.x > 0.98 || ruv.y < 0.02 || ruv.y > 0.98) continue;  // not at the border texels
+    rays.push_back({o, d, *ref});
+  }
+  return rays;
+}
+
+double depthRange(const DepthScene& sc) {
+  double lo = 1e30, hi = 0.0;
+  for (int j = 0; j < sc.height; ++j)
+    for (int i = 0; i < sc.width; ++i) {
+      const double z = sc.surfaceZ({(i + 0.5) / sc.width, (j + 0.5) / sc.height});
+      if (std::isnan(z)) continue;
+      lo = std::min(lo, -z);
+      hi = std::max(hi, -z);
+    }
+  return hi - lo;
+}
+
+enum class Method { Normal, Depth };
+
+struct Stats {
+  double meanErr = 0, maxErr = 0;
+  int valid = 0, total = 0;
+  double fetches = 0;
+};
+
+Stats evaluate(const DepthScene& sc, const Texture2D& normals, const Texture2D& pyramid, const std::vector<TestRay>& rays,
+               Method m, int iterations, float normalLod = 0.0f) {
+  Stats st;
+  const SnellDepthSurface s = sc.surface();
+  for (const TestRay& r : rays) {
+    const SnellHit h = m == Method::Normal
+                           ? snellIntersectPlaneNormal(glm::vec3(r.o), glm::vec3(r.d), sc.depth, normals, s, normalLod, iterations)
+                           : snellIntersectPlaneDepth(glm::vec3(r.o), glm::vec3(r.d), pyramid, s, pyramid.levelCount() - 1,
+                                                      iterations);
+    ++st.total;
+    st.fetches += h.fetches;
+    if (!h.valid) continue;
+    ++st.valid;
+    const double e = glm::length(glm::dvec3(h.position) - r.ref);
+    st.meanErr += e;
+    st.maxErr = std::max(st.maxErr, e);
+  }
+  if (st.valid) st.meanErr /= st.valid;
+  st.fetches /= std::max(1, st.total);
+  return st;
+}
+
+TEST(IntersectPlane, ExactOnAPlanarSurface) {
+  for (int conv : {SNELL_DEPTH_GL, SNELL_DEPTH_REVERSED, SNELL_DEPTH_INFINITE_GL}) {
+    const DepthScene sc = snell_test::slantedPlane(256, 256, conv);
+    const Texture2D normals = snellBuildNormalMips(sc.normals);
+    const Texture2D pyramid = snellBuildDepthPyramid(sc.depth, sc.surface());
+    const std::vector<TestRay> rays = planeRays(sc, 2000, 11u + unsigned(conv));
+    const double range = depthRange(sc);
+    for (Method m : {Method::Normal, Method::Depth})
+      for (int it : {0, 1, 3}) {
+        const Stats st = evaluate(sc, normals, pyramid, rays, m, it);
+        SCOPED_TRACE("convention " + std::to_string(conv) + (m == Method::Normal ? " normal" : " depth") +
+                     " iterations " + std::to_string(it));
+        EXPECT_EQ(st.valid, st.total);
+        EXPECT_LT(st.maxErr, 1e-4 * range) << "mean " << st.meanErr << " range " << range;
+      }
+  }
+}
+
+TEST(IntersectPlane, ErrorFallsWithIterationsOnTheSphere) {
+  const DepthScene sc = snell_test::sphereBack(256, 256);
+  const Texture2D normals = snellBuildNormalMips(sc.normals);
+  const Texture2D pyramid = snellBuildDepthPyramid(sc.depth, sc.surface());
+  const std::vector<TestRay> rays = sphereRays(sc, 1500, 5);
+  const double range = depthRange(sc);
+  for (Method m : {Method::Normal, Method::Depth}) {
+    double prev = 1e30;
+    for (int it = 0; it <= 3; ++it) {
+      const Stats st = evaluate(sc, normals, pyramid, rays, m, it);
+      std::printf("[plane] sphere 256^2 %s iterations %d: valid %d/%d mean error %.3g (%.3g of depth range) fetches %.2f\n",
+                  m == Method::Normal ? "normal" : "depth", it, st.valid, st.total, st.meanErr, st.meanErr / range,
+                  st.fetches);
+      EXPECT_GT(st.valid, st.total * 8 / 10);
+      if (it <= 2) {
+        EXPECT_LT(st.meanErr, prev * 0.5) << "iterations " << it;
+      }
+      prev = st.meanErr;
+    }
+    EXPECT_LT(prev, 2e-3 * range);
+  }
+}
+
+TEST(IntersectPlane, NormalMethodFetchCount) {
+  const DepthScene sc = snell_test::slantedPlane(64, 64);
+  const std::vector<TestRay> rays = planeRays(sc, 200, 3);
+  for (int it = -2; it <= 10; ++it)
+    for (const TestRay& r : rays) {
+      const SnellHit h = snellIntersectPlaneNormal(glm::vec3(r.o), glm::vec3(r.d), sc.depth, sc.normals, sc.surface(), 0.0f, it);
+      ASSERT_TRUE(h.valid);
+      const int n = std::min(std::max(it, 0), SNELL_PLANE_MAX_ITERATIONS);
+      EXPECT_EQ(h.fetches, 2 * (n + 1) + 1);
+    }
+}
+
+TEST(IntersectPlane, DepthMethodFetchCountWithinDocumentedBounds) {
+  const DepthScene sc = snell_test::sphereBack(128, 128);
+  const Texture2D pyramid = snellBuildDepthPyramid(sc.depth, sc.surface());
+  const std::vector<TestRay> rays = sphereRays(sc, 300, 9);
+  for (int it = 0; it <= 3; ++it)
+    for (const TestRay& r : rays) {
+      const SnellHit h = snellIntersectPlaneDepth(glm::vec3(r.o), glm::vec3(r.d), pyramid, sc.surface(),
+                                                  pyramid.levelCount() - 1, it);
+      EXPECT_LE(h.fetches, 6 * (it + 1) + 1);
+      if (h.valid) {
+        EXPECT_GE(h.fetches, 3 * (it + 1) + 1);
+      }
+    }
+  // One-level texture, ray along the pixel ray (span 0): exactly B, C, D + the final lookup per plane.
+  const DepthScene pl = snell_test::slantedPlane(64, 64);
+  const glm::vec3 o = glm::vec3(pl.pixelRay({0.5, 0.5}) * 2.0);
+  const SnellHit h = snellIntersectPlaneDepth(o, o, pl.depth, pl.surface(), 0, 0);
+  ASSERT_TRUE(h.valid);
+  EXPECT_EQ(h.fetches, 3 + 1);
+}
+
+TEST(IntersectPlane, WorksOnTheOpaqueSceneBuffers) {
+  // The same functions against an opaque scene buffer (GL_LESS, empty = far).
+  const DepthScene sc = snell_test::stepEdge(256, 256, SNELL_DEPTH_ZERO_ONE);
+  const Texture2D pyramid = snellBuildDepthPyramid(sc.depth, sc.surface());
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int good = 0, total = 0;
+  for (int i = 0; i < 500; ++i) {
+    // Rays from the far plane's side that stay away from the edge: a plane each.
+    const glm::dvec2 uv(0.75 + 0.2 * u(rng), 0.1 + 0.8 * u(rng));
+    const glm::dvec3 o = sc.pixelRay(uv) * 5.0;
+    const glm::dvec3 d = glm::normalize(glm::dvec3(0.05 * (u(rng) - 0.5), 0.2 * (u(rng) - 0.5), -1.0));
+    const auto ref = sc.referenceHit(o, d);
+    if (!ref || sc.project(*ref).x < 0.72) continue;
+    ++total;
+    const SnellHit hn = snellIntersectPlaneNormal(glm::vec3(o), glm::vec3(d), sc.depth, sc.normals, sc.surface(), 0.0f, 1);
+    const SnellHit hd = snellIntersectPlaneDepth(glm::vec3(o), glm::vec3(d), pyramid, sc.surface(), 0, 1);
+    if (hn.valid && hd.valid && glm::length(glm::dvec3(hn.position) - *ref) < 1e-3 &&
+        glm::length(glm::dvec3(hd.position) - *ref) < 1e-3)
+      ++good;
+  }
+  EXPECT_GT(total, 100);
+  EXPECT_EQ(good, total);
+}
+
+void expectMiss(const SnellHit& h) {
+  EXPECT_FALSE(h.valid);
+  EXPECT_EQ(h.uv, glm::vec2(0.0f));
+  EXPECT_EQ(h.position, glm::vec3(0.0f));
+  EXPECT_GE(h.fetches, 0);
+}
+
+TEST(IntersectPlane, BadInputsAreInvalidAndFinite) {
+  const DepthScene sc = snell_test::sphereBack(64, 64);
+  const Texture2D pyramid = snellBuildDepthPyramid(sc.depth, sc.surface());
+  const SnellDepthSurface s = sc.surface();
+  const glm::vec3 o(0.3f, -0.2f, -3.9f), d(0.0f, 0.0f, -1.0f);
+  auto both = [&](glm::vec3 oo, glm::vec3 dd, const Texture2D& depth, const Texture2D& pyr, int expectFetches) {
+    const SnellHit a = snellIntersectPlaneNormal(oo, dd, depth, sc.normals, s, 0.0f, 2);
+    const SnellHit b = snellIntersectPlaneDepth(oo, dd, pyr, s, pyr.levelCount() - 1, 2);
+    expectMiss(a);
+    expectMiss(b);
+    if (expectFetches >= 0) {
+      EXPECT_EQ(a.fetches, expectFetches);
+      EXPECT_EQ(b.fetches, expectFetches);
+    }
+  };
+  // Sanity: the good ray hits.
+  ASSERT_TRUE(snellIntersectPlaneNormal(o, d, sc.depth, sc.normals, s, 0.0f, 2).valid);
+  ASSERT_TRUE(snellIntersectPlaneDepth(o, d, pyramid, s, pyramid.levelCount() - 1, 2).valid);
+  both(glm::vec3(kNaN, 0.0f, -3.0f), d, sc.depth, pyramid, 0);
+  both(o, glm::vec3(0.0f, kInf, -1.0f), sc.depth, pyramid, 0);
+  both(o, glm::vec3(0.0f), sc.depth, pyramid, 0);
+  both(o, glm::vec3(0.0f, 0.0f, kNaN), sc.depth, pyramid, 0);
+  both(glm::vec3(0.0f, 0.0f, 1.0f), d, sc.depth, pyramid, 0);   // behind the camera
+  both(glm::vec3(0.0f, 0.0f, 0.0f), d, sc.depth, pyramid, 0);   // at the eye
+  both(glm::vec3(30.0f, 0.0f, -3.0f), d, sc.depth, pyramid, 1); // off screen: B lookup off screen
+  // Nothing behind the origin (outside the silhouette).
+  both(glm::vec3(-2.5f, 1.8f, -4.0f), d, sc.depth, pyramid, 1);
+  // Leaving the screen: steep sideways ray, the plane hit projects off screen.
+  {
+    const SnellHit a = snellIntersectPlaneNormal(glm::vec3(2.0f, -0.2f, -5.5f), glm::vec3(1.0f, 0.0f, -0.02f), sc.depth,
+                                                 sc.normals, s, 0.0f, 0);
+    expectMiss(a);
+  }
+  // Empty buffers.
+  DepthScene empty = sc;
+  for (glm::vec4& t : empty.depth.level(0).texels) t.x = sc.emptyDepth;
+  const Texture2D emptyPyr = snellBuildDepthPyramid(empty.depth, s);
+  EXPECT_EQ(emptyPyr.level(emptyPyr.levelCount() - 1).at(0, 0), glm::vec4(sc.emptyDepth, 0.0f, 0.0f, 0.0f));
+  both(o, d, empty.depth, emptyPyr, 1);
+  // NaN depth texels.
+  for (glm::vec4& t : empty.depth.level(0).texels) t.x = kNaN;
+  both(o, d, empty.depth, snellBuildDepthPyramid(empty.depth, s), 1);
+}
+
+TEST(IntersectPlane, RaysTowardsTheCameraUseThePlaneAhead) {
+  // A plane facing the camera, origin in front of it, ray pointing partly towards
+  // the camera but still reaching the (tilted) plane: valid, on the ray, exact.
+  const DepthScene sc = snell_test::slantedPlane(128, 128);
+  const glm::dvec3 o = sc.pixelRay({0.5, 0.5}) * 5.5;  // 0.5 in front of the plane
+  const glm::dvec3 d = glm::normalize(glm::dvec3(-1.0, -1.0, 0.05));  // n = (0.35, 0.45, 1): heads into the plane
+  const auto ref = sc.referenceHit(o, d);
+  ASSERT_TRUE(ref.has_value());
+  const SnellHit h = snellIntersectPlaneNormal(glm::vec3(o), glm::vec3(d), sc.depth, sc.normals, sc.surface(), 0.0f, 1);
+  ASSERT_TRUE(h.valid);
+  EXPECT_LT(glm::length(glm::dvec3(h.position) - *ref), 1e-4);
+}
+
+TEST(IntersectPlane, NormalMipLevelsAreUsable) {
+  // Blurrier normal levels: still valid, and on a plane still exact (the plane's
+  // normal is constant, so every level holds it).
+  const DepthScene sc = snell_test::slantedPlane(128, 128);
+  const Texture2D normals = snellBuildNormalMips(sc.normals);
+  const std::vector<TestRay> rays = planeRays(sc, 300, 8);
+  const Texture2D none;
+  for (float lod : {0.0f, 1.5f, 3.0f}) {
+    const Stats st = evaluate(sc, normals, none, rays, Method::Normal, 1, lod);
+    EXPECT_EQ(st.valid, st.total);
+    EXPECT_LT(st.maxErr, 1e-4 * depthRange(sc)) << lod;
+  }
+}
+
+}  // namespace

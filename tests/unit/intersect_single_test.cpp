@@ -1,0 +1,157 @@
+// glsl/snell/intersect/single_sample.glsl, surface_point.glsl, plane_refine.glsl
+// and depth_surface.glsl against the analytic scenes (tests/support/depth_scenes.hpp).
+#include <gtest/gtest.h>
+
+#include <snell/intersect.hpp>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "support/depth_scenes.hpp"
+
+namespace {
+
+using namespace snell;
+using snell_test::DepthScene;
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+TEST(IntersectSingle, SurfacePointIsTheAnalyticPointAtTheTexelCentre) {
+  for (int conv = 0; conv < SNELL_DEPTH_CONVENTION_COUNT; ++conv) {
+    const DepthScene sc = snell_test::sphereBack(97, 61, conv);
+    std::mt19937 rng(2);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    int valid = 0;
+    for (int i = 0; i < 2000; ++i) {
+      const glm::dvec2 uv(u(rng), u(rng));
+      const SnellSurfacePoint p = snellSurfacePoint(sc.depth, glm::vec2(uv), sc.surface());
+      const glm::dvec2 centre((double(std::floor(float(uv.x) * 97.0f)) + 0.5) / 97.0,
+                               (double(std::floor(float(uv.y) * 61.0f)) + 0.5) / 61.0);
+      const snell_test::AnalyticSample a = sc.sampleAt(centre);
+      ASSERT_EQ(p.valid, a.valid) << conv << " " << uv.x << " " << uv.y;
+      if (!a.valid) continue;
+      ++valid;
+      const glm::dvec3 truth = sc.pixelRay(centre) * a.s;
+      EXPECT_LT(glm::length(glm::dvec3(p.position) - truth), 2e-5 * a.s) << conv;
+      EXPECT_NEAR(p.uv.x, centre.x, 1e-7);
+      EXPECT_NEAR(p.uv.y, centre.y, 1e-7);
+    }
+    EXPECT_GT(valid, 500);
+  }
+}
+
+TEST(IntersectSingle, UvZToViewInvertsTheProjection) {
+  const glm::mat4 m = snellPerspective(1.1f, 1.4f, 0.2f, 90.0f);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (int i = 0; i < 1000; ++i) {
+    const glm::vec2 uv(u(rng) * 1.4f - 0.2f, u(rng) * 1.4f - 0.2f);
+    const float z = -0.3f - 50.0f * u(rng);
+    const SnellViewPoint p = snellUvZToView(m, uv, z);
+    ASSERT_TRUE(p.valid);
+    EXPECT_EQ(p.position.z, z);
+    const SnellScreenPoint sp = snellViewToUv(m, p.position);
+    EXPECT_NEAR(sp.uv.x, uv.x, 2e-6f);
+    EXPECT_NEAR(sp.uv.y, uv.y, 2e-6f);
+  }
+  EXPECT_FALSE(snellUvZToView(m, glm::vec2(0.5f), 0.0f).valid);
+  EXPECT_FALSE(snellUvZToView(m, glm::vec2(0.5f), 1.0f).valid);
+  EXPECT_FALSE(snellUvZToView(m, glm::vec2(kNaN, 0.5f), -1.0f).valid);
+  EXPECT_FALSE(snellUvZToView(glm::mat4(0.0f), glm::vec2(0.5f), -1.0f).valid);
+}
+
+TEST(IntersectSingle, ExactWhenTheRayPointsAtTheSurfaceBehindTheOrigin) {
+  const DepthScene sc = snell_test::sphereBack(128, 128);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.25, 0.75), f(0.2, 0.9);
+  int n = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const glm::dvec2 px(std::floor(u(rng) * 128.0) + 0.5, std::floor(u(rng) * 128.0) + 0.5);
+    const glm::dvec2 uv = px / 128.0;
+    const snell_test::AnalyticSample a = sc.sampleAt(uv);
+    if (!a.valid) continue;
+    const glm::dvec3 b = sc.pixelRay(uv) * a.s, o = b * f(rng);
+    // Any direction from o: the hit is d = |B - o| along it; towards B it is B.
+    const SnellHit h = snellIntersectSingleSample(glm::vec3(o), glm::vec3(b - o) * 3.0f, sc.depth, sc.surface());
+    ASSERT_TRUE(h.valid);
+    EXPECT_EQ(h.fetches, 1);
+    EXPECT_LT(glm::length(glm::dvec3(h.position) - b), 1e-4 * a.s);
+    ++n;
+  }
+  EXPECT_GT(n, 300);
+}
+
+TEST(IntersectSingle, DistanceAlongTheRayEqualsTheDistanceToB) {
+  const DepthScene sc = snell_test::slantedPlane(64, 64);
+  const glm::vec3 o = glm::vec3(sc.pixelRay({0.5, 0.5}) * 5.0);
+  const glm::vec3 d = glm::normalize(glm::vec3(0.2f, -0.1f, -1.0f));
+  const SnellHit h = snellIntersectSingleSample(o, d, sc.depth, sc.surface());
+  ASSERT_TRUE(h.valid);
+  const SnellSurfacePoint b = snellSurfacePoint(sc.depth, snellViewToUv(sc.clipFromView, o).uv, sc.surface());
+  EXPECT_NEAR(glm::length(h.position - o), glm::length(b.position - o), 1e-5f);
+  // Towards the camera: accepted, the point d towards the camera.
+  const SnellHit t = snellIntersectSingleSample(o, -d, sc.depth, sc.surface());
+  EXPECT_TRUE(t.valid);
+  EXPECT_GT(t.position.z, o.z);
+}
+
+TEST(IntersectSingle, BadInputs) {
+  const DepthScene sc = snell_test::sphereBack(64, 64);
+  const SnellDepthSurface s = sc.surface();
+  const glm::vec3 o(0.3f, -0.2f, -3.9f), d(0.1f, 0.0f, -1.0f);
+  ASSERT_TRUE(snellIntersectSingleSample(o, d, sc.depth, s).valid);
+  auto miss = [](const SnellHit& h, int fetches) {
+    EXPECT_FALSE(h.valid);
+    EXPECT_EQ(h.position, glm::vec3(0.0f));
+    EXPECT_EQ(h.uv, glm::vec2(0.0f));
+    EXPECT_EQ(h.fetches, fetches);
+  };
+  miss(snellIntersectSingleSample(glm::vec3(kNaN), d, sc.depth, s), 0);
+  miss(snellIntersectSingleSample(o, glm::vec3(0.0f), sc.depth, s), 0);
+  miss(snellIntersectSingleSample(o, glm::vec3(1e30f, 0.0f, -1.0f), sc.depth, s), 0);
+  miss(snellIntersectSingleSample(glm::vec3(0.0f, 0.0f, 2.0f), d, sc.depth, s), 0);
+  miss(snellIntersectSingleSample(glm::vec3(9.0f, 0.0f, -3.0f), d, sc.depth, s), 1);   // origin off screen
+  miss(snellIntersectSingleSample(glm::vec3(-2.5f, 1.8f, -4.0f), d, sc.depth, s), 1);  // nothing behind
+  miss(snellIntersectSingleSample(o, glm::vec3(1.0f, 0.0f, -0.01f), sc.depth, s), 1);  // leaves the screen
+  DepthScene empty = sc;
+  for (glm::vec4& t : empty.depth.level(0).texels) t.x = sc.emptyDepth;
+  miss(snellIntersectSingleSample(o, d, empty.depth, s), 1);
+}
+
+TEST(IntersectSingle, HitOnSurfaceAndSampleSurface) {
+  const DepthScene sc = snell_test::silhouette(128, 96, SNELL_DEPTH_REVERSED);
+  const SnellDepthSurface s = sc.surface();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-0.05, 1.05);
+  for (int i = 0; i < 3000; ++i) {
+    const glm::dvec2 uv(u(rng), u(rng));
+    const SnellSurfaceSample x = snellSampleSurface(sc.depth, glm::vec2(uv), s);
+    const bool on = uv.x >= 0.0 && uv.x <= 1.0 && uv.y >= 0.0 && uv.y <= 1.0;
+    if (!on) {
+      EXPECT_FALSE(x.valid);
+      continue;
+    }
+    const glm::dvec2 centre((double(std::min(std::floor(float(uv.x) * 128.0f), 127.0f)) + 0.5) / 128.0,
+                            (double(std::min(std::floor(float(uv.y) * 96.0f), 95.0f)) + 0.5) / 96.0);
+    const snell_test::AnalyticSample a = sc.sampleAt(centre);
+    ASSERT_EQ(x.valid, a.valid);
+    if (a.valid) {
+      EXPECT_NEAR(x.viewZ, -a.s, 2e-5 * a.s);
+    }
+    // A point on the pixel ray: hit exactly when the surface is there.
+    const glm::vec3 p = glm::vec3(sc.pixelRay(centre) * 3.0);
+    const SnellHit h = snellHitOnSurface(p, sc.depth, s, 4);
+    EXPECT_EQ(h.valid, a.valid);
+    EXPECT_EQ(h.fetches, 5);
+    if (h.valid) {
+      EXPECT_EQ(h.position, p);
+    }
+  }
+  EXPECT_EQ(snellHitOnSurface(glm::vec3(0.0f, 0.0f, 1.0f), sc.depth, s, 2).fetches, 2);
+  const SnellHit m = snellHitMiss(7);
+  EXPECT_FALSE(m.valid);
+  EXPECT_EQ(m.fetches, 7);
+}
+
+}  // namespace
