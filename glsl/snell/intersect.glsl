@@ -9,4 +9,10 @@
 #include "intersect/plane_normal.glsl"
 #include "intersect/plane_depth.glsl"
 #include "intersect/depth_pyramid.glsl"
+#include "intersect/search_segment.glsl"
+#include "intersect/conservative_binary_search.glsl"
+#include "intersect/binary_search.glsl"
+#include "intersect/linear_binary_search.glsl"
+#include "intersect/linear_march.glsl"
+#include "intersect/dda_march.glsl"
 #endif

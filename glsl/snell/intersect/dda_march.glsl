@@ -1,0 +1,169 @@
+/*
+description: perspective-correct march in pixel space (a DDA): the view-space
+  ray segment is projected once, then walked in equal pixel steps along its
+  major screen axis, every pixel on the way (stride 1) or every stride-th one,
+  with the ray's depth recovered per step by homogeneous (1/w) interpolation,
+  so no matrix product per step and no pixel skipped or visited twice.
+use: SnellHit h = snellDdaMarch(origin, dir, depthTex, surface);
+     SnellHit h = snellDdaMarch(origin, dir, depthTex, surface, maxDistance, thickness, stride, steps);
+  origin, dir        view-space ray (dir need not be normalized)
+  depthTex, surface  the depth buffer and how to read it (depth_surface.glsl);
+                     the pixel grid is that of level surface.lod
+  maxDistance        view-space length of the marched segment
+  thickness          assumed view-space thickness of the surface: a step hits
+                     when the ray's depth interval over the step overlaps
+                     [viewZ - thickness, viewZ]
+  stride             pixels per step along the major axis (>= 1)
+  steps              maximum number of steps (one fetch each)
+options:
+  SNELL_DDA_STEPS         default steps (256)
+  SNELL_DDA_MAX_STEPS     compile-time bound (1024); steps is clamped to [1, max]
+  SNELL_DDA_STRIDE        default stride (1.0f)
+  SNELL_DDA_THICKNESS     default thickness (SNELL_FLT_MAX: a solid height
+                          field, as the other strategies assume; use a finite
+                          value for opaque scenes with objects in front of
+                          others, so rays can pass behind them)
+  SNELL_DDA_MAX_DISTANCE  default maxDistance (10.0f view-space units)
+contract:
+  - segment: origin to end = origin + (maxDistance/|dir|) dir, cut at the near
+    plane z = -surface.zNear when dir.z > 0. Both ends are projected with
+    surface.clipFromView: uv0, uv1 and k = 1/w; Q = p/w and k are linear in
+    screen space, so the view z at screen parameter s in [0,1] is
+    (Q0.z + s (Q1.z - Q0.z)) / (k0 + s (k1 - k0)) exactly (perspective-correct).
+  - step i (i = 0, 1, ...) samples uv0 + s_i (uv1 - uv0), s_i = min(i ds, 1),
+    ds = stride / (length of the segment along its major axis in pixels), or
+    ds = 1 when the whole segment spans at most stride pixels (a ray along the
+    line of sight: two steps, both halves of its depth range at one pixel); it
+    owns s in [(i - 1/2) ds, (i + 1/2) ds] clipped to [0,1], whose ends give the
+    ray's depth interval [zFar, zNear] for that step. The walk ends after the
+    step owning s = 1.
+  - a step hits when its texel is valid and zNear >= viewZ - thickness and
+    zFar <= viewZ. Empty texels do not stop the march.
+  - hit: uv = the uv that was fetched (its texel is the hit texel), position =
+    the point of the ray within the step whose z is clamp(viewZ, zFar, zNear)
+    (the crossing, when it lies in the step), on the ray, finite.
+  - the first step whose uv is off screen ends the walk: valid = false.
+  - valid = false with snellHitMiss numbers (finite) and the fetches spent when
+    no step hits within steps; with 0 fetches when: an input is NaN or Inf
+    (a NaN thickness uses the default, a NaN stride 1), |dir| is 0 or
+    denormal-small, maxDistance <= 0, the origin is in front of the near plane
+    (z > -surface.zNear), an end does not project (clip w <= 0), or the level
+    has no texels. thickness < 0 counts as 0, stride < 1 as 1.
+source: M. McGuire, M. Mara, "Efficient GPU Screen-Space Ray Tracing", JCGT
+  3(4), 2014 (pixel-space march with homogeneous interpolation of 1/w and a
+  depth interval per step); our own formulation (per-step parameter instead of
+  accumulated increments, exact crossing inside the hit step).
+*/
+#ifndef SNELL_INTERSECT_DDA_MARCH_GLSL
+#define SNELL_INTERSECT_DDA_MARCH_GLSL
+#include "../prelude.glsl"
+#include "../camera/conventions.glsl"
+#include "../camera/view_to_clip.glsl"
+#include "hit.glsl"
+#include "depth_surface.glsl"
+
+#ifndef SNELL_DDA_STEPS
+#  define SNELL_DDA_STEPS 256
+#endif
+#ifndef SNELL_DDA_MAX_STEPS
+#  define SNELL_DDA_MAX_STEPS 1024
+#endif
+#ifndef SNELL_DDA_STRIDE
+#  define SNELL_DDA_STRIDE 1.0f
+#endif
+#ifndef SNELL_DDA_THICKNESS
+#  define SNELL_DDA_THICKNESS SNELL_FLT_MAX
+#endif
+#ifndef SNELL_DDA_MAX_DISTANCE
+#  define SNELL_DDA_MAX_DISTANCE 10.0f
+#endif
+
+/* McGuire & Mara 2014: pixel-space march, z from homogeneous interpolation of 1/w */
+SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                float maxDistance, float thickness, float stride, int steps) {
+  if (!SNELL_CAMERA_FINITE(origin.x) || !SNELL_CAMERA_FINITE(origin.y) || !SNELL_CAMERA_FINITE(origin.z) ||
+      !SNELL_CAMERA_FINITE(dir.x) || !SNELL_CAMERA_FINITE(dir.y) || !SNELL_CAMERA_FINITE(dir.z) ||
+      !SNELL_CAMERA_FINITE(maxDistance) || !(maxDistance > 0.0f) || !SNELL_CAMERA_FINITE(surface.zNear)) {
+    return snellHitMiss(0);
+  }
+  float thick = isnan(thickness) ? SNELL_DDA_THICKNESS : clamp(thickness, 0.0f, SNELL_FLT_MAX);
+  float px = isnan(stride) ? 1.0f : clamp(stride, 1.0f, SNELL_FLT_MAX);
+  float len = length(dir);
+  if (!SNELL_CAMERA_FINITE(len) || !(len >= SNELL_CAMERA_FLT_MIN) || !(origin.z <= -surface.zNear)) {
+    return snellHitMiss(0);
+  }
+  float tMax = maxDistance / len;
+  if (dir.z > 0.0f) {
+    float tNear = (-surface.zNear - origin.z) / dir.z;
+    tMax = SNELL_CAMERA_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+  }
+  if (!SNELL_CAMERA_FINITE(tMax) || !(tMax > 0.0f)) {
+    return snellHitMiss(0);
+  }
+  vec3 end = origin + tMax * dir;
+  vec4 h0 = snellViewToClip(surface.clipFromView, origin);
+  vec4 h1 = snellViewToClip(surface.clipFromView, end);
+  ivec2 size = SNELL_TEXTURE_SIZE(depthTex, surface.lod);
+  if (!SNELL_CAMERA_FINITE(end.x) || !SNELL_CAMERA_FINITE(end.y) || !SNELL_CAMERA_FINITE(end.z) ||
+      !SNELL_CAMERA_FINITE(h0.x) || !SNELL_CAMERA_FINITE(h0.y) || !SNELL_CAMERA_FINITE(h0.w) ||
+      !SNELL_CAMERA_FINITE(h1.x) || !SNELL_CAMERA_FINITE(h1.y) || !SNELL_CAMERA_FINITE(h1.w) ||
+      !(h0.w >= SNELL_CAMERA_FLT_MIN) || !(h1.w >= SNELL_CAMERA_FLT_MIN) || size.x <= 0 || size.y <= 0) {
+    return snellHitMiss(0);
+  }
+  // Homogeneous end points: k = 1/w and Q = p k are linear in screen space.
+  float k0 = 1.0f / h0.w;
+  float k1 = 1.0f / h1.w;
+  vec3 q0 = origin * k0;
+  vec3 dq = end * k1 - q0;
+  float dk = k1 - k0;
+  vec2 uv0 = vec2(h0.x * k0, h0.y * k0) * 0.5f + 0.5f;
+  vec2 duv = vec2(h1.x * k1, h1.y * k1) * 0.5f + 0.5f - uv0;
+  float major = max(abs(duv.x * float(size.x)), abs(duv.y * float(size.y)));
+  if (!SNELL_CAMERA_FINITE(major) || !SNELL_CAMERA_FINITE(dq.z) || !SNELL_CAMERA_FINITE(dk)) {
+    return snellHitMiss(0);
+  }
+  float ds = major > px ? px / major : 1.0f;
+  int n = clamp(steps, 1, SNELL_DDA_MAX_STEPS);
+  int fetches = 0;
+  float sA = 0.0f;
+  float zA = origin.z;
+  for (int i = 0; i < SNELL_DDA_MAX_STEPS; ++i) {
+    if (i >= n || sA >= 1.0f) {
+      break;
+    }
+    float sC = min(float(i) * ds, 1.0f);
+    float sB = min((float(i) + 0.5f) * ds, 1.0f);
+    float zB = (q0.z + sB * dq.z) / (k0 + sB * dk);
+    vec2 uv = uv0 + sC * duv;
+    if (!(uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) {
+      return snellHitMiss(fetches);
+    }
+    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
+    fetches = fetches + 1;
+    float zNearRay = max(zA, zB);
+    float zFarRay = min(zA, zB);
+    if (x.valid && zNearRay >= x.viewZ - thick && zFarRay <= x.viewZ) {
+      // The point of the ray inside this step at depth clamp(viewZ, zFar, zNear).
+      float zHit = clamp(x.viewZ, zFarRay, zNearRay);
+      vec3 pA = (q0 + sA * dq) / (k0 + sA * dk);
+      vec3 pB = (q0 + sB * dq) / (k0 + sB * dk);
+      float f = pB.z != pA.z ? clamp((zHit - pA.z) / (pB.z - pA.z), 0.0f, 1.0f) : 0.5f;
+      SnellHit h;
+      h.uv = uv;
+      h.position = pA + f * (pB - pA);
+      h.valid = true;
+      h.fetches = fetches;
+      return h;
+    }
+    sA = sB;
+    zA = zB;
+  }
+  return snellHitMiss(fetches);
+}
+
+SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface) {
+  return snellDdaMarch(origin, dir, depthTex, surface, SNELL_DDA_MAX_DISTANCE, SNELL_DDA_THICKNESS, SNELL_DDA_STRIDE,
+                       SNELL_DDA_STEPS);
+}
+
+#endif

@@ -1,0 +1,312 @@
+// glsl/snell/intersect/{search_segment, conservative_binary_search, binary_search,
+// linear_binary_search}.glsl against independent geometry: the analytic depth
+// scenes (tests/support/depth_scenes.hpp), texels read back by plain index math,
+// and a brute-force double-precision walk of the S-E segment.
+#include <gtest/gtest.h>
+
+#include <snell/intersect.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+
+#include "support/search_rays.hpp"
+#include "support/depth_scenes.hpp"
+
+namespace {
+
+using namespace snell;
+using snell_search_test::depthRange;
+using snell_search_test::finite;
+using snell_search_test::Ray;
+using snell_search_test::texelValid;
+using snell_search_test::texelViewZ;
+using snell_test::DepthScene;
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+const DepthScene& silhouetteScene() {
+  static const DepthScene sc = snell_test::silhouette(256, 256);
+  return sc;
+}
+const DepthScene& sphereScene() {
+  static const DepthScene sc = snell_test::sphereBack(256, 256);
+  return sc;
+}
+
+// beta of a point on S-E (eq. 5), from its z.
+double betaOf(const SnellTexRay& r, double z) { return (z - double(r.s.z)) / (double(r.e.z) - double(r.s.z)); }
+
+TEST(IntersectSearch, SegmentStartsAtZNearestOrTheOriginAndRejectsBadInput) {
+  const DepthScene& sc = sphereScene();
+  const mat4 m = sc.clipFromView;
+  SnellTexRay r = snellSearchSegment(vec3(0.1f, 0.0f, -4.0f), vec3(0.0f, 0.1f, -1.0f), -5.0f, -8.0f, m);
+  ASSERT_TRUE(r.valid);
+  EXPECT_FLOAT_EQ(r.s.z, -5.0f);
+  EXPECT_FLOAT_EQ(r.s.y, 0.1f);
+  EXPECT_FLOAT_EQ(r.e.z, -8.0f);
+  EXPECT_NEAR(r.e.y, 0.4f, 1e-6f);
+  // Origin deeper than zNearest: the segment starts at the origin.
+  r = snellSearchSegment(vec3(0.1f, 0.0f, -6.0f), vec3(0.0f, 0.1f, -1.0f), -5.0f, -8.0f, m);
+  ASSERT_TRUE(r.valid);
+  EXPECT_EQ(r.s, vec3(0.1f, 0.0f, -6.0f));
+  const vec3 o(0.0f, 0.0f, -4.0f), d(0.0f, 0.0f, -1.0f);
+  EXPECT_FALSE(snellSearchSegment(o, vec3(0.0f, 0.1f, 1.0f), -5.0f, -8.0f, m).valid);   // towards the camera
+  EXPECT_FALSE(snellSearchSegment(o, vec3(1.0f, 0.0f, 0.0f), -5.0f, -8.0f, m).valid);   // parallel
+  EXPECT_FALSE(snellSearchSegment(o, d, -5.0f, -5.0f, m).valid);                        // Zmin == Zmax
+  EXPECT_FALSE(snellSearchSegment(o, d, -8.0f, -5.0f, m).valid);                        // swapped
+  EXPECT_FALSE(snellSearchSegment(vec3(0.0f, 0.0f, -9.0f), d, -5.0f, -8.0f, m).valid);  // beyond zFarthest
+  EXPECT_FALSE(snellSearchSegment(o, d, -5.0f, 1.0f, m).valid);                         // far plane behind the eye
+  // A zNearest plane at or behind the eye (a bounding box around the camera): from the origin.
+  r = snellSearchSegment(o, d, 1.0f, -8.0f, m);
+  ASSERT_TRUE(r.valid);
+  EXPECT_EQ(r.s, o);
+  EXPECT_FALSE(snellSearchSegment(vec3(kNaN, 0.0f, -4.0f), d, -5.0f, -8.0f, m).valid);
+  EXPECT_FALSE(snellSearchSegment(o, vec3(0.0f, kInf, -1.0f), -5.0f, -8.0f, m).valid);
+  EXPECT_FALSE(snellSearchSegment(o, d, kNaN, -8.0f, m).valid);
+}
+
+// The point of CBS (Oliveira & Brauwers 2007, sec. 3.3): it never returns a
+// point whose texel is empty. 120,000 random rays against an annulus seen at an
+// angle (empty texels around and inside), checked by reading the texel the
+// returned uv maps to with plain index math.
+TEST(IntersectSearch, ConservativeBinarySearchNeverReturnsAnInvalidTexel) {
+  const DepthScene& sc = silhouetteScene();
+  const SnellDepthSurface surf = sc.surface();
+  const auto range = depthRange(sc);
+  const std::vector<Ray> rays = snell_search_test::sceneRays(sc, 120000, 7);
+  int valid = 0, bad = 0, nonFinite = 0;
+  for (std::size_t k = 0; k < rays.size(); ++k) {
+    const int steps = 1 + static_cast<int>(k % 8);
+    const SnellHit h = snellConservativeBinarySearch(rays[k].origin, rays[k].dir, sc.depth, surf, range.first,
+                                                     range.second, steps);
+    if (!finite(h)) ++nonFinite;
+    if (!h.valid) continue;
+    ++valid;
+    if (!texelValid(sc, h.uv)) ++bad;
+  }
+  std::printf("[cbs silhouette] rays=%zu valid=%d invalid-texel=%d\n", rays.size(), valid, bad);
+  EXPECT_EQ(bad, 0);
+  EXPECT_EQ(nonFinite, 0);
+  EXPECT_GT(valid, 20000);  // the test exercises many real hits
+}
+
+// The failure the paper describes (Figure 6): a plain binary search with a
+// finite number of steps ends on an empty texel for some rays; so does the
+// relief-mapping linear+binary search. Counted by reading the texel ourselves.
+TEST(IntersectSearch, PlainBinarySearchLandsOnInvalidTexelsWhereCbsDoesNot) {
+  const DepthScene& sc = silhouetteScene();
+  const SnellDepthSurface surf = sc.surface();
+  const auto range = depthRange(sc);
+  const std::vector<Ray> rays = snell_search_test::sceneRays(sc, 100000, 8);
+  int binaryBad = 0, linearBad = 0, cbsBad = 0, flagAgrees = 0, binaryRan = 0, cbsValid = 0, binaryBadWhereCbsOk = 0;
+  for (const Ray& ray : rays) {
+    const SnellHit b = snellBinarySearch(ray.origin, ray.dir, sc.depth, surf, range.first, range.second, 5);
+    const SnellHit l = snellLinearBinarySearch(ray.origin, ray.dir, sc.depth, surf, range.first, range.second, 4, 3);
+    const SnellHit c =
+        snellConservativeBinarySearch(ray.origin, ray.dir, sc.depth, surf, range.first, range.second, 5);
+    if (b.fetches == 0) continue;  // invalid segment
+    ++binaryRan;
+    const bool bValid = texelValid(sc, b.uv);
+    if (!bValid) ++binaryBad;
+    if (bValid == b.valid) ++flagAgrees;
+    if (l.position.z != 0.0f && !texelValid(sc, l.uv)) ++linearBad;  // z = 0: no crossing found
+    if (c.valid && !texelValid(sc, c.uv)) ++cbsBad;
+    if (c.valid) {
+      ++cbsValid;
+      if (!bValid) ++binaryBadWhereCbsOk;
+    }
+  }
+  std::printf(
+      "[binary silhouette] rays=%d binary-invalid=%d (%.2f%%) linear+binary-invalid=%d cbs-invalid=%d; of the %d rays "
+      "CBS hits, binary ends on an empty texel for %d (%.2f%%)\n",
+      binaryRan, binaryBad, 100.0 * binaryBad / binaryRan, linearBad, cbsBad, cbsValid, binaryBadWhereCbsOk,
+      100.0 * binaryBadWhereCbsOk / std::max(cbsValid, 1));
+  EXPECT_GT(binaryBad, 100);
+  EXPECT_GT(binaryBadWhereCbsOk, 0);
+  EXPECT_GT(linearBad, 0);
+  EXPECT_EQ(cbsBad, 0);
+  EXPECT_EQ(flagAgrees, binaryRan);  // binary search's valid flag tells the truth
+}
+
+// Brute force, in double, along S-E: beta* = the first beta whose point is not
+// strictly in front of the stored surface (empty texels count as not in front,
+// as in Algorithm 2); returns NaN unless the predicate changes exactly once on
+// the grid (the case the error bound is about).
+double bruteForceBeta(const DepthScene& sc, const SnellTexRay& r, int samples) {
+  const glm::dvec3 s(r.s), e(r.e);
+  auto inFront = [&](double beta) {
+    const glm::dvec3 p = s + beta * (e - s);
+    const glm::dvec2 uv = sc.project(p);
+    if (!(uv.x >= 0.0 && uv.x <= 1.0 && uv.y >= 0.0 && uv.y <= 1.0)) return false;
+    const int i = std::min(static_cast<int>(std::floor(uv.x * sc.width)), sc.width - 1);
+    const int j = std::min(static_cast<int>(std::floor(uv.y * sc.height)), sc.height - 1);
+    const double z = texelViewZ(sc, i, j);
+    return !std::isnan(z) && p.z > z;
+  };
+  if (!inFront(0.0)) return std::numeric_limits<double>::quiet_NaN();
+  double first = std::numeric_limits<double>::quiet_NaN();
+  for (int k = 1; k <= samples; ++k) {
+    const double beta = double(k) / samples;
+    const bool f = inFront(beta);
+    if (std::isnan(first)) {
+      if (!f) first = beta;
+    } else if (f) {
+      return std::numeric_limits<double>::quiet_NaN();  // re-enters: more than one crossing
+    }
+  }
+  return first;
+}
+
+// Oliveira & Brauwers 2007, sec. 3.3: after c CBS steps the error in beta is
+// 0.5^c - 0.5^k <= 0.5^c when the true hit needs k > c steps; and the result
+// never lies past the hit. True beta from a brute-force walk of S-E (20,000
+// samples, so the grid adds 5e-5) on refracted rays through the sphere.
+TEST(IntersectSearch, ConservativeBinarySearchBetaErrorWithinHalfToTheC) {
+  const DepthScene& sc = sphereScene();
+  const SnellDepthSurface surf = sc.surface();
+  const auto range = depthRange(sc);
+  const std::vector<Ray> rays = snell_search_test::sphereRefractedRays(sc, 3000, 9);
+  const int kSamples = 20000;
+  const double tol = 2.0 / kSamples + 1e-5;
+  struct Item {
+    Ray ray;
+    SnellTexRay r;
+    double truth;
+  };
+  std::vector<Item> items;
+  for (const Ray& ray : rays) {
+    const SnellTexRay r = snellSearchSegment(ray.origin, ray.dir, range.first, range.second, sc.clipFromView);
+    if (!r.valid) continue;
+    const double truth = bruteForceBeta(sc, r, kSamples);
+    if (!std::isnan(truth)) items.push_back({ray, r, truth});
+  }
+  for (int c = 1; c <= 12; ++c) {
+    int checked = 0, over = 0, past = 0, aboveHalf = 0;
+    double worst = 0.0;
+    for (const Item& it : items) {
+      if (it.truth <= std::ldexp(1.0, -c)) continue;  // the true hit needs more than c steps
+      const SnellHit h = snellConservativeBinarySearch(it.ray.origin, it.ray.dir, sc.depth, surf, range.first,
+                                                       range.second, c);
+      ASSERT_TRUE(h.valid);
+      ++checked;
+      const double err = it.truth - betaOf(it.r, h.position.z);
+      worst = std::max(worst, err);
+      if (err > std::ldexp(1.0, -c) + tol) ++over;
+      if (err < -tol) ++past;
+      if (err > std::ldexp(1.0, -c - 1)) ++aboveHalf;
+      EXPECT_EQ(h.fetches, c);
+    }
+    std::printf("[cbs beta error] c=%d rays=%d worst=%.6f bound=%.6f (+grid %.6f)\n", c, checked, worst,
+                std::ldexp(1.0, -c), tol);
+    EXPECT_GT(checked, 1000) << "c = " << c;
+    EXPECT_EQ(over, 0) << "c = " << c;
+    EXPECT_EQ(past, 0) << "c = " << c;
+    EXPECT_GT(aboveHalf, 0) << "c = " << c << ": the bound is not tight, is the search really binary?";
+  }
+}
+
+// Plain binary search: |beta - beta*| <= 0.5^c on the same rays; linear+binary:
+// <= 0.5^b / L.
+TEST(IntersectSearch, BinaryAndLinearBinarySearchErrorBounds) {
+  const DepthScene& sc = sphereScene();
+  const SnellDepthSurface surf = sc.surface();
+  const auto range = depthRange(sc);
+  const std::vector<Ray> rays = snell_search_test::sphereRefractedRays(sc, 2000, 10);
+  const double tol = 2.0 / 20000 + 1e-5;
+  int checked = 0, binaryOver = 0, linearOver = 0;
+  for (const Ray& ray : rays) {
+    const SnellTexRay r = snellSearchSegment(ray.origin, ray.dir, range.first, range.second, sc.clipFromView);
+    if (!r.valid) continue;
+    const double truth = bruteForceBeta(sc, r, 20000);
+    if (std::isnan(truth)) continue;
+    ++checked;
+    const SnellHit b = snellBinarySearch(ray.origin, ray.dir, sc.depth, surf, range.first, range.second, 6);
+    if (std::fabs(betaOf(r, b.position.z) - truth) > std::ldexp(1.0, -6) + tol) ++binaryOver;
+    const SnellHit l = snellLinearBinarySearch(ray.origin, ray.dir, sc.depth, surf, range.first, range.second, 8, 4);
+    if (l.position.z == 0.0f) {
+      ++linearOver;  // found no crossing although there is one
+      continue;
+    }
+    if (std::fabs(betaOf(r, l.position.z) - truth) > std::ldexp(1.0, -4) / 8.0 + tol) ++linearOver;
+  }
+  EXPECT_GT(checked, 1000);
+  EXPECT_EQ(binaryOver, 0);
+  EXPECT_EQ(linearOver, 0);
+}
+
+// Bad input: finite numbers and valid = false everywhere.
+TEST(IntersectSearch, BadInputGivesFiniteMisses) {
+  const DepthScene& sc = sphereScene();
+  const SnellDepthSurface surf = sc.surface();
+  const auto range = depthRange(sc);
+  const float zn = range.first, zf = range.second;
+  const vec3 o(0.3f, -0.2f, -4.0f), d(0.0f, 0.0f, -1.0f);
+  // Sanity: this ray hits.
+  ASSERT_TRUE(snellConservativeBinarySearch(o, d, sc.depth, surf, zn, zf).valid);
+  auto expectMiss = [](const SnellHit& h, const char* what) {
+    EXPECT_FALSE(h.valid) << what;
+    EXPECT_TRUE(finite(h)) << what;
+  };
+  // Empty buffer: every texel empty.
+  snell::Texture2D empty(snell::Image(64, 64, vec4(surf.emptyDepth, 0.0f, 0.0f, 0.0f)));
+  struct Case {
+    vec3 o, d;
+    float zn, zf;
+    const snell::Texture2D* tex;
+    const char* what;
+  };
+  const Case cases[] = {
+      {o, vec3(0.0f, 0.1f, 1.0f), zn, zf, &sc.depth, "towards the camera"},
+      {o, vec3(1.0f, 0.0f, 0.0f), zn, zf, &sc.depth, "parallel to the image plane"},
+      {o, d, zn, zn, &sc.depth, "Zmin == Zmax"},
+      {o, d, zf, zn, &sc.depth, "Zmin/Zmax swapped"},
+      {vec3(kNaN, 0.0f, -4.0f), d, zn, zf, &sc.depth, "NaN origin"},
+      {o, vec3(0.0f, kNaN, -1.0f), zn, zf, &sc.depth, "NaN dir"},
+      {o, d, kNaN, zf, &sc.depth, "NaN zNearest"},
+      {o, vec3(0.0f, 0.0f, 0.0f), zn, zf, &sc.depth, "zero dir"},
+      {o, d, zn, zf, &empty, "empty buffer"},
+      {vec3(40.0f, 0.0f, -4.0f), vec3(1.0f, 0.0f, -0.1f), zn, zf, &sc.depth, "off screen, leaving it"},
+  };
+  for (const Case& c : cases) {
+    expectMiss(snellConservativeBinarySearch(c.o, c.d, *c.tex, surf, c.zn, c.zf), c.what);
+    expectMiss(snellBinarySearch(c.o, c.d, *c.tex, surf, c.zn, c.zf), c.what);
+    expectMiss(snellLinearBinarySearch(c.o, c.d, *c.tex, surf, c.zn, c.zf), c.what);
+    EXPECT_TRUE(finite(snellBinarySearch(c.o, c.d, *c.tex, surf, c.zn, c.zf, 7))) << c.what;
+  }
+  // Step counts outside the range are clamped, never loop out of bounds.
+  EXPECT_EQ(snellConservativeBinarySearch(o, d, sc.depth, surf, zn, zf, 1000).fetches, SNELL_CBS_MAX_STEPS);
+  EXPECT_EQ(snellConservativeBinarySearch(o, d, sc.depth, surf, zn, zf, -3).fetches, 1);  // tests S only
+  EXPECT_EQ(snellBinarySearch(o, d, sc.depth, surf, zn, zf, 0).fetches, 1);
+  EXPECT_EQ(snellConservativeBinarySearch(o, d, sc.depth, surf, zn, zf).fetches, SNELL_CBS_STEPS);
+}
+
+// Where nothing advances, CBS tests S: valid exactly when S's texel is valid.
+TEST(IntersectSearch, ConservativeBinarySearchWithoutAdvanceReturnsAValidStart) {
+  const DepthScene& sc = sphereScene();
+  const SnellDepthSurface surf = sc.surface();
+  // Origin 1e-3 in front of the stored surface at a texel centre, looking along
+  // the line of sight, searching 1 unit deep: every tested point (beta >= 1/8)
+  // lies behind the surface, so nothing advances and S (= the origin) is tested.
+  const glm::dvec2 uv((140 + 0.5) / 256.0, (120 + 0.5) / 256.0);
+  const double zs = sc.surfaceZ(uv);
+  ASSERT_FALSE(std::isnan(zs));
+  const glm::dvec3 q = sc.pixelRay(uv);
+  const vec3 o = vec3(q * (-zs - 1e-3));
+  const vec3 d = vec3(glm::normalize(q));
+  const SnellHit h = snellConservativeBinarySearch(o, d, sc.depth, surf, o.z, o.z - 1.0f, 3);
+  ASSERT_TRUE(h.valid);
+  EXPECT_EQ(h.fetches, 4);
+  EXPECT_EQ(h.position, o);
+  EXPECT_TRUE(texelValid(sc, h.uv));
+  // The same from off screen: S's texel is invalid, so no hit.
+  const vec3 off(o.x + 30.0f, o.y, o.z);
+  const SnellHit m = snellConservativeBinarySearch(off, d, sc.depth, surf, o.z, o.z - 1.0f, 3);
+  EXPECT_FALSE(m.valid);
+  EXPECT_EQ(m.fetches, 4);
+}
+
+}  // namespace
