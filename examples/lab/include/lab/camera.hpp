@@ -1,0 +1,46 @@
+// The scene camera and its primary rays, in the conventions of
+// glsl/snell/camera/conventions.glsl: right-handed view space looking down -Z,
+// GL clip space (snellPerspective), uv origin at the bottom-left, pixel (i, j)
+// centred at uv ((i + 0.5) / W, (j + 0.5) / H), image row 0 at the bottom. A
+// primary ray through a pixel centre therefore hits exactly what a rasterizer
+// shades at that pixel.
+#pragma once
+#include <snell/bridge.hpp>
+
+#include <glm/glm.hpp>
+
+namespace snell::lab {
+
+struct Camera {
+  vec3 position{0.0f, 0.0f, 5.0f};
+  vec3 target{0.0f};
+  vec3 up{0.0f, 1.0f, 0.0f};
+  float fovYDegrees = 45.0f;  // full vertical field of view
+  int width = 512;
+  int height = 512;
+  float zNear = 0.1f;
+  float zFar = 100.0f;
+
+  float aspect() const { return static_cast<float>(width) / static_cast<float>(height); }
+  float fovYRadians() const { return glm::radians(fovYDegrees); }
+  mat4 viewFromWorld() const;  // glm::lookAt
+  mat4 worldFromView() const;
+  mat4 clipFromView() const;   // snellPerspective (GL depth convention)
+};
+
+struct Ray {
+  glm::dvec3 origin{0.0};
+  glm::dvec3 direction{0.0, 0.0, -1.0};  // unit
+  double tNear = 0.0;
+  double tFar = 1e30;
+};
+
+// The ray through the centre of pixel (px, py) (py = 0 is the bottom row),
+// from the camera position, clipped to the near and far planes (tNear/tFar are
+// the distances along the ray to those planes).
+Ray primaryRay(const Camera& camera, int px, int py);
+
+// The same for an arbitrary uv in [0, 1]^2.
+Ray primaryRayAtUv(const Camera& camera, glm::dvec2 uv);
+
+}  // namespace snell::lab

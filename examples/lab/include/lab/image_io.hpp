@@ -1,0 +1,28 @@
+// Image files. snell::Image holds linear RGBA floats with row 0 at the bottom
+// (GL order); files store row 0 at the top, so reading and writing flip rows.
+#pragma once
+#include <snell/bridge.hpp>
+
+#include <string>
+
+namespace snell::lab {
+
+// The sRGB transfer function (IEC 61966-2-1), per channel, input clamped to [0, 1].
+float srgbEncode(float linear);
+float srgbDecode(float encoded);
+
+enum class PngEncoding {
+  Srgb,    // linear values are sRGB-encoded (for viewing)
+  Linear,  // values written as they are, clamped to [0, 1] (for data: masks, heat maps)
+};
+
+// 8-bit RGB PNG (alpha dropped). Error(Io) naming the path on failure.
+void writePng(const std::string& path, const Image& image, PngEncoding encoding = PngEncoding::Srgb);
+
+// PNG, JPEG, BMP, TGA (8-bit: decoded from sRGB to linear unless `linear`) or
+// Radiance HDR (already linear) through stb_image, as linear RGBA (alpha 1).
+// Error(Io) naming the path when it is missing, Error(Parse) when it is not an
+// image stb_image can decode.
+Image readImage(const std::string& path, bool linear = false);
+
+}  // namespace snell::lab

@@ -1,0 +1,117 @@
+// Scene files: JSON, checked against the schema documented in
+// examples/scenes/README.md. Errors name the file, the line, the field and the
+// reason: `sphere.json:4: camera.fov: expected a number in (0, 180), got "wide"`.
+// Unknown fields are errors (typos are caught). Paths inside a scene (meshes,
+// images) are relative to the scene file.
+#pragma once
+#include "lab/camera.hpp"
+#include "lab/environment.hpp"
+#include "lab/mesh.hpp"
+#include "lab/mesh_generators.hpp"
+#include "lab/painting.hpp"
+
+#include <snell/bridge.hpp>
+
+#include <string>
+#include <vector>
+
+namespace snell::lab {
+
+enum class MeshKind { Obj, Sphere, Icosphere, Torus, Blob };
+
+struct MeshSpec {
+  MeshKind kind = MeshKind::Icosphere;
+  std::string path;  // Obj: resolved against the scene file
+  float radius = 1.0f;
+  int segments = 64, rings = 32;  // Sphere
+  int subdivisions = 5;           // Icosphere, Blob
+  float majorRadius = 1.0f, minorRadius = 0.4f;
+  int majorSegments = 96, minorSegments = 48;
+  BlobParams blob;  // Blob (radius and subdivisions copied in)
+  // Obj: fit the mesh's bounding box into a cube of this edge length centred at
+  // the origin before the transform (0: keep the file's coordinates).
+  float fitSize = 0.0f;
+};
+
+struct RefractiveObject {
+  MeshSpec mesh;
+  Transform transform;
+  float ior = 1.5f;
+  vec3 absorption{0.0f};  // Beer-Lambert sigma_a per world unit, linear RGB
+};
+
+enum class EnvironmentKind { Sky, Image, Color };
+
+struct EnvironmentSpec {
+  EnvironmentKind kind = EnvironmentKind::Sky;
+  SkyParams sky;
+  ivec2 bakeSize{1024, 512};  // Sky: equirectangular bake resolution
+  std::string path;           // Image: resolved
+  vec3 color{0.5f};           // Color
+  float rotationDegrees = 0.0f;
+  float intensity = 1.0f;
+};
+
+enum class TextureKind { Checker, Gradient, Pattern, Image };
+
+struct TextureSpec {
+  TextureKind kind = TextureKind::Pattern;
+  ivec2 resolution{512, 512};  // procedural kinds
+  ivec2 squares{8, 8};         // Checker
+  vec3 colorA{0.9f}, colorB{0.1f};
+  std::vector<vec3> colors;  // Gradient
+  int direction = 0;         // Gradient: 0 horizontal, 1 vertical, 2 diagonal
+  std::string path;          // Image: resolved
+  float intensity = 1.0f;    // Image
+};
+
+struct PaintingSpec {
+  vec3 center{0.0f, 0.0f, -2.0f};
+  vec2 size{4.0f, 3.0f};
+  vec3 rotateDegrees{0.0f};
+  TextureSpec texture;
+};
+
+struct AnimationSpec {
+  int frames = 1;
+  float timeStart = 0.0f;
+  float timeStep = 1.0f / 30.0f;
+};
+
+struct Scene {
+  std::string file;  // the scene file ("" when parsed from text)
+  std::string name;
+  std::string description;
+  Camera camera;
+  RefractiveObject object;
+  EnvironmentSpec environment;
+  std::vector<PaintingSpec> paintings;
+  AnimationSpec animation;
+
+  float frameTime(int frame) const { return animation.timeStart + static_cast<float>(frame) * animation.timeStep; }
+};
+
+// Reads and checks a scene file. Error(Io) when it is missing, Error(Parse) for
+// malformed JSON (with line and column), Error(Schema) for a bad field.
+Scene loadScene(const std::string& path);
+
+// The same from text; `file` is used in messages and to resolve relative paths.
+Scene parseScene(const std::string& text, const std::string& file);
+
+// Resources, built from a checked scene. Errors name the missing file.
+Mesh buildObjectMesh(const Scene& scene, float time = 0.0f);  // world space
+Environment buildEnvironment(const Scene& scene);
+std::vector<Painting> buildPaintings(const Scene& scene);
+
+// Everything a renderer needs for one frame.
+struct SceneFrame {
+  Camera camera;
+  Mesh object;  // world space
+  float ior = 1.5f;
+  vec3 absorption{0.0f};
+  Environment environment;
+  std::vector<Painting> paintings;
+};
+SceneFrame buildFrame(const Scene& scene, float time = 0.0f);
+
+}  // namespace snell::lab

@@ -1,0 +1,40 @@
+#include "lab/camera.hpp"
+
+#include <snell/camera.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+namespace snell::lab {
+
+mat4 Camera::viewFromWorld() const { return glm::lookAt(position, target, up); }
+mat4 Camera::worldFromView() const { return glm::inverse(viewFromWorld()); }
+mat4 Camera::clipFromView() const { return snellPerspective(fovYRadians(), aspect(), zNear, zFar); }
+
+Ray primaryRayAtUv(const Camera& camera, glm::dvec2 uv) {
+  // Camera basis in double (glm::lookAt's, without the float rounding).
+  const glm::dvec3 eye(camera.position), target(camera.target), up(camera.up);
+  const glm::dvec3 f = glm::normalize(target - eye);
+  const glm::dvec3 s = glm::normalize(glm::cross(f, up));
+  const glm::dvec3 u = glm::cross(s, f);
+  const double tanHalf = std::tan(0.5 * static_cast<double>(camera.fovYRadians()));
+  const double aspect = static_cast<double>(camera.width) / static_cast<double>(camera.height);
+  const double xv = (2.0 * uv.x - 1.0) * aspect * tanHalf;
+  const double yv = (2.0 * uv.y - 1.0) * tanHalf;
+  const glm::dvec3 dView(xv, yv, -1.0);
+  const double len = glm::length(dView);
+  Ray r;
+  r.origin = eye;
+  r.direction = (s * xv + u * yv + f) / len;
+  // View depth along the ray grows as 1 / len per unit distance.
+  r.tNear = static_cast<double>(camera.zNear) * len;
+  r.tFar = static_cast<double>(camera.zFar) * len;
+  return r;
+}
+
+Ray primaryRay(const Camera& camera, int px, int py) {
+  return primaryRayAtUv(camera, glm::dvec2((px + 0.5) / camera.width, (py + 0.5) / camera.height));
+}
+
+}  // namespace snell::lab

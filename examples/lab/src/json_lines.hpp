@@ -1,0 +1,28 @@
+// Internal: maps field paths ("camera.fov", "opaque[1].texture") of a JSON
+// text to the line where the value starts, so schema errors can cite lines.
+// Accepts what nlohmann::json accepts with comments enabled.
+#pragma once
+#include <map>
+#include <string>
+
+namespace snell::lab::detail {
+
+class JsonLines {
+ public:
+  explicit JsonLines(const std::string& text);
+  // 0 when the path is unknown.
+  int line(const std::string& path) const;
+
+ private:
+  std::map<std::string, int> lines_;
+  const std::string& text_;
+  std::size_t pos_ = 0;
+  int lineNo_ = 1;
+
+  void skipSpace();
+  void value(const std::string& path, int depth);
+  std::string stringToken();
+  void advance();
+};
+
+}  // namespace snell::lab::detail

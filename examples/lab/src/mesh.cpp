@@ -1,0 +1,116 @@
+#include "lab/mesh.hpp"
+
+#include "lab/error.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <utility>
+
+namespace snell::lab {
+
+float Bounds::diagonal() const { return glm::length(hi - lo); }
+
+Bounds meshBounds(const Mesh& mesh) {
+  Bounds b;
+  if (mesh.positions.empty()) return b;
+  b.lo = b.hi = mesh.positions.front();
+  for (const glm::vec3& p : mesh.positions) {
+    b.lo = glm::min(b.lo, p);
+    b.hi = glm::max(b.hi, p);
+  }
+  return b;
+}
+
+double signedVolume(const Mesh& mesh) {
+  double v = 0.0;
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const glm::dvec3 a(mesh.positions[mesh.indices[t]]);
+    const glm::dvec3 b(mesh.positions[mesh.indices[t + 1]]);
+    const glm::dvec3 c(mesh.positions[mesh.indices[t + 2]]);
+    v += glm::dot(a, glm::cross(b, c));
+  }
+  return v / 6.0;
+}
+
+void computeSmoothNormals(Mesh& mesh) {
+  std::vector<glm::dvec3> sum(mesh.positions.size(), glm::dvec3(0.0));
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const std::uint32_t i0 = mesh.indices[t], i1 = mesh.indices[t + 1], i2 = mesh.indices[t + 2];
+    const glm::dvec3 a(mesh.positions[i0]), b(mesh.positions[i1]), c(mesh.positions[i2]);
+    const glm::dvec3 n = glm::cross(b - a, c - a);  // length = 2 * area: area weighting
+    sum[i0] += n;
+    sum[i1] += n;
+    sum[i2] += n;
+  }
+  mesh.normals.resize(mesh.positions.size());
+  for (std::size_t i = 0; i < sum.size(); ++i) {
+    const double len = glm::length(sum[i]);
+    mesh.normals[i] = len > 0.0 ? glm::vec3(sum[i] / len) : glm::vec3(0.0f, 0.0f, 1.0f);
+  }
+}
+
+static bool finite3(const glm::vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+void validateMesh(const Mesh& mesh, const std::string& what) {
+  if (mesh.positions.empty() || mesh.indices.empty())
+    throw Error(ErrorKind::Mesh, what + ": the mesh is empty (no triangles)");
+  if (mesh.indices.size() % 3 != 0)
+    throw Error(ErrorKind::Mesh, what + ": index count is not a multiple of 3");
+  if (mesh.normals.size() != mesh.positions.size())
+    throw Error(ErrorKind::Mesh, what + ": " + std::to_string(mesh.normals.size()) + " normals for " +
+                                     std::to_string(mesh.positions.size()) + " positions");
+  for (std::size_t i = 0; i < mesh.indices.size(); ++i)
+    if (mesh.indices[i] >= mesh.positions.size())
+      throw Error(ErrorKind::Mesh, what + ": triangle " + std::to_string(i / 3) + " uses vertex " +
+                                       std::to_string(mesh.indices[i]) + " of " +
+                                       std::to_string(mesh.positions.size()));
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+    if (!finite3(mesh.positions[i]) || !finite3(mesh.normals[i]))
+      throw Error(ErrorKind::Mesh, what + ": vertex " + std::to_string(i) + " is not finite");
+  double area = 0.0;
+  for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
+    const glm::dvec3 a(mesh.positions[mesh.indices[t]]), b(mesh.positions[mesh.indices[t + 1]]),
+        c(mesh.positions[mesh.indices[t + 2]]);
+    area += glm::length(glm::cross(b - a, c - a));
+  }
+  if (!(area > 0.0)) throw Error(ErrorKind::Mesh, what + ": every triangle is degenerate (zero area)");
+}
+
+void flipWinding(Mesh& mesh) {
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+}
+
+bool orientOutward(Mesh& mesh) {
+  if (signedVolume(mesh) < 0.0) {
+    flipWinding(mesh);
+    return true;
+  }
+  return false;
+}
+
+glm::mat4 Transform::matrix() const {
+  glm::mat4 m(1.0f);
+  m = glm::translate(m, translate);
+  m = glm::rotate(m, glm::radians(rotateDegrees.z), glm::vec3(0.0f, 0.0f, 1.0f));
+  m = glm::rotate(m, glm::radians(rotateDegrees.y), glm::vec3(0.0f, 1.0f, 0.0f));
+  m = glm::rotate(m, glm::radians(rotateDegrees.x), glm::vec3(1.0f, 0.0f, 0.0f));
+  m = glm::scale(m, scale);
+  return m;
+}
+
+void applyTransform(Mesh& mesh, const Transform& transform) {
+  const glm::mat4 m = transform.matrix();
+  const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(m)));
+  for (glm::vec3& p : mesh.positions) p = glm::vec3(m * glm::vec4(p, 1.0f));
+  for (glm::vec3& n : mesh.normals) {
+    const glm::vec3 t = normalMatrix * n;
+    const float len = glm::length(t);
+    n = len > 0.0f ? t / len : glm::vec3(0.0f, 0.0f, 1.0f);
+  }
+  if (glm::determinant(glm::mat3(m)) < 0.0f) flipWinding(mesh);
+}
+
+}  // namespace snell::lab

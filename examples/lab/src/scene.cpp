@@ -1,0 +1,287 @@
+#include "lab/scene.hpp"
+
+#include "json_lines.hpp"
+#include "json_reader.hpp"
+#include "lab/error.hpp"
+#include "lab/file_util.hpp"
+#include "lab/image_io.hpp"
+#include "lab/obj_loader.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+namespace snell::lab {
+
+using detail::Json;
+using detail::ObjectReader;
+using detail::Range;
+
+namespace {
+
+constexpr int kMaxResolution = 16384;
+const Range kColor = Range::nonNegative();
+
+Camera readCamera(ObjectReader r) {
+  Camera c;
+  c.position = r.vector3("position", c.position, Range::any(), true);
+  c.target = r.vector3("target", c.target);
+  c.up = r.vector3("up", c.up);
+  c.fovYDegrees = static_cast<float>(r.number("fov", c.fovYDegrees, Range::open(0.0, 180.0)));
+  const ivec2 res = r.integer2("resolution", ivec2(c.width, c.height), 1, kMaxResolution);
+  c.width = res.x;
+  c.height = res.y;
+  c.zNear = static_cast<float>(r.number("near", c.zNear, Range::positive()));
+  c.zFar = static_cast<float>(r.number("far", c.zFar, Range::positive()));
+  if (!(c.zFar > c.zNear))
+    r.fail("far", "expected a number > near (" + std::to_string(c.zNear) + "), got " + std::to_string(c.zFar));
+  const vec3 forward = c.target - c.position;
+  if (!(length(forward) > 0.0f)) r.fail("target", "must differ from camera.position");
+  if (!(length(c.up) > 0.0f) || length(cross(normalize(forward), normalize(c.up))) < 1e-6f)
+    r.fail("up", "must be non-zero and not parallel to the view direction (target - position)");
+  r.finish();
+  return c;
+}
+
+MeshSpec readMesh(ObjectReader r, const std::string& sceneFile) {
+  MeshSpec m;
+  const std::string type = r.choice("type", {"obj", "sphere", "icosphere", "torus", "blob"}, "", true);
+  if (type == "obj") {
+    m.kind = MeshKind::Obj;
+    m.path = resolvePath(r.requiredString("path"), sceneFile);
+    m.fitSize = static_cast<float>(r.number("fit_size", 0.0, Range::nonNegative()));
+  } else if (type == "sphere") {
+    m.kind = MeshKind::Sphere;
+    m.radius = static_cast<float>(r.number("radius", 1.0, Range::positive()));
+    m.segments = r.integer("segments", m.segments, 3, 4096);
+    m.rings = r.integer("rings", m.rings, 2, 4096);
+  } else if (type == "icosphere") {
+    m.kind = MeshKind::Icosphere;
+    m.radius = static_cast<float>(r.number("radius", 1.0, Range::positive()));
+    m.subdivisions = r.integer("subdivisions", m.subdivisions, 0, 8);
+  } else if (type == "torus") {
+    m.kind = MeshKind::Torus;
+    m.majorRadius = static_cast<float>(r.number("major_radius", m.majorRadius, Range::positive()));
+    m.minorRadius = static_cast<float>(r.number("minor_radius", m.minorRadius, Range::positive()));
+    if (!(m.minorRadius < m.majorRadius))
+      r.fail("minor_radius", "expected a number < major_radius (" + std::to_string(m.majorRadius) + ")");
+    m.majorSegments = r.integer("major_segments", m.majorSegments, 3, 4096);
+    m.minorSegments = r.integer("minor_segments", m.minorSegments, 3, 4096);
+  } else {
+    m.kind = MeshKind::Blob;
+    m.blob.radius = m.radius = static_cast<float>(r.number("radius", 1.0, Range::positive()));
+    m.blob.subdivisions = m.subdivisions = r.integer("subdivisions", m.subdivisions, 0, 8);
+    m.blob.amplitude = static_cast<float>(r.number("amplitude", m.blob.amplitude, Range{0.0, 1.0, false, true}));
+    m.blob.frequency = static_cast<float>(r.number("frequency", m.blob.frequency, Range::nonNegative()));
+    m.blob.speed = static_cast<float>(r.number("speed", m.blob.speed, Range::any()));
+  }
+  r.finish();
+  return m;
+}
+
+Transform readTransform(ObjectReader r) {
+  Transform t;
+  t.translate = r.vector3("translate", t.translate);
+  t.rotateDegrees = r.vector3("rotate", t.rotateDegrees);
+  t.scale = r.vector3OrScalar("scale", t.scale, Range::positive());
+  r.finish();
+  return t;
+}
+
+RefractiveObject readObject(ObjectReader r, const std::string& sceneFile) {
+  RefractiveObject o;
+  o.mesh = readMesh(r.object("mesh"), sceneFile);
+  if (r.has("transform")) o.transform = readTransform(r.object("transform"));
+  o.ior = static_cast<float>(r.number("ior", o.ior, Range{0.0, 10.0, true, false}));
+  o.absorption = r.vector3("absorption", o.absorption, kColor);
+  r.finish();
+  return o;
+}
+
+EnvironmentSpec readEnvironment(ObjectReader r, const std::string& sceneFile) {
+  EnvironmentSpec e;
+  const std::string type = r.choice("type", {"sky", "image", "color"}, "", true);
+  e.rotationDegrees = static_cast<float>(r.number("rotation", 0.0, Range::any()));
+  e.intensity = static_cast<float>(r.number("intensity", 1.0, Range::nonNegative()));
+  if (type == "sky") {
+    e.kind = EnvironmentKind::Sky;
+    SkyParams& s = e.sky;
+    s.zenith = r.vector3("zenith", s.zenith, kColor);
+    s.horizon = r.vector3("horizon", s.horizon, kColor);
+    s.ground = r.vector3("ground", s.ground, kColor);
+    s.sunAzimuthDegrees = static_cast<float>(r.number("sun_azimuth", s.sunAzimuthDegrees, Range::any()));
+    s.sunElevationDegrees = static_cast<float>(r.number("sun_elevation", s.sunElevationDegrees, Range::closed(-90.0, 90.0)));
+    s.sunColor = r.vector3("sun_color", s.sunColor, kColor);
+    s.sunRadiusDegrees = static_cast<float>(r.number("sun_radius", s.sunRadiusDegrees, Range::closed(0.0, 90.0)));
+    s.gridSpacingDegrees = static_cast<float>(r.number("grid_spacing", s.gridSpacingDegrees, Range::closed(0.0, 90.0)));
+    s.gridColor = r.vector3("grid_color", s.gridColor, kColor);
+    s.gridWidthDegrees = static_cast<float>(r.number("grid_width", s.gridWidthDegrees, Range::open(0.0, 10.0)));
+    e.bakeSize = r.integer2("resolution", e.bakeSize, 2, kMaxResolution);
+  } else if (type == "image") {
+    e.kind = EnvironmentKind::Image;
+    e.path = resolvePath(r.requiredString("path"), sceneFile);
+  } else {
+    e.kind = EnvironmentKind::Color;
+    e.color = r.vector3("color", e.color, kColor, true);
+  }
+  r.finish();
+  return e;
+}
+
+TextureSpec readTexture(ObjectReader r, const std::string& sceneFile) {
+  TextureSpec t;
+  const std::string type = r.choice("type", {"checker", "gradient", "pattern", "image"}, "", true);
+  if (type == "image") {
+    t.kind = TextureKind::Image;
+    t.path = resolvePath(r.requiredString("path"), sceneFile);
+    t.intensity = static_cast<float>(r.number("intensity", 1.0, Range::nonNegative()));
+  } else {
+    t.resolution = r.integer2("resolution", t.resolution, 1, kMaxResolution);
+    if (type == "checker") {
+      t.kind = TextureKind::Checker;
+      t.squares = r.integer2("squares", t.squares, 1, 4096);
+      t.colorA = r.vector3("color_a", t.colorA, kColor);
+      t.colorB = r.vector3("color_b", t.colorB, kColor);
+    } else if (type == "gradient") {
+      t.kind = TextureKind::Gradient;
+      if (!r.has("colors")) r.fail("colors", "missing (required: an array of at least 2 colours [r, g, b])");
+      t.colors = r.colorList("colors", 2, kColor);
+      const std::string dir = r.choice("direction", {"horizontal", "vertical", "diagonal"}, "horizontal");
+      t.direction = dir == "horizontal" ? 0 : dir == "vertical" ? 1 : 2;
+    } else {
+      t.kind = TextureKind::Pattern;
+    }
+  }
+  r.finish();
+  return t;
+}
+
+PaintingSpec readPainting(ObjectReader r, const std::string& sceneFile) {
+  PaintingSpec p;
+  r.choice("type", {"painting"}, "painting", true);
+  p.center = r.vector3("center", p.center, Range::any(), true);
+  p.size = r.vector2("size", p.size, Range::positive());
+  p.rotateDegrees = r.vector3("rotate", p.rotateDegrees);
+  if (r.has("texture")) p.texture = readTexture(r.object("texture"), sceneFile);
+  r.finish();
+  return p;
+}
+
+AnimationSpec readAnimation(ObjectReader r) {
+  AnimationSpec a;
+  a.frames = r.integer("frames", a.frames, 1, 100000);
+  a.timeStart = static_cast<float>(r.number("time_start", a.timeStart, Range::any()));
+  a.timeStep = static_cast<float>(r.number("time_step", a.timeStep, Range::any()));
+  r.finish();
+  return a;
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& file) {
+  Json root;
+  try {
+    root = Json::parse(text, nullptr, true, /*ignore_comments=*/true);
+  } catch (const Json::parse_error& e) {
+    // nlohmann's message carries "at line L, column C".
+    std::string what = e.what();
+    const std::size_t cut = what.find("] ");
+    if (cut != std::string::npos) what = what.substr(cut + 2);
+    throw Error(ErrorKind::Parse, (file.empty() ? std::string("<scene>") : file) + ": malformed JSON: " + what);
+  }
+  const detail::JsonLines lines(text);
+  const detail::SourceInfo src{file, &lines};
+  ObjectReader r(root, "", src);
+  Scene s;
+  s.file = file;
+  s.name = r.string("name", file.empty() ? std::string("scene") : std::filesystem::path(file).stem().string());
+  s.description = r.string("description", "");
+  s.camera = readCamera(r.object("camera"));
+  s.object = readObject(r.object("object"), file);
+  if (r.has("environment")) {
+    s.environment = readEnvironment(r.object("environment"), file);
+  }
+  for (ObjectReader& p : r.objectArray("opaque")) s.paintings.push_back(readPainting(p, file));
+  if (r.has("animation")) s.animation = readAnimation(r.object("animation"));
+  r.finish();
+  return s;
+}
+
+Scene loadScene(const std::string& path) { return parseScene(readTextFile(path, "scene"), path); }
+
+Mesh buildObjectMesh(const Scene& scene, float time) {
+  const MeshSpec& m = scene.object.mesh;
+  Mesh mesh;
+  switch (m.kind) {
+    case MeshKind::Obj: {
+      mesh = loadObj(m.path);
+      if (m.fitSize > 0.0f) {
+        const Bounds b = meshBounds(mesh);
+        const vec3 ext = b.hi - b.lo;
+        const float largest = std::max(ext.x, std::max(ext.y, ext.z));
+        Transform fit;
+        fit.scale = vec3(m.fitSize / largest);
+        for (vec3& p : mesh.positions) p -= b.center();
+        applyTransform(mesh, fit);
+      }
+      break;
+    }
+    case MeshKind::Sphere: mesh = makeUvSphere(m.radius, m.segments, m.rings); break;
+    case MeshKind::Icosphere: mesh = makeIcosphere(m.radius, m.subdivisions); break;
+    case MeshKind::Torus: mesh = makeTorus(m.majorRadius, m.minorRadius, m.majorSegments, m.minorSegments); break;
+    case MeshKind::Blob: mesh = makeBlob(m.blob, time); break;
+  }
+  applyTransform(mesh, scene.object.transform);
+  validateMesh(mesh, m.kind == MeshKind::Obj ? m.path : std::string("built-in mesh"));
+  return mesh;
+}
+
+Environment buildEnvironment(const Scene& scene) {
+  const EnvironmentSpec& e = scene.environment;
+  switch (e.kind) {
+    case EnvironmentKind::Sky:
+      return Environment(bakeSky(e.sky, e.bakeSize.x, e.bakeSize.y), e.rotationDegrees, e.intensity);
+    case EnvironmentKind::Image:
+      return Environment(readImage(e.path), e.rotationDegrees, e.intensity);
+    case EnvironmentKind::Color:
+    default:
+      return Environment(Image(1, 1, vec4(e.color, 1.0f)), e.rotationDegrees, e.intensity);
+  }
+}
+
+std::vector<Painting> buildPaintings(const Scene& scene) {
+  std::vector<Painting> out;
+  for (const PaintingSpec& p : scene.paintings) {
+    const TextureSpec& t = p.texture;
+    Image tex;
+    switch (t.kind) {
+      case TextureKind::Checker:
+        tex = makeCheckerTexture(t.resolution.x, t.resolution.y, t.squares, t.colorA, t.colorB);
+        break;
+      case TextureKind::Gradient:
+        tex = makeGradientTexture(t.resolution.x, t.resolution.y, t.colors, t.direction);
+        break;
+      case TextureKind::Pattern: tex = makePatternTexture(t.resolution.x, t.resolution.y); break;
+      case TextureKind::Image:
+        tex = readImage(t.path);
+        if (t.intensity != 1.0f)
+          for (vec4& c : tex.texels) c = vec4(vec3(c) * t.intensity, c.w);
+        break;
+    }
+    out.push_back(makePainting(p.center, p.size, p.rotateDegrees, std::move(tex)));
+  }
+  return out;
+}
+
+SceneFrame buildFrame(const Scene& scene, float time) {
+  SceneFrame f;
+  f.camera = scene.camera;
+  f.object = buildObjectMesh(scene, time);
+  f.ior = scene.object.ior;
+  f.absorption = scene.object.absorption;
+  f.environment = buildEnvironment(scene);
+  f.paintings = buildPaintings(scene);
+  return f;
+}
+
+}  // namespace snell::lab
