@@ -231,6 +231,14 @@ std::vector<ParityIO> hitOnSurfaceInputs() {
   return v;
 }
 
+// As hitOnSurfaceInputs, plus the held plane's texel uv (on and off the surface).
+std::vector<ParityIO> planeHitInputs() {
+  std::vector<ParityIO> v = hitOnSurfaceInputs();
+  InputGen g(612);
+  for (ParityIO& in : v) in.v[3] = glm::vec4(g.uniform(-0.1f, 1.1f), g.uniform(-0.1f, 1.1f), 0.0f, 0.0f);
+  return v;
+}
+
 std::vector<ParityIO> pyramidBaseInputs() {
   InputGen g(605);
   std::vector<ParityIO> v;
@@ -291,6 +299,9 @@ SNELL_PARITY_CASE({"snellIntersectSingleSample", "plane.glsl", "caseSnellInterse
                    {1e-4f, 1e-4f}, textures(), buildTextures});
 SNELL_PARITY_CASE({"snellHitOnSurface", "plane.glsl", "caseSnellHitOnSurface", hitOnSurfaceInputs,
                    [](const ParityIO& in) { return run(caseSnellHitOnSurface, in); }, kHitDiscrete, 10,
+                   {1e-5f, 1e-5f}, textures(), buildTextures});
+SNELL_PARITY_CASE({"snellPlaneHit", "plane.glsl", "caseSnellPlaneHit", planeHitInputs,
+                   [](const ParityIO& in) { return run(caseSnellPlaneHit, in); }, kHitDiscrete, 10,
                    {1e-5f, 1e-5f}, textures(), buildTextures});
 SNELL_PARITY_CASE({"snellIntersectPlaneNormal", "plane.glsl", "caseSnellIntersectPlaneNormal",
                    [] { return rayInputs(610, false); },

@@ -73,6 +73,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 /* One plane around the reference point q (see the contract); valid false when
    it cannot be built. fetches: the reads spent. */
 struct SnellDepthPlane {
+  vec2 uv;        // where B was read
   vec3 position;  // B
   vec3 normal;    // cross(C - B, D - B), not normalized
   bool valid;
@@ -81,6 +82,7 @@ struct SnellDepthPlane {
 
 SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthMips, SnellDepthSurface s, int maxLod) {
   SnellDepthPlane r;
+  r.uv = vec2(0.0f, 0.0f);
   r.position = vec3(0.0f, 0.0f, 0.0f);
   r.normal = vec3(0.0f, 0.0f, 0.0f);
   r.valid = false;
@@ -94,6 +96,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   if (!b0.valid) {
     return r;
   }
+  r.uv = b0.uv;
   vec3 toB = b0.position - q;
   float d = sqrt(dot(toB, toB));
   vec3 q2 = q.z < b0.position.z ? q - d * dirN : q + d * dirN;
@@ -171,22 +174,24 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
   int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
   int fetches = 0;
   vec3 p = origin;
+  vec2 planeUv = w.uv;
   for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
     if (k > n) {
       break;
     }
     SnellDepthPlane pl = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
     fetches += pl.fetches;
-    if (!pl.valid) {
-      return snellHitMiss(fetches);
-    }
     SnellRayPlaneHit ph = snellRayPlane(origin, dir, pl.position, pl.normal);
-    if (!ph.valid) {
-      return snellHitMiss(fetches);
+    if (!pl.valid || !ph.valid) {
+      if (k == 0) {
+        return snellHitMiss(fetches);
+      }
+      break;  // keep P_(k-1) on plane k-1
     }
     p = ph.position;
+    planeUv = pl.uv;
   }
-  return snellHitOnSurface(p, depthMips, s, fetches);
+  return snellPlaneHit(p, planeUv, depthMips, s, fetches);
 }
 
 #endif

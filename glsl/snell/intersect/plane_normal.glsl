@@ -21,8 +21,13 @@ contract:
     B_k = snellSurfacePoint(depthTex, uv_k, surface) (texel centre point),
     n_k = xyz of SNELL_SAMPLE_LOD(normalTex, B_k.uv, normalLod) (the same texel
     centre); P_k = snellRayPlane(W, dir, B_k, n_k). The hit is
-    snellHitOnSurface(P_N): position P_N (on the ray), uv its projection, valid
-    when the surface exists there.
+    snellPlaneHit(P_N): position P_N (on the ray), uv its projection, valid
+    when the surface exists there. A refinement step that cannot build its plane
+    (B_k empty or off screen, ray parallel) stops the refinement at P_(k-1).
+    With SNELL_PLANE_HOLD (default 1), a final P whose projection lands on an
+    empty texel stays valid on the last plane, uv = that plane's texel
+    (plane_refine.glsl): rim rays of convex objects keep their bend instead of
+    being dropped.
   - exact (up to float rounding) for a planar surface with exact normals, for
     every N >= 0: every plane is the surface's plane.
   - fetches = 2 (N + 1) + 1 on success (a depth and a normal read per plane,
@@ -33,8 +38,8 @@ contract:
   - valid = false (snellHitMiss, finite): origin/dir NaN/Inf, |dir|^2 below 1e-30
     or overflowing, W at or behind the camera plane (fetches 0); B_k empty or off
     screen; n_k zero/NaN, the ray parallel to plane k or the plane behind W
-    (snellRayPlane invalid); P_k behind the camera; the final sample empty or off
-    screen.
+    (snellRayPlane invalid) for the first plane; P behind the camera or off
+    screen; the final sample empty with SNELL_PLANE_HOLD 0.
 source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
   steps 1-5 and "Method 1: Normal-based"; plane intersection in
   optics/ray_plane.glsl.
@@ -64,6 +69,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
   int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
   int fetches = 0;
   vec2 uv = w.uv;
+  vec2 planeUv = w.uv;
   vec3 p = origin;
   for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
     if (k > n) {
@@ -72,24 +78,31 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     if (k > 0) {
       SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
       if (!sp.valid) {
-        return snellHitMiss(fetches);
+        break;  // keep P_(k-1) on plane k-1
       }
       uv = sp.uv;
     }
     SnellSurfacePoint b = snellSurfacePoint(depthTex, uv, s);
     fetches += 1;
     if (!b.valid) {
-      return snellHitMiss(fetches);
+      if (k == 0) {
+        return snellHitMiss(fetches);
+      }
+      break;
     }
     vec4 nt = SNELL_SAMPLE_LOD(normalTex, b.uv, normalLod);
     fetches += 1;
     SnellRayPlaneHit ph = snellRayPlane(origin, dir, b.position, vec3(nt.x, nt.y, nt.z));
     if (!ph.valid) {
-      return snellHitMiss(fetches);
+      if (k == 0) {
+        return snellHitMiss(fetches);
+      }
+      break;
     }
     p = ph.position;
+    planeUv = b.uv;
   }
-  return snellHitOnSurface(p, depthTex, s, fetches);
+  return snellPlaneHit(p, planeUv, depthTex, s, fetches);
 }
 
 #endif

@@ -36,6 +36,11 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 #ifndef SNELL_PLANE_MAX_ITERATIONS
 #  define SNELL_PLANE_MAX_ITERATIONS 8
 #endif
+/* 1: a plane hit whose projection lands on an empty texel is kept on the last
+   valid plane (snellPlaneHit); 0: it is a miss. */
+#ifndef SNELL_PLANE_HOLD
+#  define SNELL_PLANE_HOLD 1
+#endif
 
 SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
   SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
@@ -51,6 +56,28 @@ SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurf
   h.position = p;
   h.valid = true;
   h.fetches = fetchesSoFar + 1;
+  return h;
+}
+
+/* The last step of both plane methods (Mayer & Assarsson steps 4-5): the plane
+   hit p is accepted where the buffer has a surface at its projection. Where it has
+   none (the tangent plane of a convex object's back face lies outside the object,
+   so rim rays project past the silhouette), the plane itself is the best estimate
+   left: with SNELL_PLANE_HOLD the hit stays at p, valid, with uv = planeUv, the
+   texel the plane was built from, so a normal read at h.uv returns that plane's
+   normal. Off-screen or behind-the-camera p is a miss either way. */
+SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+  SnellHit h = snellHitOnSurface(p, depthTex, s, fetchesSoFar);
+  if (h.valid || SNELL_PLANE_HOLD == 0) {
+    return h;
+  }
+  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
+    return h;
+  }
+  h.uv = planeUv;
+  h.position = p;
+  h.valid = true;
   return h;
 }
 

@@ -20,6 +20,14 @@ uniform sampler2D planeDepthB;
 uniform sampler2D planeNormalB;
 uniform sampler2D planePyramidB;
 #endif
+#if defined(SNELL_LANG_HLSL)
+Texture2D<float4> planeDepthA;
+Texture2D<float4> planeNormalA;
+Texture2D<float4> planePyramidA;
+Texture2D<float4> planeDepthB;
+Texture2D<float4> planeNormalB;
+Texture2D<float4> planePyramidB;
+#endif
 
 SNELL_FN float planeParityFlag(bool b) {
   return b ? 1.0f : 0.0f;
@@ -128,6 +136,16 @@ SNELL_FN SnellParityOut caseSnellHitOnSurface(vec4 a, vec4 b, vec4 c, vec4 d) {
     return planeParityHit(snellHitOnSurface(p, planeDepthB, s, int(b.w)));
   }
   return planeParityHit(snellHitOnSurface(p, planeDepthA, s, int(b.w)));
+}
+
+SNELL_FN SnellParityOut caseSnellPlaneHit(vec4 a, vec4 b, vec4 c, vec4 d) {
+  SnellDepthSurface s = planeParitySurface(a.w, c);
+  vec3 p = vec3(a.x, a.y, a.z);
+  vec2 planeUv = vec2(d.x, d.y);
+  if (a.w > 0.5f) {
+    return planeParityHit(snellPlaneHit(p, planeUv, planeDepthB, s, int(b.w)));
+  }
+  return planeParityHit(snellPlaneHit(p, planeUv, planeDepthA, s, int(b.w)));
 }
 
 SNELL_FN SnellParityOut caseSnellIntersectPlaneNormal(vec4 a, vec4 b, vec4 c, vec4 d) {
