@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
-# The README's main-job command. The lab (every technique rendered on Mesa against
-# a ray tracer) is not built yet; until it is, this installs what is missing,
-# builds, and runs the C++ tool example: rays through a glass ball traced with
-# the same snellRefract/Fresnel functions the shaders use.
+# The README's main-job command: installs what is missing (Debian packages),
+# builds snell-lab (Release) and runs it with its defaults: the Stanford bunny
+# scene at 512x512, every technique rendered on Mesa llvmpipe (OSMesa, or EGL
+# where OSMesa is missing) against the Embree ray tracer. Prints the table;
+# pictures, table.md and table.json go to lab-out/. Extra arguments are passed
+# to snell-lab (e.g. `bash scripts/lab.sh examples/scenes/sphere_painting.json`,
+# `bash scripts/lab.sh --help`). About a minute on 2 cores after the build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 build=${SNELL_BUILD_DIR:-build}
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" -j "$(nproc)" --target snell_tool_example
-"$build/examples/snell_tool_example"
+cmake --build "$build" -j "$(nproc)" --target snell-lab
+"$build/examples/lab/snell-lab" "$@"

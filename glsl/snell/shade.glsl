@@ -1,3 +1,4 @@
+/* shade/ family aggregator: the composed refraction techniques. */
 #ifndef SNELL_SHADE_GLSL
 #define SNELL_SHADE_GLSL
 #include "shade/perturb.glsl"
@@ -11,4 +12,12 @@
 #include "shade/refractive_texture_map.glsl"
 #include "shade/dispersion.glsl"
 #include "shade/roughness.glsl"
+#include "shade/environment_cube_face.glsl"
+#include "shade/environment.glsl"
+#include "shade/technique_options.glsl"
+#include "shade/technique_range.glsl"
+#include "shade/technique_presets.glsl"
+#include "shade/technique_intersect.glsl"
+#include "shade/two_interface.glsl"
+#include "shade/two_interface_shade.glsl"
 #endif

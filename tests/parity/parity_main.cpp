@@ -1,10 +1,13 @@
 // The parity suite: every registered case runs on llvmpipe through BOTH GL
-// backends and in the C++ build, on the same inputs; the manifest test fails when
-// a public function of glsl/ has no case. A GL context that cannot be created is a
-// failure, never a skip (DESIGN.md sec. 3).
+// backends and in the C++ build, on the same inputs, and once more as HLSL
+// (hlsl_like/snell bridge -> glslangValidator -D -> SPIR-V -> spirv-val ->
+// spirv-cross GLSL 450 -> llvmpipe, suite ParityHlsl_osmesa); the manifest tests
+// fail when a public function of glsl/ has no case, or no HLSL entry / run. A GL
+// context that cannot be created is a failure, never a skip (DESIGN.md sec. 3).
 #include <gtest/gtest.h>
 
 #include <snell/gpu/context.hpp>
+#include <snell/gpu/hlsl.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -32,6 +35,33 @@ using snell::gpu::Context;
 
 const fs::path kRoot = SNELL_SOURCE_DIR;
 
+// The HLSL tools and the folder for the cross-compiled artifacts (set by
+// tests/CMakeLists.txt; PATH names and a temp folder otherwise).
+#ifndef SNELL_GLSLANG_VALIDATOR
+#define SNELL_GLSLANG_VALIDATOR "glslangValidator"
+#endif
+#ifndef SNELL_SPIRV_VAL
+#define SNELL_SPIRV_VAL "spirv-val"
+#endif
+#ifndef SNELL_SPIRV_CROSS
+#define SNELL_SPIRV_CROSS "spirv-cross"
+#endif
+snell::gpu::HlslTools hlslTools() {
+  snell::gpu::HlslTools t;
+  t.glslangValidator = SNELL_GLSLANG_VALIDATOR;
+  t.spirvVal = SNELL_SPIRV_VAL;
+  t.spirvCross = SNELL_SPIRV_CROSS;
+  return t;
+}
+fs::path hlslWorkDir() {
+#ifdef SNELL_HLSL_WORK_DIR
+  return SNELL_HLSL_WORK_DIR;
+#else
+  return fs::temp_directory_path() / "snell_hlsl_parity";
+#endif
+}
+constexpr Backend kHlslBackend = Backend::OSMesa;  // one backend is enough for HLSL
+
 // One context per backend for the whole run: creating one costs more than most
 // cases. Released by main() before exit: destroying a context from a static
 // destructor races Mesa's own exit-time teardown.
@@ -49,7 +79,8 @@ Context& contextFor(Backend backend) {
 
 class ParityTest : public ::testing::Test {
  public:
-  ParityTest(const CaseSpec* spec, Backend backend) : spec_(spec), backend_(backend) {}
+  // hlsl: run the case file through the HLSL bridge instead of as GLSL.
+  ParityTest(const CaseSpec* spec, Backend backend, bool hlsl = false) : spec_(spec), backend_(backend), hlsl_(hlsl) {}
   void TestBody() override {
     if (spec_->setup) spec_->setup();
     const std::vector<ParityIO> inputs = spec_->inputs();
@@ -59,12 +90,16 @@ class ParityTest : public ::testing::Test {
     for (const ParityIO& in : inputs) cpu.push_back(spec_->cpu(in));
     Context& ctx = contextFor(backend_);
     const std::vector<ParityIO> gpu =
-        snell::gpu::runParityGpu(ctx, {kRoot / "glsl", kRoot / "tests" / "parity" / "cases"}, spec_->glslFile,
-                                 spec_->entry, inputs, spec_->textures);
+        hlsl_ ? snell::gpu::runParityHlsl(
+                    ctx, {kRoot / "hlsl_like" / "snell", kRoot / "glsl", kRoot / "tests" / "parity" / "cases"},
+                    spec_->glslFile, spec_->entry, inputs, spec_->textures, hlslWorkDir(), hlslTools())
+              : snell::gpu::runParityGpu(ctx, {kRoot / "glsl", kRoot / "tests" / "parity" / "cases"},
+                                         spec_->glslFile, spec_->entry, inputs, spec_->textures);
     const snell::gpu::ParityReport r =
         snell::gpu::compareParity(gpu, cpu, spec_->discrete, spec_->outputs, spec_->tol.abs, spec_->tol.rel, &inputs);
     // The figures the closing notes quote.
-    std::cout << "[parity] " << spec_->function << " backend=" << snell::gpu::backendName(backend_)
+    std::cout << (hlsl_ ? "[parity-hlsl] " : "[parity] ") << spec_->function << " file=" << spec_->glslFile
+              << " backend=" << snell::gpu::backendName(backend_)
               << " cases=" << r.cases << " mismatches=" << r.mismatches << " maxAbs=" << r.maxAbs
               << " maxRel=" << r.maxRel << "\n";
     EXPECT_EQ(r.mismatches, 0u) << r.firstMismatchText;
@@ -73,25 +108,121 @@ class ParityTest : public ::testing::Test {
  private:
   const CaseSpec* spec_;
   Backend backend_;
+  bool hlsl_;
 };
+
+// SNELL_HLSL_FLIP_V (bridge.hlsl, D3D-oriented textures): the hooks cases run
+// as HLSL with the option on and every texture level stored upside down (row 0
+// at the top, as a D3D render target) must give what the C++ build gives on the
+// GL-oriented textures. Nearest reads move off texel edges first: there GL's
+// floor() picks the texel above the edge, which a mirror turns into the one
+// below (level 0: into the texel interior; every level: by 1e-4 in uv).
+enum class EdgeNudge { None, Level0Interior, AllLevels };
+snell::Texture2D flipRows(const snell::Texture2D& t) {
+  auto flip = [](const snell::Image& img) {
+    snell::Image f(img.width, img.height);
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) f.at(x, img.height - 1 - y) = img.at(x, y);
+    return f;
+  };
+  snell::Texture2D r(flip(t.level(0)), t.minFilter, t.mipFilter);
+  r.magFilter = t.magFilter;
+  for (int l = 1; l < t.levelCount(); ++l) r.addLevel(flip(t.level(l)));
+  return r;
+}
+
+void runFlipV(const std::string& entry, EdgeNudge nudge) {
+  const CaseSpec* spec = nullptr;
+  for (const CaseSpec& c : registry())
+    if (c.entry == entry) spec = &c;
+  ASSERT_NE(spec, nullptr) << "no parity case with entry " << entry;
+  if (spec->setup) spec->setup();
+  std::vector<ParityIO> inputs = spec->inputs();
+  std::vector<snell::Texture2D> flipped;
+  flipped.reserve(spec->textures.size());
+  std::vector<snell::gpu::ParityTexture> textures;
+  for (const snell::gpu::ParityTexture& t : spec->textures) {
+    flipped.push_back(flipRows(*t.texture));
+    textures.push_back({t.uniform, &flipped.back()});
+  }
+  if (nudge == EdgeNudge::AllLevels) {
+    for (ParityIO& in : inputs) {
+      in.v[0].x += 1e-4f;
+      in.v[0].y += 1e-4f;
+    }
+  } else if (nudge == EdgeNudge::Level0Interior) {
+    const glm::ivec2 size = spec->textures.front().texture->size(0);  // every hooks texture has one base size
+    for (ParityIO& in : inputs)
+      for (int k = 0; k < 2; ++k) {
+        const float n = static_cast<float>(size[k]);
+        const float t = in.v[0][k] * n;
+        in.v[0][k] = (std::floor(t) + 0.25f + 0.5f * (t - std::floor(t))) / n;
+      }
+  }
+  std::vector<ParityIO> cpu;
+  for (const ParityIO& in : inputs) cpu.push_back(spec->cpu(in));
+  Context& ctx = contextFor(kHlslBackend);
+  const std::vector<ParityIO> gpu = snell::gpu::runParityHlsl(
+      ctx, {kRoot / "hlsl_like" / "snell", kRoot / "glsl", kRoot / "tests" / "parity" / "cases"}, spec->glslFile,
+      spec->entry, inputs, textures, hlslWorkDir(), hlslTools(), {"SNELL_HLSL_FLIP_V 1"});
+  const snell::gpu::ParityReport r =
+      snell::gpu::compareParity(gpu, cpu, spec->discrete, spec->outputs, spec->tol.abs, spec->tol.rel, &inputs);
+  std::cout << "[parity-hlsl-flipv] " << spec->function << " cases=" << r.cases << " mismatches=" << r.mismatches
+            << " maxAbs=" << r.maxAbs << " maxRel=" << r.maxRel << "\n";
+  EXPECT_EQ(r.mismatches, 0u) << r.firstMismatchText;
+}
+
+TEST(ParityHlslFlipV, TexelFetchSizeAndNearest) { runFlipV("caseHookNearest", EdgeNudge::Level0Interior); }
+TEST(ParityHlslFlipV, SampleLodLinear) { runFlipV("caseHookLinear", EdgeNudge::None); }
+TEST(ParityHlslFlipV, SampleLodMipmaps) { runFlipV("caseHookMipmaps", EdgeNudge::AllLevels); }
+
+// Functions whose HLSL run main() registered.
+std::set<std::string>& hlslRegistered() {
+  static std::set<std::string> names;
+  return names;
+}
 
 // Cases of the prelude's texture hook macros (SNELL_SAMPLE_LOD, ...) rather than
 // of a function.
 bool isHookCase(const std::string& name) { return name.rfind("SNELL_", 0) == 0; }
 
-// Public functions: every `SNELL_FN <type> snellName(` in glsl/snell.
-std::set<std::string> publicGlslFunctions() {
-  std::set<std::string> names;
+// Public functions: every `SNELL_FN <type> snellName(` in glsl/snell, with its
+// family (the folder under glsl/snell: optics, camera, intersect, shade).
+std::map<std::string, std::string> publicGlslFunctionFamilies() {
+  std::map<std::string, std::string> names;
   const std::regex fn(R"(SNELL_FN\s+\w+\s+(snell\w+)\s*\()");
-  for (const auto& entry : fs::recursive_directory_iterator(kRoot / "glsl" / "snell")) {
+  const fs::path base = kRoot / "glsl" / "snell";
+  for (const auto& entry : fs::recursive_directory_iterator(base)) {
     if (entry.path().extension() != ".glsl") continue;
+    const fs::path rel = entry.path().lexically_relative(base);
+    const std::string family = std::distance(rel.begin(), rel.end()) > 1 ? rel.begin()->string() : std::string();
     std::ifstream in(entry.path());
     std::stringstream text;
     text << in.rdbuf();
     const std::string s = text.str();
     for (auto it = std::sregex_iterator(s.begin(), s.end(), fn); it != std::sregex_iterator(); ++it)
-      names.insert((*it)[1].str());
+      names[(*it)[1].str()] = family;
   }
+  return names;
+}
+
+std::set<std::string> publicGlslFunctions() {
+  std::set<std::string> names;
+  for (const auto& [name, family] : publicGlslFunctionFamilies()) names.insert(name);
+  return names;
+}
+
+// Functions defined after the HLSL preprocessor ran over an hlsl_like entry
+// file (glslangValidator -D -E): what an HLSL shader including it can call.
+std::set<std::string> hlslDefinedFunctions(const std::string& entryFile) {
+  const fs::path file = kRoot / "hlsl_like" / "snell" / entryFile;
+  const snell::gpu::ToolResult r =
+      snell::gpu::runTool(hlslTools().glslangValidator, {"-D", "-E", "-S", "frag", file.string()}, "glslang-tools");
+  if (r.exitCode != 0) throw snell::gpu::Error("glslangValidator -D -E " + file.string() + " failed:\n" + r.output);
+  std::set<std::string> names;
+  const std::regex def(R"((\w+)\s+(snell\w+)\s*\([^;{}]*\)\s*\{)");
+  for (auto it = std::sregex_iterator(r.output.begin(), r.output.end(), def); it != std::sregex_iterator(); ++it)
+    if ((*it)[1].str() != "return") names.insert((*it)[2].str());
   return names;
 }
 
@@ -104,6 +235,29 @@ TEST(ParityManifest, EveryPublicGlslFunctionHasAParityCase) {
     EXPECT_TRUE(covered.count(name)) << name << " has no parity case (tests/parity/*_cases.cpp)";
   for (const std::string& name : covered)
     EXPECT_TRUE(publicNames.count(name) || isHookCase(name)) << "parity case for unknown function " << name;
+}
+
+// Every public GLSL function is defined by hlsl_like/snell/snell.hlsl and by its
+// family's entry file, and every function's parity case also runs as HLSL.
+TEST(ParityManifest, EveryPublicGlslFunctionHasAnHlslEntryAndRun) {
+  const std::map<std::string, std::string> families = publicGlslFunctionFamilies();
+  ASSERT_GT(families.size(), 0u);
+  const std::set<std::string> all = hlslDefinedFunctions("snell.hlsl");
+  std::map<std::string, std::set<std::string>> byEntry;
+  for (const std::string family : {"optics", "camera", "intersect", "shade"})
+    byEntry[family] = hlslDefinedFunctions(family + ".hlsl");
+  for (const auto& [name, family] : families) {
+    EXPECT_TRUE(all.count(name)) << name << " is not defined by hlsl_like/snell/snell.hlsl";
+    const auto entry = byEntry.find(family);
+    if (entry == byEntry.end()) {
+      ADD_FAILURE() << name << " (glsl/snell/" << family << ") belongs to no HLSL family entry file";
+    } else {
+      EXPECT_TRUE(entry->second.count(name)) << name << " is not defined by hlsl_like/snell/" << family << ".hlsl";
+    }
+    EXPECT_TRUE(hlslRegistered().count(name)) << name << " has no HLSL parity run (ParityHlsl_*)";
+  }
+  for (const CaseSpec& c : registry())
+    EXPECT_TRUE(hlslRegistered().count(c.function)) << "parity case " << c.function << " has no HLSL run";
 }
 
 TEST(ParityManifest, CaseNamesFollowTheFunction) {
@@ -129,6 +283,13 @@ int main(int argc, char** argv) {
                                 return new snell_parity::ParityTest(&spec, backend);
                               });
     }
+    // The same case through the HLSL bridge, cross-compiled to GLSL 450.
+    const std::string hlslSuite = std::string("ParityHlsl_") + snell::gpu::backendName(snell_parity::kHlslBackend);
+    ::testing::RegisterTest(hlslSuite.c_str(), spec.function.c_str(), nullptr, nullptr, __FILE__, __LINE__,
+                            [&spec]() -> ::testing::Test* {
+                              return new snell_parity::ParityTest(&spec, snell_parity::kHlslBackend, true);
+                            });
+    snell_parity::hlslRegistered().insert(spec.function);
   }
   const int result = RUN_ALL_TESTS();
   snell_parity::contexts().clear();

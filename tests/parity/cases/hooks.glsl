@@ -10,6 +10,13 @@ uniform sampler2D parityTexTrilinear;    /* LINEAR, LINEAR_MIPMAP_LINEAR */
 uniform sampler2D parityTexMipNearest;   /* NEAREST, NEAREST_MIPMAP_NEAREST */
 uniform sampler2D parityTexMagLinear;    /* mag LINEAR, min NEAREST_MIPMAP_NEAREST (c = 0.5) */
 #endif
+#if defined(SNELL_LANG_HLSL)
+Texture2D<float4> parityTexNearest;
+Texture2D<float4> parityTexLinear;
+Texture2D<float4> parityTexTrilinear;
+Texture2D<float4> parityTexMipNearest;
+Texture2D<float4> parityTexMagLinear;
+#endif
 
 /* a.xy uv, a.z lod; b.xy texel, b.z level. */
 SNELL_FN SnellParityOut caseHookNearest(vec4 a, vec4 b, vec4 c, vec4 d) {

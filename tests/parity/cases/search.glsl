@@ -21,6 +21,10 @@
 uniform sampler2D searchTexSphere;      /* sphereBack 256x256, NEAREST */
 uniform sampler2D searchTexSilhouette;  /* silhouette 256x256, NEAREST */
 #endif
+#if defined(SNELL_LANG_HLSL)
+Texture2D<float4> searchTexSphere;
+Texture2D<float4> searchTexSilhouette;
+#endif
 
 SNELL_FN mat4 searchParityMatrix(vec4 d) {
   return SNELL_CAMERA_MAT4_COLUMNS(vec4(d.x, 0.0f, 0.0f, 0.0f), vec4(0.0f, d.y, 0.0f, 0.0f),

@@ -1,0 +1,76 @@
+// CPU-build throughput of the two-interface refraction technique per preset
+// (snellTwoInterfaceRefraction on the glass sphere in front of a painting,
+// tests/support/technique_scene.hpp, 256x256 buffers): pixels/s, fetches/px.
+#include <benchmark/benchmark.h>
+
+#include <snell/snell.hpp>
+
+#include <vector>
+
+#include "support/technique_scene.hpp"
+
+namespace {
+
+using namespace snell;
+
+const technique_test::Scene& scene() {
+  static const technique_test::Scene s = technique_test::makeScene(256, 256);
+  return s;
+}
+
+struct Pixel {
+  glm::vec3 p, n;
+};
+
+const std::vector<Pixel>& pixels() {
+  static const std::vector<Pixel> v = [] {
+    std::vector<Pixel> r;
+    const technique_test::Scene& s = scene();
+    for (int j = 0; j < s.height; j += 2)
+      for (int i = 0; i < s.width; i += 2) {
+        const technique_test::Exact e =
+            technique_test::exactTrace(s.front, glm::dvec2((i + 0.5) / s.width, (j + 0.5) / s.height), 1.5);
+        if (e.hitsSphere) r.push_back({glm::vec3(e.p1), glm::vec3(e.n1)});
+      }
+    return r;
+  }();
+  return v;
+}
+
+SnellTechniqueOptions preset(int k) {
+  SnellTechniqueOptions o;
+  switch (k) {
+    case 0: o = snellPresetDir(); break;
+    case 1: o = snellPresetIsr(); break;
+    case 2: o = snellPresetPlaneNormal(2); break;
+    case 3: o = snellPresetPlaneDepth(2); break;
+    case 4: o = snellPresetSingleSample(); break;
+    case 5: o = snellPresetLinearMarch(); break;
+    default: o = snellPresetDdaMarch(); break;
+  }
+  o.exitMode = SNELL_EXIT_SCENE;
+  return o;
+}
+
+void BM_TwoInterface(benchmark::State& state) {
+  const technique_test::Scene& s = scene();
+  const SnellTechniqueOptions o = preset(int(state.range(0)));
+  const std::vector<Pixel>& px = pixels();
+  double fetches = 0.0;
+  std::size_t n = 0;
+  for (auto _ : state) {
+    for (const Pixel& p : px) {
+      const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
+          p.p, p.n, 4.4f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(), s.plane.depth,
+          s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o);
+      benchmark::DoNotOptimize(r.color);
+      fetches += r.fetches;
+    }
+    n += px.size();
+  }
+  state.SetItemsProcessed(int64_t(n));
+  state.counters["fetches/px"] = n ? fetches / double(n) : 0.0;
+}
+BENCHMARK(BM_TwoInterface)->DenseRange(0, 6)->ArgName("preset(DIR,ISR,PlaneN,PlaneD,Single,March,DDA)");
+
+}  // namespace

@@ -1,0 +1,49 @@
+#version 450 core
+#extension GL_GOOGLE_include_directive : require  // or resolve includes your own way
+// snell-lab pass 4: the refractive object's front faces, shaded with one
+// technique (LAB_TECHNIQUE, set by the host before compiling) through
+// labShade (lab_technique.glsl), the very function snell-lab runs per pixel in
+// C++ on the read-back buffers. Outputs: colour, per-pixel stats, and the
+// fragment's inputs (position, normal, d_N) so the CPU evaluates the same pixel.
+#ifndef LAB_TECHNIQUE
+#  define LAB_TECHNIQUE 2
+#endif
+#include "lab_technique.glsl"
+
+layout(location = 0) in vec3 vsPosition;
+layout(location = 1) in vec3 vsNormal;
+layout(location = 2) in float vsDn;
+
+layout(binding = 0) uniform sampler2D backDepth;
+layout(binding = 1) uniform sampler2D backNormal;
+layout(binding = 2) uniform sampler2D backPyramid;
+layout(binding = 3) uniform sampler2D sceneDepth;
+layout(binding = 4) uniform sampler2D sceneNormal;
+layout(binding = 5) uniform sampler2D scenePyramid;
+layout(binding = 6) uniform sampler2D sceneColor;
+layout(binding = 7) uniform sampler2D environment;
+layout(location = 2) uniform mat4 projection;  // clipFromView
+layout(location = 3) uniform float zNear;
+layout(location = 4) uniform float zFar;
+layout(location = 5) uniform float ior;
+layout(location = 6) uniform vec3 absorption;
+layout(location = 7) uniform vec3 envX;
+layout(location = 8) uniform vec3 envY;
+layout(location = 9) uniform vec3 envZ;
+layout(location = 10) uniform float backRange;
+
+layout(location = 0) out vec4 color;
+layout(location = 1) out vec4 stats;     // x fell back, y texel fetches, z back hit, w exit hit
+layout(location = 2) out vec4 position;  // xyz view-space front position, w d_N
+layout(location = 3) out vec4 normal;    // xyz interpolated front normal, w 1 (coverage)
+
+void main() {
+  LabParams p = labParams(projection, zNear, zFar, ior, absorption, envX, envY, envZ, backRange);
+  SnellTwoInterfaceResult r = labShade(LAB_TECHNIQUE, vsPosition, vsNormal, vsDn, backDepth, backNormal,
+                                       backPyramid, sceneDepth, sceneNormal, scenePyramid, sceneColor,
+                                       environment, p);
+  color = vec4(r.color, 1.0f);
+  stats = vec4(r.fellBack ? 1.0f : 0.0f, float(r.fetches), r.backHit ? 1.0f : 0.0f, r.exitHit.valid ? 1.0f : 0.0f);
+  position = vec4(vsPosition, vsDn);
+  normal = vec4(vsNormal, 1.0f);
+}

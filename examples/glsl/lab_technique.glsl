@@ -1,0 +1,122 @@
+/*
+description: the lab's per-pixel technique call (snell-lab, examples/lab): one
+  function that the front-face fragment shader (lab_refract.frag) calls on the
+  GPU and snell-lab calls per pixel in C++ on the read-back buffers, so the
+  CPU image and the GPU image come from the same body. It picks a preset of
+  shade/technique_presets.glsl by number, points the exit slot at the opaque
+  scene's buffers (the paintings; the environment where the exit ray finds
+  none) and runs snellTwoInterfaceRefraction.
+use: LabParams p = labParams(clipFromView, zNear, zFar, ior, absorption, envX, envY, envZ, backRange);
+     SnellTwoInterfaceResult r = labShade(LAB_TECHNIQUE_PLANE_NORMAL_1, frontPosition, frontNormal,
+         dN, backDepth, backNormal, backPyramid, sceneDepth, sceneNormal, scenePyramid,
+         sceneColor, environment, p);
+  technique   LAB_TECHNIQUE_* below
+  frontPosition, frontNormal, dN: the front-face fragment (view space), Wyman's d_N
+  back*       the back-face pass: depth (GL_GREATER, cleared to 0), view-space
+              normals, its depth min/max pyramid
+  scene*      the opaque scene without the object: depth (GL_LESS, cleared to
+              1), view-space normals, pyramid, colour
+  environment the equirectangular environment (world directions through
+              envX/envY/envZ, the columns of world-from-view with the
+              environment's rotation folded in)
+contract: every technique uses SNELL_EXIT_SCENE with SNELL_FALLBACK_ENVIRONMENT,
+  the critical-angle TIR policy, Fresnel reflection of the environment at the
+  first interface and Beer-Lambert absorption along the found chord. The
+  marches (linear, DDA) in the back slot walk at most p.backRange (the
+  object's bounding-box diagonal); every other parameter is the preset's.
+source: the composition of DESIGN.md sec. 2; the presets' own sources.
+*/
+#ifndef LAB_TECHNIQUE_GLSL
+#define LAB_TECHNIQUE_GLSL
+#include "snell/prelude.glsl"
+#include "snell/camera/conventions.glsl"
+#include "snell/intersect/depth_surface.glsl"
+#include "snell/shade/technique_options.glsl"
+#include "snell/shade/technique_presets.glsl"
+#include "snell/shade/two_interface_shade.glsl"
+
+#define LAB_TECHNIQUE_SINGLE 0
+#define LAB_TECHNIQUE_PLANE_NORMAL_0 1
+#define LAB_TECHNIQUE_PLANE_NORMAL_1 2
+#define LAB_TECHNIQUE_PLANE_NORMAL_2 3
+#define LAB_TECHNIQUE_PLANE_DEPTH_1 4
+#define LAB_TECHNIQUE_DIR 5
+#define LAB_TECHNIQUE_ISR 6
+#define LAB_TECHNIQUE_LINEAR_MARCH 7
+#define LAB_TECHNIQUE_DDA 8
+#define LAB_TECHNIQUE_COUNT 9
+
+struct LabParams {
+  mat4 clipFromView;
+  float zNear;
+  float zFar;
+  float ior;
+  vec3 absorption;
+  vec3 envX;
+  vec3 envY;
+  vec3 envZ;
+  float backRange;
+};
+
+SNELL_FN LabParams labParams(mat4 clipFromView, float zNear, float zFar, float ior, vec3 absorption, vec3 envX,
+                             vec3 envY, vec3 envZ, float backRange) {
+  LabParams p;
+  p.clipFromView = clipFromView;
+  p.zNear = zNear;
+  p.zFar = zFar;
+  p.ior = ior;
+  p.absorption = absorption;
+  p.envX = envX;
+  p.envY = envY;
+  p.envZ = envZ;
+  p.backRange = backRange;
+  return p;
+}
+
+SNELL_FN SnellTechniqueOptions labTechniqueOptions(int technique, LabParams p) {
+  SnellTechniqueOptions o = snellPresetSingleSample();
+  if (technique == LAB_TECHNIQUE_PLANE_NORMAL_0) {
+    o = snellPresetPlaneNormal(0);
+  } else if (technique == LAB_TECHNIQUE_PLANE_NORMAL_1) {
+    o = snellPresetPlaneNormal(1);
+  } else if (technique == LAB_TECHNIQUE_PLANE_NORMAL_2) {
+    o = snellPresetPlaneNormal(2);
+  } else if (technique == LAB_TECHNIQUE_PLANE_DEPTH_1) {
+    o = snellPresetPlaneDepth(1);
+  } else if (technique == LAB_TECHNIQUE_DIR) {
+    o = snellPresetDir();
+  } else if (technique == LAB_TECHNIQUE_ISR) {
+    o = snellPresetIsr();
+  } else if (technique == LAB_TECHNIQUE_LINEAR_MARCH) {
+    o = snellPresetLinearMarch();
+    o.back.maxDistance = p.backRange;
+  } else if (technique == LAB_TECHNIQUE_DDA) {
+    o = snellPresetDdaMarch();
+    o.back.maxDistance = p.backRange;
+  }
+  o.exitMode = SNELL_EXIT_SCENE;
+  o.fallback = SNELL_FALLBACK_ENVIRONMENT;
+  o.tirPolicy = SNELL_TIR_CRITICAL;
+  o.ior = p.ior;
+  o.iorOutside = 1.0f;
+  o.iors = vec3(p.ior, p.ior, p.ior);
+  o.absorption = p.absorption;
+  o.reflection = true;
+  o.envX = p.envX;
+  o.envY = p.envY;
+  o.envZ = p.envZ;
+  return o;
+}
+
+SNELL_FN SnellTwoInterfaceResult labShade(int technique, vec3 frontPosition, vec3 frontNormal, float dN,
+                                          SNELL_TEX2D backDepth, SNELL_TEX2D backNormal, SNELL_TEX2D backPyramid,
+                                          SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid,
+                                          SNELL_TEX2D sceneColor, SNELL_ENVIRONMENT_TEX environment, LabParams p) {
+  SnellDepthSurface back = snellDepthSurface(p.clipFromView, p.zNear, p.zFar, SNELL_DEPTH_GL, 0.0f);
+  SnellDepthSurface scene = snellDepthSurface(p.clipFromView, p.zNear, p.zFar, SNELL_DEPTH_GL, 1.0f);
+  SnellTechniqueOptions o = labTechniqueOptions(technique, p);
+  return snellTwoInterfaceRefraction(frontPosition, frontNormal, dN, backDepth, backNormal, backPyramid, back,
+                                     sceneDepth, sceneNormal, scenePyramid, sceneColor, scene, environment, o);
+}
+
+#endif

@@ -1,0 +1,390 @@
+#include "gpu_lab.hpp"
+
+#include "technique.hpp"
+
+#include <snell/gpu/context.hpp>
+#include <snell/gpu/include_flattener.hpp>
+#include <snell/gpu/program.hpp>
+#include <snell/gpu/resources.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <chrono>
+#include <fstream>
+#include <sstream>
+
+namespace snell::lab {
+
+namespace fs = std::filesystem;
+
+ShadeConstants shadeConstants(const SceneFrame& frame) {
+  ShadeConstants k;
+  k.viewFromWorld = frame.camera.viewFromWorld();
+  k.clipFromView = frame.camera.clipFromView();
+  k.zNear = frame.camera.zNear;
+  k.zFar = frame.camera.zFar;
+  k.ior = frame.ior;
+  k.absorption = frame.absorption;
+  // Environment lookups take world directions: world-from-view, then the
+  // environment's rotation about +Y (environment.hpp: phi = atan2(x, -z) - rotation,
+  // i.e. the direction turned by +rotation about Y).
+  const mat3 worldFromView = mat3(frame.camera.worldFromView());
+  const mat3 rotate = mat3(glm::rotate(mat4(1.0f), glm::radians(frame.environment.rotationDegrees()), vec3(0, 1, 0)));
+  const mat3 m = rotate * worldFromView;
+  k.envX = m[0];
+  k.envY = m[1];
+  k.envZ = m[2];
+  k.backRange = meshBounds(frame.object).diagonal();
+  return k;
+}
+
+Texture2D environmentTexture(const SceneFrame& frame) {
+  Image img = frame.environment.image();
+  const float s = frame.environment.intensity();
+  for (vec4& t : img.texels) t = vec4(vec3(t) * s, 1.0f);
+  return Texture2D(std::move(img), Filter::Linear);
+}
+
+namespace {
+
+std::string readFile(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw gpu::Error("cannot open shader " + p.string());
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The source with `defines` inserted after its leading #version / #extension lines.
+gpu::FlatSource flattenWithDefines(const fs::path& file, const std::string& defines, const ShaderDirs& dirs) {
+  const std::string text = readFile(file);
+  std::size_t insertAt = 0, pos = 0;
+  while (pos < text.size()) {
+    const std::size_t end = text.find('\n', pos);
+    const std::string line = text.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
+    if (line.rfind("#version", 0) == 0 || line.rfind("#extension", 0) == 0) {
+      insertAt = end == std::string::npos ? text.size() : end + 1;
+    } else if (!line.empty() && line.rfind("//", 0) != 0) {
+      break;
+    }
+    if (end == std::string::npos) break;
+    pos = end + 1;
+  }
+  std::string out = text.substr(0, insertAt) + defines + text.substr(insertAt);
+  return gpu::flattenGlslSource(out, file.string(), {dirs.snellGlsl, dirs.labGlsl});
+}
+
+gpu::FlatSource flatten(const fs::path& file, const ShaderDirs& dirs) {
+  return gpu::flattenGlslFile(file, {dirs.snellGlsl, dirs.labGlsl});
+}
+
+// A depth min/max pyramid as one RGBA32F texture with its full mip chain, one
+// framebuffer per level (the GL pass writes level L+1 while reading level L).
+struct Pyramid {
+  gpu::GlHandle<gpu::detail::DeleteTexture> texture;
+  std::vector<gpu::GlHandle<gpu::detail::DeleteFramebuffer>> fbos;
+  std::vector<ivec2> sizes;
+
+  Pyramid(const gpu::GlApi& gl, int width, int height) {
+    GLuint id = 0;
+    gl.GenTextures(1, &id);
+    texture = gpu::GlHandle<gpu::detail::DeleteTexture>(gl, id);
+    gl.BindTexture(GL_TEXTURE_2D, id);
+    int w = width, h = height;
+    for (int lod = 0;; ++lod) {
+      sizes.emplace_back(w, h);
+      gl.TexImage2D(GL_TEXTURE_2D, lod, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
+      if (w == 1 && h == 1) break;
+      w = std::max(1, w / 2);
+      h = std::max(1, h / 2);
+    }
+    const int levels = static_cast<int>(sizes.size());
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, levels - 1);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    for (int lod = 0; lod < levels; ++lod) {
+      GLuint fbo = 0;
+      gl.GenFramebuffers(1, &fbo);
+      fbos.emplace_back(gl, fbo);
+      gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+      gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, id, lod);
+      const GLenum buf = GL_COLOR_ATTACHMENT0;
+      gl.DrawBuffers(1, &buf);
+      const GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
+      if (status != GL_FRAMEBUFFER_COMPLETE)
+        throw gpu::Error(std::string("pyramid level framebuffer incomplete: ") + gpu::framebufferStatusName(status));
+    }
+    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    gpu::checkGl(gl, "pyramid allocation");
+  }
+};
+
+template <class T>
+void setIf(const gpu::Program& p, const std::string& name, const T& value) {
+  if (p.hasUniform(name)) p.set(name, value);
+}
+
+}  // namespace
+
+struct GpuLab::Impl {
+  gpu::Context ctx;
+  const gpu::GlApi& gl;
+  int width, height;
+  ShadeConstants k;
+  std::vector<int> techniques;
+  GLsizei vertexCount = 0;
+  gpu::StorageBuffer positions, normals, indices;
+  gpu::Texture environment;
+  std::vector<gpu::Texture> paintingTextures;
+  std::vector<std::array<vec3, 4>> paintingCorners;
+  gpu::Program background, scene, back, pyramid;
+  std::vector<gpu::Program> refract;
+  gpu::Framebuffer sceneFb, backFb, frontFb;
+  Pyramid scenePyramid, backPyramid;
+  gpu::VertexArray vao;
+
+  Impl(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
+       const std::vector<int>& ids, const ShaderDirs& dirs)
+      : ctx(gpu::parseBackend(backend)),
+        gl(ctx.gl()),
+        width(frame.camera.width),
+        height(frame.camera.height),
+        k(shadeConstants(frame)),
+        techniques(ids),
+        positions(gl),
+        normals(gl),
+        indices(gl),
+        environment(gl, environmentTexture(frame)),
+        background(gpu::Program::graphics(gl, flatten(dirs.labGlsl / "lab_fullscreen.vert", dirs),
+                                          flatten(dirs.labGlsl / "lab_background.frag", dirs))),
+        scene(gpu::Program::graphics(gl, flatten(dirs.labGlsl / "lab_scene.vert", dirs),
+                                     flatten(dirs.labGlsl / "lab_scene.frag", dirs))),
+        back(gpu::Program::graphics(gl, flatten(dirs.labGlsl / "lab_mesh.vert", dirs),
+                                    flatten(dirs.labGlsl / "lab_back.frag", dirs))),
+        pyramid(gpu::Program::graphics(gl, flatten(dirs.labGlsl / "lab_fullscreen.vert", dirs),
+                                       flatten(dirs.labGlsl / "depth_pyramid.frag", dirs))),
+        sceneFb(gl, width, height, 2, true),
+        backFb(gl, width, height, 1, true),
+        frontFb(gl, width, height, 4, true),
+        scenePyramid(gl, width, height),
+        backPyramid(gl, width, height),
+        vao(gl) {
+    // The mesh: positions (w = d_N), normals, indices, pulled by gl_VertexID.
+    const Mesh& m = frame.object;
+    std::vector<glm::vec4> p(m.vertexCount()), n(m.vertexCount());
+    for (std::size_t i = 0; i < m.vertexCount(); ++i) {
+      p[i] = glm::vec4(m.positions[i], i < dN.size() ? dN[i] : 0.0f);
+      n[i] = glm::vec4(m.normals[i], 0.0f);
+    }
+    positions.upload(p);
+    normals.upload(n);
+    indices.upload(m.indices.data(), m.indices.size() * sizeof(std::uint32_t));
+    vertexCount = static_cast<GLsizei>(m.indices.size());
+    for (const Painting& painting : frame.paintings) {
+      paintingTextures.emplace_back(gl, painting.texture);
+      paintingCorners.push_back(painting.corners());
+    }
+    // The scene colour is read with bilinear filtering (no mips) on both sides.
+    gl.BindTexture(GL_TEXTURE_2D, sceneFb.colorTexture(0));
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+
+    const mat4 viewFromClip = glm::inverse(k.clipFromView);
+    setIf(background, "viewFromClip", viewFromClip);
+    setIf(background, "envX", k.envX);
+    setIf(background, "envY", k.envY);
+    setIf(background, "envZ", k.envZ);
+    setIf(background, "viewport", vec2(static_cast<float>(width), static_cast<float>(height)));
+    setIf(background, "environment", 0);
+    setIf(scene, "viewFromWorld", k.viewFromWorld);
+    setIf(scene, "clipFromView", k.clipFromView);
+    setIf(scene, "painting", 0);
+    setIf(back, "viewFromWorld", k.viewFromWorld);
+    setIf(back, "clipFromView", k.clipFromView);
+    setIf(pyramid, "source", 0);
+    setIf(pyramid, "zNear", k.zNear);
+    setIf(pyramid, "zFar", k.zFar);
+    setIf(pyramid, "convention", SNELL_DEPTH_GL);
+
+    for (int id : techniques) {
+      const std::string defines = "#define LAB_TECHNIQUE " + std::to_string(id) + "\n";
+      gpu::Program prog = gpu::Program::graphics(gl, flatten(dirs.labGlsl / "lab_mesh.vert", dirs),
+                                                 flattenWithDefines(dirs.labGlsl / "lab_refract.frag", defines, dirs));
+      setIf(prog, "viewFromWorld", k.viewFromWorld);
+      setIf(prog, "clipFromView", k.clipFromView);
+      setIf(prog, "projection", k.clipFromView);
+      setIf(prog, "zNear", k.zNear);
+      setIf(prog, "zFar", k.zFar);
+      setIf(prog, "ior", k.ior);
+      setIf(prog, "absorption", k.absorption);
+      setIf(prog, "envX", k.envX);
+      setIf(prog, "envY", k.envY);
+      setIf(prog, "envZ", k.envZ);
+      setIf(prog, "backRange", k.backRange);
+      const char* samplers[] = {"backDepth",  "backNormal",   "backPyramid", "sceneDepth",
+                                "sceneNormal", "scenePyramid", "sceneColor",  "environment"};
+      for (int u = 0; u < 8; ++u) setIf(prog, samplers[u], u);
+      refract.push_back(std::move(prog));
+    }
+    gpu::checkGl(gl, "lab setup");
+  }
+
+  void bindMesh() const {
+    positions.bindBase(0);
+    normals.bindBase(1);
+    indices.bindBase(2);
+  }
+
+  void buildPyramid(const Pyramid& pyr, GLuint depthTexture, float emptyDepth) {
+    gl.Disable(GL_DEPTH_TEST);
+    gl.Disable(GL_CULL_FACE);
+    pyramid.use();
+    vao.bind();
+    setIf(pyramid, "emptyDepth", emptyDepth);
+    setIf(pyramid, "sourceLod", 0);
+    for (std::size_t lod = 0; lod < pyr.sizes.size(); ++lod) {
+      gl.BindFramebuffer(GL_FRAMEBUFFER, pyr.fbos[lod].id());
+      gl.Viewport(0, 0, pyr.sizes[lod].x, pyr.sizes[lod].y);
+      gl.ActiveTexture(GL_TEXTURE0);
+      if (lod == 0) {
+        gl.BindTexture(GL_TEXTURE_2D, depthTexture);
+        setIf(pyramid, "baseLevel", 1);
+      } else {
+        // Read level lod - 1 only (no feedback loop with the attached level).
+        gl.BindTexture(GL_TEXTURE_2D, pyr.texture.id());
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, static_cast<GLint>(lod - 1));
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(lod - 1));
+        setIf(pyramid, "baseLevel", 0);
+      }
+      gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    gl.BindTexture(GL_TEXTURE_2D, pyr.texture.id());
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(pyr.sizes.size() - 1));
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    gpu::checkGl(gl, "depth pyramid pass");
+  }
+
+  void drawStatic() {
+    vao.bind();
+    // (1) The opaque scene: environment background (depth untouched), then the paintings.
+    sceneFb.clearColor(0, vec4(0.0f));
+    sceneFb.clearColor(1, vec4(0.0f));
+    sceneFb.clearDepth(1.0f);
+    sceneFb.bind();
+    gl.Disable(GL_CULL_FACE);
+    gl.Disable(GL_DEPTH_TEST);
+    gl.DepthMask(GL_FALSE);
+    environment.bind(0);
+    background.use();
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    gl.DepthMask(GL_TRUE);
+    gl.Enable(GL_DEPTH_TEST);
+    gl.DepthFunc(GL_LESS);
+    scene.use();
+    for (std::size_t i = 0; i < paintingTextures.size(); ++i) {
+      paintingTextures[i].bind(0);
+      for (int c = 0; c < 4; ++c) scene.set("corners[" + std::to_string(c) + "]", paintingCorners[i][static_cast<std::size_t>(c)]);
+      gl.DrawArrays(GL_TRIANGLES, 0, 6);
+    }
+    gpu::checkGl(gl, "scene pass");
+    // (2) The object's back faces: nearest-to-camera test reversed.
+    backFb.clearColor(0, vec4(0.0f));
+    backFb.clearDepth(0.0f);
+    backFb.bind();
+    gl.Enable(GL_DEPTH_TEST);
+    gl.DepthFunc(GL_GREATER);
+    gl.Enable(GL_CULL_FACE);
+    gl.CullFace(GL_FRONT);
+    back.use();
+    bindMesh();
+    gl.DrawArrays(GL_TRIANGLES, 0, vertexCount);
+    gl.CullFace(GL_BACK);
+    gl.DepthFunc(GL_LESS);
+    gpu::checkGl(gl, "back-face pass");
+    // (3) Both depth pyramids.
+    buildPyramid(backPyramid, backFb.depthTexture(), 0.0f);
+    buildPyramid(scenePyramid, sceneFb.depthTexture(), 1.0f);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+
+  void drawTechnique(std::size_t index) {
+    frontFb.bind();
+    const vec4 zero(0.0f);
+    for (int a = 0; a < 4; ++a) gl.ClearBufferfv(GL_COLOR, a, &zero[0]);
+    const float one = 1.0f;
+    gl.ClearBufferfv(GL_DEPTH, 0, &one);
+    gl.Enable(GL_DEPTH_TEST);
+    gl.DepthFunc(GL_LESS);
+    gl.Enable(GL_CULL_FACE);
+    gl.CullFace(GL_BACK);
+    const GLuint units[8] = {backFb.depthTexture(),   backFb.colorTexture(0),   backPyramid.texture.id(),
+                             sceneFb.depthTexture(),  sceneFb.colorTexture(1),  scenePyramid.texture.id(),
+                             sceneFb.colorTexture(0), environment.id()};
+    for (int u = 0; u < 8; ++u) {
+      gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(u));
+      gl.BindTexture(GL_TEXTURE_2D, units[u]);
+    }
+    gl.ActiveTexture(GL_TEXTURE0);
+    vao.bind();
+    bindMesh();
+    refract.at(index).use();
+    gl.DrawArrays(GL_TRIANGLES, 0, vertexCount);
+  }
+};
+
+GpuLab::GpuLab(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
+               const std::vector<int>& techniques, const ShaderDirs& dirs)
+    : impl_(std::make_unique<Impl>(backend, frame, dN, techniques, dirs)) {}
+
+GpuLab::~GpuLab() = default;
+
+std::string GpuLab::description() const {
+  return std::string(gpu::backendName(impl_->ctx.backend())) + ", " + impl_->ctx.renderer() + ", OpenGL " +
+         impl_->ctx.version();
+}
+
+double GpuLab::renderStatic() {
+  impl_->gl.Finish();
+  const auto t0 = std::chrono::steady_clock::now();
+  impl_->drawStatic();
+  impl_->gl.Finish();
+  const auto t1 = std::chrono::steady_clock::now();
+  return std::chrono::duration<double, std::milli>(t1 - t0).count();
+}
+
+StaticBuffers GpuLab::readStatic() const {
+  StaticBuffers b;
+  b.sceneColor = impl_->sceneFb.readColor(0);
+  b.sceneNormal = impl_->sceneFb.readColor(1);
+  b.sceneDepth = impl_->sceneFb.readDepth();
+  b.backNormal = impl_->backFb.readColor(0);
+  b.backDepth = impl_->backFb.readDepth();
+  return b;
+}
+
+double GpuLab::renderTechnique(std::size_t index) {
+  impl_->gl.Finish();
+  const auto t0 = std::chrono::steady_clock::now();
+  impl_->drawTechnique(index);
+  impl_->gl.Finish();
+  const auto t1 = std::chrono::steady_clock::now();
+  gpu::checkGl(impl_->gl, "refraction pass");
+  return std::chrono::duration<double, std::milli>(t1 - t0).count();
+}
+
+TechniqueBuffers GpuLab::readTechnique() const {
+  TechniqueBuffers b;
+  b.color = impl_->frontFb.readColor(0);
+  b.stats = impl_->frontFb.readColor(1);
+  b.position = impl_->frontFb.readColor(2);
+  b.normal = impl_->frontFb.readColor(3);
+  return b;
+}
+
+}  // namespace snell::lab

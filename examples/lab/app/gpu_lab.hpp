@@ -1,0 +1,82 @@
+// The lab's GL pipeline on one context (OSMesa or EGL, Mesa llvmpipe by
+// default): (1) the opaque scene (environment background, paintings: colour,
+// depth, view-space normal), (2) the refractive object's back faces (depth
+// GL_GREATER after clearing to 0, front faces culled, normals), (3) the depth
+// min/max pyramids of both depth buffers (examples/glsl/depth_pyramid.frag),
+// (4) the front faces with one technique (examples/glsl/lab_refract.frag):
+// colour, per-pixel stats and the fragment inputs, in RGBA32F attachments.
+#pragma once
+#include "lab/scene.hpp"
+
+#include <snell/bridge.hpp>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace snell::lab {
+
+// Where the shaders live: `labGlsl` holds lab_*.frag/vert and depth_pyramid.frag,
+// `snellGlsl` is the library's glsl/ directory.
+struct ShaderDirs {
+  std::filesystem::path labGlsl;
+  std::filesystem::path snellGlsl;
+};
+
+// Read back after passes 1-3.
+struct StaticBuffers {
+  Image sceneColor, sceneDepth, sceneNormal;  // depth in .x (window depth, GL convention, 1 = empty)
+  Image backDepth, backNormal;                // depth in .x (0 = empty)
+};
+
+// Read back after pass 4.
+struct TechniqueBuffers {
+  Image color;     // rgb linear, a = 1 on the object
+  Image stats;     // x fell back, y fetches, z back hit, w exit hit
+  Image position;  // xyz view-space front position, w d_N
+  Image normal;    // xyz interpolated front normal, w coverage (1 on the object)
+};
+
+// The per-frame constants both the GPU and the CPU pass to labShade.
+struct ShadeConstants {
+  mat4 viewFromWorld{1.0f};
+  mat4 clipFromView{1.0f};
+  float zNear = 0.1f, zFar = 100.0f;
+  float ior = 1.5f;
+  vec3 absorption{0.0f};
+  vec3 envX{1, 0, 0}, envY{0, 1, 0}, envZ{0, 0, 1};  // world-from-view, environment rotation folded in
+  float backRange = 10.0f;                            // object bounding-box diagonal
+};
+ShadeConstants shadeConstants(const SceneFrame& frame);
+
+// The environment as both sides sample it: intensity applied, GL_LINEAR, clamp to edge.
+Texture2D environmentTexture(const SceneFrame& frame);
+
+class GpuLab {
+ public:
+  // backend: "auto", "osmesa" or "egl". `techniques`: LAB_TECHNIQUE_* ids, one
+  // program each. dN: Wyman's d_N per vertex of frame.object (zeros when absent).
+  GpuLab(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
+         const std::vector<int>& techniques, const ShaderDirs& dirs);
+  ~GpuLab();
+  GpuLab(const GpuLab&) = delete;
+  GpuLab& operator=(const GpuLab&) = delete;
+
+  std::string description() const;  // backend, GL renderer and version
+
+  // Passes 1-3; returns their wall time in ms (glFinish on both sides).
+  double renderStatic();
+  StaticBuffers readStatic() const;
+
+  // Pass 4 with techniques[index]: glFinish, steady clock, draw, glFinish.
+  // Returns the pass's wall time in ms.
+  double renderTechnique(std::size_t index);
+  TechniqueBuffers readTechnique() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace snell::lab

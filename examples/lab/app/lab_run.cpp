@@ -1,0 +1,431 @@
+#include "lab_run.hpp"
+
+#include "technique.hpp"
+
+#include "lab/error.hpp"
+#include "lab/figure.hpp"
+#include "lab/image_io.hpp"
+#include "lab/metrics.hpp"
+#include "lab/scene.hpp"
+#include "lab/tracer.hpp"
+
+#include <snell/depth_pyramid.hpp>
+#include <snell/wyman_dn.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdlib>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+namespace snell::lab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+float clamp01(float v) { return std::min(std::max(v, 0.0f), 1.0f); }
+
+// The read-back buffers as the C++ side samples them (the same filters as GL).
+struct CpuBuffers {
+  Texture2D backDepth, backNormal, backPyramid;
+  Texture2D sceneDepth, sceneNormal, scenePyramid, sceneColor;
+  Texture2D environment;
+};
+
+CpuBuffers cpuBuffers(const StaticBuffers& b, const ShadeConstants& k, const SceneFrame& frame) {
+  CpuBuffers c;
+  c.backDepth = Texture2D(b.backDepth);
+  c.backNormal = Texture2D(b.backNormal);
+  c.sceneDepth = Texture2D(b.sceneDepth);
+  c.sceneNormal = Texture2D(b.sceneNormal);
+  c.sceneColor = Texture2D(b.sceneColor, Filter::Linear);
+  c.backPyramid = snellBuildDepthPyramid(c.backDepth, snellDepthSurface(k.clipFromView, k.zNear, k.zFar, SNELL_DEPTH_GL, 0.0f));
+  c.scenePyramid = snellBuildDepthPyramid(c.sceneDepth, snellDepthSurface(k.clipFromView, k.zNear, k.zFar, SNELL_DEPTH_GL, 1.0f));
+  c.environment = environmentTexture(frame);
+  return c;
+}
+
+// Runs f(y) for every row on `threads` threads.
+template <class F>
+void parallelRows(int height, int threads, F&& f) {
+  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::atomic<int> next{0};
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t)
+    pool.emplace_back([&] {
+      for (int y = next++; y < height; y = next++) f(y);
+    });
+  for (std::thread& t : pool) t.join();
+}
+
+// Composite: the object's pixels from `object` where the front pass covered them, else the scene.
+Image composite(const Image& object, const Image& coverage, const Image& scene) {
+  Image out = scene;
+  for (std::size_t i = 0; i < out.texels.size(); ++i)
+    if (coverage.texels[i].w > 0.0f) out.texels[i] = vec4(vec3(object.texels[i]), 1.0f);
+  return out;
+}
+
+Image downscale(const Image& img, int factor) {
+  if (factor <= 1) return img;
+  Image out(std::max(1, img.width / factor), std::max(1, img.height / factor));
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x) {
+      vec4 s(0.0f);
+      for (int dy = 0; dy < factor; ++dy)
+        for (int dx = 0; dx < factor; ++dx) s += img.at(x * factor + dx, y * factor + dy);
+      out.at(x, y) = s / static_cast<float>(factor * factor);
+    }
+  return out;
+}
+
+std::string markdownTable(const LabResult& r) {
+  std::string s;
+  s += "| technique | MSE vs ray traced | MSE vs two-interface ref. | invalid | fetches/px | time ratio | time (ms) | "
+       "CPU-GPU max | CPU-GPU > 1/255 |\n";
+  s += "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const TechniqueRow& t : r.rows) {
+    s += "| " + t.label + " | " + fmt("%.3g", t.mseFull) + " | " + fmt("%.3g", t.mseTwo) + " | " +
+         fmt("%.2f %%", 100.0 * t.invalidShare) + " | " + fmt("%.1f", t.fetchesPerPixel) + " | " +
+         fmt("%.2fx", t.costRatio) + " | " + fmt("%.2f", t.medianMs) + " | " + fmt("%.1f/255", 255.0 * t.cpuGpuMaxAbs) +
+         " | " + fmt("%.3f %%", 100.0 * t.cpuGpuBeyond1) + " |\n";
+  }
+  s += "\n" + r.scene + ", " + std::to_string(r.width) + "x" + std::to_string(r.height) + ", " +
+       std::to_string(r.objectPixels) + " object pixels. MSE: linear RGB clamped to [0, 1], over the object's pixels "
+       "(Mayer & Assarsson's measure). The two-interface reference itself is " +
+       fmt("%.3g", r.mseTwoVsFull) +
+       " from the full ray tracer (its model error: TIR paths, second-interface reflections). Time: the refraction "
+       "pass alone, glFinish + steady clock, median of " +
+       std::to_string(r.frames) + " frames, all techniques interleaved, on " + r.gpu +
+       "; ratios are to single sample; absolute milliseconds on a software rasterizer say little about a GPU. "
+       "CPU-GPU: the same technique function run in C++ on the read-back buffers against the GL image.\n";
+  return s;
+}
+
+std::string targetsText(const LabResult& r) {
+  const TechniqueRow* single = r.row("single");
+  const TechniqueRow* plane = r.row("plane-normal-1");
+  const TechniqueRow* depth = r.row("plane-depth");
+  std::string s = "Mayer & Assarsson (RTX 3070): single sample MSE 0.0057 (0.33 ms), normal plane 0.00094 (0.37 ms, "
+                  "1.12x), depth plane 0.00091 (0.52 ms, 1.58x); raymarching 1.38x the plane's time.\n";
+  s += "Here (" + r.scene + "):";
+  if (single) s += " single sample " + fmt("%.3g", single->mseFull);
+  if (plane) s += ", normal plane (1 it.) " + fmt("%.3g", plane->mseFull) + " at " + fmt("%.2fx", plane->costRatio);
+  if (depth) s += ", depth plane " + fmt("%.3g", depth->mseFull) + " at " + fmt("%.2fx", depth->costRatio);
+  s += ".\n";
+  auto yes = [](bool b) { return b ? "met" : "NOT met"; };
+  if (single && plane) {
+    s += std::string("- normal-plane MSE <= 1/5 of single sample's: ") + yes(plane->mseFull <= single->mseFull / 5.0) +
+         " (ratio " + fmt("%.2f", single->mseFull > 0 ? plane->mseFull / single->mseFull : 0.0) + ")\n";
+    s += std::string("- normal-plane cost <= 1.2x single sample's: ") + yes(plane->costRatio <= 1.2) + " (" +
+         fmt("%.2fx", plane->costRatio) + ")\n";
+  }
+  if (plane) {
+    for (const char* march : {"linear-march", "dda"}) {
+      const TechniqueRow* m = r.row(march);
+      if (!m) continue;
+      const double ratio = plane->medianMs > 0 ? m->medianMs / plane->medianMs : 0.0;
+      s += std::string("- ") + march + " >= 1.38x the plane's cost at no better MSE: " +
+           yes(ratio >= 1.38 && m->mseFull >= plane->mseFull) + " (" + fmt("%.2fx", ratio) + ", MSE " +
+           fmt("%.3g", m->mseFull) + " vs " + fmt("%.3g", plane->mseFull) + ")\n";
+    }
+    s += std::string("- plane technique within MSE 1e-4 of the ray tracer (target for sphere_painting): ") +
+         yes(plane->mseFull <= 1e-4) + " (" + fmt("%.3g", plane->mseFull) + ")\n";
+  }
+  return s;
+}
+
+void writeJson(const fs::path& path, const LabResult& r) {
+  nlohmann::json j;
+  j["scene"] = r.scene;
+  j["width"] = r.width;
+  j["height"] = r.height;
+  j["object_pixels"] = r.objectPixels;
+  j["frames"] = r.frames;
+  j["gpu"] = r.gpu;
+  j["mse_two_interface_vs_full"] = r.mseTwoVsFull;
+  j["trace_seconds"] = r.traceSeconds;
+  j["static_passes_ms"] = r.staticPassMs;
+  nlohmann::json rows = nlohmann::json::array();
+  for (const TechniqueRow& t : r.rows) {
+    rows.push_back({{"technique", t.name},
+                    {"label", t.label},
+                    {"mse_vs_ray_traced", t.mseFull},
+                    {"mse_vs_two_interface", t.mseTwo},
+                    {"invalid_share", t.invalidShare},
+                    {"back_miss_share", t.backMissShare},
+                    {"exit_miss_share", t.exitMissShare},
+                    {"fetches_per_pixel", t.fetchesPerPixel},
+                    {"time_ratio_to_single", t.costRatio},
+                    {"time_ms_median", t.medianMs},
+                    {"cpu_gpu_max_abs", t.cpuGpuMaxAbs},
+                    {"cpu_gpu_share_beyond_1_255", t.cpuGpuBeyond1},
+                    {"cpu_gpu_share_beyond_4_255", t.cpuGpuBeyond4},
+                    {"cpu_gpu_fetch_count_mismatch_share", t.fetchMismatch},
+                    {"cpu_gpu_worst_pixel", {t.worstX, t.worstY}}});
+  }
+  j["techniques"] = rows;
+  std::ofstream out(path);
+  if (!out) throw Error(ErrorKind::Io, "cannot write " + path.string());
+  out << j.dump(2) << "\n";
+}
+
+void writeText(const fs::path& path, const std::string& text) {
+  std::ofstream out(path);
+  if (!out) throw Error(ErrorKind::Io, "cannot write " + path.string());
+  out << text;
+}
+
+}  // namespace
+
+LabResult runLab(const LabOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  // Techniques first: a typo should not cost a ray trace.
+  std::vector<const TechniqueInfo*> techniques;
+  if (options.techniques.empty()) {
+    for (const TechniqueInfo& t : allTechniques()) techniques.push_back(&t);
+  } else {
+    for (const TechniqueInfo& t : allTechniques())
+      if (std::find(options.techniques.begin(), options.techniques.end(), t.name) != options.techniques.end())
+        techniques.push_back(&t);
+  }
+
+  Scene scene = loadScene(options.scenePath);
+  if (options.width > 0) scene.camera.width = options.width;
+  if (options.height > 0) scene.camera.height = options.height;
+  const SceneFrame frame = buildFrame(scene, scene.frameTime(0));
+  const int W = frame.camera.width, H = frame.camera.height;
+
+  LabResult result;
+  result.scene = scene.name.empty() ? fs::path(options.scenePath).stem().string() : scene.name;
+  result.width = W;
+  result.height = H;
+  result.frames = options.frames;
+
+  // Ground truth.
+  const ReferenceTracer tracer(frame);
+  TraceOptions to;
+  to.threads = options.threads;
+  to.progress = !options.quiet;
+  to.mode = TraceMode::Full;
+  const TraceResult full = tracer.render(frame.camera, to);
+  to.mode = TraceMode::TwoInterfaces;
+  const TraceResult two = tracer.render(frame.camera, to);
+  result.traceSeconds = full.stats.seconds + two.stats.seconds;
+  result.objectPixels = full.mask.count();
+  result.mseTwoVsFull = compareImages(full.color, two.color, full.mask).mse;
+
+  // Wyman's d_N, when ISR is asked for.
+  std::vector<float> dN;
+  const bool wantIsr = std::any_of(techniques.begin(), techniques.end(),
+                                   [](const TechniqueInfo* t) { return t->id == LAB_TECHNIQUE_ISR; });
+  if (wantIsr) dN = computeWymanDn(frame.object.positions, frame.object.normals, frame.object.indices);
+
+  // GPU passes 1-3 once (the frame is static), then every technique's pass 4.
+  std::vector<int> ids;
+  for (const TechniqueInfo* t : techniques) ids.push_back(t->id);
+  GpuLab gpu(options.backend, frame, dN, ids, options.dirs);
+  result.gpu = gpu.description();
+  result.staticPassMs = gpu.renderStatic();
+  const StaticBuffers sb = gpu.readStatic();
+  const ShadeConstants k = shadeConstants(frame);
+  const CpuBuffers cb = cpuBuffers(sb, k, frame);
+  const LabParams params = labParams(k.clipFromView, k.zNear, k.zFar, k.ior, k.absorption, k.envX, k.envY, k.envZ, k.backRange);
+
+  std::vector<Image> gpuImages;
+  for (std::size_t i = 0; i < techniques.size(); ++i) {
+    const TechniqueInfo& info = *techniques[i];
+    gpu.renderTechnique(i);  // also compiles the shader's JIT code: not timed
+    const TechniqueBuffers tb = gpu.readTechnique();
+    // The CPU image: the same labShade, per covered pixel, on the read-back inputs.
+    Image cpuColor(W, H);
+    Image cpuStats(W, H);
+    parallelRows(H, options.threads, [&](int y) {
+      for (int x = 0; x < W; ++x) {
+        const vec4 n = tb.normal.at(x, y);
+        if (!(n.w > 0.0f)) continue;
+        const vec4 p = tb.position.at(x, y);
+        const SnellTwoInterfaceResult r =
+            labShade(info.id, vec3(p), vec3(n), p.w, cb.backDepth, cb.backNormal, cb.backPyramid, cb.sceneDepth,
+                     cb.sceneNormal, cb.scenePyramid, cb.sceneColor, cb.environment, params);
+        cpuColor.at(x, y) = vec4(r.color, 1.0f);
+        cpuStats.at(x, y) = vec4(r.fellBack ? 1.0f : 0.0f, static_cast<float>(r.fetches), 0.0f, 0.0f);
+      }
+    });
+    TechniqueRow row;
+    row.name = info.name;
+    row.label = info.label;
+    std::size_t covered = 0, invalid = 0, backMiss = 0, exitMiss = 0, beyond1 = 0, beyond4 = 0, fetchDiff = 0;
+    double fetches = 0.0;
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) {
+        if (!(tb.normal.at(x, y).w > 0.0f)) continue;
+        ++covered;
+        const vec4 s = tb.stats.at(x, y);
+        invalid += s.x > 0.5f;
+        backMiss += s.z < 0.5f;
+        exitMiss += s.w < 0.5f;
+        fetches += static_cast<double>(s.y);
+        fetchDiff += s.y != cpuStats.at(x, y).y;
+        float d = 0.0f;
+        for (int c = 0; c < 3; ++c)
+          d = std::max(d, std::abs(clamp01(tb.color.at(x, y)[c]) - clamp01(cpuColor.at(x, y)[c])));
+        if (static_cast<double>(d) > row.cpuGpuMaxAbs) {
+          row.cpuGpuMaxAbs = static_cast<double>(d);
+          row.worstX = x;
+          row.worstY = y;
+        }
+        beyond1 += d > 1.0f / 255.0f;
+        beyond4 += d > 4.0f / 255.0f;
+      }
+    const double n = covered ? static_cast<double>(covered) : 1.0;
+    row.invalidShare = static_cast<double>(invalid) / n;
+    row.backMissShare = static_cast<double>(backMiss) / n;
+    row.exitMissShare = static_cast<double>(exitMiss) / n;
+    row.fetchesPerPixel = fetches / n;
+    row.cpuGpuBeyond1 = static_cast<double>(beyond1) / n;
+    row.cpuGpuBeyond4 = static_cast<double>(beyond4) / n;
+    row.fetchMismatch = static_cast<double>(fetchDiff) / n;
+    if (std::getenv("SNELL_LAB_DEBUG_PARITY") && row.worstX >= 0) {
+      const int x = row.worstX, y = row.worstY;
+      const glm::dvec4 p(tb.position.at(x, y)), nn(tb.normal.at(x, y)), g(tb.color.at(x, y)), c(cpuColor.at(x, y));
+      const glm::dvec4 gs(tb.stats.at(x, y)), cs(cpuStats.at(x, y));
+      std::fprintf(stderr,
+                   "[parity] %s worst pixel (%d, %d): |d| %.2f/255; P1 (%.9g %.9g %.9g) N1 (%.9g %.9g %.9g) dN %.9g\n"
+                   "  gpu rgb (%.5f %.5f %.5f) fellBack %g fetches %g backHit %g exitHit %g\n"
+                   "  cpu rgb (%.5f %.5f %.5f) fellBack %g fetches %g\n",
+                   info.name, x, y, 255.0 * row.cpuGpuMaxAbs, p.x, p.y, p.z, nn.x, nn.y, nn.z, p.w, g.x, g.y, g.z, gs.x,
+                   gs.y, gs.z, gs.w, c.x, c.y, c.z, cs.x, cs.y);
+      // Is it a tie? Nudge the inputs by one ulp and see whether the C++ result
+      // reaches the GPU's colour.
+      const vec4 pf = tb.position.at(x, y), nf = tb.normal.at(x, y), gf = tb.color.at(x, y);
+      int reproduced = 0, tried = 0, bestUlps = -1;
+      for (int ulps : {1, 2, 4, 8, 16, 32})
+        for (int which = 0; which < 2; ++which)
+          for (int dx = -1; dx <= 1; ++dx)
+            for (int dy = -1; dy <= 1; ++dy)
+              for (int dz = -1; dz <= 1; ++dz) {
+                vec3 q(pf), m(nf);
+                vec3& v = which == 0 ? q : m;
+                const int d[3] = {dx, dy, dz};
+                for (int a = 0; a < 3; ++a)
+                  for (int s = 0; s < ulps * std::abs(d[a]); ++s) v[a] = std::nextafter(v[a], d[a] > 0 ? 1e30f : -1e30f);
+                const SnellTwoInterfaceResult rr =
+                    labShade(info.id, q, m, pf.w, cb.backDepth, cb.backNormal, cb.backPyramid, cb.sceneDepth,
+                             cb.sceneNormal, cb.scenePyramid, cb.sceneColor, cb.environment, params);
+                float e = 0.0f;
+                for (int a = 0; a < 3; ++a) e = std::max(e, std::abs(rr.color[a] - gf[a]));
+                ++tried;
+                if (e <= 1.0f / 255.0f) {
+                  ++reproduced;
+                  if (bestUlps < 0) bestUlps = ulps;
+                }
+              }
+      std::fprintf(stderr, "  input nudges (P1 or N1, 1..32 ulps) reproducing the GPU colour: %d of %d, smallest %d ulps\n",
+                   reproduced, tried, bestUlps);
+    }
+    Image img = composite(tb.color, tb.normal, sb.sceneColor);
+    row.mseFull = compareImages(full.color, img, full.mask).mse;
+    row.mseTwo = compareImages(two.color, img, full.mask).mse;
+    result.rows.push_back(row);
+    gpuImages.push_back(std::move(img));
+  }
+
+  // Timing: all techniques interleaved, frame after frame; median per technique.
+  std::vector<std::vector<double>> times(techniques.size());
+  for (int f = 0; f < options.frames; ++f)
+    for (std::size_t i = 0; i < techniques.size(); ++i) times[i].push_back(gpu.renderTechnique(i));
+  double unit = 0.0;
+  for (std::size_t i = 0; i < techniques.size(); ++i) {
+    result.rows[i].medianMs = median(times[i]);
+    if (techniques[i]->id == LAB_TECHNIQUE_SINGLE) unit = result.rows[i].medianMs;
+  }
+  if (unit <= 0.0 && !result.rows.empty()) unit = result.rows[0].medianMs;
+  for (TechniqueRow& r : result.rows) r.costRatio = unit > 0.0 ? r.medianMs / unit : 0.0;
+
+  result.markdown = markdownTable(result);
+  result.targets = targetsText(result);
+
+  if (!options.outDir.empty()) {
+    const fs::path out(options.outDir);
+    std::error_code ec;
+    fs::create_directories(out, ec);
+    if (ec) throw Error(ErrorKind::Io, "cannot create output directory " + out.string() + ": " + ec.message());
+    writePng((out / "ground_truth.png").string(), full.color);
+    const Image modelHeat = errorHeatMap(full.color, two.color, full.mask);
+    writePng((out / "reference_two_interfaces.png").string(),
+             composePanel({{&full.color, "ray traced (full)"}, {&two.color, "two interfaces"}, {&modelHeat, "error"}},
+                          result.scene + ": two-interface model, MSE " + fmt("%.3g", result.mseTwoVsFull)));
+    const int factor = W >= 512 ? 2 : 1;
+    std::vector<Image> tiles;
+    std::vector<std::string> labels;
+    tiles.push_back(downscale(full.color, factor));
+    labels.push_back("ray traced");
+    tiles.push_back(downscale(two.color, factor));
+    labels.push_back("two interfaces " + fmt("%.2g", result.mseTwoVsFull));
+    for (std::size_t i = 0; i < techniques.size(); ++i) {
+      const TechniqueRow& r = result.rows[i];
+      const Image heat = errorHeatMap(full.color, gpuImages[i], full.mask);
+      char caption[256];
+      std::snprintf(caption, sizeof caption,
+                    "%s, %s: MSE %.3g (two-interface ref. %.3g), invalid %.1f%%, %.1f fetches/px, %.2fx single sample",
+                    result.scene.c_str(), r.label.c_str(), r.mseFull, r.mseTwo, 100.0 * r.invalidShare,
+                    r.fetchesPerPixel, r.costRatio);
+      writePng((out / (r.name + ".png")).string(),
+               composePanel({{&full.color, "ray traced"}, {&gpuImages[i], r.label}, {&heat, "error (RMS, white 0.25)"}},
+                            caption));
+      tiles.push_back(downscale(gpuImages[i], factor));
+      labels.push_back(r.label + " " + fmt("%.2g", r.mseFull) + " " + fmt("%.2fx", r.costRatio));
+    }
+    // Overview: rows of four tiles.
+    const int perRow = 4, scale = 1;
+    std::vector<Image> rows;
+    for (std::size_t i = 0; i < tiles.size(); i += perRow) {
+      std::vector<PanelItem> items;
+      for (std::size_t j = i; j < std::min(tiles.size(), i + perRow); ++j) items.push_back({&tiles[j], labels[j]});
+      rows.push_back(composePanel(items, "", 6, scale));
+    }
+    int cw = 0, ch = 0;
+    for (const Image& r : rows) {
+      cw = std::max(cw, r.width);
+      ch += r.height;
+    }
+    const std::string title = result.scene + ": MSE vs ray tracing, time vs single sample (" + std::to_string(W) + "x" +
+                              std::to_string(H) + ", " + gpu.description().substr(0, gpu.description().find(',')) + ")";
+    const int titleH = textHeight(title, 1) + 8;
+    Image overview(std::max(cw, textWidth(title, 1) + 12), ch + titleH, vec4(0.06f, 0.06f, 0.07f, 1.0f));
+    drawText(overview, 6, 4, title, vec3(1.0f), 1);
+    int yTop = titleH;
+    for (const Image& r : rows) {
+      blit(overview, r, 0, yTop);
+      yTop += r.height;
+    }
+    writePng((out / "overview.png").string(), overview);
+    writeText(out / "table.md", "# snell-lab: " + result.scene + "\n\n" + result.markdown + "\n" + result.targets);
+    result.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    writeJson(out / "table.json", result);
+  }
+  result.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace snell::lab

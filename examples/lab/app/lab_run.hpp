@@ -1,0 +1,65 @@
+// One snell-lab run: load a scene, ray-trace the ground truth (full and
+// two-interface), render every requested technique on the GL driver, shade the
+// same pixels in C++ from the read-back buffers, time the refraction pass, and
+// write the pictures and the table.
+#pragma once
+#include "gpu_lab.hpp"
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace snell::lab {
+
+struct LabOptions {
+  std::string scenePath;
+  std::vector<std::string> techniques;  // command-line names; empty: all
+  int width = 0, height = 0;            // 0: the scene's resolution
+  int frames = 15;                      // timed frames (median), all techniques interleaved
+  std::string backend = "auto";         // auto | osmesa | egl
+  std::string outDir = "lab-out";       // "" writes nothing
+  bool quiet = false;                   // no progress bars, no table on stdout
+  int threads = 0;                      // tracer and CPU shading threads (0: all cores)
+  ShaderDirs dirs;
+};
+
+struct TechniqueRow {
+  std::string name, label;
+  double mseFull = 0.0;        // vs the full ray tracer (Fresnel + TIR), object pixels
+  double mseTwo = 0.0;         // vs the two-interface reference
+  double invalidShare = 0.0;   // object pixels whose technique fell back (no back or exit hit, TIR)
+  double backMissShare = 0.0;  // ... of them: no hit in the back-face buffer
+  double exitMissShare = 0.0;  // ... no hit in the opaque scene's buffer (environment used instead)
+  double fetchesPerPixel = 0.0;
+  double medianMs = 0.0;       // refraction pass, glFinish + steady clock
+  double costRatio = 0.0;      // medianMs / single sample's
+  double cpuGpuMaxAbs = 0.0;   // largest |CPU - GPU| of any channel, [0, 1]-clamped linear
+  double cpuGpuBeyond1 = 0.0;  // share of object pixels with a channel beyond 1/255
+  double cpuGpuBeyond4 = 0.0;  // ... beyond 4/255
+  int worstX = -1, worstY = -1;  // the pixel of cpuGpuMaxAbs
+  double fetchMismatch = 0.0;  // share of object pixels whose CPU fetch count differs from the GPU's
+};
+
+struct LabResult {
+  std::string scene;
+  int width = 0, height = 0;
+  std::size_t objectPixels = 0;
+  double mseTwoVsFull = 0.0;  // the two-interface model's own error (model + TIR)
+  double traceSeconds = 0.0, staticPassMs = 0.0, totalSeconds = 0.0;
+  int frames = 0;
+  std::string gpu;
+  std::vector<TechniqueRow> rows;
+  std::string markdown;  // the table (and notes) as printed
+  std::string targets;   // the Mayer-Assarsson comparison, as printed
+
+  const TechniqueRow* row(const std::string& name) const {
+    for (const TechniqueRow& r : rows)
+      if (r.name == name) return &r;
+    return nullptr;
+  }
+};
+
+// Throws snell::lab::Error (scene and file errors) and snell::gpu::Error (GL).
+LabResult runLab(const LabOptions& options);
+
+}  // namespace snell::lab

@@ -1,0 +1,97 @@
+/*
+description: named presets for the published two-interface refraction methods
+  and the baselines, all through the same technique (snellTwoInterfaceTrace /
+  snellTwoInterfaceRefraction), so the lab compares them fairly. Each returns
+  snellTechniqueOptions() with both intersection slots set.
+use: SnellTechniqueOptions o = snellPresetDir();           // then adjust fields
+     SnellTechniqueOptions o = snellPresetPlaneNormal(2);
+presets (back slot / exit slot):
+  snellPresetDir()                 Oliveira & Brauwers 2007 (DIR): CBS, 5 steps,
+                                   range from the min/max pyramid's top level /
+                                   the same
+  snellPresetDirBounds(zNearest, zFarthest)  DIR with the bounding-box range
+                                   (their suggested speed-up: no reduction
+                                   pass); the numbers from snellDepthRangeFromBox;
+                                   back slot only, the exit slot keeps the pyramid
+  snellPresetIsr()                 Wyman 2005 (ISR): distance interpolation
+                                   between d_V and the per-vertex d_N /
+                                   single sample
+  snellPresetPlaneNormal(n)        Mayer & Assarsson, normal-based plane, n
+                                   refinement iterations / the same
+  snellPresetPlaneDepth(n)         Mayer & Assarsson, depth-based plane (depth
+                                   mips = the pyramid), n iterations / the same
+  snellPresetSingleSample()        the single-sample (GPU Gems) baseline / the same
+  snellPresetLinearMarch()         screen-space ray march, view-space steps +
+                                   bisection / the same
+  snellPresetDdaMarch()            perspective-correct pixel DDA march / the same
+options: the defaults of technique_options.glsl and of each strategy's file.
+contract: pure constructors, no texture access; iteration counts are stored as
+  given (each strategy clamps them).
+source: Oliveira & Brauwers 2007 (sec. 3.3, 5 steps; sec. 6, bounding box);
+  Wyman 2005 via O&B 2007 sec. 2.1, eqs. 1-2; Mayer & Assarsson,
+  "Constant-Time Light Refraction Simulation" (methods 1 and 2, step 5);
+  McGuire & Mara 2014 (DDA).
+*/
+#ifndef SNELL_SHADE_TECHNIQUE_PRESETS_GLSL
+#define SNELL_SHADE_TECHNIQUE_PRESETS_GLSL
+#include "../prelude.glsl"
+#include "technique_options.glsl"
+
+SNELL_FN SnellTechniqueOptions snellTechniquePresetSlots(int backStrategy, int exitStrategy) {
+  SnellTechniqueOptions o = snellTechniqueOptions();
+  o.back = snellIntersectOptions(backStrategy);
+  o.exit = snellIntersectOptions(exitStrategy);
+  return o;
+}
+
+/* Oliveira & Brauwers 2007, sec. 3.3: CBS with c = 5 */
+SNELL_FN SnellTechniqueOptions snellPresetDir() {
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_CBS, SNELL_STRATEGY_CBS);
+  o.back.steps = 5;
+  o.exit.steps = 5;
+  return o;
+}
+
+/* Oliveira & Brauwers 2007, sec. 6: bounding-box range instead of the reduction */
+SNELL_FN SnellTechniqueOptions snellPresetDirBounds(float zNearest, float zFarthest) {
+  SnellTechniqueOptions o = snellPresetDir();
+  o.back.rangeSource = SNELL_RANGE_EXPLICIT;
+  o.back.zNearest = zNearest;
+  o.back.zFarthest = zFarthest;
+  return o;
+}
+
+/* Wyman 2005 (O&B 2007 eqs. 1-2) */
+SNELL_FN SnellTechniqueOptions snellPresetIsr() {
+  return snellTechniquePresetSlots(SNELL_STRATEGY_WYMAN, SNELL_STRATEGY_SINGLE);
+}
+
+/* Mayer & Assarsson, method 1 + step 5 */
+SNELL_FN SnellTechniqueOptions snellPresetPlaneNormal(int iterations) {
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_NORMAL, SNELL_STRATEGY_PLANE_NORMAL);
+  o.back.steps = iterations;
+  o.exit.steps = iterations;
+  return o;
+}
+
+/* Mayer & Assarsson, method 2 + step 5 */
+SNELL_FN SnellTechniqueOptions snellPresetPlaneDepth(int iterations) {
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_DEPTH, SNELL_STRATEGY_PLANE_DEPTH);
+  o.back.steps = iterations;
+  o.exit.steps = iterations;
+  return o;
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetSingleSample() {
+  return snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetLinearMarch() {
+  return snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetDdaMarch() {
+  return snellTechniquePresetSlots(SNELL_STRATEGY_DDA, SNELL_STRATEGY_DDA);
+}
+
+#endif

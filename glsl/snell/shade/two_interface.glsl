@@ -1,0 +1,151 @@
+/*
+description: the geometry of two-interface refraction: refract the view ray at
+  the front face, find where the refracted ray T1 leaves the object in the
+  back-face depth buffer with any intersection strategy (or Wyman's distance
+  interpolation), refract again with the back-face normal found there. The
+  exit ray (P2, T2) is then resolved by two_interface_shade.glsl against the
+  opaque scene or the environment.
+use: SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN,
+         backDepth, backNormal, backPyramid, backSurface, o.back, o.tirPolicy);
+  frontPosition  P1: view-space position of the front-face fragment (camera at
+                 the origin, so the view ray V is frontPosition itself)
+  frontNormal    N1: its normal (either orientation, any length)
+  eta            n_outside / n_object (snellIorToEta(1.0f, 1.5f) for glass in air)
+  dN             Wyman's d_N: thickness along -N1, interpolated from the per-vertex
+                 values the host precomputes (include/snell/wyman_dn.hpp); read
+                 only by SNELL_STRATEGY_WYMAN
+  backDepth, backNormal, backPyramid, backSurface
+                 the back-face pass: depth (GL_GREATER after clearing to the near
+                 value), view-space normals, the depth min/max pyramid of that
+                 depth (snellBuildDepthPyramid / examples/glsl/depth_pyramid.frag),
+                 and how to read the depth (emptyDepth = the clear value)
+  o              the back slot's options (strategy and parameters)
+  tirPolicy      SNELL_TIR_ZERO / _CRITICAL / _REFLECT, both interfaces
+options: technique_options.glsl
+contract:
+  - T1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy). If it is
+    invalid or zero (NaN/zero inputs, eta not finite positive; TIR under ZERO
+    when eta > 1), the path is invalid: valid = false, every vector 0, fetches 0.
+  - WYMAN: one sample of the back depth at the projection of P1 gives d_V =
+    |P1| (zBack / P1.z - 1) (front-to-back distance along the view ray); d =
+    snellWymanDistanceVec(P1, N1, T1, d_V, dN); P2 = P1 + d T1, accepted when
+    snellHitOnSurface(P2) is valid (the back buffer has a surface there; 2
+    fetches). Every other strategy: snellIntersectWith(o.strategy, P1, T1, ...).
+  - on a hit: N2 = xyz of the back normal texel containing the hit uv (level 0,
+    1 fetch), normalized and flipped to face T1 (dot(N2, T1) <= 0); T2 =
+    snellRefract(T1, N2, 1 / eta, tirPolicy). hit = true, exitPoint = P2,
+    exitUv = the hit uv, exitNormal = N2, pathLength = |P2 - P1|, tir = TIR at
+    the second interface (T2 follows the policy: critical-angle tangent or
+    mirror; the reflected ray is not traced further).
+  - fallback (fellBack = true, the path still valid): no back hit (invalid or
+    off-screen texel, empty range), a zero or NaN stored normal, or TIR under
+    SNELL_TIR_ZERO: the ray leaves as if the second interface did not bend it:
+    exitPoint = P2 when found, else P1, exitDirection = T1, pathLength = |P2 -
+    P1| when P2 was found, else 0.
+  - fetches: the strategy's count plus the normal fetch.
+source: C. Wyman, "An Approximate Image-Space Approach for Interactive
+  Refraction", SIGGRAPH 2005 (two interfaces, back-face normal and depth
+  buffers); M. M. Oliveira & M. Brauwers, "Real-Time Refraction Through
+  Deformable Objects", I3D 2007, sec. 2.1 (eqs. 1-2), sec. 3 (intersecting T1
+  with the back-face depth map, N2 from the normal map at the hit), sec. 5
+  (critical-angle TIR policy).
+*/
+#ifndef SNELL_SHADE_TWO_INTERFACE_GLSL
+#define SNELL_SHADE_TWO_INTERFACE_GLSL
+#include "../prelude.glsl"
+#include "../camera/pixel_to_uv.glsl"
+#include "../camera/view_to_uv.glsl"
+#include "../optics/safe_normalize.glsl"
+#include "../optics/refract.glsl"
+#include "../optics/wyman_distance.glsl"
+#include "../intersect/hit.glsl"
+#include "../intersect/depth_surface.glsl"
+#include "../intersect/plane_refine.glsl"
+#include "technique_options.glsl"
+#include "technique_intersect.glsl"
+
+struct SnellTwoInterfacePath {
+  vec3 entryDirection;  // T1
+  vec3 exitPoint;       // P2 (P1 when no back hit)
+  vec3 exitNormal;      // N2, facing T1
+  vec3 exitDirection;   // T2 (T1 on fallback)
+  vec2 exitUv;          // uv of P2 in the back buffers
+  float pathLength;     // |P2 - P1|
+  int fetches;
+  bool hit;
+  bool tir;
+  bool fellBack;
+  bool valid;
+};
+
+/* Wyman 2005 / Oliveira & Brauwers 2007 sec. 3: P1, T1 -> P2 (back-face buffer), N2 -> T2 */
+SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
+                                                      SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
+                                                      SNELL_TEX2D backPyramid, SnellDepthSurface back,
+                                                      SnellIntersectOptions o, int tirPolicy) {
+  SnellTwoInterfacePath p;
+  p.entryDirection = vec3(0.0f, 0.0f, 0.0f);
+  p.exitPoint = vec3(0.0f, 0.0f, 0.0f);
+  p.exitNormal = vec3(0.0f, 0.0f, 0.0f);
+  p.exitDirection = vec3(0.0f, 0.0f, 0.0f);
+  p.exitUv = vec2(0.0f, 0.0f);
+  p.pathLength = 0.0f;
+  p.fetches = 0;
+  p.hit = false;
+  p.tir = false;
+  p.fellBack = true;
+  p.valid = false;
+  SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy);
+  if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_CAMERA_FINITE(frontPosition.x) ||
+      !SNELL_CAMERA_FINITE(frontPosition.y) || !SNELL_CAMERA_FINITE(frontPosition.z)) {
+    return p;
+  }
+  vec3 t1 = r1.direction;
+  p.entryDirection = t1;
+  p.exitPoint = frontPosition;
+  p.exitDirection = t1;
+  p.valid = true;
+  SnellHit h = snellHitMiss(0);
+  if (o.strategy == SNELL_STRATEGY_WYMAN) {
+    SnellScreenPoint sp = snellViewToUv(back.clipFromView, frontPosition);
+    if (sp.valid && frontPosition.z < 0.0f) {
+      SnellSurfaceSample b = snellSampleSurface(backDepth, sp.uv, back);
+      h = snellHitMiss(1);
+      if (b.valid) {
+        float dV = length(frontPosition) * (b.viewZ / frontPosition.z - 1.0f);
+        float d = snellWymanDistanceVec(frontPosition, frontNormal, t1, dV, dN);
+        h = snellHitOnSurface(frontPosition + d * t1, backDepth, back, 1);
+      }
+    }
+  } else {
+    h = snellIntersectWith(o.strategy, frontPosition, t1, backDepth, backNormal, backPyramid, back, o);
+  }
+  p.fetches = h.fetches;
+  if (!h.valid) {
+    return p;
+  }
+  p.hit = true;
+  p.exitPoint = h.position;
+  p.exitUv = h.uv;
+  p.pathLength = length(h.position - frontPosition);
+  vec4 n2 = SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(h.uv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
+  p.fetches = p.fetches + 1;
+  vec3 n = snellSafeNormalize(vec3(n2.x, n2.y, n2.z));
+  if (dot(n, n) == 0.0f) {
+    return p;
+  }
+  if (dot(n, t1) > 0.0f) {
+    n = -n;
+  }
+  p.exitNormal = n;
+  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, tirPolicy);
+  p.tir = r2.tir;
+  if (!r2.valid || dot(r2.direction, r2.direction) == 0.0f) {
+    return p;
+  }
+  p.exitDirection = r2.direction;
+  p.fellBack = false;
+  return p;
+}
+
+#endif

@@ -1,0 +1,402 @@
+// HLSL on llvmpipe: compile an HLSL compute shader with glslang's HLSL front end
+// (glslangValidator -D) to SPIR-V, validate it (spirv-val), cross-compile it to
+// GLSL 450 (spirv-cross --version 450 --no-es) and run that on the GL context.
+// The parity runner runParityHlsl() does this for a parity case: the same case
+// file and inputs as runParityGpu(), wrapped in an HLSL compute shader instead
+// of a GLSL one, so the HLSL bridge (hlsl_like/snell/bridge.hlsl) is executed
+// and compared with the C++ build, not just compiled.
+//
+//   snell::gpu::HlslTools tools;  // names on PATH, or absolute paths
+//   auto gpu = runParityHlsl(ctx, {"hlsl_like/snell", "glsl", "tests/parity/cases"},
+//                            "optics.glsl", "caseSnellRefract", inputs, {}, "build/hlsl_parity", tools);
+//
+// The tools run as child processes (posix_spawnp, no shell); a missing tool is
+// an Error naming the Debian package that provides it. Every intermediate
+// (.hlsl wrapper, .spv, cross-compiled .glsl) is written to a work directory
+// you choose (a build directory: the cross-compiled text is a test artifact,
+// never shipped). Results are cached there per shader: a rerun with the same
+// flattened source and tools skips the tools.
+//
+// Samplers: HLSL separates Texture2D and SamplerState; spirv-cross turns each
+// (texture, sampler) pair used into a combined `sampler2D
+// SPIRV_Cross_Combined<texture><sampler>` (a texture read with Load gets
+// `SPIRV_Cross_DummySampler`), inheriting the texture's binding. The runner maps
+// every combined sampler back to the texture unit of its texture, and binds no
+// GL sampler object, so the GL texture's own filter and wrap state applies
+// whatever SamplerState the HLSL names, as it does for the GLSL run.
+#pragma once
+
+#include "context.hpp"
+#include "error.hpp"
+#include "include_flattener.hpp"
+#include "parity.hpp"
+#include "program.hpp"
+#include "resources.hpp"
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+extern char** environ;
+
+namespace snell::gpu {
+
+// The external tools; names are looked up on PATH, or give absolute paths.
+struct HlslTools {
+  std::string glslangValidator = "glslangValidator";  // Debian: glslang-tools
+  std::string spirvVal = "spirv-val";                 // Debian: spirv-tools
+  std::string spirvCross = "spirv-cross";             // Debian: spirv-cross
+};
+
+struct ToolResult {
+  int exitCode = 0;
+  std::string output;  // stdout and stderr, interleaved
+};
+
+// Runs `program args...` (no shell) and collects its output. Throws an Error
+// naming `package` when the program cannot be started (not installed).
+inline ToolResult runTool(const std::string& program, const std::vector<std::string>& args,
+                          const std::string& package) {
+  int fds[2];
+  if (pipe(fds) != 0) throw Error("runTool: pipe() failed: " + std::string(std::strerror(errno)));
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addclose(&actions, fds[0]);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], 1);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], 2);
+  posix_spawn_file_actions_addclose(&actions, fds[1]);
+  std::vector<std::string> argvStrings;
+  argvStrings.push_back(program);
+  argvStrings.insert(argvStrings.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : argvStrings) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int rc = posix_spawnp(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  close(fds[1]);
+  if (rc != 0) {
+    close(fds[0]);
+    if (rc == ENOENT || rc == EACCES)
+      throw Error("'" + program + "' not found or not executable: install the Debian package " + package +
+                  " (apt-get install " + package + "), or pass its path in snell::gpu::HlslTools");
+    throw Error("cannot start '" + program + "': " + std::strerror(rc));
+  }
+  ToolResult r;
+  char buf[4096];
+  for (;;) {
+    const ssize_t n = read(fds[0], buf, sizeof buf);
+    if (n > 0) {
+      r.output.append(buf, static_cast<std::size_t>(n));
+    } else if (n < 0 && errno == EINTR) {
+      continue;
+    } else {
+      break;
+    }
+  }
+  close(fds[0]);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) throw Error("waitpid for '" + program + "' failed: " + std::strerror(errno));
+  }
+  if (WIFEXITED(status)) {
+    r.exitCode = WEXITSTATUS(status);
+    // posix_spawnp may report a failed exec as exit status 127 instead.
+    if (r.exitCode == 127 && r.output.empty())
+      throw Error("'" + program + "' could not be run (exit 127): install the Debian package " + package +
+                  " (apt-get install " + package + "), or pass its path in snell::gpu::HlslTools");
+  } else {
+    r.exitCode = 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  }
+  return r;
+}
+
+// The result of crossCompileHlslCompute.
+struct HlslCrossCompiled {
+  std::string glsl;                       // GLSL 450 from spirv-cross
+  std::filesystem::path hlslFile, spvFile, glslFile;  // the artifacts
+  // Combined sampler uniforms of the GLSL, e.g.
+  // "SPIRV_Cross_CombinedmyTexsnellLinearClampSampler".
+  std::vector<std::string> combinedSamplers;
+  bool fromCache = false;
+};
+
+namespace detail {
+
+inline std::uint64_t fnv1a(const std::string& s, std::uint64_t h = 1469598103934665603ull) {
+  for (unsigned char c : s) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+inline std::string readTextFile(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) return {};
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+inline void writeTextFile(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream out(p, std::ios::binary | std::ios::trunc);
+  out << text;
+  if (!out) throw Error("cannot write " + p.string());
+}
+
+inline std::string indent(const std::string& text) {
+  std::string out = "    ";
+  for (char c : text) {
+    out += c;
+    if (c == '\n') out += "    ";
+  }
+  return out;
+}
+
+inline std::vector<std::string> combinedSamplerUniforms(const std::string& glsl) {
+  static const std::regex decl(R"(uniform\s+sampler2D\s+(\w+)\s*;)");
+  std::vector<std::string> names;
+  for (auto it = std::sregex_iterator(glsl.begin(), glsl.end(), decl); it != std::sregex_iterator(); ++it)
+    names.push_back((*it)[1].str());
+  return names;
+}
+
+}  // namespace detail
+
+// HLSL compute source -> validated SPIR-V -> GLSL 450. `name` names the
+// artifacts in `workDir` (created if needed): <name>.hlsl, .spv, .glsl.
+// `includeDirs` are glslang -I directories (the folder of bridge.hlsl, glsl/,
+// ...). Throws an Error with the tool's output (and the artifact path) when a
+// step fails.
+inline HlslCrossCompiled crossCompileHlslCompute(const std::string& hlslSource, const std::string& name,
+                                                 const std::vector<std::filesystem::path>& includeDirs,
+                                                 const std::filesystem::path& workDir,
+                                                 const HlslTools& tools = {}, const std::string& entryPoint = "main") {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::create_directories(workDir, ec);
+  if (ec) throw Error("cannot create the HLSL work directory " + workDir.string() + ": " + ec.message());
+  HlslCrossCompiled r;
+  r.hlslFile = workDir / (name + ".hlsl");
+  r.spvFile = workDir / (name + ".spv");
+  r.glslFile = workDir / (name + ".glsl");
+  const fs::path keyFile = workDir / (name + ".key");
+
+  std::vector<std::string> glslangArgs = {"-D", "-e", entryPoint, "-S", "comp", "-V", "--auto-map-bindings",
+                                          "-o", r.spvFile.string()};
+  for (const fs::path& d : includeDirs) glslangArgs.push_back("-I" + d.string());
+  glslangArgs.push_back(r.hlslFile.string());
+  const std::vector<std::string> crossArgs = {"--version", "450", "--no-es", "--combined-samplers-inherit-bindings",
+                                              "--output", r.glslFile.string(), r.spvFile.string()};
+
+  // Cache key: the source with every include spliced in (the GLSL flattener
+  // reads HLSL includes the same way), the tools and their arguments.
+  std::string key;
+  try {
+    std::vector<fs::path> search(includeDirs.begin(), includeDirs.end());
+    std::string k = flattenGlslSource(hlslSource, name, search).text;
+    k += "\n" + tools.glslangValidator + "\n" + tools.spirvVal + "\n" + tools.spirvCross + "\n";
+    for (const std::string& a : glslangArgs) k += a + " ";
+    for (const std::string& a : crossArgs) k += a + " ";
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(detail::fnv1a(k)));
+    key = hex;
+  } catch (const Error&) {
+    key.clear();  // unresolved include: let glslang report it
+  }
+  if (!key.empty() && detail::readTextFile(keyFile) == key && fs::exists(r.glslFile) &&
+      detail::readTextFile(r.hlslFile) == hlslSource) {
+    r.glsl = detail::readTextFile(r.glslFile);
+    if (!r.glsl.empty()) {
+      r.combinedSamplers = detail::combinedSamplerUniforms(r.glsl);
+      r.fromCache = true;
+      return r;
+    }
+  }
+  fs::remove(keyFile, ec);
+
+  detail::writeTextFile(r.hlslFile, hlslSource);
+  ToolResult t = runTool(tools.glslangValidator, glslangArgs, "glslang-tools");
+  if (t.exitCode != 0)
+    throw Error("glslangValidator -D failed on " + r.hlslFile.string() + " (exit " + std::to_string(t.exitCode) +
+                "):\n" + detail::indent(t.output));
+  t = runTool(tools.spirvVal, {r.spvFile.string()}, "spirv-tools");
+  if (t.exitCode != 0)
+    throw Error("spirv-val rejected " + r.spvFile.string() + " (from " + r.hlslFile.string() + "):\n" +
+                detail::indent(t.output));
+  t = runTool(tools.spirvCross, crossArgs, "spirv-cross");
+  if (t.exitCode != 0)
+    throw Error("spirv-cross failed on " + r.spvFile.string() + ":\n" + detail::indent(t.output));
+  r.glsl = detail::readTextFile(r.glslFile);
+  if (r.glsl.empty()) throw Error("spirv-cross wrote no GLSL to " + r.glslFile.string());
+  r.combinedSamplers = detail::combinedSamplerUniforms(r.glsl);
+  if (!key.empty()) detail::writeTextFile(keyFile, key);
+  return r;
+}
+
+// The HLSL twin of parityShaderSource(): the case file's entry run once per
+// invocation over a StructuredBuffer of inputs. `declareTextures`: Texture2D
+// declarations the wrapper adds before the case file, "Texture2D<float4> name"
+// (for case files without their own `#if defined(SNELL_LANG_HLSL)` block). `defines`: lines
+// `#define <d>` before everything, e.g. "SNELL_HLSL_FLIP_V 1".
+inline std::string parityHlslShaderSource(const std::string& caseFile, const std::string& entry,
+                                          const std::vector<std::string>& declareTextures = {},
+                                          const std::vector<std::string>& defines = {}) {
+  std::string s;
+  s += "// Generated by snell::gpu::parityHlslShaderSource (test artifact).\n";
+  for (const std::string& d : defines) s += "#define " + d + "\n";
+  s += "#include \"bridge.hlsl\"\n";
+  s += "struct SnellParityOut { float4 a; float4 b; float4 c; float4 d; };\n";
+  for (const std::string& t : declareTextures) s += t + ";\n";
+  s += "#include \"" + caseFile + "\"\n";
+  s += "StructuredBuffer<float4> snellParityIn : register(t0);\n";
+  s += "RWStructuredBuffer<float4> snellParityResult : register(u1);\n";
+  s += "cbuffer SnellParityParams : register(b0) { uint snellParityCount; };\n";
+  s += "[numthreads(" + std::to_string(kParityLocalSize) + ", 1, 1)]\n";
+  s += "void main(uint3 id : SV_DispatchThreadID) {\n";
+  s += "  uint i = id.x;\n";
+  s += "  if (i >= snellParityCount) return;\n";
+  s += "  SnellParityOut o = " + entry +
+       "(snellParityIn[4u * i], snellParityIn[4u * i + 1u], snellParityIn[4u * i + 2u], snellParityIn[4u * i + 3u]);\n";
+  s += "  snellParityResult[4u * i] = o.a;\n";
+  s += "  snellParityResult[4u * i + 1u] = o.b;\n";
+  s += "  snellParityResult[4u * i + 2u] = o.c;\n";
+  s += "  snellParityResult[4u * i + 3u] = o.d;\n";
+  s += "}\n";
+  return s;
+}
+
+// Which texture a combined sampler samples: the longest texture name that
+// prefixes the part after "SPIRV_Cross_Combined". -1 if none.
+inline int combinedSamplerTexture(const std::string& combined, const std::vector<ParityTexture>& textures) {
+  static const std::string prefix = "SPIRV_Cross_Combined";
+  if (combined.rfind(prefix, 0) != 0) return -1;
+  const std::string rest = combined.substr(prefix.size());
+  int best = -1;
+  std::size_t bestLen = 0;
+  for (std::size_t t = 0; t < textures.size(); ++t) {
+    const std::string& u = textures[t].uniform;
+    if (u.size() < rest.size() && rest.compare(0, u.size(), u) == 0 && u.size() > bestLen) {
+      best = static_cast<int>(t);
+      bestLen = u.size();
+    }
+  }
+  return best;
+}
+
+// Runs `entry` of `caseFile` as HLSL on every input: wraps it with
+// parityHlslShaderSource, cross-compiles (crossCompileHlslCompute, artifacts
+// in workDir) and dispatches the GLSL like runParityGpu does. `includeDirs`
+// must reach bridge.hlsl, the glsl/ tree and the case file. A case file that
+// has no `SNELL_LANG_HLSL` block of its own gets an HLSL texture declaration
+// for each `uniform sampler2D|samplerCube` it declares and for each of `textures`.
+// `defines` go before the bridge (parityHlslShaderSource).
+inline std::vector<ParityIO> runParityHlsl(const Context& ctx, const std::vector<std::filesystem::path>& includeDirs,
+                                           const std::string& caseFile, const std::string& entry,
+                                           const std::vector<ParityIO>& inputs,
+                                           const std::vector<ParityTexture>& textures,
+                                           const std::filesystem::path& workDir, const HlslTools& tools = {},
+                                           const std::vector<std::string>& defines = {}) {
+  namespace fs = std::filesystem;
+  // Does the case file declare its HLSL textures itself?
+  std::string caseText;
+  for (const fs::path& d : includeDirs) {
+    if (fs::exists(d / caseFile)) {
+      caseText = detail::readTextFile(d / caseFile);
+      break;
+    }
+  }
+  if (caseText.empty()) throw Error("runParityHlsl: case file " + caseFile + " not found in the include directories");
+  // If not, declare the GLSL sampler uniforms it has (any #if block) and the
+  // case's textures as HLSL textures.
+  std::vector<std::string> declare;
+  if (caseText.find("SNELL_LANG_HLSL") == std::string::npos) {
+    std::set<std::string> seen;
+    static const std::regex uniform(R"(uniform\s+(sampler2D|samplerCube)\s+(\w+)\s*;)");
+    for (auto it = std::sregex_iterator(caseText.begin(), caseText.end(), uniform); it != std::sregex_iterator(); ++it)
+      if (seen.insert((*it)[2].str()).second)
+        declare.push_back(std::string((*it)[1].str() == "samplerCube" ? "TextureCube<float4> " : "Texture2D<float4> ") +
+                          (*it)[2].str());
+    for (const ParityTexture& t : textures)
+      if (seen.insert(t.uniform).second) declare.push_back("Texture2D<float4> " + t.uniform);
+  }
+
+  std::string name = fs::path(caseFile).stem().string() + "." + entry;
+  for (const std::string& d : defines) {
+    name += ".";
+    for (char c : d) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  }
+  const HlslCrossCompiled cc = crossCompileHlslCompute(parityHlslShaderSource(caseFile, entry, declare, defines),
+                                                       name, includeDirs, workDir, tools);
+
+  ctx.makeCurrent();
+  const GlApi& gl = ctx.gl();
+  FlatSource src;
+  src.text = cc.glsl;
+  src.files = {cc.glslFile.string()};
+  const Program program = Program::compute(gl, src);
+
+  std::vector<Texture> uploaded;
+  uploaded.reserve(textures.size());
+  GLint maxUnits = 0;
+  gl.GetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &maxUnits);
+  if (textures.size() > static_cast<std::size_t>(maxUnits))
+    throw Error("runParityHlsl: " + std::to_string(textures.size()) + " textures, the driver has " +
+                std::to_string(maxUnits) + " texture units");
+  for (std::size_t t = 0; t < textures.size(); ++t) {
+    if (textures[t].texture == nullptr) throw Error("runParityHlsl: texture '" + textures[t].uniform + "' is null");
+    uploaded.emplace_back(gl, *textures[t].texture);
+    uploaded.back().bind(static_cast<int>(t));  // texture t on unit t, no sampler object
+  }
+  for (const std::string& combined : cc.combinedSamplers) {
+    const int t = combinedSamplerTexture(combined, textures);
+    if (t < 0)
+      throw Error("runParityHlsl: " + cc.glslFile.string() + " samples '" + combined +
+                  "', which names none of the case's textures");
+    if (program.hasUniform(combined)) program.setSampler(combined, t);
+  }
+
+  GLint maxGroups = 0, maxBlockBytes = 0;
+  gl.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxGroups);
+  gl.GetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlockBytes);
+  checkGl(gl, "runParityHlsl limits query");
+  const std::size_t byGroups = static_cast<std::size_t>(std::max(maxGroups, 1)) * kParityLocalSize;
+  const std::size_t byBytes = static_cast<std::size_t>(std::max(maxBlockBytes, 1)) / sizeof(ParityIO);
+  const std::size_t chunk = std::max<std::size_t>(1, std::min(byGroups, byBytes));
+
+  std::vector<ParityIO> out(inputs.size());
+  StorageBuffer in(gl), result(gl), params(gl);
+  for (std::size_t first = 0; first < inputs.size(); first += chunk) {
+    const std::size_t n = std::min(chunk, inputs.size() - first);
+    in.upload(inputs.data() + first, n * sizeof(ParityIO));
+    result.allocate(n * sizeof(ParityIO));
+    const std::uint32_t count[4] = {static_cast<std::uint32_t>(n), 0u, 0u, 0u};  // std140: 16 bytes
+    params.upload(count, sizeof count);
+    in.bindBase(0);      // register(t0)
+    result.bindBase(1);  // register(u1)
+    gl.BindBufferBase(GL_UNIFORM_BUFFER, 0, params.id());  // register(b0)
+    program.dispatch(static_cast<GLuint>((n + kParityLocalSize - 1) / kParityLocalSize));
+    gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    result.download(out.data() + first, n * sizeof(ParityIO));
+  }
+  gl.BindBufferBase(GL_UNIFORM_BUFFER, 0, 0);
+  return out;
+}
+
+}  // namespace snell::gpu

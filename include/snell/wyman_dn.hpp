@@ -1,0 +1,174 @@
+// Wyman's d_N per vertex: the distance from a vertex through the object along
+// its inverted normal -N to the next surface of the mesh (C. Wyman, "An
+// Approximate Image-Space Approach for Interactive Refraction", SIGGRAPH 2005;
+// Oliveira & Brauwers 2007 sec. 2.1: "pre-computed on a per-vertex basis").
+// The host computes it once per mesh; the vertex shader passes it on as a
+// varying, and the fragment shader hands the interpolated value to
+// snellTwoInterfaceTrace / snellTwoInterfaceRefraction (preset ISR).
+//
+//   std::vector<float> dN = snell::computeWymanDn(positions, normals, indices);
+//
+// Rays start at the vertex and run along -normalize(N); the first triangle hit
+// with t > epsilon * (mesh bounding-box diagonal) that is not incident to the
+// vertex counts (Moller-Trumbore, double precision). A bounding volume
+// hierarchy (median split on the longest axis, 4 triangles a leaf) keeps it
+// O(V log T). Vertices whose ray hits nothing (open meshes, zero normals)
+// get `missValue` (default 0: the technique then uses d_V alone for them).
+// GLM only, header-only.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace snell {
+
+namespace wyman_detail {
+
+struct Box {
+  glm::dvec3 lo{std::numeric_limits<double>::infinity()};
+  glm::dvec3 hi{-std::numeric_limits<double>::infinity()};
+  void grow(const glm::dvec3& p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  void grow(const Box& b) {
+    lo = glm::min(lo, b.lo);
+    hi = glm::max(hi, b.hi);
+  }
+  // Slab test: does the ray enter the box before tMax?
+  bool hit(const glm::dvec3& o, const glm::dvec3& invD, double tMax) const {
+    double t0 = 0.0, t1 = tMax;
+    for (int k = 0; k < 3; ++k) {
+      if (!std::isfinite(invD[k])) {  // ray parallel to the slab (0 * inf would be NaN)
+        if (o[k] < lo[k] || o[k] > hi[k]) return false;
+        continue;
+      }
+      double a = (lo[k] - o[k]) * invD[k], b = (hi[k] - o[k]) * invD[k];
+      if (a > b) std::swap(a, b);
+      t0 = std::max(t0, a);
+      t1 = std::min(t1, b);
+      if (t0 > t1) return false;
+    }
+    return true;
+  }
+};
+
+struct Node {
+  Box box;
+  int left = -1, right = -1;  // children (inner node)
+  int first = 0, count = 0;   // triangle range in the order array (leaf)
+};
+
+struct Bvh {
+  std::vector<Node> nodes;
+  std::vector<int> order;  // triangle indices
+};
+
+inline int build(Bvh& bvh, const std::vector<Box>& triBoxes, const std::vector<glm::dvec3>& centroids, int first,
+                 int count) {
+  Node n;
+  for (int i = first; i < first + count; ++i) n.box.grow(triBoxes[static_cast<std::size_t>(bvh.order[static_cast<std::size_t>(i)])]);
+  const int index = static_cast<int>(bvh.nodes.size());
+  bvh.nodes.push_back(n);
+  if (count <= 4) {
+    bvh.nodes[static_cast<std::size_t>(index)].first = first;
+    bvh.nodes[static_cast<std::size_t>(index)].count = count;
+    return index;
+  }
+  Box cb;
+  for (int i = first; i < first + count; ++i) cb.grow(centroids[static_cast<std::size_t>(bvh.order[static_cast<std::size_t>(i)])]);
+  const glm::dvec3 ext = cb.hi - cb.lo;
+  const int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : (ext.y >= ext.z ? 1 : 2);
+  const int mid = first + count / 2;
+  std::nth_element(bvh.order.begin() + first, bvh.order.begin() + mid, bvh.order.begin() + first + count,
+                   [&](int a, int b) {
+                     return centroids[static_cast<std::size_t>(a)][axis] < centroids[static_cast<std::size_t>(b)][axis];
+                   });
+  const int l = build(bvh, triBoxes, centroids, first, mid - first);
+  const int r = build(bvh, triBoxes, centroids, mid, first + count - mid);
+  bvh.nodes[static_cast<std::size_t>(index)].left = l;
+  bvh.nodes[static_cast<std::size_t>(index)].right = r;
+  return index;
+}
+
+// Moller-Trumbore; t of the hit or -1.
+inline double rayTriangle(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& a, const glm::dvec3& b,
+                          const glm::dvec3& c) {
+  const glm::dvec3 e1 = b - a, e2 = c - a, p = glm::cross(d, e2);
+  const double det = glm::dot(e1, p);
+  if (std::fabs(det) < 1e-300) return -1.0;
+  const double inv = 1.0 / det;
+  const glm::dvec3 s = o - a;
+  const double u = glm::dot(s, p) * inv;
+  if (u < -1e-9 || u > 1.0 + 1e-9) return -1.0;
+  const glm::dvec3 q = glm::cross(s, e1);
+  const double v = glm::dot(d, q) * inv;
+  if (v < -1e-9 || u + v > 1.0 + 1e-9) return -1.0;  // tolerance: rays through a vertex or an edge
+  return glm::dot(e2, q) * inv;
+}
+
+}  // namespace wyman_detail
+
+// positions, normals: one per vertex; indices: triangles (3 per triangle).
+inline std::vector<float> computeWymanDn(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
+                                         const std::vector<std::uint32_t>& indices, float missValue = 0.0f,
+                                         double epsilon = 1e-7) {
+  using namespace wyman_detail;
+  if (positions.size() != normals.size()) throw std::invalid_argument("computeWymanDn: one normal per vertex");
+  if (indices.size() % 3 != 0) throw std::invalid_argument("computeWymanDn: indices must form triangles");
+  for (std::uint32_t i : indices)
+    if (i >= positions.size()) throw std::invalid_argument("computeWymanDn: index out of range");
+  const std::size_t triCount = indices.size() / 3;
+  std::vector<float> out(positions.size(), missValue);
+  if (triCount == 0) return out;
+  std::vector<Box> boxes(triCount);
+  std::vector<glm::dvec3> centroids(triCount);
+  Box all;
+  for (std::size_t t = 0; t < triCount; ++t) {
+    for (int k = 0; k < 3; ++k) boxes[t].grow(glm::dvec3(positions[indices[3 * t + static_cast<std::size_t>(k)]]));
+    centroids[t] = 0.5 * (boxes[t].lo + boxes[t].hi);
+    all.grow(boxes[t]);
+  }
+  const double tMin = epsilon * glm::length(all.hi - all.lo);
+  Bvh bvh;
+  bvh.order.resize(triCount);
+  for (std::size_t t = 0; t < triCount; ++t) bvh.order[t] = static_cast<int>(t);
+  build(bvh, boxes, centroids, 0, static_cast<int>(triCount));
+  std::vector<int> stack;
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    const glm::dvec3 n(normals[v]);
+    const double len = glm::length(n);
+    if (!(len > 0.0) || !std::isfinite(len)) continue;
+    const glm::dvec3 o(positions[v]), d = -n / len;
+    const glm::dvec3 invD(1.0 / d.x, 1.0 / d.y, 1.0 / d.z);
+    double best = std::numeric_limits<double>::infinity();
+    stack.assign(1, 0);
+    while (!stack.empty()) {
+      const Node& node = bvh.nodes[static_cast<std::size_t>(stack.back())];
+      stack.pop_back();
+      if (!node.box.hit(o, invD, best)) continue;
+      if (node.left < 0) {
+        for (int i = node.first; i < node.first + node.count; ++i) {
+          const std::size_t t = static_cast<std::size_t>(bvh.order[static_cast<std::size_t>(i)]);
+          const std::uint32_t a = indices[3 * t], b = indices[3 * t + 1], c = indices[3 * t + 2];
+          if (a == v || b == v || c == v) continue;  // the vertex's own triangles
+          const double th = rayTriangle(o, d, glm::dvec3(positions[a]), glm::dvec3(positions[b]), glm::dvec3(positions[c]));
+          if (th > tMin && th < best) best = th;
+        }
+      } else {
+        stack.push_back(node.left);
+        stack.push_back(node.right);
+      }
+    }
+    if (std::isfinite(best)) out[v] = static_cast<float>(best);
+  }
+  return out;
+}
+
+}  // namespace snell
