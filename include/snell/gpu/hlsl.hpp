@@ -352,18 +352,9 @@ inline std::vector<ParityIO> runParityHlsl(const Context& ctx, const std::vector
   src.files = {cc.glslFile.string()};
   const Program program = Program::compute(gl, src);
 
-  std::vector<Texture> uploaded;
-  uploaded.reserve(textures.size());
-  GLint maxUnits = 0;
-  gl.GetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &maxUnits);
-  if (textures.size() > static_cast<std::size_t>(maxUnits))
-    throw Error("runParityHlsl: " + std::to_string(textures.size()) + " textures, the driver has " +
-                std::to_string(maxUnits) + " texture units");
-  for (std::size_t t = 0; t < textures.size(); ++t) {
-    if (textures[t].texture == nullptr) throw Error("runParityHlsl: texture '" + textures[t].uniform + "' is null");
-    uploaded.emplace_back(gl, *textures[t].texture);
-    uploaded.back().bind(static_cast<int>(t));  // texture t on unit t, no sampler object
-  }
+  // No sampler object: the GL texture's own filters apply, whatever SamplerState
+  // the HLSL names.
+  const std::vector<Texture> uploaded = detail::uploadParityTextures(gl, textures, "runParityHlsl");
   for (const std::string& combined : cc.combinedSamplers) {
     const int t = combinedSamplerTexture(combined, textures);
     if (t < 0)
@@ -372,29 +363,12 @@ inline std::vector<ParityIO> runParityHlsl(const Context& ctx, const std::vector
     if (program.hasUniform(combined)) program.setSampler(combined, t);
   }
 
-  GLint maxGroups = 0, maxBlockBytes = 0;
-  gl.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxGroups);
-  gl.GetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlockBytes);
-  checkGl(gl, "runParityHlsl limits query");
-  const std::size_t byGroups = static_cast<std::size_t>(std::max(maxGroups, 1)) * kParityLocalSize;
-  const std::size_t byBytes = static_cast<std::size_t>(std::max(maxBlockBytes, 1)) / sizeof(ParityIO);
-  const std::size_t chunk = std::max<std::size_t>(1, std::min(byGroups, byBytes));
-
-  std::vector<ParityIO> out(inputs.size());
-  StorageBuffer in(gl), result(gl), params(gl);
-  for (std::size_t first = 0; first < inputs.size(); first += chunk) {
-    const std::size_t n = std::min(chunk, inputs.size() - first);
-    in.upload(inputs.data() + first, n * sizeof(ParityIO));
-    result.allocate(n * sizeof(ParityIO));
+  StorageBuffer params(gl);
+  std::vector<ParityIO> out = detail::dispatchParity(gl, program, inputs, "runParityHlsl", [&](std::size_t n) {
     const std::uint32_t count[4] = {static_cast<std::uint32_t>(n), 0u, 0u, 0u};  // std140: 16 bytes
     params.upload(count, sizeof count);
-    in.bindBase(0);      // register(t0)
-    result.bindBase(1);  // register(u1)
-    gl.BindBufferBase(GL_UNIFORM_BUFFER, 0, params.id());  // register(b0)
-    program.dispatch(static_cast<GLuint>((n + kParityLocalSize - 1) / kParityLocalSize));
-    gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-    result.download(out.data() + first, n * sizeof(ParityIO));
-  }
+    gl.BindBufferBase(GL_UNIFORM_BUFFER, 0, params.id());  // register(b0); in t0, out u1
+  });
   gl.BindBufferBase(GL_UNIFORM_BUFFER, 0, 0);
   return out;
 }

@@ -91,34 +91,35 @@ inline std::string parityShaderSource(const std::string& caseFile, const std::st
 // Runs `entry` from `caseFile` (found through searchPaths) on every input.
 // Inputs are split into chunks that respect the driver's SSBO size and
 // work-group count limits (llvmpipe: 128 MiB, 65535 groups).
-inline std::vector<ParityIO> runParityGpu(const Context& ctx, const std::vector<std::filesystem::path>& searchPaths,
-                                          const std::string& caseFile, const std::string& entry,
-                                          const std::vector<ParityIO>& inputs,
-                                          const std::vector<ParityTexture>& textures = {}) {
-  ctx.makeCurrent();
-  const GlApi& gl = ctx.gl();
-  const FlatSource src =
-      flattenGlslSource(parityShaderSource(caseFile, entry), "<parity " + entry + ">", searchPaths);
-  const Program program = Program::compute(gl, src);
-
+namespace detail {
+// Texture t on unit t, for t = 0..n-1; the caller points the sampler uniforms at them.
+inline std::vector<Texture> uploadParityTextures(const GlApi& gl, const std::vector<ParityTexture>& textures,
+                                                 const std::string& who) {
   std::vector<Texture> uploaded;
   uploaded.reserve(textures.size());
   GLint maxUnits = 0;
   gl.GetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &maxUnits);
   if (textures.size() > static_cast<std::size_t>(maxUnits))
-    throw Error("runParityGpu: " + std::to_string(textures.size()) + " textures, the driver has " +
+    throw Error(who + ": " + std::to_string(textures.size()) + " textures, the driver has " +
                 std::to_string(maxUnits) + " texture units");
   for (std::size_t t = 0; t < textures.size(); ++t) {
-    if (textures[t].texture == nullptr) throw Error("runParityGpu: texture '" + textures[t].uniform + "' is null");
+    if (textures[t].texture == nullptr) throw Error(who + ": texture '" + textures[t].uniform + "' is null");
     uploaded.emplace_back(gl, *textures[t].texture);
-    uploaded.back().bind(static_cast<int>(t));  // texture t on unit t
-    if (program.hasUniform(textures[t].uniform)) program.setSampler(textures[t].uniform, static_cast<int>(t));
+    uploaded.back().bind(static_cast<int>(t));
   }
+  return uploaded;
+}
 
+// Runs a parity program over all inputs, in as many dispatches as the driver's
+// work-group count and SSBO size limits need. Inputs are bound at SSBO binding 0,
+// results at 1; passCount(n) hands the shader the case count of each dispatch.
+template <class PassCount>
+std::vector<ParityIO> dispatchParity(const GlApi& gl, const Program& program, const std::vector<ParityIO>& inputs,
+                                     const std::string& who, PassCount passCount) {
   GLint maxGroups = 0, maxBlockBytes = 0;
   gl.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxGroups);
   gl.GetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlockBytes);
-  checkGl(gl, "runParityGpu limits query");
+  checkGl(gl, (who + " limits query").c_str());
   const std::size_t byGroups = static_cast<std::size_t>(std::max(maxGroups, 1)) * kParityLocalSize;
   const std::size_t byBytes = static_cast<std::size_t>(std::max(maxBlockBytes, 1)) / sizeof(ParityIO);
   const std::size_t chunk = std::max<std::size_t>(1, std::min(byGroups, byBytes));
@@ -131,12 +132,31 @@ inline std::vector<ParityIO> runParityGpu(const Context& ctx, const std::vector<
     result.allocate(n * sizeof(ParityIO));
     in.bindBase(0);
     result.bindBase(1);
-    program.set("snellParityCount", static_cast<int>(n));
+    passCount(n);
     program.dispatch(static_cast<GLuint>((n + kParityLocalSize - 1) / kParityLocalSize));
     gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     result.download(out.data() + first, n * sizeof(ParityIO));
   }
   return out;
+}
+}  // namespace detail
+
+inline std::vector<ParityIO> runParityGpu(const Context& ctx, const std::vector<std::filesystem::path>& searchPaths,
+                                          const std::string& caseFile, const std::string& entry,
+                                          const std::vector<ParityIO>& inputs,
+                                          const std::vector<ParityTexture>& textures = {}) {
+  ctx.makeCurrent();
+  const GlApi& gl = ctx.gl();
+  const FlatSource src =
+      flattenGlslSource(parityShaderSource(caseFile, entry), "<parity " + entry + ">", searchPaths);
+  const Program program = Program::compute(gl, src);
+
+  const std::vector<Texture> uploaded = detail::uploadParityTextures(gl, textures, "runParityGpu");
+  for (std::size_t t = 0; t < textures.size(); ++t)
+    if (program.hasUniform(textures[t].uniform)) program.setSampler(textures[t].uniform, static_cast<int>(t));
+  return detail::dispatchParity(gl, program, inputs, "runParityGpu", [&](std::size_t n) {
+    program.set("snellParityCount", static_cast<int>(n));
+  });
 }
 
 // Counts are per case: a case mismatches if any of its outputs does.
