@@ -24,6 +24,8 @@ using namespace snell;
 using technique_test::Exact;
 using technique_test::Scene;
 
+glm::dvec3 kCentreD() { return technique_test::kCentre; }
+
 constexpr double kIor = 1.5;
 
 const Scene& scene() {
@@ -120,7 +122,9 @@ TEST(TechniqueTwoInterface, ExitDirectionPerPreset) {
   }
   // DIR, 5 steps: beta error <= 3.1% of the range; DIR with 16 steps is close to exact.
   EXPECT_LT(all[0].quantile(0.95), 3.0);
-  EXPECT_LT(all[1].quantile(0.95), 1.5);  // floor: nearest back-normal texel (~0.25 deg median at 256^2)
+  // Floor: the back normal, read bilinearly at the hit (SNELL_TWO_INTERFACE_NORMAL_SAMPLE 1: p50 0.009 deg at
+  // 256^2; a texel fetch of the nearest texel gave ~0.25 deg).
+  EXPECT_LT(all[1].quantile(0.95), 0.5);
   EXPECT_LT(all[1].mean(), all[0].mean());
   // The bounding-box range is looser: same steps, larger error allowed, still bounded.
   EXPECT_LT(all[2].quantile(0.95), 6.0);
@@ -142,12 +146,24 @@ TEST(TechniqueTwoInterface, ExitDirectionPerPreset) {
   }
 }
 
-// The painting behind the sphere: exit points of the exit slot against the
-// plane's buffers, in pixels from the exact plane hit.
-Stats paintingErrors(const SnellTechniqueOptions& o, int* tirOut = nullptr) {
+// The painting behind the sphere (the geometric criterion): over every
+// sphere pixel of the output image (256^2, the buffers' resolution) whose exact
+// path does not undergo TIR and whose exact exit ray meets the painting on
+// screen, the distance in output pixels between the projection of the
+// technique's exit-slot hit on the painting and the projection of the exact
+// double-precision hit. A pixel where the back slot finds no P2 (no exit point)
+// or the exit slot finds no hit counts as a failure (infinite error): the
+// denominator is every non-TIR pixel, nothing is set aside. The same measure for
+// P2 itself (the exit point from the sphere, projected) is reported alongside.
+struct PaintingStats : Stats {
+  std::vector<double> p2Errors;  // projected P2 vs exact P2, output pixels (1e9 without a back hit)
+  int exitMiss = 0;
+  int firstPlaneBehind = 0;  // back misses where the exact tangent plane behind P1 lies behind P1 along T1
+};
+
+PaintingStats paintingErrors(const SnellTechniqueOptions& o) {
   const Scene& s = scene();
-  Stats st;
-  int tir = 0;
+  PaintingStats st;
   for (int j = 0; j < s.height; ++j)
     for (int i = 0; i < s.width; ++i) {
       const glm::dvec2 uv((i + 0.5) / s.width, (j + 0.5) / s.height);
@@ -161,23 +177,36 @@ Stats paintingErrors(const SnellTechniqueOptions& o, int* tirOut = nullptr) {
           s.backPyramid, s.backSurface(), s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor,
           s.sceneSurface(), s.env, o);
       st.totalFetches += r.fetches;
-      tir += r.tir;
-      if (!r.backHit) {  // back-slot fallback: counted apart (the strategy's own miss rate)
+      const glm::dvec2 px(s.width, s.height);
+      if (!r.backHit) {
         ++st.backMiss;
-        --st.pixels;
+        // Normal-based plane 0 is the back face's tangent plane at the point behind P1 (on the view ray):
+        // the ray P1 + t T1 meets it for t > 0 only when T1 points towards it (dot(T1, n_out) > 0).
+        const glm::dvec3 q = glm::normalize(e.p1);
+        const glm::dvec3 oc = -kCentreD();
+        const double b = glm::dot(q, oc), cc = glm::dot(oc, oc) - technique_test::kRadius * technique_test::kRadius;
+        const double sBack = -b + std::sqrt(std::max(0.0, b * b - cc));
+        const glm::dvec3 nBack = (sBack * q - technique_test::kCentre) / technique_test::kRadius;
+        st.firstPlaneBehind += glm::dot(e.t1, nBack) <= 0.0;
+        st.errors.push_back(1e9);
+        st.p2Errors.push_back(1e9);
         continue;
       }
+      st.p2Errors.push_back(glm::length((s.plane.project(glm::dvec3(r.exitPoint)) - s.plane.project(e.p2)) * px));
       if (!r.exitHit.valid) {
-        ++st.fellBack;
+        ++st.exitMiss;
         st.errors.push_back(1e9);
         continue;
       }
-      const glm::dvec2 d = (s.plane.project(glm::dvec3(r.exitHit.position)) - exactUv) *
-                           glm::dvec2(s.width, s.height);
-      st.errors.push_back(glm::length(d));
+      st.errors.push_back(glm::length((s.plane.project(glm::dvec3(r.exitHit.position)) - exactUv) * px));
     }
-  if (tirOut) *tirOut = tir;
   return st;
+}
+
+double shareBelow(const std::vector<double>& v, double x) {
+  size_t n = 0;
+  for (double e : v) n += e <= x;
+  return v.empty() ? 0.0 : double(n) / double(v.size());
 }
 
 TEST(TechniqueTwoInterface, PaintingBehindTheSphere) {
@@ -187,32 +216,64 @@ TEST(TechniqueTwoInterface, PaintingBehindTheSphere) {
   };
   std::vector<P> presets = {{"Plane normal N=0", snellPresetPlaneNormal(0)},
                             {"Plane normal N=2", snellPresetPlaneNormal(2)},
+                            {"Plane normal N=3", snellPresetPlaneNormal(3)},
                             {"Plane normal N=4", snellPresetPlaneNormal(4)},
                             {"Plane depth N=2", snellPresetPlaneDepth(2)},
+                            {"Plane depth N=3", snellPresetPlaneDepth(3)},
+                            {"Plane depth N=4", snellPresetPlaneDepth(4)},
                             {"DIR (CBS 5)", snellPresetDir()},
                             {"DIR (CBS 12)", snellPresetDir()},
                             {"Single sample", snellPresetSingleSample()},
                             {"Linear march", snellPresetLinearMarch()},
                             {"DDA march", snellPresetDdaMarch()}};
-  presets[5].o.back.steps = 12;
-  presets[5].o.exit.steps = 12;
-  std::vector<Stats> all;
+  presets[8].o.back.steps = 12;
+  presets[8].o.exit.steps = 12;
+  std::vector<PaintingStats> all;
   for (P& p : presets) {
     p.o.exitMode = SNELL_EXIT_SCENE;
     all.push_back(paintingErrors(p.o));
-    const Stats& st = all.back();
-    std::printf("[painting] %-18s exit point error px: p50 %.3f p95 %.3f p99 %.3f | within 0.5 px %.2f%% 1 px %.2f%% | "
-                "no exit hit %d/%d | back-slot miss %d | fetches/px %.2f\n",
-                p.name, st.quantile(0.5), st.quantile(0.95), st.quantile(0.99), 100.0 * st.shareBelow(0.5),
-                100.0 * st.shareBelow(1.0), st.fellBack, st.pixels, st.backMiss,
-                st.totalFetches / std::max(1, st.pixels + st.backMiss));
+    const PaintingStats& st = all.back();
+    const int hits = st.pixels - st.backMiss;
+    std::printf("[painting] %-16s %d non-TIR px: exit point on the painting within 0.5 px %.2f%% 1 px %.2f%% (p50 "
+                "%.3f) | P2 within 0.5 px %.2f%% | no back hit %d (%.2f%%; first plane behind P1: %d), no exit hit %d "
+                "| of the back hits within 0.5 px %.2f%% | fetches/px %.2f\n",
+                p.name, st.pixels, 100.0 * st.shareBelow(0.5), 100.0 * st.shareBelow(1.0), st.quantile(0.5),
+                100.0 * shareBelow(st.p2Errors, 0.5), st.backMiss, 100.0 * st.backMiss / std::max(1, st.pixels),
+                st.firstPlaneBehind, st.exitMiss,
+                100.0 * (double(st.shareBelow(0.5)) * st.pixels) / std::max(1, hits),
+                st.totalFetches / std::max(1, st.pixels));
   }
-  ASSERT_GT(all[0].pixels, 1000);
-  // Plane technique with refinement: the criterion (0.5 px for 99% of non-TIR pixels) is
-  // reported above; asserted here with the margin measured on this scene.
-  EXPECT_GT(all[2].shareBelow(0.5), all[0].shareBelow(0.5));
-  EXPECT_GT(all[2].shareBelow(1.0), 0.85);
-  EXPECT_GT(all[5].shareBelow(1.0), 0.8);
+  ASSERT_GT(all[0].pixels, 30000);
+  // The criterion, 0.5 px for 99% of the non-TIR pixels, is NOT met by either plane method on
+  // this scene; what is met, and asserted (back normal read bilinearly at the hit uv,
+  // SNELL_TWO_INTERFACE_NORMAL_SAMPLE 1, the default, with the scene's LINEAR normal texture; N >= 3):
+  //  - every pixel where the back slot finds P2 has its painting point within 0.5 px (100.00% measured,
+  //    asserted >= 99.9%), for both plane methods: refinement and the filtered normal make the method exact
+  //    to well below a pixel where it applies;
+  //  - the shortfall is the back slot's miss rate on the sphere's rim, a fixed share of the disc that
+  //    neither iterations (N = 2..4 give the same misses), the normal lod, nor the buffer resolution (512^2:
+  //    21.8% / 3.6%) reduce: normal-based, 21.8% of the pixels, exactly the pixels whose first plane (the
+  //    back face's tangent plane behind P1) lies behind P1 along T1 (checked analytically below), so the ray
+  //    never meets it; depth-based, 3.2% (the three-point plane at the rim likewise lies behind P1 or
+  //    its neighbours are empty). Overall: normal N=3 78.17%, depth N=3 96.78% within 0.5 px.
+  const PaintingStats& normal3 = all[2];
+  const PaintingStats& depth3 = all[5];
+  for (const PaintingStats* st : std::vector<const PaintingStats*>{&normal3, &all[3], &depth3, &all[6]}) {
+    const int hits = st->pixels - st->backMiss;
+    EXPECT_EQ(st->exitMiss, 0);
+    EXPECT_GE(st->shareBelow(0.5) * st->pixels, 0.999 * hits);  // every back hit within 0.5 px
+  }
+  EXPECT_GT(depth3.shareBelow(0.5), 0.965);
+  EXPECT_GT(normal3.shareBelow(0.5), 0.78);
+  EXPECT_LT(depth3.backMiss, depth3.pixels * 35 / 1000);
+  // The normal-based misses are the geometric ones: the analytic first plane is behind P1.
+  EXPECT_GE(normal3.firstPlaneBehind, normal3.backMiss * 99 / 100);
+  // Refinement helps: one plane (N = 0) is far off, N = 2 close, N = 3 converged.
+  EXPECT_LT(all[0].shareBelow(0.5), 0.3);
+  EXPECT_GT(all[1].shareBelow(0.5), 0.77);
+  EXPECT_GE(all[3].shareBelow(0.5), normal3.shareBelow(0.5));
+  // The searches: DIR with 12 steps, for comparison (no rim misses, less precise where it hits).
+  EXPECT_GT(all[8].shareBelow(1.0), 0.8);
 }
 
 TEST(TechniqueTwoInterface, BeerLambertUsesTheFoundChord) {

@@ -21,7 +21,13 @@ use: SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal
                  and how to read the depth (emptyDepth = the clear value)
   o              the back slot's options (strategy and parameters)
   tirPolicy      SNELL_TIR_ZERO / _CRITICAL / _REFLECT, both interfaces
-options: technique_options.glsl
+options: technique_options.glsl, and
+  SNELL_TWO_INTERFACE_NORMAL_SAMPLE  how N2 is read from backNormal at the hit
+                 uv: 1 (default) SNELL_SAMPLE_LOD at level 0 with the texture's
+                 own filter (bilinear for a LINEAR texture: the normal at the hit
+                 point, not at the centre of its texel; NEAREST gives the texel
+                 containing the uv, as 0 does); 0 SNELL_TEXEL_FETCH of the texel
+                 containing the uv (level 0)
 contract:
   - T1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy). If it is
     invalid or zero (NaN/zero inputs, eta not finite positive; TIR under ZERO
@@ -31,8 +37,9 @@ contract:
     snellWymanDistanceVec(P1, N1, T1, d_V, dN); P2 = P1 + d T1, accepted when
     snellHitOnSurface(P2) is valid (the back buffer has a surface there; 2
     fetches). Every other strategy: snellIntersectWith(o.strategy, P1, T1, ...).
-  - on a hit: N2 = xyz of the back normal texel containing the hit uv (level 0,
-    1 fetch), normalized and flipped to face T1 (dot(N2, T1) <= 0); T2 =
+  - on a hit: N2 = xyz of the back normal read at the hit uv, level 0
+    (SNELL_TWO_INTERFACE_NORMAL_SAMPLE: filtered sample or texel fetch; 1
+    fetch), normalized and flipped to face T1 (dot(N2, T1) <= 0); T2 =
     snellRefract(T1, N2, 1 / eta, tirPolicy). hit = true, exitPoint = P2,
     exitUv = the hit uv, exitNormal = N2, pathLength = |P2 - P1|, tir = TIR at
     the second interface (T2 follows the policy: critical-angle tangent or
@@ -63,6 +70,10 @@ source: C. Wyman, "An Approximate Image-Space Approach for Interactive
 #include "../intersect/plane_refine.glsl"
 #include "technique_options.glsl"
 #include "technique_intersect.glsl"
+
+#ifndef SNELL_TWO_INTERFACE_NORMAL_SAMPLE
+#  define SNELL_TWO_INTERFACE_NORMAL_SAMPLE 1
+#endif
 
 struct SnellTwoInterfacePath {
   vec3 entryDirection;  // T1
@@ -128,7 +139,11 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitPoint = h.position;
   p.exitUv = h.uv;
   p.pathLength = length(h.position - frontPosition);
+#if SNELL_TWO_INTERFACE_NORMAL_SAMPLE
+  vec4 n2 = SNELL_SAMPLE_LOD(backNormal, h.uv, 0.0f);
+#else
   vec4 n2 = SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(h.uv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
+#endif
   p.fetches = p.fetches + 1;
   vec3 n = snellSafeNormalize(vec3(n2.x, n2.y, n2.z));
   if (dot(n, n) == 0.0f) {
