@@ -10,3 +10,18 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DSNELL_WERROR=ON
 cmake --build "$build" -j "$(nproc)"
 # The GL tests must run: a missing context fails them (never a skip).
 ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
+# libFuzzer targets (clang): the committed crash regressions once, then 20 s of
+# fuzzing per target on a copy of the seed corpus (tests/fuzz/run_fuzzers.sh).
+SNELL_FUZZ_BUILD_DIR="$build/fuzz" bash tests/fuzz/run_fuzzers.sh
+
+# Sanitizers (issue 7): a second build with AddressSanitizer + UBSan running the
+# unit, property and lab core tests; any report fails the script (halt_on_error,
+# -fno-sanitize-recover=undefined). The GL tests (parity, gpu, lab end-to-end
+# runs) are not in it: Mesa's own allocations are not ours to vet.
+san=${SNELL_SAN_BUILD_DIR:-${build}-san}
+cmake -S . -B "$san" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSNELL_WERROR=ON -DSNELL_SANITIZE=ON
+cmake --build "$san" -j "$(nproc)" --target snell_unit_tests snell_property_tests
+export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+export ASAN_OPTIONS=detect_leaks=1
+"$san/tests/snell_unit_tests"
+"$san/tests/property/snell_property_tests"

@@ -124,7 +124,11 @@ class Texture2D {
       case MipFilter::Nearest: {
         // The spec's ceil(lod + 0.5) - 1 takes the lower level at exact
         // half-integer lods; llvmpipe rounds those up.
-        int d = lod <= 0.5f ? 0 : static_cast<int>(std::ceil(lod + 0.5f)) - 1;
+        // lod >= q + 0.5 (also +inf, 1e30) selects level q: decided before the
+        // cast, which is undefined behaviour for values beyond int's range.
+        int d = lod <= 0.5f ? 0
+                : lod >= static_cast<float>(q) + 0.5f ? q
+                                                       : static_cast<int>(std::ceil(lod + 0.5f)) - 1;
         return filterLevel(std::min(d, q), uv, minFilter);
       }
       case MipFilter::Linear:

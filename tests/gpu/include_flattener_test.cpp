@@ -243,4 +243,19 @@ TEST(IncludeFlattener, MapInfoLogFormats) {
   EXPECT_EQ(snell::gpu::mapInfoLog("0:5000001(1): error: z", flat), "0:5000001(1): error: z");
 }
 
+// Found by tests/fuzz/fuzz_include_flattener (regressions/include_flattener/):
+// std::regex recursed once per character of a long run of blanks or digits at
+// the start of a log line and overflowed the stack. Now only a line's first
+// 256 characters are matched: a long line is kept whole, mapped or not.
+TEST(IncludeFlattener, MapInfoLogSurvivesHugeLines) {
+  FlatSource flat;
+  flat.files = {"root.comp", "lib/a.glsl"};
+  const std::string blanks = std::string(1000000, ' ') + "0:1(1): error";
+  EXPECT_EQ(snell::gpu::mapInfoLog(blanks, flat), blanks);
+  const std::string digits = "0:" + std::string(1000000, '1') + "(1): error";
+  EXPECT_EQ(snell::gpu::mapInfoLog(digits, flat), digits);
+  const std::string longMessage = "1:12(5): error: " + std::string(1000000, 'x');
+  EXPECT_EQ(snell::gpu::mapInfoLog(longMessage, flat), "lib/a.glsl:12(5): error: " + std::string(1000000, 'x'));
+}
+
 }  // namespace

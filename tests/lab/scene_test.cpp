@@ -201,6 +201,17 @@ TEST(LabScene, MalformedJsonIsAParseErrorWithLine) {
   EXPECT_NE(msg.find("line 4"), std::string::npos) << msg;
 }
 
+// Found by tests/fuzz/fuzz_scene (regressions/scene/): nlohmann reports a
+// number that overflows a double as out_of_range, not parse_error; it escaped.
+TEST(LabScene, NumberOverflowIsAParseError) {
+  for (const char* text : {"1e400", "{ \"camera\": { \"fov\": -3188029e826 } }", "[1, 2e999]"}) {
+    SCOPED_TRACE(text);
+    const std::string msg = labtest::errorOf([&] { parseScene(text, "big.json"); }, ErrorKind::Parse);
+    EXPECT_NE(msg.find("big.json: malformed JSON"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("number overflow"), std::string::npos) << msg;
+  }
+}
+
 TEST(LabScene, MissingSceneFileNamesThePath) {
   const std::string msg = labtest::errorOf([] { loadScene("/nonexistent/dir/scene.json"); }, ErrorKind::Io);
   EXPECT_NE(msg.find("scene file not found: /nonexistent/dir/scene.json"), std::string::npos) << msg;

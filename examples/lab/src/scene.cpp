@@ -182,8 +182,9 @@ Scene parseScene(const std::string& text, const std::string& file) {
   Json root;
   try {
     root = Json::parse(text, nullptr, true, /*ignore_comments=*/true);
-  } catch (const Json::parse_error& e) {
-    // nlohmann's message carries "at line L, column C".
+  } catch (const Json::exception& e) {
+    // parse_error's message carries "at line L, column C"; a number too large
+    // for a double ("1e400") is an out_of_range (406) thrown by the parser too.
     std::string what = e.what();
     const std::size_t cut = what.find("] ");
     if (cut != std::string::npos) what = what.substr(cut + 2);

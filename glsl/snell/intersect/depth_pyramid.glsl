@@ -24,8 +24,8 @@ texel layout (RGBA32F):
   need (view z = -distance), and "nearest" then does not depend on the
   convention (reversed Z stores the nearest point as the LARGEST depth value).
 contract:
-  - snellDepthPyramidBase: invalid when depthValue == surface.emptyDepth, NaN, or
-    does not linearize (snellLinearizeDepth <= 0: bad zNear/zFar/convention):
+  - snellDepthPyramidBase: invalid when depthValue == surface.emptyDepth, NaN,
+    infinite, or does not linearize (snellLinearizeDepth <= 0: bad zNear/zFar/convention):
     vec4(emptyDepth, 0, 0, 0). Otherwise vec4(depthValue, v, v, 1), v =
     snellLinearizeDepth(depthValue) > 0.
   - snellDepthMinMaxReduce: level L has size (W, H) = SNELL_TEXTURE_SIZE(tex, L);
@@ -56,7 +56,7 @@ source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
 
 SNELL_FN vec4 snellDepthPyramidBase(float depthValue, SnellDepthSurface s) {
   vec4 empty = vec4(s.emptyDepth, 0.0f, 0.0f, 0.0f);
-  if (isnan(depthValue) || depthValue == s.emptyDepth) {
+  if (!SNELL_CAMERA_FINITE(depthValue) || depthValue == s.emptyDepth) {
     return empty;
   }
   float v = snellLinearizeDepth(depthValue, s.zNear, s.zFar, s.convention);

@@ -65,14 +65,16 @@ SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurf
    so rim rays project past the silhouette), the plane itself is the best estimate
    left: with SNELL_PLANE_HOLD the hit stays at p, valid, with uv = planeUv, the
    texel the plane was built from, so a normal read at h.uv returns that plane's
-   normal. Off-screen or behind-the-camera p is a miss either way. */
+   normal. Off-screen or behind-the-camera p is a miss either way, and so is a
+   NaN or infinite planeUv (no texel: the hit's uv stays finite). */
 SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
   SnellHit h = snellHitOnSurface(p, depthTex, s, fetchesSoFar);
   if (h.valid || SNELL_PLANE_HOLD == 0) {
     return h;
   }
   SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
-  if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
+  if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f) ||
+      !SNELL_CAMERA_FINITE(planeUv.x) || !SNELL_CAMERA_FINITE(planeUv.y)) {
     return h;
   }
   h.uv = planeUv;

@@ -343,18 +343,26 @@ inline std::string mapInfoLog(const std::string& log, const FlatSource& source) 
     line = std::to_string(n);
     return true;
   };
+  // The location is at the start of a line: the patterns only see its first
+  // kHead characters. std::regex matches recursively (one stack frame per
+  // character of a \s* or \d+ run), so a long line of blanks or digits would
+  // overflow the stack (found by tests/fuzz/fuzz_include_flattener); a line
+  // whose location prefix is longer than kHead is left as it is.
+  constexpr std::size_t kHead = 256;
   std::istringstream in(log);
   std::string text, result, path, line;
   bool first = true;
   while (std::getline(in, text)) {
     std::smatch m;
     std::string mapped = text;
-    if (std::regex_search(text, m, mesa) && locate(m[2].str(), m[3].str(), path, line))
-      mapped = m[1].str() + path + ":" + line + "(" + m[4].str() + ")" + m.suffix().str();
-    else if (std::regex_search(text, m, glslang) && locate(m[2].str(), m[3].str(), path, line))
-      mapped = m[1].str() + path + ":" + line + ":" + m.suffix().str();
-    else if (std::regex_search(text, m, nvidia) && locate(m[2].str(), m[3].str(), path, line))
-      mapped = m[1].str() + path + "(" + line + ") :" + m.suffix().str();
+    const std::string head = text.substr(0, kHead);
+    const std::string tail = text.size() > kHead ? text.substr(kHead) : std::string();
+    if (std::regex_search(head, m, mesa) && locate(m[2].str(), m[3].str(), path, line))
+      mapped = m[1].str() + path + ":" + line + "(" + m[4].str() + ")" + m.suffix().str() + tail;
+    else if (std::regex_search(head, m, glslang) && locate(m[2].str(), m[3].str(), path, line))
+      mapped = m[1].str() + path + ":" + line + ":" + m.suffix().str() + tail;
+    else if (std::regex_search(head, m, nvidia) && locate(m[2].str(), m[3].str(), path, line))
+      mapped = m[1].str() + path + "(" + line + ") :" + m.suffix().str() + tail;
     result += (first ? "" : "\n") + mapped;
     first = false;
   }

@@ -1,0 +1,6 @@
+#version 330 core
+#include "a.glsl"
+@@@
+#include "b.glsl"
+@@@
+#include "a.glsl"

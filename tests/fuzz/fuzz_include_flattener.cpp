@@ -1,0 +1,98 @@
+// libFuzzer target: snell::gpu::flattenGlslSource and mapInfoLog.
+//
+// The input is split into "files" by lines that read exactly "@@@": part 0 is
+// the root source (in memory, named <tmp>/root.glsl so quoted includes look
+// next to it), parts 1..8 are written to a per-process temp dir as
+//   a.glsl b.glsl c.glsl d.glsl sub/e.glsl sub/f.glsl sub/g.glsl sub/h.glsl
+// (a slot without a part is deleted). The search paths are <tmp> and <tmp>/sub.
+// The only exception allowed out of the flattener is snell::gpu::Error;
+// anything else (another exception type, a crash, a sanitizer report) is a bug.
+// The flattened result is then fed to mapInfoLog as a compiler log, with the
+// root text as the log too (hostile "0:12(3):" lines).
+#include <snell/gpu/include_flattener.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* const kSlots[] = {"a.glsl", "b.glsl", "c.glsl", "d.glsl",
+                              "sub/e.glsl", "sub/f.glsl", "sub/g.glsl", "sub/h.glsl"};
+constexpr std::size_t kSlotCount = sizeof(kSlots) / sizeof(kSlots[0]);
+
+const fs::path& tempDir() {
+  static const fs::path dir = [] {
+    std::string templ = (fs::temp_directory_path() / "snell-fuzz-flatten-XXXXXX").string();
+    if (!mkdtemp(templ.data())) std::abort();
+    fs::create_directories(fs::path(templ) / "sub");
+    return fs::path(templ);
+  }();
+  return dir;
+}
+
+struct Cleanup {
+  ~Cleanup() {
+    std::error_code ec;
+    fs::remove_all(tempDir(), ec);
+  }
+};
+
+std::vector<std::string> split(const std::string& data) {
+  std::vector<std::string> parts(1);
+  std::size_t pos = 0;
+  while (pos <= data.size()) {
+    std::size_t eol = data.find('\n', pos);
+    const std::size_t end = eol == std::string::npos ? data.size() : eol;
+    const std::string line = data.substr(pos, end - pos);
+    if (line == "@@@") {
+      parts.emplace_back();
+    } else {
+      parts.back() += line;
+      if (eol != std::string::npos) parts.back() += '\n';
+    }
+    if (eol == std::string::npos) break;
+    pos = eol + 1;
+  }
+  return parts;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static Cleanup cleanup;
+  const fs::path& dir = tempDir();
+  const std::vector<std::string> parts = split(std::string(reinterpret_cast<const char*>(data), size));
+  // Last contents per slot (-1 char: absent): files are rewritten only when they change.
+  static std::vector<std::string> last(kSlotCount, std::string(1, '\xff') + "absent");
+  for (std::size_t i = 0; i < kSlotCount; ++i) {
+    const fs::path p = dir / kSlots[i];
+    const std::string want = i + 1 < parts.size() ? parts[i + 1] : std::string(1, '\xff') + "absent";
+    if (want == last[i]) continue;
+    last[i] = want;
+    if (i + 1 < parts.size()) {
+      std::ofstream out(p, std::ios::binary | std::ios::trunc);
+      out << parts[i + 1];
+    } else {
+      std::error_code ec;
+      fs::remove(p, ec);
+    }
+  }
+  const std::vector<fs::path> search = {dir, dir / "sub"};
+  snell::gpu::FlatSource flat;
+  try {
+    flat = snell::gpu::flattenGlslSource(parts[0], (dir / "root.glsl").string(), search);
+  } catch (const snell::gpu::Error&) {
+    flat.files = {"root.glsl", "a.glsl"};
+  }
+  // A compiler log is not adversarial in practice, but mapInfoLog must not
+  // crash on any text; keep it to a bounded size (std::regex is recursive).
+  (void)snell::gpu::mapInfoLog(parts[0], flat);
+  return 0;
+}

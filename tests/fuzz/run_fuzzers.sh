@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of tests/fuzz with clang++ (standalone, not
+# through the main CMake build: -fsanitize=fuzzer needs clang) and
+#   1. runs each target once over its committed crash regressions
+#      (tests/fuzz/regressions/<target>/): every input there once crashed;
+#   2. fuzzes each target for a bounded time on a copy of its seed corpus
+#      (tests/fuzz/corpus/<target>/; the committed corpus is never modified).
+# Exits non-zero on any crash, leak, sanitizer report or escaped exception; the
+# crashing input is left in $out/crashes/<target>/ with the command to commit it.
+#
+# Environment: SNELL_FUZZ_TIME (seconds per target, default 20),
+# SNELL_FUZZ_BUILD_DIR (default build/fuzz), CLANGXX (default clang++-14 or clang++),
+# SNELL_FUZZ_TARGETS (default "include_flattener scene obj").
+# Needs clang-14 and libclang-rt-14-dev (scripts/install-deps.sh).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+out=${SNELL_FUZZ_BUILD_DIR:-$root/build/fuzz}
+seconds=${SNELL_FUZZ_TIME:-20}
+targets=${SNELL_FUZZ_TARGETS:-"include_flattener scene obj"}
+cxx=${CLANGXX:-$(command -v clang++-14 || command -v clang++ || true)}
+[ -n "$cxx" ] || { echo "run_fuzzers: clang++ not found (install clang-14 libclang-rt-14-dev)" >&2; exit 1; }
+mkdir -p "$out/obj"
+
+common=(-std=c++17 -g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined
+        -I"$root/include" -I"$root/glsl" -I"$root/examples/lab/include" -I"$root/examples/lab/src")
+lab_sources=(camera environment file_util image_io json_lines json_reader mesh mesh_generators obj_loader painting scene)
+
+# The lab core without the tracer (no Embree): instrumented for coverage.
+objs=() pids=()
+for s in "${lab_sources[@]}"; do
+  src=$root/examples/lab/src/$s.cpp o=$out/obj/$s.o
+  if [ ! -f "$o" ] || [ "$src" -nt "$o" ] || [ -n "$(find "$root/examples/lab" "$root/include" -newer "$o" -name '*.hpp' -print -quit)" ]; then
+    echo "run_fuzzers: compiling $s.cpp"
+    "$cxx" "${common[@]}" -fsanitize=fuzzer-no-link -c "$src" -o "$o.tmp" && mv "$o.tmp" "$o" &
+    pids+=($!)
+    # at most $(nproc) compilers at a time
+    if [ ${#pids[@]} -ge "$(nproc)" ]; then wait "${pids[0]}"; pids=("${pids[@]:1}"); fi
+  fi
+  objs+=("$o")
+done
+for p in "${pids[@]}"; do wait "$p"; done
+for t in $targets; do
+  bin=$out/fuzz_$t
+  if [ -f "$bin" ] && [ -z "$(find "$root/tests/fuzz/fuzz_$t.cpp" "$root/include" "$root/glsl" -newer "$bin" -print -quit)" ] &&
+     [ -z "$(find "$out/obj" -newer "$bin" -print -quit)" ]; then continue; fi
+  echo "run_fuzzers: building fuzz_$t"
+  extra=()
+  [ "$t" = include_flattener ] || extra=("${objs[@]}")
+  "$cxx" "${common[@]}" -fsanitize=fuzzer "$root/tests/fuzz/fuzz_$t.cpp" "${extra[@]}" -o "$out/fuzz_$t" -lpthread
+done
+
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+status=0
+for t in $targets; do
+  reg=$root/tests/fuzz/regressions/$t
+  if [ -d "$reg" ] && [ -n "$(ls -A "$reg")" ]; then
+    echo "run_fuzzers: $t: regressions ($(ls "$reg" | wc -l) inputs)"
+    if ! "$out/fuzz_$t" -rss_limit_mb=2048 -timeout=25 "$reg"/* > "$out/$t.regressions.log" 2>&1; then
+      tail -n 40 "$out/$t.regressions.log" >&2
+      echo "run_fuzzers: $t: a regression input fails again (log: $out/$t.regressions.log)" >&2
+      status=1
+    fi
+  fi
+  work=$out/corpus/$t crashes=$out/crashes/$t
+  rm -rf "$work" "$crashes"
+  mkdir -p "$work" "$crashes"
+  cp "$root/tests/fuzz/corpus/$t/"* "$work/"
+  echo "run_fuzzers: $t: fuzzing for ${seconds}s"
+  if "$out/fuzz_$t" "$work" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=1024 -timeout=25 \
+       -max_len=65536 -print_final_stats=1 -artifact_prefix="$crashes/" > "$out/$t.log" 2>&1; then
+    echo "run_fuzzers: $t: $(grep -h 'stat::number_of_executed_units' "$out/$t.log" | awk '{print $2}') executions, no crash"
+  else
+    tail -n 60 "$out/$t.log" >&2
+    echo "run_fuzzers: $t: CRASH; input(s): $(ls "$crashes")" >&2
+    echo "run_fuzzers: fix it, then commit the input: cp $crashes/* $reg/" >&2
+    status=1
+  fi
+done
+exit $status
