@@ -15,7 +15,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 out=${SNELL_FUZZ_BUILD_DIR:-$root/build/fuzz}
-seconds=${SNELL_FUZZ_TIME:-20}
+seconds=${SNELL_FUZZ_TIME:-10}
 targets=${SNELL_FUZZ_TARGETS:-"include_flattener scene obj"}
 cxx=${CLANGXX:-$(command -v clang++-14 || command -v clang++ || true)}
 [ -n "$cxx" ] || { echo "run_fuzzers: clang++ not found (install clang-14 libclang-rt-14-dev)" >&2; exit 1; }
