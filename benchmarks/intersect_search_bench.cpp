@@ -107,11 +107,37 @@ void BM_DdaMarchStride4(benchmark::State& state) {
   });
 }
 
+// Cost against step count (the marches' one knob), same rays: the linear
+// march's view-space steps (+4 bisections); the DDA's step cap at stride 1 (a
+// ray that needs more pixels than the cap stops short: hitShare falls) and its
+// stride (pixels per step, at a cap of 1024 that no ray reaches).
+void BM_LinearMarchSteps(benchmark::State& state) {
+  const int steps = static_cast<int>(state.range(0));
+  run(state, [steps](const Fixture& f, const Ray& r) {
+    return snell::snellLinearMarch(r.origin, r.dir, f.scene.depth, f.surface, 5.0f, steps, 4);
+  });
+}
+void BM_DdaMarchMaxSteps(benchmark::State& state) {
+  const int steps = static_cast<int>(state.range(0));
+  run(state, [steps](const Fixture& f, const Ray& r) {
+    return snell::snellDdaMarch(r.origin, r.dir, f.scene.depth, f.surface, 5.0f, SNELL_DDA_THICKNESS, 1.0f, steps);
+  });
+}
+void BM_DdaMarchStride(benchmark::State& state) {
+  const float stride = static_cast<float>(state.range(0));
+  run(state, [stride](const Fixture& f, const Ray& r) {
+    return snell::snellDdaMarch(r.origin, r.dir, f.scene.depth, f.surface, 5.0f, SNELL_DDA_THICKNESS, stride, 1024);
+  });
+}
+
 BENCHMARK(BM_ConservativeBinarySearch5);
 BENCHMARK(BM_BinarySearch5);
 BENCHMARK(BM_LinearBinarySearch10x5);
 BENCHMARK(BM_LinearMarch32x4);
 BENCHMARK(BM_DdaMarchStride1);
 BENCHMARK(BM_DdaMarchStride4);
+BENCHMARK(BM_LinearMarchSteps)->RangeMultiplier(2)->Range(8, 128);
+BENCHMARK(BM_DdaMarchMaxSteps)->RangeMultiplier(2)->Range(16, 256);
+BENCHMARK(BM_DdaMarchStride)->RangeMultiplier(2)->Range(1, 16);
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "support/technique_scene.hpp"
+#include "technique_presets.hpp"
 
 namespace {
 
@@ -37,24 +38,9 @@ const std::vector<Pixel>& pixels() {
   return v;
 }
 
-SnellTechniqueOptions preset(int k) {
-  SnellTechniqueOptions o;
-  switch (k) {
-    case 0: o = snellPresetDir(); break;
-    case 1: o = snellPresetIsr(); break;
-    case 2: o = snellPresetPlaneNormal(2); break;
-    case 3: o = snellPresetPlaneDepth(2); break;
-    case 4: o = snellPresetSingleSample(); break;
-    case 5: o = snellPresetLinearMarch(); break;
-    default: o = snellPresetDdaMarch(); break;
-  }
-  o.exitMode = SNELL_EXIT_SCENE;
-  return o;
-}
-
 void BM_TwoInterface(benchmark::State& state) {
   const technique_test::Scene& s = scene();
-  const SnellTechniqueOptions o = preset(int(state.range(0)));
+  const SnellTechniqueOptions o = snell_bench::preset(int(state.range(0)));
   const std::vector<Pixel>& px = pixels();
   double fetches = 0.0;
   std::size_t n = 0;

@@ -113,61 +113,90 @@ inline double rayTriangle(const glm::dvec3& o, const glm::dvec3& d, const glm::d
   return glm::dot(e2, q) * inv;
 }
 
+// The validated mesh and its BVH, built once; bake() casts the d_N rays of a
+// vertex range. Split from computeWymanDn so a tool can run disjoint ranges on
+// several threads over one BVH (bake() only reads the baker and writes
+// out[first..last); benchmarks/threads_bench.cpp does so). Keeps references to
+// the three vectors: they must outlive the baker.
+class Baker {
+ public:
+  Baker(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
+        const std::vector<std::uint32_t>& indices, double epsilon)
+      : positions_(positions), normals_(normals), indices_(indices) {
+    if (positions.size() != normals.size()) throw std::invalid_argument("computeWymanDn: one normal per vertex");
+    if (indices.size() % 3 != 0) throw std::invalid_argument("computeWymanDn: indices must form triangles");
+    for (std::uint32_t i : indices)
+      if (i >= positions.size()) throw std::invalid_argument("computeWymanDn: index out of range");
+    const std::size_t triCount = indices.size() / 3;
+    if (triCount == 0) return;
+    std::vector<Box> boxes(triCount);
+    std::vector<glm::dvec3> centroids(triCount);
+    Box all;
+    for (std::size_t t = 0; t < triCount; ++t) {
+      for (int k = 0; k < 3; ++k) boxes[t].grow(glm::dvec3(positions[indices[3 * t + static_cast<std::size_t>(k)]]));
+      centroids[t] = 0.5 * (boxes[t].lo + boxes[t].hi);
+      all.grow(boxes[t]);
+    }
+    tMin_ = epsilon * glm::length(all.hi - all.lo);
+    bvh_.order.resize(triCount);
+    for (std::size_t t = 0; t < triCount; ++t) bvh_.order[t] = static_cast<int>(t);
+    build(bvh_, boxes, centroids, 0, static_cast<int>(triCount));
+  }
+
+  std::size_t vertexCount() const { return positions_.size(); }
+
+  // out[v] for v in [first, last): the d_N of vertex v, or missValue.
+  void bake(std::size_t first, std::size_t last, float missValue, float* out) const {
+    std::vector<int> stack;
+    for (std::size_t v = first; v < last; ++v) {
+      out[v] = missValue;
+      if (bvh_.nodes.empty()) continue;
+      const glm::dvec3 n(normals_[v]);
+      const double len = glm::length(n);
+      if (!(len > 0.0) || !std::isfinite(len)) continue;
+      const glm::dvec3 o(positions_[v]), d = -n / len;
+      const glm::dvec3 invD(1.0 / d.x, 1.0 / d.y, 1.0 / d.z);
+      double best = std::numeric_limits<double>::infinity();
+      stack.assign(1, 0);
+      while (!stack.empty()) {
+        const Node& node = bvh_.nodes[static_cast<std::size_t>(stack.back())];
+        stack.pop_back();
+        if (!node.box.hit(o, invD, best)) continue;
+        if (node.left < 0) {
+          for (int i = node.first; i < node.first + node.count; ++i) {
+            const std::size_t t = static_cast<std::size_t>(bvh_.order[static_cast<std::size_t>(i)]);
+            const std::uint32_t a = indices_[3 * t], b = indices_[3 * t + 1], c = indices_[3 * t + 2];
+            if (a == v || b == v || c == v) continue;  // the vertex's own triangles
+            const double th = rayTriangle(o, d, glm::dvec3(positions_[a]), glm::dvec3(positions_[b]),
+                                          glm::dvec3(positions_[c]));
+            if (th > tMin_ && th < best) best = th;
+          }
+        } else {
+          stack.push_back(node.left);
+          stack.push_back(node.right);
+        }
+      }
+      if (std::isfinite(best)) out[v] = static_cast<float>(best);
+    }
+  }
+
+ private:
+  const std::vector<glm::vec3>& positions_;
+  const std::vector<glm::vec3>& normals_;
+  const std::vector<std::uint32_t>& indices_;
+  Bvh bvh_;
+  double tMin_ = 0.0;
+};
+
 }  // namespace wyman_detail
 
 // positions, normals: one per vertex; indices: triangles (3 per triangle).
 inline std::vector<float> computeWymanDn(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
                                          const std::vector<std::uint32_t>& indices, float missValue = 0.0f,
                                          double epsilon = 1e-7) {
-  using namespace wyman_detail;
-  if (positions.size() != normals.size()) throw std::invalid_argument("computeWymanDn: one normal per vertex");
-  if (indices.size() % 3 != 0) throw std::invalid_argument("computeWymanDn: indices must form triangles");
-  for (std::uint32_t i : indices)
-    if (i >= positions.size()) throw std::invalid_argument("computeWymanDn: index out of range");
-  const std::size_t triCount = indices.size() / 3;
+  const wyman_detail::Baker baker(positions, normals, indices, epsilon);
   std::vector<float> out(positions.size(), missValue);
-  if (triCount == 0) return out;
-  std::vector<Box> boxes(triCount);
-  std::vector<glm::dvec3> centroids(triCount);
-  Box all;
-  for (std::size_t t = 0; t < triCount; ++t) {
-    for (int k = 0; k < 3; ++k) boxes[t].grow(glm::dvec3(positions[indices[3 * t + static_cast<std::size_t>(k)]]));
-    centroids[t] = 0.5 * (boxes[t].lo + boxes[t].hi);
-    all.grow(boxes[t]);
-  }
-  const double tMin = epsilon * glm::length(all.hi - all.lo);
-  Bvh bvh;
-  bvh.order.resize(triCount);
-  for (std::size_t t = 0; t < triCount; ++t) bvh.order[t] = static_cast<int>(t);
-  build(bvh, boxes, centroids, 0, static_cast<int>(triCount));
-  std::vector<int> stack;
-  for (std::size_t v = 0; v < positions.size(); ++v) {
-    const glm::dvec3 n(normals[v]);
-    const double len = glm::length(n);
-    if (!(len > 0.0) || !std::isfinite(len)) continue;
-    const glm::dvec3 o(positions[v]), d = -n / len;
-    const glm::dvec3 invD(1.0 / d.x, 1.0 / d.y, 1.0 / d.z);
-    double best = std::numeric_limits<double>::infinity();
-    stack.assign(1, 0);
-    while (!stack.empty()) {
-      const Node& node = bvh.nodes[static_cast<std::size_t>(stack.back())];
-      stack.pop_back();
-      if (!node.box.hit(o, invD, best)) continue;
-      if (node.left < 0) {
-        for (int i = node.first; i < node.first + node.count; ++i) {
-          const std::size_t t = static_cast<std::size_t>(bvh.order[static_cast<std::size_t>(i)]);
-          const std::uint32_t a = indices[3 * t], b = indices[3 * t + 1], c = indices[3 * t + 2];
-          if (a == v || b == v || c == v) continue;  // the vertex's own triangles
-          const double th = rayTriangle(o, d, glm::dvec3(positions[a]), glm::dvec3(positions[b]), glm::dvec3(positions[c]));
-          if (th > tMin && th < best) best = th;
-        }
-      } else {
-        stack.push_back(node.left);
-        stack.push_back(node.right);
-      }
-    }
-    if (std::isfinite(best)) out[v] = static_cast<float>(best);
-  }
+  baker.bake(0, out.size(), missValue, out.data());
   return out;
 }
 
