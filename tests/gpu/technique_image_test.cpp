@@ -1,6 +1,6 @@
 // A full 128x128 frame of the glass-sphere-in-front-of-a-painting scene
 // (tests/support/technique_scene.hpp) rendered by a fragment pass on llvmpipe
-// (both backends) with several two-interface presets, compared pixel by pixel
+// (both backends) with every two-interface preset, compared pixel by pixel
 // with the C++ build of the same function (techImagePixel in
 // tests/parity/cases/technique.glsl, which calls snellTwoInterfaceRefraction).
 // Criterion (issue 4): at least 99.9% of pixels within 1/255 in every
@@ -79,8 +79,15 @@ TEST_P(TechniqueImage, FullFrameMatchesTheCxxBuild) {
   // One program per preset, with the preset a compile-time constant and only its
   // strategies compiled in (SNELL_TECHNIQUE_STRATEGIES): the full dispatcher inlined
   // into three dispersion traces takes llvmpipe minutes to compile.
-  const int masks[] = {1 << SNELL_STRATEGY_CBS, 1 << SNELL_STRATEGY_PLANE_NORMAL,
-                       (1 << SNELL_STRATEGY_WYMAN) | (1 << SNELL_STRATEGY_SINGLE), 1 << SNELL_STRATEGY_CBS};
+  const int masks[] = {1 << SNELL_STRATEGY_CBS,
+                       1 << SNELL_STRATEGY_PLANE_NORMAL,
+                       (1 << SNELL_STRATEGY_WYMAN) | (1 << SNELL_STRATEGY_SINGLE),
+                       1 << SNELL_STRATEGY_CBS,
+                       1 << SNELL_STRATEGY_PLANE_DEPTH,
+                       1 << SNELL_STRATEGY_SINGLE,
+                       1 << SNELL_STRATEGY_LINEAR_MARCH,
+                       1 << SNELL_STRATEGY_DDA,
+                       1 << SNELL_STRATEGY_CBS};
   auto makeProgram = [&](int preset) {
     const std::string fsSrc = "#version 450 core\n#define SNELL_TECHNIQUE_STRATEGIES " + std::to_string(masks[preset]) +
                               "\n#define TECH_PRESET " + std::to_string(preset) + R"(
@@ -110,9 +117,18 @@ void main() {
   }
   const glm::vec4 m = matrixEntries();
   VertexArray vao(gl);
-  const char* names[] = {"DIR -> painting", "Plane normal N=2 -> painting", "ISR -> environment",
-                         "DIR + dispersion + Beer + edge fade"};
-  for (int preset = 0; preset < 4; ++preset) {
+  const char* names[] = {"DIR -> painting",
+                         "Plane normal N=2 -> painting",
+                         "ISR -> environment",
+                         "DIR + dispersion + Beer + edge fade",
+                         "Plane depth N=3 -> painting",
+                         "Single sample -> painting",
+                         "Linear march -> painting",
+                         "DDA march -> painting",
+                         "DIR bounding box -> painting"};
+  constexpr int kPresets = int(sizeof(names) / sizeof(names[0]));
+  static_assert(kPresets == int(sizeof(masks) / sizeof(masks[0])), "one strategy mask per preset");
+  for (int preset = 0; preset < kPresets; ++preset) {
     const auto t0 = std::chrono::steady_clock::now();
     const Program program = makeProgram(preset);
     const double compileSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -158,8 +158,22 @@ TEST(TechniqueTwoInterface, ExitDirectionPerPreset) {
 struct PaintingStats : Stats {
   std::vector<double> p2Errors;  // projected P2 vs exact P2, output pixels (1e9 without a back hit)
   int exitMiss = 0;
-  int firstPlaneBehind = 0;  // back misses where the exact tangent plane behind P1 lies behind P1 along T1
+  // Pixels whose exact first normal-based plane (the back face's tangent plane at the point behind P1, on the
+  // view ray) lies behind P1 along T1: the ray never meets it (SNELL_PLANE_FACING_FALLBACK's case).
+  int firstPlaneBehind = 0;
+  int firstPlaneBehindWithinHalfPx = 0;
 };
+
+// The analytic test behind `firstPlaneBehind`: the ray P1 + t T1 meets the tangent plane at the back point
+// on P1's line of sight for t > 0 only when T1 points towards it (dot(T1, n_out) > 0).
+bool firstPlaneBehindP1(const Exact& e) {
+  const glm::dvec3 q = glm::normalize(e.p1);
+  const glm::dvec3 oc = -kCentreD();
+  const double b = glm::dot(q, oc), cc = glm::dot(oc, oc) - technique_test::kRadius * technique_test::kRadius;
+  const double sBack = -b + std::sqrt(std::max(0.0, b * b - cc));
+  const glm::dvec3 nBack = (sBack * q - technique_test::kCentre) / technique_test::kRadius;
+  return glm::dot(e.t1, nBack) <= 0.0;
+}
 
 PaintingStats paintingErrors(const SnellTechniqueOptions& o) {
   const Scene& s = scene();
@@ -178,16 +192,10 @@ PaintingStats paintingErrors(const SnellTechniqueOptions& o) {
           s.sceneSurface(), s.env, o);
       st.totalFetches += r.fetches;
       const glm::dvec2 px(s.width, s.height);
+      const bool behind = firstPlaneBehindP1(e);
+      st.firstPlaneBehind += behind;
       if (!r.backHit) {
         ++st.backMiss;
-        // Normal-based plane 0 is the back face's tangent plane at the point behind P1 (on the view ray):
-        // the ray P1 + t T1 meets it for t > 0 only when T1 points towards it (dot(T1, n_out) > 0).
-        const glm::dvec3 q = glm::normalize(e.p1);
-        const glm::dvec3 oc = -kCentreD();
-        const double b = glm::dot(q, oc), cc = glm::dot(oc, oc) - technique_test::kRadius * technique_test::kRadius;
-        const double sBack = -b + std::sqrt(std::max(0.0, b * b - cc));
-        const glm::dvec3 nBack = (sBack * q - technique_test::kCentre) / technique_test::kRadius;
-        st.firstPlaneBehind += glm::dot(e.t1, nBack) <= 0.0;
         st.errors.push_back(1e9);
         st.p2Errors.push_back(1e9);
         continue;
@@ -199,6 +207,7 @@ PaintingStats paintingErrors(const SnellTechniqueOptions& o) {
         continue;
       }
       st.errors.push_back(glm::length((s.plane.project(glm::dvec3(r.exitHit.position)) - exactUv) * px));
+      st.firstPlaneBehindWithinHalfPx += behind && st.errors.back() <= 0.5;
     }
   return st;
 }
@@ -235,43 +244,39 @@ TEST(TechniqueTwoInterface, PaintingBehindTheSphere) {
     const PaintingStats& st = all.back();
     const int hits = st.pixels - st.backMiss;
     std::printf("[painting] %-16s %d non-TIR px: exit point on the painting within 0.5 px %.2f%% 1 px %.2f%% (p50 "
-                "%.3f) | P2 within 0.5 px %.2f%% | no back hit %d (%.2f%%; first plane behind P1: %d), no exit hit %d "
+                "%.3f) | P2 within 0.5 px %.2f%% | no back hit %d (%.2f%%), first plane behind P1 %d (of them within 0.5 px %d), no exit hit %d "
                 "| of the back hits within 0.5 px %.2f%% | fetches/px %.2f\n",
                 p.name, st.pixels, 100.0 * st.shareBelow(0.5), 100.0 * st.shareBelow(1.0), st.quantile(0.5),
                 100.0 * shareBelow(st.p2Errors, 0.5), st.backMiss, 100.0 * st.backMiss / std::max(1, st.pixels),
-                st.firstPlaneBehind, st.exitMiss,
+                st.firstPlaneBehind, st.firstPlaneBehindWithinHalfPx, st.exitMiss,
                 100.0 * (double(st.shareBelow(0.5)) * st.pixels) / std::max(1, hits),
                 st.totalFetches / std::max(1, st.pixels));
   }
   ASSERT_GT(all[0].pixels, 30000);
-  // The criterion, 0.5 px for 99% of the non-TIR pixels, is NOT met by either plane method on
-  // this scene; what is met, and asserted (back normal read bilinearly at the hit uv,
-  // SNELL_TWO_INTERFACE_NORMAL_SAMPLE 1, the default, with the scene's LINEAR normal texture; N >= 3):
-  //  - every pixel where the back slot finds P2 has its painting point within 0.5 px (100.00% measured,
-  //    asserted >= 99.9%), for both plane methods: refinement and the filtered normal make the method exact
-  //    to well below a pixel where it applies;
-  //  - the shortfall is the back slot's miss rate on the sphere's rim, a fixed share of the disc that
-  //    neither iterations (N = 2..4 give the same misses), the normal lod, nor the buffer resolution (512^2:
-  //    21.8% / 3.6%) reduce: normal-based, 21.8% of the pixels, exactly the pixels whose first plane (the
-  //    back face's tangent plane behind P1) lies behind P1 along T1 (checked analytically below), so the ray
-  //    never meets it; depth-based, 3.2% (the three-point plane at the rim likewise lies behind P1 or
-  //    its neighbours are empty). Overall: normal N=3 78.17%, depth N=3 96.78% within 0.5 px.
+  // The criterion: exit points on the painting within 0.5 px for at least 99% of the non-TIR pixels
+  // (every such pixel counts; a missing back or exit hit is a failure). Met by the depth-based plane with 3
+  // refinements (99.85% measured at 256^2) and the normal-based plane with 4 (99.77%), thanks to
+  // SNELL_PLANE_FACING_FALLBACK: without it, the back slot found no P2 at all for the rim pixels whose
+  // first plane lies behind P1 (21.8% normal-based, 3.2% depth-based; 78.2% / 96.8% within 0.5 px).
   const PaintingStats& normal3 = all[2];
+  const PaintingStats& normal4 = all[3];
   const PaintingStats& depth3 = all[5];
-  for (const PaintingStats* st : std::vector<const PaintingStats*>{&normal3, &all[3], &depth3, &all[6]}) {
-    const int hits = st->pixels - st->backMiss;
-    EXPECT_EQ(st->exitMiss, 0);
-    EXPECT_GE(st->shareBelow(0.5) * st->pixels, 0.999 * hits);  // every back hit within 0.5 px
+  EXPECT_GE(depth3.shareBelow(0.5), 0.99);
+  EXPECT_GE(normal4.shareBelow(0.5), 0.99);
+  EXPECT_GE(all[6].shareBelow(0.5), 0.99);  // depth N=4
+  // The rim band is real and large on this scene (the analytic count, independent of the method), and the
+  // fallback is what recovers it: most of those pixels end within 0.5 px too.
+  EXPECT_GT(normal4.firstPlaneBehind, normal4.pixels / 5);
+  EXPECT_GE(normal4.firstPlaneBehindWithinHalfPx, normal4.firstPlaneBehind * 98 / 100);
+  for (const PaintingStats* st : std::vector<const PaintingStats*>{&normal3, &normal4, &depth3, &all[6]}) {
+    EXPECT_LE(st->backMiss, st->pixels / 1000);
+    EXPECT_LE(st->exitMiss, st->pixels / 1000);
   }
-  EXPECT_GT(depth3.shareBelow(0.5), 0.965);
-  EXPECT_GT(normal3.shareBelow(0.5), 0.78);
-  EXPECT_LT(depth3.backMiss, depth3.pixels * 35 / 1000);
-  // The normal-based misses are the geometric ones: the analytic first plane is behind P1.
-  EXPECT_GE(normal3.firstPlaneBehind, normal3.backMiss * 99 / 100);
-  // Refinement helps: one plane (N = 0) is far off, N = 2 close, N = 3 converged.
+  // Refinement helps: one plane (N = 0) is far off, then the share grows with N.
   EXPECT_LT(all[0].shareBelow(0.5), 0.3);
-  EXPECT_GT(all[1].shareBelow(0.5), 0.77);
-  EXPECT_GE(all[3].shareBelow(0.5), normal3.shareBelow(0.5));
+  EXPECT_GT(all[1].shareBelow(0.5), 0.85);
+  EXPECT_GT(normal3.shareBelow(0.5), all[1].shareBelow(0.5));
+  EXPECT_GT(normal4.shareBelow(0.5), normal3.shareBelow(0.5));
   // The searches: DIR with 12 steps, for comparison (no rim misses, less precise where it hits).
   EXPECT_GT(all[8].shareBelow(1.0), 0.8);
 }

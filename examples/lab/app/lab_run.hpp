@@ -36,6 +36,8 @@ struct TechniqueRow {
   double cpuGpuMaxAbs = 0.0;   // largest |CPU - GPU| of any channel, [0, 1]-clamped linear
   double cpuGpuBeyond1 = 0.0;  // share of object pixels with a channel beyond 1/255
   double cpuGpuBeyond4 = 0.0;  // ... beyond 4/255
+  int cpuGpuBeyond4Pixels = 0;  // the count of those pixels
+  int cpuGpuBeyond4Ties = 0;    // of them, reproduced by the C++ build from inputs nudged by a few ulps
   int worstX = -1, worstY = -1;  // the pixel of cpuGpuMaxAbs
   double fetchMismatch = 0.0;  // share of object pixels whose CPU fetch count differs from the GPU's
 };

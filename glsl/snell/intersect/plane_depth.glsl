@@ -35,7 +35,11 @@ contract (one plane, built around a reference point Q on the ray: Q = W for the
     fetch); C = point of pC, or of pB - a when pC is empty (1-2 fetches); D =
     point of pB + b, or of pB - b when empty (1-2 fetches). The three texels are
     never collinear in the image, so the plane is defined whenever they are valid.
-  - P = snellRayPlane(W, dir, B, cross(C - B, D - B)); after N refinements the
+  - P = snellRayPlane(W, dir, B, cross(C - B, D - B)). With
+    SNELL_PLANE_FACING_FALLBACK 1 (default), when B was read but C or D is
+    empty, the three points are degenerate, or the ray does not meet their plane
+    ahead of W, the plane through B facing the camera is used instead:
+    P = snellRayPlane(W, dir, B, B) (plane_refine.glsl). After N refinements the
     hit is snellHitOnSurface(P_N) (position on the ray, valid when the surface
     exists at its projection).
   - exact (up to float rounding) on a planar surface at every level whose
@@ -46,8 +50,9 @@ contract (one plane, built around a reference point Q on the ray: Q = W for the
     C and D), plus 1 final lookup; on failure the reads issued so far.
   - valid = false (snellHitMiss, finite): origin/dir NaN/Inf, |dir|^2 below 1e-30
     or overflowing, W at or behind the camera plane (fetches 0); B0 or B empty or
-    off screen; C or D empty after the fallback; a degenerate plane, the ray
-    parallel to it or the plane behind W; P behind the camera; the final lookup
+    off screen; C or D empty after the fallback, a degenerate plane, the ray
+    parallel to it or the plane behind W (with SNELL_PLANE_FACING_FALLBACK 0,
+    or when the facing plane is not met either); P behind the camera; the final lookup
     empty or off screen. Rays towards the camera are accepted as in
     plane_normal.glsl.
 source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
@@ -76,6 +81,7 @@ struct SnellDepthPlane {
   vec2 uv;        // where B was read
   vec3 position;  // B
   vec3 normal;    // cross(C - B, D - B), not normalized
+  bool hasPoint;  // B was read (position valid) even when C or D was not
   bool valid;
   int fetches;
 };
@@ -85,6 +91,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   r.uv = vec2(0.0f, 0.0f);
   r.position = vec3(0.0f, 0.0f, 0.0f);
   r.normal = vec3(0.0f, 0.0f, 0.0f);
+  r.hasPoint = false;
   r.valid = false;
   r.fetches = 0;
   SnellScreenPoint sq = snellViewToUv(s.clipFromView, q);
@@ -135,6 +142,8 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
     }
     pB = bl.position;
   }
+  r.position = pB;
+  r.hasPoint = true;
   SnellSurfacePoint c = snellSurfacePoint(depthMips, snellPixelToUv(pc, size), sl);
   r.fetches += 1;
   if (!c.valid) {
@@ -153,7 +162,6 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
       return r;
     }
   }
-  r.position = pB;
   r.normal = cross(c.position - pB, e.position - pB);
   r.valid = true;
   return r;
@@ -182,6 +190,12 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
     SnellDepthPlane pl = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
     fetches += pl.fetches;
     SnellRayPlaneHit ph = snellRayPlane(origin, dir, pl.position, pl.normal);
+#if SNELL_PLANE_FACING_FALLBACK
+    if (pl.hasPoint && (!pl.valid || !ph.valid)) {
+      ph = snellRayPlane(origin, dir, pl.position, pl.position);
+      pl.valid = true;
+    }
+#endif
     if (!pl.valid || !ph.valid) {
       if (k == 0) {
         return snellHitMiss(fetches);

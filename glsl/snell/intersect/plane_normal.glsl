@@ -20,7 +20,11 @@ contract:
   - plane k (k = 0 .. N): uv_0 = projection of W, uv_k = projection of P_(k-1);
     B_k = snellSurfacePoint(depthTex, uv_k, surface) (texel centre point),
     n_k = xyz of SNELL_SAMPLE_LOD(normalTex, B_k.uv, normalLod) (the same texel
-    centre); P_k = snellRayPlane(W, dir, B_k, n_k). The hit is
+    centre); P_k = snellRayPlane(W, dir, B_k, n_k), or, when the ray does not
+    meet that plane ahead of W and SNELL_PLANE_FACING_FALLBACK is 1 (default),
+    P_k = snellRayPlane(W, dir, B_k, B_k): the plane through B_k facing the
+    camera (normal along the line of sight through B_k), see plane_refine.glsl.
+    The hit is
     snellPlaneHit(P_N): position P_N (on the ray), uv its projection, valid
     when the surface exists there. A refinement step that cannot build its plane
     (B_k empty or off screen, ray parallel) stops the refinement at P_(k-1).
@@ -37,8 +41,9 @@ contract:
     lies ahead of W (t >= 0).
   - valid = false (snellHitMiss, finite): origin/dir NaN/Inf, |dir|^2 below 1e-30
     or overflowing, W at or behind the camera plane (fetches 0); B_k empty or off
-    screen; n_k zero/NaN, the ray parallel to plane k or the plane behind W
-    (snellRayPlane invalid) for the first plane; P behind the camera or off
+    screen; for the first plane: n_k zero/NaN, the ray parallel to it or the
+    plane behind W (snellRayPlane invalid), and with the fallback also the
+    facing plane (a ray that does not go deeper than B_0); P behind the camera or off
     screen; the final sample empty with SNELL_PLANE_HOLD 0.
 source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
   steps 1-5 and "Method 1: Normal-based"; plane intersection in
@@ -93,6 +98,11 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     vec4 nt = SNELL_SAMPLE_LOD(normalTex, b.uv, normalLod);
     fetches += 1;
     SnellRayPlaneHit ph = snellRayPlane(origin, dir, b.position, vec3(nt.x, nt.y, nt.z));
+#if SNELL_PLANE_FACING_FALLBACK
+    if (!ph.valid) {
+      ph = snellRayPlane(origin, dir, b.position, b.position);
+    }
+#endif
     if (!ph.valid) {
       if (k == 0) {
         return snellHitMiss(fetches);

@@ -366,6 +366,21 @@ SNELL_FN vec4 techImagePixel(ivec2 px, int preset, vec4 c) {
     o.iors = snellDispersionIors(1.5168f, 30.0f);
     o.absorption = vec3(0.05f, 0.1f, 0.2f);
     o.fallback = SNELL_FALLBACK_EDGE_FADE;
+  } else if (preset >= 4) {
+    // The other presets, painting behind: plane depth, single sample, linear march, DDA, DIR with the
+    // sphere's bounding box as its range (centre z -6, radius 2.2: tests/support/technique_scene.hpp).
+    if (preset == 4) {
+      o = snellPresetPlaneDepth(3);
+    } else if (preset == 5) {
+      o = snellPresetSingleSample();
+    } else if (preset == 6) {
+      o = snellPresetLinearMarch();
+    } else if (preset == 7) {
+      o = snellPresetDdaMarch();
+    } else {
+      o = snellPresetDirBounds(-3.8f, -8.2f);
+    }
+    o.exitMode = SNELL_EXIT_SCENE;
   }
   SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
       p1.position, vec3(n1.x, n1.y, n1.z), 4.4f, techBackDepth, techBackNormal, techBackPyramid, techBackSurface(c),
