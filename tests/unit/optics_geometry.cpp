@@ -9,6 +9,8 @@
 #include <limits>
 #include <random>
 
+#include "support/rng.hpp"
+
 namespace {
 
 using glm::dvec3;
@@ -17,16 +19,8 @@ using glm::vec3;
 const float kInf = std::numeric_limits<float>::infinity();
 const float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-struct Rng {
-  std::mt19937 rng{99};
-  float uniform(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
-  vec3 unit() {
-    for (;;) {
-      vec3 v(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-      float l2 = glm::dot(v, v);
-      if (l2 > 1e-2f && l2 <= 1.0f) return v / std::sqrt(l2);
-    }
-  }
+struct Rng : snell_test::Rng {
+  Rng() : snell_test::Rng(99u) {}
 };
 
 bool finite(vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }

@@ -9,6 +9,8 @@
 #include <limits>
 #include <random>
 
+#include "support/rng.hpp"
+
 namespace {
 
 using glm::dvec3;
@@ -19,16 +21,8 @@ const float kNaN = std::numeric_limits<float>::quiet_NaN();
 
 dvec3 d(vec3 v) { return dvec3(v); }
 
-struct Rng {
-  std::mt19937 rng{1234};
-  float uniform(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
-  vec3 unit() {
-    for (;;) {
-      vec3 v(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-      float l2 = glm::dot(v, v);
-      if (l2 > 1e-2f && l2 <= 1.0f) return v / std::sqrt(l2);
-    }
-  }
+struct Rng : snell_test::Rng {
+  Rng() : snell_test::Rng(1234u) {}
 };
 
 // Geometry of one incidence, in double: the unit normal facing the incident

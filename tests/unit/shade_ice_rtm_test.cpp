@@ -11,6 +11,8 @@
 #include <limits>
 #include <random>
 
+#include "support/rng.hpp"
+
 namespace {
 
 using glm::dvec2;
@@ -22,16 +24,8 @@ using glm::vec4;
 const float kInf = std::numeric_limits<float>::infinity();
 const float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-struct Rng {
-  std::mt19937 rng{4321};
-  float uniform(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
-  vec3 unit() {
-    for (;;) {
-      vec3 v(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-      float l2 = glm::dot(v, v);
-      if (l2 > 1e-2f && l2 <= 1.0f) return v / std::sqrt(l2);
-    }
-  }
+struct Rng : snell_test::Rng {
+  Rng() : snell_test::Rng(4321u) {}
 };
 
 double sinBetween(dvec3 a, dvec3 b) { return glm::length(glm::cross(glm::normalize(a), glm::normalize(b))); }
