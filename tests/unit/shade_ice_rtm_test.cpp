@@ -9,7 +9,6 @@
 
 #include <cmath>
 #include <limits>
-#include <random>
 
 #include "support/rng.hpp"
 
