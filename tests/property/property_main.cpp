@@ -100,13 +100,7 @@ const std::map<std::string, Exception>& exceptions() {
 // the counts are still printed, and any function NOT listed fails on its
 // first non-finite output. Remove an entry once fixed or moved.
 const std::map<std::string, const char*>& pendingTriage() {
-  static const std::map<std::string, const char*> m = {
-      {"snellDdaMarch",
-       "open bug: valid hit with a NaN position for a huge maxDistance (~1e21): k0 + s dk rounds to 0 at s = 1 "
-       "when 1/w of the far end is below k0's ulp, so pB = q/0; candidate fix: k(s) = k0 (1 - s) + k1 s"},
-      {"snellTwoInterfaceTrace", "+inf in output 7 for points ~1e20: open"},
-      {"snellTwoInterfaceRefraction", "+inf in output 11 for points ~1e30: open"},
-  };
+  static const std::map<std::string, const char*> m = {};
   return m;
 }
 

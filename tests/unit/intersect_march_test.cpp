@@ -190,6 +190,28 @@ TEST(IntersectMarch, DdaThicknessLetsRaysPassBehind) {
   EXPECT_TRUE(finite(thin));
 }
 
+// Issue 7 regression (property test input #12805 of snellDdaMarch): a far end
+// whose 1/w (~1e-21) is below the ulp of the origin's made k0 + s (k1 - k0)
+// cancel to 0 at s = 1, and the hit in the last step got a NaN position. The
+// hit must be a point of the ray at the sphere's back face (the analytic
+// reference, within the stride: 5.9 px of ~0.018 units), for maxDistance 1e21,
+// 1e30 and FLT_MAX (capped at 1e30 by contract).
+TEST(IntersectMarch, DdaHugeMaxDistanceHitsAtAFinitePointOfTheRay) {
+  const DepthScene& sc = sphereScene();
+  const vec3 o(-0.0621630959f, -0.00107261236f, -3.83915162f);
+  const vec3 d(0.0144228153f, -0.0155654298f, -0.999774814f);
+  const std::optional<glm::dvec3> ref = sc.referenceHit(glm::dvec3(o), glm::dvec3(d));
+  ASSERT_TRUE(ref.has_value());
+  for (const float maxDistance : {8.67736336e20f, 1e30f, std::numeric_limits<float>::max()}) {
+    const SnellHit h = snellDdaMarch(o, d, sc.depth, sc.surface(), maxDistance, kInf, 5.88873959f, 173);
+    ASSERT_TRUE(h.valid) << maxDistance;
+    ASSERT_TRUE(finite(h)) << maxDistance;
+    const glm::dvec3 p(h.position), od(o), dd = glm::normalize(glm::dvec3(d));
+    EXPECT_LT(glm::length(glm::cross(p - od, dd)), 1e-4) << maxDistance;  // on the ray
+    EXPECT_LT(glm::length(p - *ref), 0.15) << maxDistance;
+  }
+}
+
 TEST(IntersectMarch, BadInputGivesFiniteMisses) {
   const DepthScene& sc = sphereScene();
   const SnellDepthSurface surf = sc.surface();

@@ -358,6 +358,60 @@ TEST(TechniqueTwoInterface, FallbackWhenTheExitLeavesTheScreen) {
   EXPECT_LT(glm::length(ex.color - glm::vec3(env)), 1e-6f);  // projection off screen: fade 0, environment
 }
 
+// Issue 7 regression (property test inputs #14557 of snellTwoInterfaceTrace and
+// #12414 of snellTwoInterfaceRefraction): ISR with d_N = 1e30 puts P2 ~2e29
+// units away, on screen over the sphere, so the back hit was accepted and
+// pathLength = length(P2 - P1) overflowed to +inf. By contract such a hit
+// counts as none: fallback with exitPoint = P1, pathLength 0, exit along T1
+// (checked against a double-precision Snell refraction). d_N = 1e18 (|P2 - P1|
+// still finite) is a hit.
+TEST(TechniqueTwoInterface, BackHitBeyondFloatLengthFallsBack) {
+  const Scene& s = scene();
+  const SnellTechniqueOptions isr = snellPresetIsr();
+  {
+    const glm::vec3 p1(-0.88325721f, 0.6121943f, -4.33259392f), n1(0.0f, 0.369179219f, 0.757911861f);
+    const float ior = 1.28285468f;
+    const float eta = snellIorToEta(1.0f, ior);
+    const glm::dvec3 v = glm::normalize(glm::dvec3(p1)), n = glm::normalize(glm::dvec3(n1));
+    const glm::dvec3 t1 = glm::refract(v, glm::dot(v, n) > 0.0 ? -n : n, double(eta));
+    auto run = [&](float dN) {
+      return snellTwoInterfaceTrace(p1, n1, eta, dN, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(),
+                                    isr.back, SNELL_TIR_REFLECT);
+    };
+    const SnellTwoInterfacePath far = run(1e30f);
+    EXPECT_TRUE(far.valid);
+    EXPECT_FALSE(far.hit);
+    EXPECT_TRUE(far.fellBack);
+    EXPECT_EQ(far.pathLength, 0.0f);
+    EXPECT_EQ(far.exitPoint, p1);
+    EXPECT_LT(glm::length(glm::dvec3(far.exitDirection) - t1), 1e-5);
+    const SnellTwoInterfacePath near = run(1e18f);
+    EXPECT_TRUE(near.hit);
+    EXPECT_TRUE(std::isfinite(near.pathLength));
+    EXPECT_NEAR(near.pathLength, glm::length(glm::dvec3(near.exitPoint) - glm::dvec3(p1)), 1e12);
+  }
+  {
+    const glm::vec3 p1(1.19292653f, 0.687132239f, -4.1956501f), n1(0.405875713f, 0.403241932f, 0.820159018f);
+    SnellTechniqueOptions o = isr;
+    o.ior = 1.70045829f;
+    o.iors = glm::vec3(o.ior * 0.98f, o.ior, o.ior * 1.02f);
+    o.dispersion = 3;
+    o.tirPolicy = SNELL_TIR_ZERO;
+    o.fallback = SNELL_FALLBACK_EDGE_FADE;
+    const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
+        p1, n1, 1e30f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(), s.plane.depth,
+        s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o);
+    EXPECT_FALSE(r.backHit);
+    EXPECT_TRUE(r.fellBack);
+    EXPECT_EQ(r.pathLength, 0.0f);
+    EXPECT_EQ(r.exitPoint, p1);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_TRUE(std::isfinite(r.color[k])) << k;
+      EXPECT_TRUE(std::isfinite(r.exitDirection[k])) << k;
+    }
+  }
+}
+
 TEST(TechniqueTwoInterface, DispatcherMatchesTheStrategies) {
   const Scene& s = scene();
   const SnellDepthSurface b = s.backSurface();

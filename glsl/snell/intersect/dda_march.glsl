@@ -25,11 +25,15 @@ options:
                           others, so rays can pass behind them)
   SNELL_DDA_MAX_DISTANCE  default maxDistance (10.0f view-space units)
 contract:
-  - segment: origin to end = origin + (maxDistance/|dir|) dir, cut at the near
-    plane z = -surface.zNear when dir.z > 0. Both ends are projected with
-    surface.clipFromView: uv0, uv1 and k = 1/w; Q = p/w and k are linear in
-    screen space, so the view z at screen parameter s in [0,1] is
-    (Q0.z + s (Q1.z - Q0.z)) / (k0 + s (k1 - k0)) exactly (perspective-correct).
+  - segment: origin to end = origin + (min(maxDistance, 1e30)/|dir|) dir, cut
+    at the near plane z = -surface.zNear when dir.z > 0 (beyond 1e30 view
+    units the end's projection no longer moves for any scene-scale origin; the
+    cap keeps 1/w of the end a normal float, so maxDistance = SNELL_FLT_MAX
+    works as "unbounded"). Both ends are projected with surface.clipFromView:
+    uv0, uv1 and k = 1/w; Q = p/w and k are linear in screen space, so the view
+    point at screen parameter s in [0,1] is
+    (Q0 (1 - s) + Q1 s) / (k0 (1 - s) + k1 s) (perspective-correct; this form
+    is exact at both ends and never cancels, as k0, k1 > 0).
   - step i (i = 0, 1, ...) samples uv0 + s_i (uv1 - uv0), s_i = min(i ds, 1),
     ds = stride / (length of the segment along its major axis in pixels), or
     ds = 1 when the whole segment spans at most stride pixels (a ray along the
@@ -47,8 +51,9 @@ contract:
     no step hits within steps; with 0 fetches when: an input is NaN or Inf
     (a NaN thickness uses the default, a NaN stride 1), |dir| is 0 or
     denormal-small, maxDistance <= 0, the origin is in front of the near plane
-    (z > -surface.zNear), an end does not project (clip w <= 0), or the level
-    has no texels. thickness < 0 counts as 0, stride < 1 as 1.
+    (z > -surface.zNear), an end does not project to a normal 1/w (clip w <= 0,
+    below FLT_MIN or above 1/FLT_MIN) or to a finite Q, or the level has no
+    texels. thickness < 0 counts as 0, stride < 1 as 1.
 source: M. McGuire, M. Mara, "Efficient GPU Screen-Space Ray Tracing", JCGT
   3(4), 2014 (pixel-space march with homogeneous interpolation of 1/w and a
   depth interval per step); our own formulation (per-step parameter instead of
@@ -92,7 +97,7 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
   if (!SNELL_CAMERA_FINITE(len) || !(len >= SNELL_CAMERA_FLT_MIN) || !(origin.z <= -surface.zNear)) {
     return snellHitMiss(0);
   }
-  float tMax = maxDistance / len;
+  float tMax = min(maxDistance, 1e30f) / len;
   if (dir.z > 0.0f) {
     float tNear = (-surface.zNear - origin.z) / dir.z;
     tMax = SNELL_CAMERA_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
@@ -107,19 +112,24 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
   if (!SNELL_CAMERA_FINITE(end.x) || !SNELL_CAMERA_FINITE(end.y) || !SNELL_CAMERA_FINITE(end.z) ||
       !SNELL_CAMERA_FINITE(h0.x) || !SNELL_CAMERA_FINITE(h0.y) || !SNELL_CAMERA_FINITE(h0.w) ||
       !SNELL_CAMERA_FINITE(h1.x) || !SNELL_CAMERA_FINITE(h1.y) || !SNELL_CAMERA_FINITE(h1.w) ||
-      !(h0.w >= SNELL_CAMERA_FLT_MIN) || !(h1.w >= SNELL_CAMERA_FLT_MIN) || size.x <= 0 || size.y <= 0) {
+      !(h0.w >= SNELL_CAMERA_FLT_MIN) || !(h1.w >= SNELL_CAMERA_FLT_MIN) ||
+      !(h0.w <= 1.0f / SNELL_CAMERA_FLT_MIN) || !(h1.w <= 1.0f / SNELL_CAMERA_FLT_MIN) || size.x <= 0 || size.y <= 0) {
     return snellHitMiss(0);
   }
   // Homogeneous end points: k = 1/w and Q = p k are linear in screen space.
+  // They are interpolated as a (1 - s) + b s, not a + s (b - a): for a far end
+  // (k1 below the ulp of k0) k0 + s (k1 - k0) cancels to 0 at s = 1. Written
+  // out rather than mix(), which drivers may lower to the cancelling form.
   float k0 = 1.0f / h0.w;
   float k1 = 1.0f / h1.w;
   vec3 q0 = origin * k0;
-  vec3 dq = end * k1 - q0;
-  float dk = k1 - k0;
+  vec3 q1 = end * k1;
   vec2 uv0 = vec2(h0.x * k0, h0.y * k0) * 0.5f + 0.5f;
   vec2 duv = vec2(h1.x * k1, h1.y * k1) * 0.5f + 0.5f - uv0;
   float major = max(abs(duv.x * float(size.x)), abs(duv.y * float(size.y)));
-  if (!SNELL_CAMERA_FINITE(major) || !SNELL_CAMERA_FINITE(dq.z) || !SNELL_CAMERA_FINITE(dk)) {
+  if (!SNELL_CAMERA_FINITE(major) || !SNELL_CAMERA_FINITE(q0.x) || !SNELL_CAMERA_FINITE(q0.y) ||
+      !SNELL_CAMERA_FINITE(q0.z) || !SNELL_CAMERA_FINITE(q1.x) || !SNELL_CAMERA_FINITE(q1.y) ||
+      !SNELL_CAMERA_FINITE(q1.z)) {
     return snellHitMiss(0);
   }
   float ds = major > px ? px / major : 1.0f;
@@ -133,7 +143,7 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
     }
     float sC = min(float(i) * ds, 1.0f);
     float sB = min((float(i) + 0.5f) * ds, 1.0f);
-    float zB = (q0.z + sB * dq.z) / (k0 + sB * dk);
+    float zB = (q0.z * (1.0f - sB) + q1.z * sB) / (k0 * (1.0f - sB) + k1 * sB);
     vec2 uv = uv0 + sC * duv;
     if (!(uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) {
       return snellHitMiss(fetches);
@@ -145,8 +155,8 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
     if (x.valid && zNearRay >= x.viewZ - thick && zFarRay <= x.viewZ) {
       // The point of the ray inside this step at depth clamp(viewZ, zFar, zNear).
       float zHit = clamp(x.viewZ, zFarRay, zNearRay);
-      vec3 pA = (q0 + sA * dq) / (k0 + sA * dk);
-      vec3 pB = (q0 + sB * dq) / (k0 + sB * dk);
+      vec3 pA = (q0 * (1.0f - sA) + q1 * sA) / (k0 * (1.0f - sA) + k1 * sA);
+      vec3 pB = (q0 * (1.0f - sB) + q1 * sB) / (k0 * (1.0f - sB) + k1 * sB);
       float f = pB.z != pA.z ? clamp((zHit - pA.z) / (pB.z - pA.z), 0.0f, 1.0f) : 0.5f;
       SnellHit h;
       h.uv = uv;

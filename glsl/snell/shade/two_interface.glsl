@@ -45,10 +45,11 @@ contract:
     the second interface (T2 follows the policy: critical-angle tangent or
     mirror; the reflected ray is not traced further).
   - fallback (fellBack = true, the path still valid): no back hit (invalid or
-    off-screen texel, empty range), a zero or NaN stored normal, or TIR under
-    SNELL_TIR_ZERO: the ray leaves as if the second interface did not bend it:
-    exitPoint = P2 when found, else P1, exitDirection = T1, pathLength = |P2 -
-    P1| when P2 was found, else 0.
+    off-screen texel, empty range; a hit so far that |P2 - P1| overflows a
+    float, beyond ~1.8e19 view units, counts as none), a zero or NaN stored
+    normal, or TIR under SNELL_TIR_ZERO: the ray leaves as if the second
+    interface did not bend it: exitPoint = P2 when found, else P1,
+    exitDirection = T1, pathLength = |P2 - P1| when P2 was found, else 0.
   - fetches: the strategy's count plus the normal fetch.
 source: C. Wyman, "An Approximate Image-Space Approach for Interactive
   Refraction", SIGGRAPH 2005 (two interfaces, back-face normal and depth
@@ -132,13 +133,15 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     h = snellIntersectWith(o.strategy, frontPosition, t1, backDepth, backNormal, backPyramid, back, o);
   }
   p.fetches = h.fetches;
-  if (!h.valid) {
+  // length() squares first: it overflows beyond ~1.8e19 (Wyman's estimate with a huge dN).
+  float pathLength = length(h.position - frontPosition);
+  if (!h.valid || !SNELL_CAMERA_FINITE(pathLength)) {
     return p;
   }
   p.hit = true;
   p.exitPoint = h.position;
   p.exitUv = h.uv;
-  p.pathLength = length(h.position - frontPosition);
+  p.pathLength = pathLength;
 #if SNELL_TWO_INTERFACE_NORMAL_SAMPLE
   vec4 n2 = SNELL_SAMPLE_LOD(backNormal, h.uv, 0.0f);
 #else

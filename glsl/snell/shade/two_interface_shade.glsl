@@ -54,7 +54,8 @@ contract (snellTwoInterfaceRefraction):
     fetches and fellBack (any) cover all traces.
   - transmitted = exit color * snellBeerLambert(o.absorption, pathLength) per
     channel, pathLength = |P2 - P1| of that channel's trace (0 on fallback
-    without a back hit).
+    without a back hit; finite: a back hit whose |P2 - P1| overflows a float
+    counts as none, two_interface.glsl).
   - reflection (o.reflection): F = snellFresnelDielectric(cos(V, N1), eta of
     the green/single trace); R = reflect(V, N1); color = F env(R) + (1 - F)
     transmitted, +1 fetch; else F = 0, color = transmitted. The second
