@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "parity_registry.hpp"
 #include "support/depth_scenes.hpp"
@@ -156,6 +157,26 @@ SNELL_PARITY_CASE({"snellConservativeBinarySearch", "search.glsl", "caseSnellCon
 SNELL_PARITY_CASE({"snellBinarySearch", "search.glsl", "caseSnellBinarySearch",
                    [] { return rayInputs(Kind::Search, 43); },
                    [](const ParityIO& in) { return run(parity_search::caseSnellBinarySearch, in); }, kHitDiscrete, 9,
+                   {1e-5f, 1e-5f}, textures(), setupTextures});
+// Brackets: mostly sub-intervals of [0, 1] (the linear search's steps, the whole segment), some reversed,
+// outside [0, 1] or NaN (clamped / returned as given).
+SNELL_PARITY_CASE({"snellBisectTexRay", "search.glsl", "caseSnellBisectTexRay",
+                   [] {
+                     std::vector<ParityIO> v = rayInputs(Kind::Search, 47);
+                     InputGen g(48);
+                     for (ParityIO& in : v) {
+                       float lo = g.chance(0.3f) ? 0.0f : g.uniform(0.0f, 0.9f);
+                       float hi = g.chance(0.3f) ? 1.0f : g.uniform(lo, 1.0f);
+                       if (g.chance(0.05f)) std::swap(lo, hi);
+                       if (g.chance(0.03f)) lo = g.hostile();
+                       if (g.chance(0.03f)) hi = g.hostile();
+                       in.v[1].w = lo;
+                       in.v[2].z = hi;
+                       if (in.v[0].w < 0.0f) in.v[0].w = 3.0f;  // no #define-default overload here
+                     }
+                     return v;
+                   },
+                   [](const ParityIO& in) { return run(parity_search::caseSnellBisectTexRay, in); }, kHitDiscrete, 9,
                    {1e-5f, 1e-5f}, textures(), setupTextures});
 SNELL_PARITY_CASE({"snellLinearBinarySearch", "search.glsl", "caseSnellLinearBinarySearch",
                    [] { return rayInputs(Kind::LinearSearch, 44); },

@@ -6,6 +6,7 @@ description: plain binary search of a view-space ray against a depth-buffer
   baseline so tests and the lab can show it.
 use: SnellHit h = snellBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest);
      SnellHit h = snellBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, steps);
+     SnellHit h = snellBisectTexRay(r, depthTex, surface, lo, hi, steps, hitSoFar);
   arguments as snellConservativeBinarySearch; steps = binary steps (one fetch each)
 options:
   SNELL_BINARY_SEARCH_STEPS      default steps (5)
@@ -26,6 +27,12 @@ contract:
     0.5^c (the last midpoint is an end of the final bracket, of width 0.5^c).
   - valid = false with snellHitMiss numbers and 0 fetches when the segment is
     invalid (rays towards the camera, Zmin == Zmax, NaN: see search_segment.glsl).
+  - snellBisectTexRay(r, depthTex, surface, lo, hi, steps, h): the loop itself,
+    for a valid segment r (snellSearchSegment) and a bracket [lo, hi] in beta,
+    each clamped to [0, 1]: clamp(steps, 0, SNELL_BINARY_SEARCH_MAX_STEPS)
+    steps of the rule above; after each, h = the point tested (uv, position,
+    valid as above) with h.fetches + 1. With 0 steps, or a NaN lo or hi, h is
+    returned as given.
 source: F. Policarpo, M. M. Oliveira, J. Comba, "Real-Time Relief Mapping on
   Arbitrary Polygonal Surfaces", I3D 2005 (binary search); Oliveira & Brauwers
   2007, sec. 3.3 and Figure 6 (why it can end on an invalid texel), eqs. 3-10.
@@ -45,6 +52,39 @@ source: F. Policarpo, M. M. Oliveira, J. Comba, "Real-Time Relief Mapping on
 #  define SNELL_BINARY_SEARCH_MAX_STEPS 24
 #endif
 
+/* The bisection loop of Policarpo et al. 2005, shared by snellBinarySearch and
+   the refinement of snellLinearBinarySearch (see the contract). */
+SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SnellDepthSurface surface, float lo,
+                                    float hi, int steps, SnellHit h) {
+  if (isnan(lo) || isnan(hi)) {
+    return h;
+  }
+  // Outside [0, 1] the midpoints would extrapolate past S or E.
+  lo = clamp(lo, 0.0f, 1.0f);
+  hi = clamp(hi, 0.0f, 1.0f);
+  int n = clamp(steps, 0, SNELL_BINARY_SEARCH_MAX_STEPS);
+  float dz = r.e.z - r.s.z;
+  for (int i = 0; i < SNELL_BINARY_SEARCH_MAX_STEPS; ++i) {
+    if (i >= n) {
+      break;
+    }
+    float beta = 0.5f * (lo + hi);
+    float z = r.s.z + beta * dz;
+    vec2 uv = snellTexRayUv(r, z);
+    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
+    h.uv = uv;
+    h.position = vec3(r.s.x + beta * (r.e.x - r.s.x), r.s.y + beta * (r.e.y - r.s.y), z);
+    h.valid = x.valid;
+    h.fetches = h.fetches + 1;
+    if (x.valid && z > x.viewZ) {
+      lo = beta;
+    } else {
+      hi = beta;
+    }
+  }
+  return h;
+}
+
 /* Policarpo et al. 2005 binary search on Oliveira & Brauwers 2007, eqs. 5-10 */
 SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
                                     float zNearest, float zFarthest, int steps) {
@@ -52,41 +92,17 @@ SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex,
   if (!r.valid) {
     return snellHitMiss(0);
   }
-  int n = clamp(steps, 0, SNELL_BINARY_SEARCH_MAX_STEPS);
-  float dz = r.e.z - r.s.z;
-  float lo = 0.0f;
-  float hi = 1.0f;
-  float beta = 0.0f;
-  float z = r.s.z;
-  vec2 uv = r.ts;
-  bool lastValid = false;
-  int fetches = 0;
-  for (int i = 0; i < SNELL_BINARY_SEARCH_MAX_STEPS; ++i) {
-    if (i >= n) {
-      break;
-    }
-    beta = 0.5f * (lo + hi);
-    z = r.s.z + beta * dz;
-    uv = snellTexRayUv(r, z);
-    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
-    fetches = fetches + 1;
-    lastValid = x.valid;
-    if (x.valid && z > x.viewZ) {
-      lo = beta;
-    } else {
-      hi = beta;
-    }
-  }
-  if (n == 0) {
-    lastValid = snellSampleSurface(depthTex, uv, surface).valid;
-    fetches = 1;
-  }
   SnellHit h;
-  h.uv = uv;
-  h.position = vec3(r.s.x + beta * (r.e.x - r.s.x), r.s.y + beta * (r.e.y - r.s.y), z);
-  h.valid = lastValid;
-  h.fetches = fetches;
-  return h;
+  h.uv = r.ts;
+  h.position = r.s;
+  h.valid = false;
+  h.fetches = 0;
+  if (steps <= 0) {
+    h.valid = snellSampleSurface(depthTex, r.ts, surface).valid;
+    h.fetches = 1;
+    return h;
+  }
+  return snellBisectTexRay(r, depthTex, surface, 0.0f, 1.0f, steps, h);
 }
 
 SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,

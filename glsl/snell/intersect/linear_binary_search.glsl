@@ -87,30 +87,12 @@ SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D dep
   if (found < 0) {
     return snellHitMiss(fetches);
   }
-  float lo = float(found - 1) * stepBeta;
-  float hi = beta;
-  for (int j = 0; j < SNELL_BINARY_SEARCH_MAX_STEPS; ++j) {
-    if (j >= nb) {
-      break;
-    }
-    beta = 0.5f * (lo + hi);
-    z = r.s.z + beta * dz;
-    uv = snellTexRayUv(r, z);
-    SnellSurfaceSample y = snellSampleSurface(depthTex, uv, surface);
-    fetches = fetches + 1;
-    lastValid = y.valid;
-    if (y.valid && z > y.viewZ) {
-      lo = beta;
-    } else {
-      hi = beta;
-    }
-  }
   SnellHit h;
   h.uv = uv;
   h.position = vec3(r.s.x + beta * (r.e.x - r.s.x), r.s.y + beta * (r.e.y - r.s.y), z);
   h.valid = lastValid;
   h.fetches = fetches;
-  return h;
+  return snellBisectTexRay(r, depthTex, surface, float(found - 1) * stepBeta, beta, nb, h);
 }
 
 SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,

@@ -1,6 +1,6 @@
 /* Parity cases for the ray-vs-depth-buffer searches and marches of
    glsl/snell/intersect/ (search_segment, conservative_binary_search,
-   binary_search, linear_binary_search, linear_march, dda_march): one entry per
+   binary_search (and its bisection), linear_binary_search, linear_march, dda_march): one entry per
    public function, run on the analytic scene buffers of
    tests/support/depth_scenes.hpp uploaded as textures.
    Inputs: a = (origin, option 1), b = (dir, option 2),
@@ -85,6 +85,19 @@ SNELL_FN SnellParityOut caseSnellBinarySearch(vec4 a, vec4 b, vec4 c, vec4 d) {
   } else {
     h = a.w < 0.0f ? snellBinarySearch(o, v, searchTexSphere, s, c.x, c.y)
                    : snellBinarySearch(o, v, searchTexSphere, s, c.x, c.y, int(a.w));
+  }
+  return searchParityOut(h);
+}
+
+/* option 1 = steps, option 2 = lo, option 3 = hi; the hit so far is a miss
+   (its uv and position mark "not moved") */
+SNELL_FN SnellParityOut caseSnellBisectTexRay(vec4 a, vec4 b, vec4 c, vec4 d) {
+  SnellDepthSurface s = searchParitySurface(c, d);
+  SnellTexRay r = snellSearchSegment(vec3(a.x, a.y, a.z), vec3(b.x, b.y, b.z), c.x, c.y, s.clipFromView);
+  SnellHit h = snellHitMiss(0);
+  if (r.valid) {
+    h = c.w > 0.5f ? snellBisectTexRay(r, searchTexSilhouette, s, b.w, c.z, int(a.w), h)
+                   : snellBisectTexRay(r, searchTexSphere, s, b.w, c.z, int(a.w), h);
   }
   return searchParityOut(h);
 }
