@@ -14,7 +14,10 @@ contract:
     is 1: a medium never amplifies); +inf is clamped to FLT_MAX, so
     0 * inf never occurs (zero distance always gives 1);
   - very large sigma d gives 0 (exp underflow; a GPU may flush the denormal
-    tail to 0 earlier than the C++ build).
+    tail to 0 earlier than the C++ build); the exponent is clamped to 1e30
+    (exp(-1e30) is already 0), which keeps it finite on drivers that fold
+    exp's log2(e) factor into sigma or d (FLT_MAX * 1.44 overflows, and
+    times a zero distance would give NaN; llvmpipe does: docs/DESIGN.md).
 source: Beer-Lambert law, T = exp(-sigma_a d) (e.g. Pharr, Jakob & Humphreys,
   PBRT 3rd ed., sec. 11.1, transmittance of a homogeneous medium).
 */
@@ -28,7 +31,11 @@ SNELL_FN vec3 snellBeerLambert(vec3 absorption, float dist) {
   vec3 s = vec3(absorption.x > 0.0f ? min(absorption.x, SNELL_FLT_MAX) : 0.0f,
                 absorption.y > 0.0f ? min(absorption.y, SNELL_FLT_MAX) : 0.0f,
                 absorption.z > 0.0f ? min(absorption.z, SNELL_FLT_MAX) : 0.0f);
-  return exp(-(s * d));
+  // The min() on the product, not only on the factors: llvmpipe lowers exp(x)
+  // to exp2(x * log2(e)) and reassociates that constant onto a factor,
+  // (s * log2(e)) * d, which is inf * 0 = NaN for s = FLT_MAX, d = 0. A min()
+  // in between keeps the constant off s and d; no NaN can reach it (s, d >= 0).
+  return exp(-min(s * d, vec3(1e30f)));
 }
 
 #endif

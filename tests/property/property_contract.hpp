@@ -1,0 +1,205 @@
+// The property tests' shared half (issue 7): the hostile input stream and the
+// contract check, used by the CPU run (property_main.cpp, >= 1M inputs per
+// function through the C++ build of the parity entries) and the GPU run
+// (property_gpu_main.cpp, 10,000 of the same inputs through the GLSL entries on
+// llvmpipe), so both sides test the same inputs against the same contract.
+//
+// Input #i of a case: its generator's input i while i < base.size(), else a
+// mutation of base[i % base.size()] seeded by i (random components replaced by
+// NaN, +-Inf, 0, -0, denormals, +-1e30; vectors scaled by 0, 1e-20, 1e20).
+//
+// The generic contract every snell function documents in its header block:
+// every output is finite (invalid results are flagged and carry finite
+// numbers, e.g. snellHitMiss). The few documented exceptions are listed in
+// exceptions() below, each with the contract sentence that allows it.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "parity_registry.hpp"
+
+namespace snell_parity::property {
+
+inline float comp(const ParityIO& io, int k) { return io.v[k / 4][k % 4]; }
+inline float& comp(ParityIO& io, int k) { return io.v[k / 4][k % 4]; }
+
+// Documented exceptions to "every output is finite". An exception names the
+// input floats (bit k: input v[k/4][k%4]) that a function uses "as given"
+// (colours passed through, by contract): when one of them is not finite, the
+// outputs in `outputs` are not checked for that input. Every other output is.
+// always: the outputs are never checked (the contract allows overflow too).
+struct Exception {
+  std::uint16_t passThroughInputs;
+  std::uint16_t outputs;
+  bool always;
+  const char* reason;
+};
+inline const std::map<std::string, Exception>& exceptions() {
+  static const std::map<std::string, Exception> m = {
+      {"snellViewToClip",
+       {0xFFFF, 0x000F, true,
+        "camera/view_to_clip.glsl: 'clipFromView * vec4(pView, 1), nothing else: no check, NaN and Inf "
+        "propagate as the matrix product makes them' (snellClipToNdc is the checked step)"}},
+      {"snellUnpackBump",
+       {0x0007, 0x0007, false, "shade/perturb.glsl: 'snellUnpackBump(t) = 2 t - 1, nothing else: NaN propagates'"}},
+      {"snellRefractionMaskBlend",
+       {0x00F7, 0x000F, false,
+        "shade/refraction_mask.glsl: 'Colours are blended as given (NaN colours propagate)'; the mask alpha "
+        "(input 3) is checked"}},
+      {"snellIceCompose",
+       {0x00FF, 0x000F, false,
+        "shade/ice.glsl: a mix of the two given colours (reflection a, refraction b); the fresnel weight is "
+        "checked"}},
+      {"snellGlass", {0x8000, 0x0008, false, "shade/glass.glsl: 'Other colours (texels, diffuse.a) are used as given'"}},
+      {"snellDepthSurface",
+       {0xFF00, 0xFFFF, false,
+        "a plain constructor: the case packs back the matrix and (zNear, zFar, convention, emptyDepth) it stores"}},
+      {"snellRefractiveTextureMapParams",
+       {0x00FF, 0x007F, false,
+        "a plain constructor: the case packs back the extents, restY, depth and factor it stores (uvMin/uvMax, "
+        "which it sanitizes, are checked)"}},
+      {"snellDepthRangeInvalid", {0x0001, 0x0008, false, "the case echoes its input a.x in output 3 (not the function's)"}},
+      {"snellPresetDirBounds",
+       {0x0003, 0x3000, false, "a preset constructor: stores the bounds it is given (outputs 12-13)"}},
+      {"snellDepthPyramidBase",
+       {0x0010, 0x0001, false,
+        "intersect/depth_pyramid.glsl: an invalid texel is vec4(emptyDepth, 0, 0, 0), the emptyDepth given"}},
+  };
+  return m;
+}
+inline const Exception* exceptionFor(const std::string& function) {
+  const auto it = exceptions().find(function);
+  return it == exceptions().end() ? nullptr : &it->second;
+}
+
+// Violations found by the first run (issue 7) and not yet triaged: each is
+// either a documented pass-through (a constructor or colour used "as given", to
+// move to exceptions() with its contract sentence) or a bug to fix in
+// glsl/snell. Listed here so the suites stay green while they are worked on;
+// the counts are still printed, and any function NOT listed fails on its
+// first non-finite output, on the CPU and on the GPU alike. Remove an entry
+// once fixed or moved.
+inline const std::map<std::string, const char*>& pendingTriage() {
+  static const std::map<std::string, const char*> m = {};
+  return m;
+}
+
+// Components holding a small whole number are left alone by the mutations: the
+// case entries pass policies, step counts, lods, conventions and pixel indices
+// as floats and convert them with int(), and int() of NaN, Inf or 1e30 is
+// undefined (C++ [conv.fpint], GLSL likewise), so mutating them would test the
+// harness, not the function (UBSan reports it: -2147483648 * 2 in a pixel index).
+// Float inputs that happen to be whole in one base input (0, 1, eta = 1) are
+// still mutated through the other base inputs, where they are not.
+inline bool intLike(float x) { return std::fabs(x) <= 1e6f && x == std::floor(x); }
+
+// A mutation of `base`, seeded by `index`.
+inline ParityIO mutate(const ParityIO& base, std::uint64_t index) {
+  static const float hostile[] = {std::numeric_limits<float>::quiet_NaN(),
+                                  std::numeric_limits<float>::infinity(),
+                                  -std::numeric_limits<float>::infinity(),
+                                  0.0f,
+                                  -0.0f,
+                                  std::numeric_limits<float>::denorm_min(),
+                                  -1e-40f,
+                                  1e-44f,
+                                  1e30f,
+                                  -1e30f};
+  static const float scales[] = {0.0f, 1e-20f, 1e20f};
+  // splitmix64: a cheap, well-mixed stream per input (seeding a Mersenne
+  // twister per input would cost more than most functions under test).
+  std::uint64_t state = index * 0x9E3779B97F4A7C15ull + 1u;
+  auto rng = [&state]() {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  };
+  ParityIO in = base;
+  const int mode = static_cast<int>(rng() % 4u);
+  if (mode == 3) {  // scale one vec4's xyz
+    const int v = static_cast<int>(rng() % 4u);
+    const float s = scales[rng() % 3u];
+    for (int k = 0; k < 3; ++k)
+      if (!intLike(in.v[v][k])) in.v[v][k] *= s;
+  } else {  // replace mode + 1 random components
+    for (int n = 0; n <= mode; ++n) {
+      float& x = comp(in, static_cast<int>(rng() % 16u));
+      const float h = hostile[rng() % 10u];
+      if (!intLike(x)) x = h;
+    }
+  }
+  return in;
+}
+
+// Input #index of a case whose generator gave `base` (non-empty).
+inline ParityIO propertyInput(const std::vector<ParityIO>& base, std::uint64_t index) {
+  return index < base.size() ? base[index] : mutate(base[index % base.size()], index);
+}
+
+inline std::string formatIO(const ParityIO& io) {
+  std::ostringstream s;
+  s.precision(9);
+  for (int k = 0; k < 16; ++k) s << (k ? (k % 4 == 0 ? " | " : ", ") : "") << comp(io, k);
+  return s.str();
+}
+
+// Outputs (bit k: output float k) of `out` that break the contract for input
+// `in`: not finite, among the first `outputs`, and not excused by `e`
+// (exceptionFor(function), or null). *exempt tells whether `e` excused any.
+inline std::uint16_t contractViolations(const Exception* e, int outputs, const ParityIO& in, const ParityIO& out,
+                                        bool* exempt) {
+  std::uint16_t skip = 0;
+  if (e) {
+    if (e->always) skip = e->outputs;
+    for (int k = 0; k < 16 && !skip; ++k)
+      if ((e->passThroughInputs >> k & 1u) && !std::isfinite(comp(in, k))) skip = e->outputs;
+  }
+  *exempt = skip != 0;
+  std::uint16_t bad = 0;
+  for (int k = 0; k < outputs; ++k)
+    if (!(skip >> k & 1u) && !std::isfinite(comp(out, k))) bad = static_cast<std::uint16_t>(bad | 1u << k);
+  return bad;
+}
+
+// Counts over many inputs, with the first violation spelled out.
+struct Tally {
+  std::uint64_t inputs = 0, violations = 0, exempt = 0;
+  std::map<int, std::uint64_t> byOutput;  // output float index -> violations
+  std::string first;
+
+  // Checks input #index against the contract; returns its violating outputs.
+  std::uint16_t add(const Exception* e, int outputs, std::uint64_t index, const ParityIO& in, const ParityIO& out) {
+    ++inputs;
+    bool ex = false;
+    const std::uint16_t bad = contractViolations(e, outputs, in, out, &ex);
+    if (ex) ++exempt;
+    if (bad) {
+      for (int k = 0; k < 16; ++k)
+        if (bad >> k & 1u) ++byOutput[k];
+      if (violations == 0) first = "input #" + std::to_string(index) + ": " + formatIO(in) + "\n  output: " + formatIO(out);
+      ++violations;
+    }
+    return bad;
+  }
+  void merge(const Tally& o) {
+    inputs += o.inputs;
+    violations += o.violations;
+    exempt += o.exempt;
+    for (const auto& [k, n] : o.byOutput) byOutput[k] += n;
+    if (first.empty()) first = o.first;
+  }
+  std::string byOutputText() const {
+    std::ostringstream s;
+    for (const auto& [k, n] : byOutput) s << " out" << k << "=" << n;
+    return s.str();
+  }
+};
+
+}  // namespace snell_parity::property

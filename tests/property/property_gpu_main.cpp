@@ -1,0 +1,113 @@
+// Property test (issue 7), GPU side: every public function, through the GLSL
+// build of its parity case entry on llvmpipe (OSMesa), on 10,000 hostile inputs:
+// inputs #n .. #n + 9,999 of the CPU property stream (property_contract.hpp),
+// n being the size of the case's generator output, i.e. one hostile mutation of
+// each generator input. The generator's own inputs are left out: the parity
+// suite already runs them on the GPU, and it fails wherever the GPU's NaNs and
+// infinities differ from those of the C++ build, which the CPU property test
+// holds to the contract. All 10,000 run in one dispatch of the parity runner.
+//
+// Cost: the program is the parity case's own (same generated source, same
+// driver), so once Parity_osmesa.<fn> has run, Mesa's shader disk cache hands it
+// over without an LLVM compile: ~3 CPU-s for all functions. With a cold cache
+// the compiles cost ~80 CPU-s, 50 of them snellTwoInterfaceRefraction's. The
+// EGL backend loads another driver library with its own cache entries, hence
+// OSMesa here.
+//
+// The same contract, exceptions and pending-triage list as the CPU side. The
+// C++ build runs on the same inputs too, so a violation is reported as "also
+// on the CPU" or "GPU only" (a driver deviation or a GLSL-only bug to chase).
+//
+// Prints one line per function:
+//   "[property-gpu] <fn> inputs=N violations=V gpuOnly=G cpuOnly=C exempt=E".
+#include <gtest/gtest.h>
+
+#include <snell/gpu/context.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "parity_registry.hpp"
+#include "property_contract.hpp"
+
+namespace snell_parity {
+
+std::vector<CaseSpec>& registry() {
+  static std::vector<CaseSpec> cases;
+  return cases;
+}
+
+namespace {
+
+using property::Tally;
+
+constexpr std::size_t kGpuInputs = 10000;
+constexpr snell::gpu::Backend kBackend = snell::gpu::Backend::OSMesa;
+const std::filesystem::path kRoot = SNELL_SOURCE_DIR;
+
+class PropertyGpuTest : public ::testing::Test {
+ public:
+  explicit PropertyGpuTest(const CaseSpec* spec) : spec_(spec) {}
+  void TestBody() override {
+    if (spec_->setup) spec_->setup();
+    const std::vector<ParityIO> base = spec_->inputs();
+    ASSERT_GE(base.size(), 1000u);
+    std::vector<ParityIO> inputs;
+    inputs.reserve(kGpuInputs);
+    for (std::uint64_t i = base.size(); i < base.size() + kGpuInputs; ++i)
+      inputs.push_back(property::propertyInput(base, i));
+
+    snell::gpu::Context ctx(kBackend);
+    const std::vector<ParityIO> gpu =
+        snell::gpu::runParityGpu(ctx, {kRoot / "glsl", kRoot / "tests" / "parity" / "cases"}, spec_->glslFile,
+                                 spec_->entry, inputs, spec_->textures);
+    ASSERT_EQ(gpu.size(), inputs.size());
+
+    const property::Exception* e = property::exceptionFor(spec_->function);
+    Tally onGpu, onCpu;
+    std::uint64_t gpuOnly = 0, cpuOnly = 0;
+    std::string firstGpuOnly;
+    for (std::size_t j = 0; j < inputs.size(); ++j) {
+      const std::uint64_t index = base.size() + j;
+      const ParityIO cpu = spec_->cpu(inputs[j]);
+      const bool g = onGpu.add(e, spec_->outputs, index, inputs[j], gpu[j]) != 0;
+      const bool c = onCpu.add(e, spec_->outputs, index, inputs[j], cpu) != 0;
+      if (g && !c && gpuOnly++ == 0)
+        firstGpuOnly = "input #" + std::to_string(index) + ": " + property::formatIO(inputs[j]) +
+                       "\n  gpu output: " + property::formatIO(gpu[j]) + "\n  cpu output: " + property::formatIO(cpu);
+      if (c && !g) ++cpuOnly;
+    }
+    std::cout << "[property-gpu] " << spec_->function << " backend=" << snell::gpu::backendName(kBackend)
+              << " inputs=" << onGpu.inputs << " violations=" << onGpu.violations << " gpuOnly=" << gpuOnly
+              << " cpuOnly=" << cpuOnly << " exempt=" << onGpu.exempt << onGpu.byOutputText() << "\n";
+    if (gpuOnly) std::cout << "[property-gpu] " << spec_->function << " first GPU-only " << firstGpuOnly << "\n";
+    const auto pending = property::pendingTriage().find(spec_->function);
+    if (pending != property::pendingTriage().end()) {
+      std::cout << "[property-gpu] " << spec_->function << " pending triage (" << pending->second << ")"
+                << (onGpu.violations ? "; first " + onGpu.first : std::string()) << "\n";
+      return;
+    }
+    EXPECT_EQ(onGpu.violations, 0u) << spec_->function << ": non-finite GPU outputs" << onGpu.byOutputText()
+                                    << " (" << gpuOnly << " where the C++ build is finite); first " << onGpu.first
+                                    << (gpuOnly ? "\nfirst GPU-only " + firstGpuOnly : std::string());
+  }
+
+ private:
+  const CaseSpec* spec_;
+};
+
+}  // namespace
+}  // namespace snell_parity
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  const std::string suite = std::string("PropertyGpu_") + snell::gpu::backendName(snell_parity::kBackend);
+  for (const snell_parity::CaseSpec& spec : snell_parity::registry()) {
+    ::testing::RegisterTest(suite.c_str(), spec.function.c_str(), nullptr, nullptr, __FILE__, __LINE__,
+                            [&spec]() -> ::testing::Test* { return new snell_parity::PropertyGpuTest(&spec); });
+  }
+  return RUN_ALL_TESTS();
+}
