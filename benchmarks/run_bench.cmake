@@ -2,7 +2,7 @@
 # runs snell_bench and snell_bench_functions with JSON output, the lab at each
 # size, records the machine's load and each step's wall time, then has
 # snell_bench_report write the Markdown report to DOC.
-foreach(v BENCH BENCH_FUNCTIONS LAB REPORT OUT DOC MIN_TIME LAB_SIZES)
+foreach(v BENCH BENCH_FUNCTIONS LAB REPORT OUT DOC MIN_TIME REPETITIONS LAB_SIZES)
   if(NOT DEFINED ${v})
     message(FATAL_ERROR "run_bench.cmake: -D${v}=... is required")
   endif()
@@ -33,12 +33,15 @@ endfunction()
 
 string(TIMESTAMP date "%Y-%m-%d %H:%M UTC" UTC)
 load_average(avg)
-file(WRITE ${META} "date ${date}\nmin_time ${MIN_TIME}\nload_start ${avg}\n")
+file(WRITE ${META} "date ${date}\nmin_time ${MIN_TIME}\nrepetitions ${REPETITIONS}\nload_start ${avg}\n")
 
-timed_step(snell_bench ${BENCH} --benchmark_min_time=${MIN_TIME} --benchmark_out=${OUT}/snell_bench.json
-           --benchmark_out_format=json)
-timed_step(snell_bench_functions ${BENCH_FUNCTIONS} --benchmark_min_time=${MIN_TIME}
-           --benchmark_out=${OUT}/functions.json --benchmark_out_format=json)
+# Repetitions in random order (Google Benchmark's random interleaving): a burst
+# of load from other processes hits one repetition of several benchmarks rather
+# than every repetition of one; the report uses the median repetition.
+set(gb_flags --benchmark_min_time=${MIN_TIME} --benchmark_repetitions=${REPETITIONS}
+    --benchmark_enable_random_interleaving=true --benchmark_out_format=json)
+timed_step(snell_bench ${BENCH} ${gb_flags} --benchmark_out=${OUT}/snell_bench.json)
+timed_step(snell_bench_functions ${BENCH_FUNCTIONS} ${gb_flags} --benchmark_out=${OUT}/functions.json)
 
 string(REPLACE "," ";" sizes "${LAB_SIZES}")
 set(lab_args)

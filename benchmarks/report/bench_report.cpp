@@ -48,17 +48,37 @@ std::string rate(double v) {
 std::string ns(double itemsPerSecond) { return itemsPerSecond > 0.0 ? fmt("%.0f", 1e9 / itemsPerSecond) : "-"; }
 std::string ratio(double v) { return std::isfinite(v) && v > 0.0 ? fmt("%.2fx", v) : "-"; }
 
-// The benchmarks of one Google Benchmark JSON file, by name.
+// The benchmarks of one Google Benchmark JSON file, by name (run_name): with
+// repetitions, the median repetition (aggregate "median") and the coefficient
+// of variation of the measured time over the repetitions (aggregate "cv");
+// without, the single run.
 class Results {
  public:
   Results() = default;
   explicit Results(const json& j) : context_(j.value("context", json::object())) {
+    bool aggregates = false;
+    for (const json& b : j.at("benchmarks")) aggregates = aggregates || b.value("run_type", "") == "aggregate";
     for (const json& b : j.at("benchmarks")) {
-      if (b.value("run_type", "iteration") != "iteration") continue;
-      byName_[b.at("name").get<std::string>()] = b;
-      order_.push_back(b.at("name").get<std::string>());
+      const std::string name = b.value("run_name", b.at("name").get<std::string>());
+      const std::string type = b.value("run_type", "iteration"), aggregate = b.value("aggregate_name", "");
+      if (aggregates && type == "aggregate" && aggregate == "cv") {
+        const bool real = name.find("/real_time") != std::string::npos;
+        cv_[name] = b.value(real ? "real_time" : "cpu_time", 0.0);
+      }
+      if (aggregates ? (type != "aggregate" || aggregate != "median") : type != "iteration") continue;
+      if (!byName_.count(name)) order_.push_back(name);
+      byName_[name] = b;
     }
+    // Registration order (the JSON's order is the random one of the repetitions).
+    auto key = [this](const std::string& n) {
+      const json& b = byName_.at(n);
+      return std::make_pair(b.value("family_index", 0), b.value("per_family_instance_index", 0));
+    };
+    std::stable_sort(order_.begin(), order_.end(),
+                     [&](const std::string& a, const std::string& b) { return key(a) < key(b); });
   }
+  // name -> coefficient of variation of its time over the repetitions (empty without repetitions)
+  const std::map<std::string, double>& cv() const { return cv_; }
   const json* find(const std::string& name) const {
     const auto it = byName_.find(name);
     return it == byName_.end() ? nullptr : &it->second;
@@ -75,6 +95,7 @@ class Results {
  private:
   json context_;
   std::map<std::string, json> byName_;
+  std::map<std::string, double> cv_;
   std::vector<std::string> order_;
 };
 
@@ -132,7 +153,7 @@ std::string firstLineWith(const std::string& path, const std::string& key) {
   return "unknown";
 }
 
-std::string machine(const Results& bench, const Run& run) {
+std::string machine(const Results& bench, const Results& functions, const Run& run) {
   const json& c = bench.context();
   std::string caches;
   for (const json& k : c.value("caches", json::array())) {
@@ -153,8 +174,19 @@ std::string machine(const Results& bench, const Run& run) {
        std::string(SNELL_BENCH_BUILD_TYPE) + " with `-ffp-contract=off` (as the tests). Google Benchmark's library " +
        "reports itself as a " + c.value("library_build_type", std::string("?")) +
        " build (Debian's libbenchmark; that is the harness, not the code measured).\n";
-  s += "- **Run**: " + run.value("date") + ", `--benchmark_min_time=" + run.value("min_time") +
-       "` per benchmark, one run (no repetitions).\n";
+  s += "- **Run**: " + run.value("date") + ", `--benchmark_min_time=" + run.value("min_time") + "`, " +
+       run.value("repetitions") + " repetitions per benchmark in random order (`--benchmark_enable_random_"
+       "interleaving`); every CPU figure is the median repetition.\n";
+  std::vector<std::pair<double, std::string>> cvs;
+  for (const Results* r : {&bench, &functions})
+    for (const auto& [name, v] : r->cv()) cvs.emplace_back(v, name);
+  if (!cvs.empty()) {
+    std::sort(cvs.begin(), cvs.end());
+    s += "- **Noise**: the time's coefficient of variation over the repetitions is " +
+         fmt("%.0f %%", 100.0 * cvs[cvs.size() / 2].first) + " for the median benchmark, " +
+         fmt("%.0f %%", 100.0 * cvs[cvs.size() * 9 / 10].first) + " at the 90th percentile and " +
+         fmt("%.0f %%", 100.0 * cvs.back().first) + " at most (" + cvs.back().second + ").\n";
+  }
   s += "- **Load** (1/5/15-minute load averages from /proc/loadavg; the machine was shared with other builds): " +
        run.value("load_start") + " at the start";
   for (const auto& [name, seconds] : run.steps) {
@@ -328,13 +360,16 @@ std::string threadsSection(const Results& b) {
   std::string s = "## Multi-threaded (CPU, the tool use case)\n\n";
   s += "`benchmarks/threads_bench.cpp`: the work split over explicit `std::thread`s (chunks or rows through an "
        "atomic counter), wall-clock time. Scaling: throughput over the 1-thread throughput (ideal: the thread "
-       "count, at most the number of idle cores).\n\n";
+       "count, at most the number of idle cores). CPU-time bound: the calling thread's CPU time with 1 thread over "
+       "that with T threads (it does its share of the work, and for d_N the serial BVH build); other processes' "
+       "load does not move it, so it shows how evenly the work splits and bounds the wall-clock scaling on idle "
+       "cores from above.\n\n";
   s += "Wyman's d_N for every vertex (`include/snell/wyman_dn.hpp`: BVH built once, serially, and counted; the "
        "vertices' rays in parallel). bvh share: the serial build's share of the 1-thread time.\n\n";
   std::string head = "| mesh | vertices | triangles | bvh share | vertices/s, 1 thread", rule = "|---|---:|---:|---:|---:";
   for (int t = 2; t <= maxThreads; t *= 2) {
-    head += " | " + std::to_string(t) + " threads | scaling";
-    rule += "|---:|---:";
+    head += " | " + std::to_string(t) + " threads | scaling | CPU-time bound";
+    rule += "|---:|---:|---:";
   }
   s += head + " |\n" + rule + "|\n";
   auto rows = [&](const std::string& kind, bool mesh) {
@@ -354,7 +389,8 @@ std::string threadsSection(const Results& b) {
       r += " | " + rate(one);
       for (int t = 2; t <= maxThreads; t *= 2) {
         const double ips = g.count(t) ? b.itemsPerSecond(g.at(t)) : std::nan("");
-        r += " | " + rate(ips) + " | " + ratio(ips / one);
+        const double cpuBound = g.count(t) ? b.num(g.at(1), "cpu_time") / b.num(g.at(t), "cpu_time") : std::nan("");
+        r += " | " + rate(ips) + " | " + ratio(ips / one) + " | " + ratio(cpuBound);
       }
       r += " |\n";
     }
@@ -366,8 +402,8 @@ std::string threadsSection(const Results& b) {
   head = "| preset | sphere pixels | frame, 1 thread | pixels/s, 1 thread";
   rule = "|---|---:|---:|---:";
   for (int t = 2; t <= maxThreads; t *= 2) {
-    head += " | " + std::to_string(t) + " threads | scaling";
-    rule += "|---:|---:";
+    head += " | " + std::to_string(t) + " threads | scaling | CPU-time bound";
+    rule += "|---:|---:|---:";
   }
   s += head + " |\n" + rule + "|\n";
   s += rows("BM_RefractFrame/", false);
@@ -500,18 +536,22 @@ std::string summarySection(const Results& b, const std::vector<json>& labs) {
            ratio(p0->value("time_ratio_to_single", 0.0)) + " -> " + ratio(p1->value("time_ratio_to_single", 0.0)) +
            " at a constant " + fmt("%.1f", p1->value("fetches_per_pixel", 0.0)) + " fetches/px.\n";
   }
-  double lo = 1e300, hi = 0.0;
+  double lo = 1e300, hi = 0.0, cpuLo = 1e300, cpuHi = 0.0;
   for (const std::string& n : b.order()) {
     const std::size_t t = n.find("/threads:2/");
     if (t == std::string::npos) continue;
-    const double r = b.itemsPerSecond(n) / b.itemsPerSecond(n.substr(0, t) + "/threads:1/real_time");
-    if (!std::isfinite(r)) continue;
+    const std::string one = n.substr(0, t) + "/threads:1/real_time";
+    const double r = b.itemsPerSecond(n) / b.itemsPerSecond(one), c = b.num(one, "cpu_time") / b.num(n, "cpu_time");
+    if (!std::isfinite(r) || !std::isfinite(c)) continue;
     lo = std::min(lo, r);
     hi = std::max(hi, r);
+    cpuLo = std::min(cpuLo, c);
+    cpuHi = std::max(cpuHi, c);
   }
   if (hi > 0.0)
     s += "- CPU, 2 threads vs 1 (d_N baking, full-frame refraction): " + ratio(lo) + " to " + ratio(hi) +
-         " the throughput, on a machine whose load is given above.\n";
+         " the wall-clock throughput on this shared machine (load above); CPU-time bound " + ratio(cpuLo) + " to " +
+         ratio(cpuHi) + " (see the multi-threaded section).\n";
   return s + "\n";
 }
 
@@ -574,7 +614,7 @@ int main(int argc, char** argv) {
           "the GLSL functions; GL figures come from the lab on Mesa llvmpipe. Nothing here is asserted by a test. "
           "Read ratios between rows of the same run: the absolute rates depend on the machine and its load. Fetch "
           "counts do not depend on the machine.\n\n";
-    md += "## Machine and run\n\n" + machine(bench, run) + "\n";
+    md += "## Machine and run\n\n" + machine(bench, functions, run) + "\n";
     md += summarySection(bench, labs);
     md += strategiesSection(bench);
     md += resolutionSection(bench);
