@@ -1,6 +1,6 @@
 // Calls/s of every public function's C++ build, table-driven from the parity
-// case registry (tests/parity/*_cases.cpp, compiled here again without a GL
-// context, as tests/property does): one benchmark per registered case,
+// case registry (tests/parity/*_cases.cpp, the snell_parity_cases object
+// library; no GL context needed): one benchmark per registered case,
 // "BM_Function/<family>/<function>", cycling through the case's own inputs
 // (10-12k each: realistic ranges with a few per cent of edge cases, hostile
 // values among them, so early outs are in the mix as they are in the tests).
