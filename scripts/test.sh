@@ -15,15 +15,17 @@ ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
 SNELL_FUZZ_BUILD_DIR="$build/fuzz" bash tests/fuzz/run_fuzzers.sh
 
 # Sanitizers (issue 7): a second build with AddressSanitizer + UBSan running the
-# unit and property tests; any report fails the script (halt_on_error,
+# unit, property and lab loader tests; any report fails the script (halt_on_error,
 # -fno-sanitize-recover=undefined). The GL tests (parity, gpu, lab end-to-end
 # runs) are not in it: Mesa's own allocations are not ours to vet.
 san=${SNELL_SAN_BUILD_DIR:-${build}-san}
 # -O1 keeps the sanitizer build short on 2 cores.
 cmake -S . -B "$san" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" -DSNELL_WERROR=ON -DSNELL_SANITIZE=ON
-cmake --build "$san" -j "$(nproc)" --target snell_unit_tests snell_property_tests
+cmake --build "$san" -j "$(nproc)" --target snell_unit_tests snell_property_tests snell_lab_loader_tests
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 export ASAN_OPTIONS=detect_leaks=1
 "$san/tests/snell_unit_tests"
+# Scene, OBJ and image loading on hostile files (no GL, no ray tracing).
+"$san/tests/lab/snell_lab_loader_tests"
 # 100,000 hostile inputs per function here; the full 1,000,000 ran in ctest above.
 SNELL_PROPERTY_INPUTS=100000 "$san/tests/property/snell_property_tests"

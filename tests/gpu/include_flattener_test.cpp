@@ -4,13 +4,11 @@
 #include <snell/gpu/include_flattener.hpp>
 #include <snell/gpu/program.hpp>
 
+#include "support/temp_dir.hpp"
+
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
-#include <fstream>
-#include <random>
 #include <sstream>
 #include <string>
 
@@ -20,30 +18,7 @@ namespace fs = std::filesystem;
 using snell::gpu::Error;
 using snell::gpu::FlatSource;
 
-// A fresh directory per test, removed afterwards.
-class TempDir {
- public:
-  TempDir() {
-    std::random_device rd;
-    path_ = fs::temp_directory_path() /
-            ("snell_flatten_" + std::to_string(::getpid()) + "_" + std::to_string(rd()));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-  fs::path write(const std::string& relative, const std::string& text) const {
-    const fs::path p = path_ / relative;
-    fs::create_directories(p.parent_path());
-    std::ofstream(p, std::ios::binary) << text;
-    return p;
-  }
-
- private:
-  fs::path path_;
-};
+using snell_test::TempDir;
 
 std::size_t count(const std::string& haystack, const std::string& needle) {
   std::size_t n = 0;

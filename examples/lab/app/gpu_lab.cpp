@@ -114,9 +114,7 @@ struct Pyramid {
       gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, id, lod);
       const GLenum buf = GL_COLOR_ATTACHMENT0;
       gl.DrawBuffers(1, &buf);
-      const GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
-      if (status != GL_FRAMEBUFFER_COMPLETE)
-        throw gpu::Error(std::string("pyramid level framebuffer incomplete: ") + gpu::framebufferStatusName(status));
+      gpu::checkFramebufferComplete(gl, "depth pyramid level " + std::to_string(lod) + " framebuffer");
     }
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
     gpu::checkGl(gl, "pyramid allocation");

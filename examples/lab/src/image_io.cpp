@@ -2,8 +2,11 @@
 
 #include "lab/error.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <vector>
 
@@ -38,13 +41,29 @@ void writePng(const std::string& path, const Image& image, PngEncoding encoding)
         bytes[o++] = static_cast<std::uint8_t>(std::lround(v * 255.0f));
       }
     }
-  if (!stbi_write_png(path.c_str(), image.width, image.height, 3, bytes.data(), image.width * 3))
-    throw Error(ErrorKind::Io, "cannot write PNG file " + path);
+  // Encoded in memory and written here: stbi_write_png ignores fwrite and
+  // fclose failures, so a full disk left a truncated PNG and no error.
+  std::vector<unsigned char> png;
+  const auto append = [](void* context, void* data, int size) {
+    auto* out = static_cast<std::vector<unsigned char>*>(context);
+    const auto* p = static_cast<const unsigned char*>(data);
+    out->insert(out->end(), p, p + size);
+  };
+  if (!stbi_write_png_to_func(append, &png, image.width, image.height, 3, bytes.data(), image.width * 3))
+    throw Error(ErrorKind::Io, "cannot encode PNG for " + path);
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (f == nullptr) throw Error(ErrorKind::Io, "cannot write PNG file " + path + ": " + std::strerror(errno));
+  const bool written = std::fwrite(png.data(), 1, png.size(), f) == png.size();
+  const int writeErrno = errno;
+  const bool closed = std::fclose(f) == 0;  // a full disk often shows only here, when the buffer is flushed
+  if (!written || !closed)
+    throw Error(ErrorKind::Io, "cannot write PNG file " + path + ": " + std::strerror(written ? errno : writeErrno));
 }
 
 Image readImage(const std::string& path, bool linear) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw Error(ErrorKind::Io, "image file not found: " + path);
+  if (std::filesystem::is_directory(path, ec)) throw Error(ErrorKind::Io, "image file is a directory: " + path);
   int w = 0, h = 0, n = 0;
   const bool hdr = stbi_is_hdr(path.c_str()) != 0;
   Image img;

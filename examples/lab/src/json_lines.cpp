@@ -1,5 +1,7 @@
 #include "json_lines.hpp"
 
+#include <string_view>
+
 namespace snell::lab::detail {
 
 JsonLines::JsonLines(const std::string& text) : text_(text) {
@@ -53,8 +55,42 @@ std::string JsonLines::stringToken() {
   return s;
 }
 
+// Values nested deeper than kMaxDepth get no line of their own (their
+// fields are reported at the line of the deepest recorded ancestor): they are
+// skipped in one iterative pass, so neither the stack nor the map grows with
+// the nesting. Returning without consuming them made the enclosing array's
+// loop spin forever on a scene nested 258 arrays deep.
+void JsonLines::skipValue() {
+  constexpr std::string_view kDelimiters = ",:[]{}\"/ \t\r\n";
+  int nesting = 0;
+  do {
+    skipSpace();
+    if (pos_ >= text_.size()) return;
+    const char c = text_[pos_];
+    if (c == '"') {
+      stringToken();
+    } else if (c == '[' || c == '{') {
+      ++nesting;
+      advance();
+    } else if (c == ']' || c == '}') {
+      if (nesting == 0) return;  // the end of the enclosing value, not ours
+      --nesting;
+      advance();
+    } else if (c == ',' || c == ':') {
+      advance();
+    } else {
+      advance();  // a scalar: at least one character (so this loop always progresses), up to a delimiter
+      while (pos_ < text_.size() && kDelimiters.find(text_[pos_]) == std::string_view::npos) advance();
+    }
+  } while (nesting > 0);
+}
+
 void JsonLines::value(const std::string& path, int depth) {
-  if (depth > 256 || pos_ >= text_.size()) return;
+  if (pos_ >= text_.size()) return;
+  if (depth > kMaxDepth) {
+    skipValue();
+    return;
+  }
   lines_.emplace(path, lineNo_);
   const char c = text_[pos_];
   if (c == '{') {
@@ -91,7 +127,9 @@ void JsonLines::value(const std::string& path, int depth) {
         advance();
         continue;
       }
+      const std::size_t before = pos_;
       value(path + "[" + std::to_string(index++) + "]", depth + 1);
+      if (pos_ == before) return;  // not JSON we understand: stop quietly
     }
   } else if (c == '"') {
     stringToken();

@@ -14,6 +14,7 @@ class JsonLines {
   int line(const std::string& path) const;
 
  private:
+  static constexpr int kMaxDepth = 256;
   std::map<std::string, int> lines_;
   const std::string& text_;
   std::size_t pos_ = 0;
@@ -21,6 +22,7 @@ class JsonLines {
 
   void skipSpace();
   void value(const std::string& path, int depth);
+  void skipValue();
   std::string stringToken();
   void advance();
 };

@@ -44,8 +44,28 @@ void fail(const SourceInfo& src, const std::string& path, const std::string& mes
   throw Error(ErrorKind::Schema, where + ": " + (path.empty() ? std::string("(top level)") : path) + ": " + message);
 }
 
+namespace {
+// j.dump(), but it stops once `out` is past `limit` characters: dump() recursed
+// once per nesting level and overflowed the stack on a value nested 100,000
+// arrays deep; here each level adds a character, so the depth is bounded too.
+void previewInto(const Json& j, std::string& out, std::size_t limit) {
+  if (!j.is_structured()) {
+    out += j.dump();
+    return;
+  }
+  out += j.is_array() ? '[' : '{';
+  for (auto it = j.begin(); it != j.end() && out.size() <= limit; ++it) {
+    if (it != j.begin()) out += ',';
+    if (j.is_object()) out += Json(it.key()).dump() + ":";
+    previewInto(*it, out, limit);
+  }
+  out += j.is_array() ? ']' : '}';
+}
+}  // namespace
+
 std::string preview(const Json& j) {
-  std::string s = j.dump();
+  std::string s;
+  previewInto(j, s, 48);
   if (s.size() > 48) s = s.substr(0, 45) + "...";
   return s;
 }
@@ -213,11 +233,13 @@ ObjectReader ObjectReader::object(const std::string& key) {
   return ObjectReader(*j, childPath(key), src_);
 }
 
-std::vector<ObjectReader> ObjectReader::objectArray(const std::string& key) {
+std::vector<ObjectReader> ObjectReader::objectArray(const std::string& key, std::size_t maxCount) {
   const Json* j = get(key);
   std::vector<ObjectReader> out;
   if (!j) return out;
   if (!j->is_array()) fail(key, "expected an array of objects, got " + preview(*j));
+  if (j->size() > maxCount)
+    fail(key, "expected at most " + std::to_string(maxCount) + " objects, got " + std::to_string(j->size()));
   for (std::size_t i = 0; i < j->size(); ++i)
     out.emplace_back((*j)[i], childPath(key) + "[" + std::to_string(i) + "]", src_);
   return out;

@@ -63,8 +63,8 @@ class ObjectReader {
   std::vector<vec3> colorList(const std::string& key, std::size_t minCount, Range element);
 
   ObjectReader object(const std::string& key);  // required
-  // Each element must be an object.
-  std::vector<ObjectReader> objectArray(const std::string& key);
+  // Each element must be an object; more than maxCount is an error.
+  std::vector<ObjectReader> objectArray(const std::string& key, std::size_t maxCount);
 
   // Throws for the first field that no accessor asked for.
   void finish() const;

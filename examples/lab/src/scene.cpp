@@ -8,6 +8,7 @@
 #include "lab/obj_loader.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -20,6 +21,9 @@ using detail::Range;
 namespace {
 
 constexpr int kMaxResolution = 16384;
+// Each painting holds a texture (4 MB at the default 512 x 512): a scene file
+// listing 100,000 of them ran out of memory instead of failing with a message.
+constexpr std::size_t kMaxPaintings = 64;
 const Range kColor = Range::nonNegative();
 
 Camera readCamera(ObjectReader r) {
@@ -167,6 +171,41 @@ PaintingSpec readPainting(ObjectReader r, const std::string& sceneFile) {
   return p;
 }
 
+// `s` with each byte of an ill-formed UTF-8 sequence written as the text \xHH.
+// The name goes into table.json, and nlohmann::json refuses to write a string
+// that is not UTF-8, while a Linux file name is any bytes: a scene file named
+// with byte 0xFF made snell-lab fail after rendering.
+std::string readableUtf8(const std::string& s) {
+  static const std::uint32_t kMinCodePoint[5] = {0, 0, 0x80, 0x800, 0x10000};  // shorter forms are overlong
+  std::string out;
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const auto lead = static_cast<unsigned char>(s[i]);
+    const std::size_t n = lead < 0x80           ? 1
+                          : (lead >> 5) == 0x6  ? 2
+                          : (lead >> 4) == 0xE  ? 3
+                          : (lead >> 3) == 0x1E ? 4
+                                                : 0;  // a continuation byte or 0xF8..0xFF cannot lead
+    bool ok = n > 0 && i + n <= s.size();
+    std::uint32_t cp = n == 1 ? lead : lead & (0x7Fu >> n);
+    for (std::size_t k = 1; ok && k < n; ++k) {
+      const auto c = static_cast<unsigned char>(s[i + k]);
+      ok = (c >> 6) == 0x2;
+      cp = (cp << 6) | (c & 0x3Fu);
+    }
+    ok = ok && cp >= kMinCodePoint[n] && cp <= 0x10FFFF && !(cp >= 0xD800 && cp <= 0xDFFF);
+    if (ok) {
+      out.append(s, i, n);
+      i += n;
+    } else {
+      static const char kHex[] = "0123456789ABCDEF";
+      out += std::string("\\x") + kHex[lead >> 4] + kHex[lead & 0xF];
+      ++i;
+    }
+  }
+  return out;
+}
+
 AnimationSpec readAnimation(ObjectReader r) {
   AnimationSpec a;
   a.frames = r.integer("frames", a.frames, 1, 100000);
@@ -195,14 +234,15 @@ Scene parseScene(const std::string& text, const std::string& file) {
   ObjectReader r(root, "", src);
   Scene s;
   s.file = file;
-  s.name = r.string("name", file.empty() ? std::string("scene") : std::filesystem::path(file).stem().string());
+  const std::string stem = file.empty() ? std::string("scene") : std::filesystem::path(file).stem().string();
+  s.name = r.string("name", readableUtf8(stem));
   s.description = r.string("description", "");
   s.camera = readCamera(r.object("camera"));
   s.object = readObject(r.object("object"), file);
   if (r.has("environment")) {
     s.environment = readEnvironment(r.object("environment"), file);
   }
-  for (ObjectReader& p : r.objectArray("opaque")) s.paintings.push_back(readPainting(p, file));
+  for (ObjectReader& p : r.objectArray("opaque", kMaxPaintings)) s.paintings.push_back(readPainting(p, file));
   if (r.has("animation")) s.animation = readAnimation(r.object("animation"));
   r.finish();
   return s;

@@ -89,7 +89,7 @@ class EglContext final : public BackendContext {
     std::string why;
     lib_ = openLibrary({"libEGL.so.1", "libEGL.so"}, why);
     if (lib_.handle == nullptr)
-      throw Error("EGL backend: cannot load libEGL.so.1 (" + why +
+      throw Error("EGL backend: cannot load libEGL.so.1 or libEGL.so (" + why +
                   "); install libegl1 and libegl-mesa0 (Debian/Ubuntu) or set SNELL_GL_BACKEND=osmesa");
     const char* b = "EGL";
     egl_.GetProcAddress = requireSymbol<PFNEGLGETPROCADDRESSPROC>(lib_, "eglGetProcAddress", b);

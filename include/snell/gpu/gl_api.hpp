@@ -167,5 +167,6 @@ inline void checkGl(const GlApi& gl, const char* what) {
   code[6] = '\0';
   throw Error(std::string("GL error ") + code + " (" + glErrorName(first) + ") after " + what);
 }
+inline void checkGl(const GlApi& gl, const std::string& what) { checkGl(gl, what.c_str()); }
 
 }  // namespace snell::gpu

@@ -166,15 +166,36 @@ class Program {
   // is removed by the compiler, so test hasUniform() first when it may be.
   bool hasUniform(const std::string& name) const { return gl_->GetUniformLocation(id_, name.c_str()) >= 0; }
 
-  void set(const std::string& name, int v) const { gl_->ProgramUniform1i(id_, location(name), v); }
-  void set(const std::string& name, float v) const { gl_->ProgramUniform1f(id_, location(name), v); }
-  void set(const std::string& name, const glm::vec2& v) const { gl_->ProgramUniform2fv(id_, location(name), 1, &v[0]); }
-  void set(const std::string& name, const glm::vec3& v) const { gl_->ProgramUniform3fv(id_, location(name), 1, &v[0]); }
-  void set(const std::string& name, const glm::vec4& v) const { gl_->ProgramUniform4fv(id_, location(name), 1, &v[0]); }
-  void set(const std::string& name, const glm::ivec2& v) const { gl_->ProgramUniform2iv(id_, location(name), 1, &v[0]); }
+  // A value of the wrong type for the uniform (a float for an int) is
+  // GL_INVALID_OPERATION: checked here, so it is not blamed on a later call.
+  void set(const std::string& name, int v) const {
+    gl_->ProgramUniform1i(id_, location(name), v);
+    checkUniform("glProgramUniform1i", name);
+  }
+  void set(const std::string& name, float v) const {
+    gl_->ProgramUniform1f(id_, location(name), v);
+    checkUniform("glProgramUniform1f", name);
+  }
+  void set(const std::string& name, const glm::vec2& v) const {
+    gl_->ProgramUniform2fv(id_, location(name), 1, &v[0]);
+    checkUniform("glProgramUniform2fv", name);
+  }
+  void set(const std::string& name, const glm::vec3& v) const {
+    gl_->ProgramUniform3fv(id_, location(name), 1, &v[0]);
+    checkUniform("glProgramUniform3fv", name);
+  }
+  void set(const std::string& name, const glm::vec4& v) const {
+    gl_->ProgramUniform4fv(id_, location(name), 1, &v[0]);
+    checkUniform("glProgramUniform4fv", name);
+  }
+  void set(const std::string& name, const glm::ivec2& v) const {
+    gl_->ProgramUniform2iv(id_, location(name), 1, &v[0]);
+    checkUniform("glProgramUniform2iv", name);
+  }
   // GLM is column-major like GL, so no transpose.
   void set(const std::string& name, const glm::mat4& m) const {
     gl_->ProgramUniformMatrix4fv(id_, location(name), 1, GL_FALSE, &m[0][0]);
+    checkUniform("glProgramUniformMatrix4fv", name);
   }
   // A sampler2D reads the texture bound to texture unit `unit` (Texture::bind).
   void setSampler(const std::string& name, int unit) const { set(name, unit); }
@@ -182,6 +203,10 @@ class Program {
  private:
   const GlApi* gl_;
   GLuint id_ = 0;
+
+  void checkUniform(const char* call, const std::string& name) const {
+    checkGl(*gl_, std::string(call) + " for uniform '" + name + "'");
+  }
 
   GLint location(const std::string& name) const {
     const GLint loc = gl_->GetUniformLocation(id_, name.c_str());

@@ -128,7 +128,10 @@ class StorageBuffer {
   }
 
   // Binds to `layout(std430, binding = N) buffer`.
-  void bindBase(GLuint binding) const { handle_.gl().BindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, handle_.id()); }
+  void bindBase(GLuint binding) const {
+    handle_.gl().BindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, handle_.id());
+    checkGl(handle_.gl(), "glBindBufferBase(GL_SHADER_STORAGE_BUFFER, " + std::to_string(binding) + ")");
+  }
   std::size_t size() const { return size_; }
   GLuint id() const { return handle_.id(); }
 
@@ -163,6 +166,17 @@ class Texture {
  public:
   Texture(const GlApi& gl, const snell::Texture2D& tex) : handle_(gl, create(gl)) {
     if (tex.levelCount() < 1) throw Error("snell::gpu::Texture: the snell::Texture2D has no levels");
+    // GL takes a 0 x 0 level without an error (and samples the texture as
+    // black), and would read past texels the size does not match.
+    for (int lod = 0; lod < tex.levelCount(); ++lod) {
+      const snell::Image& img = tex.level(lod);
+      const std::string size = std::to_string(img.width) + "x" + std::to_string(img.height);
+      if (img.width <= 0 || img.height <= 0)
+        throw Error("snell::gpu::Texture: level " + std::to_string(lod) + " is " + size + "; sizes must be positive");
+      if (img.texels.size() != static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height))
+        throw Error("snell::gpu::Texture: level " + std::to_string(lod) + " is " + size + " but holds " +
+                    std::to_string(img.texels.size()) + " texels");
+    }
     levels_ = tex.levelCount();
     width_ = tex.level(0).width;
     height_ = tex.level(0).height;
@@ -175,6 +189,8 @@ class Texture {
     for (int lod = 0; lod < levels_; ++lod) {
       const snell::Image& img = tex.level(lod);
       gl.TexImage2D(GL_TEXTURE_2D, lod, GL_RGBA32F, img.width, img.height, 0, GL_RGBA, GL_FLOAT, img.texels.data());
+      checkGl(gl, "glTexImage2D(level " + std::to_string(lod) + ", " + std::to_string(img.width) + "x" +
+                      std::to_string(img.height) + ", GL_RGBA32F) in snell::gpu::Texture");
     }
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, levels_ - 1);
@@ -182,13 +198,14 @@ class Texture {
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, glMinFilter(tex.minFilter, tex.mipFilter));
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    checkGl(gl, "Texture upload (glTexImage2D)");
+    checkGl(gl, "glTexParameteri in snell::gpu::Texture");
   }
 
   // Binds to texture unit `unit`; pair with Program::setSampler(name, unit).
   void bind(int unit) const {
     const GlApi& gl = handle_.gl();
     gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+    checkGl(gl, "glActiveTexture(GL_TEXTURE0 + " + std::to_string(unit) + ")");
     gl.BindTexture(GL_TEXTURE_2D, handle_.id());
     gl.ActiveTexture(GL_TEXTURE0);
   }
@@ -224,6 +241,17 @@ inline const char* framebufferStatusName(GLenum status) {
   }
 }
 
+// Throws Error unless the framebuffer bound to GL_FRAMEBUFFER is complete:
+// "<what>: glCheckFramebufferStatus returned GL_FRAMEBUFFER_INCOMPLETE_...".
+inline void checkFramebufferComplete(const GlApi& gl, const std::string& what) {
+  const GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw Error(what + ": glCheckFramebufferStatus returned " + framebufferStatusName(status) +
+                (status == GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT
+                     ? " (an attachment has a zero size or a format that cannot be rendered to)"
+                     : ""));
+}
+
 // An off-screen render target: RGBA32F colour attachments (float, so shading
 // results come back unquantized) and a DEPTH_COMPONENT32F depth texture
 // (a texture, not a renderbuffer, so refraction passes can sample it).
@@ -231,34 +259,35 @@ class Framebuffer {
  public:
   Framebuffer(const GlApi& gl, int width, int height, int colorAttachments = 1, bool depth = true)
       : gl_(&gl), width_(width), height_(height) {
-    if (width <= 0 || height <= 0) throw Error("snell::gpu::Framebuffer: size must be positive");
+    if (width <= 0 || height <= 0)
+      throw Error("snell::gpu::Framebuffer: size " + std::to_string(width) + "x" + std::to_string(height) +
+                  "; both must be positive");
+    GLuint fbo = 0;
+    gl.GenFramebuffers(1, &fbo);
+    if (fbo == 0) throw Error("glGenFramebuffers failed; is a context current?");
+    fbo_ = GlHandle<detail::DeleteFramebuffer>(gl, fbo);
     GLint maxColor = 0;
     gl.GetIntegerv(GL_MAX_COLOR_ATTACHMENTS, &maxColor);
     if (colorAttachments < 0 || colorAttachments > maxColor)
       throw Error("snell::gpu::Framebuffer: " + std::to_string(colorAttachments) + " colour attachments requested, " +
                   "the driver allows " + std::to_string(maxColor));
-    GLuint fbo = 0;
-    gl.GenFramebuffers(1, &fbo);
-    fbo_ = GlHandle<detail::DeleteFramebuffer>(gl, fbo);
     gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
     std::vector<GLenum> drawBuffers;
     for (int i = 0; i < colorAttachments; ++i) {
-      colors_.emplace_back(gl, makeTexture(GL_RGBA32F, GL_RGBA, GL_FLOAT));
+      colors_.push_back(makeTexture(GL_RGBA32F, GL_RGBA, GL_FLOAT, "GL_RGBA32F"));
       const GLenum attachment = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
       gl.FramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, colors_.back().id(), 0);
       drawBuffers.push_back(attachment);
     }
     if (depth) {
-      depth_ = GlHandle<detail::DeleteTexture>(gl, makeTexture(GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT));
+      depth_ = makeTexture(GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT, "GL_DEPTH_COMPONENT32F");
       gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_.id(), 0);
     }
     if (drawBuffers.empty()) drawBuffers.push_back(GL_NONE);
     gl.DrawBuffers(static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
     gl.ReadBuffer(colorAttachments > 0 ? GL_COLOR_ATTACHMENT0 : GL_NONE);
-    const GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
+    checkFramebufferComplete(gl, "snell::gpu::Framebuffer " + std::to_string(width) + "x" + std::to_string(height));
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (status != GL_FRAMEBUFFER_COMPLETE)
-      throw Error(std::string("snell::gpu::Framebuffer incomplete: ") + framebufferStatusName(status));
     checkGl(gl, "Framebuffer creation");
   }
 
@@ -268,6 +297,9 @@ class Framebuffer {
     gl_->Viewport(0, 0, width_, height_);
   }
   void clearColor(int attachment, const glm::vec4& c) const {
+    // GL ignores a clear of a draw buffer that has no attachment: say so instead.
+    if (attachment < 0 || attachment >= static_cast<int>(colors_.size()))
+      throw Error("snell::gpu::Framebuffer::clearColor: no colour attachment " + std::to_string(attachment));
     bind();
     gl_->ClearBufferfv(GL_COLOR, attachment, &c[0]);
   }
@@ -315,19 +347,27 @@ class Framebuffer {
   std::vector<GlHandle<detail::DeleteTexture>> colors_;
   GlHandle<detail::DeleteTexture> depth_;
 
-  GLuint makeTexture(GLenum internalFormat, GLenum format, GLenum type) const {
+  // `formatName` is for messages.
+  GlHandle<detail::DeleteTexture> makeTexture(GLenum internalFormat, GLenum format, GLenum type,
+                                              const char* formatName) const {
     GLuint id = 0;
     gl_->GenTextures(1, &id);
+    if (id == 0) throw Error("glGenTextures failed; is a context current?");
+    GlHandle<detail::DeleteTexture> texture(*gl_, id);
     const detail::BindingRestorer restore(*gl_);
     gl_->BindTexture(GL_TEXTURE_2D, id);
     gl_->TexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internalFormat), width_, height_, 0, format, type, nullptr);
+    // Past GL_MAX_TEXTURE_SIZE (or memory) the texture has no image: report
+    // the call here, not as an incomplete framebuffer plus a stale GL error.
+    checkGl(*gl_, std::string("glTexImage2D(") + formatName + ", " + std::to_string(width_) + "x" +
+                      std::to_string(height_) + ") for a snell::gpu::Framebuffer attachment");
     // One level and NEAREST: complete without mips, and sampling it reads texels as stored.
     gl_->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     gl_->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl_->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     gl_->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     gl_->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    return id;
+    return texture;
   }
 };
 

@@ -16,13 +16,14 @@ enum class PngEncoding {
   Linear,  // values written as they are, clamped to [0, 1] (for data: masks, heat maps)
 };
 
-// 8-bit RGB PNG (alpha dropped). Error(Io) naming the path on failure.
+// 8-bit RGB PNG (alpha dropped). Error(Io) naming the path and the system's
+// reason ("No space left on device") on failure.
 void writePng(const std::string& path, const Image& image, PngEncoding encoding = PngEncoding::Srgb);
 
 // PNG, JPEG, BMP, TGA (8-bit: decoded from sRGB to linear unless `linear`) or
 // Radiance HDR (already linear) through stb_image, as linear RGBA (alpha 1).
-// Error(Io) naming the path when it is missing, Error(Parse) when it is not an
-// image stb_image can decode.
+// Error(Io) naming the path when it is missing or a directory, Error(Parse)
+// when it is not an image stb_image can decode.
 Image readImage(const std::string& path, bool linear = false);
 
 }  // namespace snell::lab
