@@ -16,7 +16,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -163,6 +165,14 @@ std::string targetsText(const LabResult& r) {
   return s;
 }
 
+void writeText(const fs::path& path, const std::string& text) {
+  std::ofstream out(path);
+  if (!out) throw Error(ErrorKind::Io, "cannot write " + path.string() + ": " + std::strerror(errno));
+  out << text;
+  // A full disk shows only when the buffer is flushed.
+  if (!out.flush()) throw Error(ErrorKind::Io, "cannot write " + path.string() + ": " + std::strerror(errno));
+}
+
 void writeJson(const fs::path& path, const LabResult& r) {
   nlohmann::json j;
   j["scene"] = r.scene;
@@ -195,15 +205,8 @@ void writeJson(const fs::path& path, const LabResult& r) {
                     {"cpu_gpu_worst_pixel", {t.worstX, t.worstY}}});
   }
   j["techniques"] = rows;
-  std::ofstream out(path);
-  if (!out) throw Error(ErrorKind::Io, "cannot write " + path.string());
-  out << j.dump(2) << "\n";
-}
-
-void writeText(const fs::path& path, const std::string& text) {
-  std::ofstream out(path);
-  if (!out) throw Error(ErrorKind::Io, "cannot write " + path.string());
-  out << text;
+  // Scene names come from file names, which need not be UTF-8: replace what JSON cannot hold, don't throw.
+  writeText(path, j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
 
 }  // namespace
