@@ -7,6 +7,7 @@
 #include <snell/gpu/program.hpp>
 #include <snell/gpu/resources.hpp>
 
+#include "support/gpu_error_of.hpp"
 #include "support/temp_dir.hpp"
 
 #include <gtest/gtest.h>
@@ -29,19 +30,7 @@ using snell::gpu::Error;
 using snell::gpu::flattenGlslSource;
 using snell::gpu::Program;
 
-template <class F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "not a snell::gpu::Error: " << e.what();
-    return e.what();
-  }
-  ADD_FAILURE() << "no exception thrown";
-  return {};
-}
+using snell_test::gpuErrorOf;
 
 // A POSIX extended regular expression that matches `text` literally.
 std::string literal(const std::string& text) {
@@ -138,7 +127,7 @@ TEST(GlFailure, UnknownBackendNameIsAnError) {
   const char* old = std::getenv("SNELL_GL_BACKEND");
   const std::string saved = old ? old : "";
   setenv("SNELL_GL_BACKEND", "nonsense", 1);
-  const std::string msg = errorOf([] { Context ctx; });
+  const std::string msg = gpuErrorOf([] { Context ctx; });
   if (old) setenv("SNELL_GL_BACKEND", saved.c_str(), 1);
   else unsetenv("SNELL_GL_BACKEND");
   EXPECT_EQ(msg, "SNELL_GL_BACKEND: unknown GL backend 'nonsense'; valid names: auto, osmesa, egl");
@@ -153,12 +142,12 @@ TEST(GlFailure, HelpersWithoutACurrentContextSaySo) {
     gl = ctx.gl();
   }  // destroyed and released: nothing is current on this thread
   const auto cs = flattenGlslSource("#version 430 core\nlayout(local_size_x = 1) in;\nvoid main() {}\n", "x.comp", {});
-  EXPECT_EQ(errorOf([&] { Program::compute(gl, cs); }), "glCreateShader(compute) failed; is a context current?");
-  EXPECT_EQ(errorOf([&] { snell::gpu::StorageBuffer b(gl); }), "glGenBuffers failed; is a context current?");
-  EXPECT_EQ(errorOf([&] { snell::gpu::Texture t(gl, snell::Texture2D(snell::Image(2, 2))); }),
+  EXPECT_EQ(gpuErrorOf([&] { Program::compute(gl, cs); }), "glCreateShader(compute) failed; is a context current?");
+  EXPECT_EQ(gpuErrorOf([&] { snell::gpu::StorageBuffer b(gl); }), "glGenBuffers failed; is a context current?");
+  EXPECT_EQ(gpuErrorOf([&] { snell::gpu::Texture t(gl, snell::Texture2D(snell::Image(2, 2))); }),
             "glGenTextures failed; is a context current?");
-  EXPECT_EQ(errorOf([&] { snell::gpu::Framebuffer f(gl, 4, 4); }), "glGenFramebuffers failed; is a context current?");
-  EXPECT_EQ(errorOf([&] { snell::gpu::VertexArray v(gl); }), "glGenVertexArrays failed; is a context current?");
+  EXPECT_EQ(gpuErrorOf([&] { snell::gpu::Framebuffer f(gl, 4, 4); }), "glGenFramebuffers failed; is a context current?");
+  EXPECT_EQ(gpuErrorOf([&] { snell::gpu::VertexArray v(gl); }), "glGenVertexArrays failed; is a context current?");
 }
 
 // The driver's log is rewritten to the files the flattener spliced together:
@@ -171,7 +160,7 @@ TEST(GlFailure, CompileErrorInAnIncludeNamesItsFileAndLine) {
                                   "void main() { colour = tint(vec4(1.0)); }\n");
   const fs::path vert = dir.write("full.vert", "#version 450 core\nvoid main() { gl_Position = vec4(0.0); }\n");
   const Context ctx;
-  const std::string msg = errorOf([&] {
+  const std::string msg = gpuErrorOf([&] {
     Program::graphics(ctx.gl(), snell::gpu::flattenGlslFile(vert, {}), snell::gpu::flattenGlslFile(frag, {}));
   });
   const std::string head = "fragment shader " + frag.string() + " failed to compile:\n";
@@ -183,7 +172,7 @@ TEST(GlFailure, CompileErrorInAnIncludeNamesItsFileAndLine) {
 
 TEST(GlFailure, LinkErrorNamesBothStagesAndFiles) {
   const Context ctx;
-  const std::string msg = errorOf([&] {
+  const std::string msg = gpuErrorOf([&] {
     Program::graphics(ctx.gl(),
                       flattenGlslSource("#version 450 core\nout vec3 v;\nvoid main() { v = vec3(1.0); gl_Position = "
                                         "vec4(0.0); }\n",
@@ -213,7 +202,7 @@ TEST(GlFailure, IncompleteFramebufferNamesTheCallAndStatus) {
     gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
     gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
     snell::gpu::checkGl(gl, "test framebuffer setup");
-    const std::string msg = errorOf([&] { snell::gpu::checkFramebufferComplete(gl, "my target"); });
+    const std::string msg = gpuErrorOf([&] { snell::gpu::checkFramebufferComplete(gl, "my target"); });
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
     return msg;
   };
@@ -222,7 +211,7 @@ TEST(GlFailure, IncompleteFramebufferNamesTheCallAndStatus) {
       "size or a format that cannot be rendered to)";
   EXPECT_EQ(attachAndCheck(GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, 4), incomplete);  // depth as a colour target
   EXPECT_EQ(attachAndCheck(GL_RGBA32F, GL_RGBA, 0), incomplete);                       // a 0 x 0 image
-  EXPECT_EQ(errorOf([&] { snell::gpu::Framebuffer fb(gl, 4, 4, 0, false); }),
+  EXPECT_EQ(gpuErrorOf([&] { snell::gpu::Framebuffer fb(gl, 4, 4, 0, false); }),
             "snell::gpu::Framebuffer 4x4: glCheckFramebufferStatus returned "
             "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT");
   snell::gpu::checkGl(gl, "nothing left queued");
@@ -231,23 +220,23 @@ TEST(GlFailure, IncompleteFramebufferNamesTheCallAndStatus) {
 TEST(GlFailure, FramebufferSizesAreChecked) {
   const Context ctx;
   const snell::gpu::GlApi& gl = ctx.gl();
-  EXPECT_EQ(errorOf([&] { snell::gpu::Framebuffer fb(gl, 0, 4); }),
+  EXPECT_EQ(gpuErrorOf([&] { snell::gpu::Framebuffer fb(gl, 0, 4); }),
             "snell::gpu::Framebuffer: size 0x4; both must be positive");
-  EXPECT_EQ(errorOf([&] { snell::gpu::Framebuffer fb(gl, 8, -2); }),
+  EXPECT_EQ(gpuErrorOf([&] { snell::gpu::Framebuffer fb(gl, 8, -2); }),
             "snell::gpu::Framebuffer: size 8x-2; both must be positive");
   // Past GL_MAX_TEXTURE_SIZE: the attachment's glTexImage2D fails; it was
   // reported as an incomplete framebuffer, with GL_INVALID_VALUE left queued.
   GLint maxSize = 0;
   gl.GetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
   const int tooWide = maxSize + 1;
-  EXPECT_EQ(errorOf([&] { snell::gpu::Framebuffer fb(gl, tooWide, 4); }),
+  EXPECT_EQ(gpuErrorOf([&] { snell::gpu::Framebuffer fb(gl, tooWide, 4); }),
             "GL error 0x0501 (GL_INVALID_VALUE) after glTexImage2D(GL_RGBA32F, " + std::to_string(tooWide) +
                 "x4) for a snell::gpu::Framebuffer attachment");
   snell::gpu::checkGl(gl, "nothing left queued");
   const snell::gpu::Framebuffer fb(gl, 4, 4, 1, false);
-  EXPECT_EQ(errorOf([&] { fb.clearColor(1, glm::vec4(1.0f)); }),
+  EXPECT_EQ(gpuErrorOf([&] { fb.clearColor(1, glm::vec4(1.0f)); }),
             "snell::gpu::Framebuffer::clearColor: no colour attachment 1");
-  EXPECT_EQ(errorOf([&] { fb.readDepth(); }),
+  EXPECT_EQ(gpuErrorOf([&] { fb.readDepth(); }),
             "snell::gpu::Framebuffer::readDepth: the framebuffer has no depth attachment");
 }
 
@@ -262,23 +251,23 @@ TEST(GlFailure, BadArgumentsAreReportedAtTheirGlCall) {
 
   // Texture sizes: 0 x 0 is legal GL (an incomplete texture that samples as
   // black), a size that disagrees with the texels would make GL read past them.
-  EXPECT_EQ(errorOf([&] { snell::gpu::Texture t(gl, snell::Texture2D(snell::Image())); }),
+  EXPECT_EQ(gpuErrorOf([&] { snell::gpu::Texture t(gl, snell::Texture2D(snell::Image())); }),
             "snell::gpu::Texture: level 0 is 0x0; sizes must be positive");
   snell::Image lying(2, 2);
   lying.height = 3;
-  EXPECT_EQ(errorOf([&] { snell::gpu::Texture t(gl, snell::Texture2D(lying)); }),
+  EXPECT_EQ(gpuErrorOf([&] { snell::gpu::Texture t(gl, snell::Texture2D(lying)); }),
             "snell::gpu::Texture: level 0 is 2x3 but holds 4 texels");
   const snell::Image wide(maxSize + 1, 1);
-  EXPECT_EQ(errorOf([&] { snell::gpu::Texture t(gl, snell::Texture2D(wide)); }),
+  EXPECT_EQ(gpuErrorOf([&] { snell::gpu::Texture t(gl, snell::Texture2D(wide)); }),
             "GL error 0x0501 (GL_INVALID_VALUE) after glTexImage2D(level 0, " + std::to_string(maxSize + 1) +
                 "x1, GL_RGBA32F) in snell::gpu::Texture");
 
   const snell::gpu::Texture tex(gl, snell::Texture2D(snell::Image(2, 2)));
-  EXPECT_EQ(errorOf([&] { tex.bind(maxUnits); }),
+  EXPECT_EQ(gpuErrorOf([&] { tex.bind(maxUnits); }),
             "GL error 0x0500 (GL_INVALID_ENUM) after glActiveTexture(GL_TEXTURE0 + " + std::to_string(maxUnits) + ")");
   snell::gpu::StorageBuffer buffer(gl);
   buffer.allocate(16);
-  EXPECT_EQ(errorOf([&] { buffer.bindBase(static_cast<GLuint>(maxBindings)); }),
+  EXPECT_EQ(gpuErrorOf([&] { buffer.bindBase(static_cast<GLuint>(maxBindings)); }),
             "GL error 0x0501 (GL_INVALID_VALUE) after glBindBufferBase(GL_SHADER_STORAGE_BUFFER, " +
                 std::to_string(maxBindings) + ")");
 
@@ -291,9 +280,9 @@ uniform int count;
 uniform vec3 axis;
 void main() { o[0] = float(count) + axis.x; }
 )", "types.comp", {}));
-  EXPECT_EQ(errorOf([&] { p.set("count", 1.5f); }),
+  EXPECT_EQ(gpuErrorOf([&] { p.set("count", 1.5f); }),
             "GL error 0x0502 (GL_INVALID_OPERATION) after glProgramUniform1f for uniform 'count'");
-  EXPECT_EQ(errorOf([&] { p.set("axis", glm::vec2(1.0f)); }),
+  EXPECT_EQ(gpuErrorOf([&] { p.set("axis", glm::vec2(1.0f)); }),
             "GL error 0x0502 (GL_INVALID_OPERATION) after glProgramUniform2fv for uniform 'axis'");
   p.set("count", 2);
   p.set("axis", glm::vec3(0.5f));

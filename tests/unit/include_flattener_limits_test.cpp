@@ -6,6 +6,7 @@
 // is checked against Mesa in tests/gpu/include_flattener_test.cpp.
 #include <snell/gpu/include_flattener.hpp>
 
+#include "support/gpu_error_of.hpp"
 #include "support/temp_dir.hpp"
 
 #include <gtest/gtest.h>
@@ -23,20 +24,7 @@ using snell::gpu::flattenGlslFile;
 using snell::gpu::flattenGlslSource;
 using snell_test::TempDir;
 
-// The message of the snell::gpu::Error that f throws ("" and a failure if none).
-template <class F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "not a snell::gpu::Error: " << e.what();
-    return e.what();
-  }
-  ADD_FAILURE() << "no exception thrown";
-  return {};
-}
+using snell_test::gpuErrorOf;
 
 std::string str(const fs::path& p) { return p.lexically_normal().string(); }
 
@@ -68,7 +56,7 @@ TEST(IncludeFlattenerLimits, MillionLinesNameTheFileAndLine) {
   const fs::path tall = dir.write("tall.glsl", std::string(999999, '\n'));
   EXPECT_EQ(flattenGlslFile(tall, {}).files.size(), 1u);  // 999,999 lines: the most that can be numbered
   const fs::path taller = dir.write("taller.glsl", std::string(1000000, '\n'));
-  EXPECT_EQ(errorOf([&] { flattenGlslFile(taller, {}); }),
+  EXPECT_EQ(gpuErrorOf([&] { flattenGlslFile(taller, {}); }),
             taller.string() + ":1000000: more than 999999 lines; #line mapping cannot number it");
 }
 
@@ -81,7 +69,7 @@ TEST(IncludeFlattenerLimits, DeepNestingNamesTheChain) {
   // f63 is the 64th file of the chain; its include of f64 is one too many.
   std::string chain;
   for (int i = 0; i <= 64; ++i) chain += (i ? " -> " : "") + str(dir.path() / ("f" + std::to_string(i) + ".glsl"));
-  EXPECT_EQ(errorOf([&] { flattenGlslFile(dir.path() / "f0.glsl", {}); }),
+  EXPECT_EQ(gpuErrorOf([&] { flattenGlslFile(dir.path() / "f0.glsl", {}); }),
             str(dir.path() / "f63.glsl") + ":2: #include nesting deeper than 64 files (" + chain + ")");
 }
 
@@ -90,11 +78,11 @@ TEST(IncludeFlattenerLimits, CyclesNameTheChainAndTheLine) {
   const fs::path a = dir.write("a.glsl", "#include \"b.glsl\"\n");
   const fs::path b = dir.write("b.glsl", "// b\n#include \"sub/../c.glsl\"\n");
   const fs::path c = dir.write("c.glsl", "\n\n#include \"a.glsl\"\n");
-  EXPECT_EQ(errorOf([&] { flattenGlslFile(a, {}); }),
+  EXPECT_EQ(gpuErrorOf([&] { flattenGlslFile(a, {}); }),
             "#include cycle: " + a.string() + " -> " + str(b) + " -> " + str(c) + " -> " + str(a) + " (at " + str(c) +
                 ":3)");
   const fs::path self = dir.write("self.glsl", "float x;\n#include \"./self.glsl\"\n");
-  EXPECT_EQ(errorOf([&] { flattenGlslFile(self, {}); }),
+  EXPECT_EQ(gpuErrorOf([&] { flattenGlslFile(self, {}); }),
             "#include cycle: " + self.string() + " -> " + str(self) + " (at " + self.string() + ":2)");
 }
 
@@ -104,16 +92,16 @@ TEST(IncludeFlattenerLimits, MissingIncludeNamesTheIncludingFileAndLine) {
   fs::create_directories(inc);
   const fs::path a = dir.write("lib/a.glsl", "// a\n\n#include \"missing.glsl\"\n");
   const fs::path root = dir.write("root.comp", "#version 450 core\n#include \"lib/a.glsl\"\n");
-  EXPECT_EQ(errorOf([&] { flattenGlslFile(root, {inc}); }),
+  EXPECT_EQ(gpuErrorOf([&] { flattenGlslFile(root, {inc}); }),
             str(a) + ":3: cannot find #include \"missing.glsl\" (looked in: " + str(dir.path() / "lib") + ", " +
                 inc.string() + "); add its directory to the search paths");
   // An in-memory root without a directory looks in the search paths only.
-  EXPECT_EQ(errorOf([&] { flattenGlslSource("\n#include <gone.glsl>\n", "mem.comp", {}); }),
+  EXPECT_EQ(gpuErrorOf([&] { flattenGlslSource("\n#include <gone.glsl>\n", "mem.comp", {}); }),
             "mem.comp:2: cannot find #include <gone.glsl> (looked in: no directories); add its directory to the "
             "search paths");
-  EXPECT_EQ(errorOf([&] { flattenGlslSource("#include \"unterminated\n", "mem.comp", {}); }),
+  EXPECT_EQ(gpuErrorOf([&] { flattenGlslSource("#include \"unterminated\n", "mem.comp", {}); }),
             "mem.comp:1: malformed #include (expected #include \"file\" or #include <file>)");
-  EXPECT_EQ(errorOf([&] { flattenGlslSource("#include \"\"\n", "mem.comp", {}); }),
+  EXPECT_EQ(gpuErrorOf([&] { flattenGlslSource("#include \"\"\n", "mem.comp", {}); }),
             "mem.comp:1: malformed #include (expected #include \"file\" or #include <file>)");
 }
 
@@ -122,12 +110,12 @@ TEST(IncludeFlattenerLimits, MissingIncludeNamesTheIncludingFileAndLine) {
 TEST(IncludeFlattenerLimits, DirectoriesAndMissingRoots) {
   TempDir dir("snell_flatten");
   fs::create_directories(dir.path() / "shaders.glsl");
-  EXPECT_EQ(errorOf([&] { flattenGlslFile(dir.path() / "shaders.glsl", {}); }),
+  EXPECT_EQ(gpuErrorOf([&] { flattenGlslFile(dir.path() / "shaders.glsl", {}); }),
             "cannot open GLSL file " + (dir.path() / "shaders.glsl").string() + " (a directory)");
-  EXPECT_EQ(errorOf([&] { flattenGlslFile(dir.path() / "absent.comp", {}); }),
+  EXPECT_EQ(gpuErrorOf([&] { flattenGlslFile(dir.path() / "absent.comp", {}); }),
             "cannot open GLSL file " + (dir.path() / "absent.comp").string() + " (no such file)");
   const fs::path root = dir.write("root.comp", "#include \"shaders.glsl\"\n");
-  EXPECT_EQ(errorOf([&] { flattenGlslFile(root, {}); }),
+  EXPECT_EQ(gpuErrorOf([&] { flattenGlslFile(root, {}); }),
             root.string() + ":1: cannot find #include \"shaders.glsl\" (looked in: " + dir.path().string() + "; " +
                 str(dir.path() / "shaders.glsl") + " is not a regular file); add its directory to the search paths");
 }
@@ -143,7 +131,7 @@ TEST(IncludeFlattenerLimits, TooManyFilesNamesTheIncludeThatCrossesTheLimit) {
   }
   const fs::path rootPath = dir.write("root.glsl", root);
   // The root is file 1, so f1998.glsl (line 1999) is file 2000 and f1999.glsl file 2001.
-  EXPECT_EQ(errorOf([&] { flattenGlslFile(rootPath, {}); }),
+  EXPECT_EQ(gpuErrorOf([&] { flattenGlslFile(rootPath, {}); }),
             rootPath.string() + ":2000: #include \"f1999.glsl\" would be file number 2001; the flattener numbers at "
                                 "most 2000 files");
   dir.write("root.glsl", root.substr(0, root.rfind("#include")));
@@ -159,7 +147,7 @@ TEST(IncludeFlattenerLimits, NamesThatAreNotUtf8) {
   EXPECT_EQ(flat.files[1], str(latin1));
   EXPECT_NE(flat.text.find("float cafe;"), std::string::npos);
   const fs::path root = dir.write("r\xff.comp", "\n#include \"nope\xfe.glsl\"\n");
-  EXPECT_EQ(errorOf([&] { flattenGlslFile(root, {}); }),
+  EXPECT_EQ(gpuErrorOf([&] { flattenGlslFile(root, {}); }),
             root.string() + ":2: cannot find #include \"nope\xfe.glsl\" (looked in: " + dir.path().string() +
                 "); add its directory to the search paths");
 }
