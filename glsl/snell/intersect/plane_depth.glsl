@@ -79,9 +79,8 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
    it cannot be built. fetches: the reads spent. */
 struct SnellDepthPlane {
   vec2 uv;        // where B was read
-  vec3 position;  // B
-  vec3 normal;    // cross(C - B, D - B), not normalized
-  bool hasPoint;  // B was read (position valid) even when C or D was not
+  vec3 position;  // B once it was read (also when C or D was not), else 0
+  vec3 normal;    // cross(C - B, D - B), not normalized; 0 unless valid
   bool valid;
   int fetches;
 };
@@ -91,7 +90,6 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   r.uv = vec2(0.0f, 0.0f);
   r.position = vec3(0.0f, 0.0f, 0.0f);
   r.normal = vec3(0.0f, 0.0f, 0.0f);
-  r.hasPoint = false;
   r.valid = false;
   r.fetches = 0;
   SnellScreenPoint sq = snellViewToUv(s.clipFromView, q);
@@ -143,7 +141,6 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
     pB = bl.position;
   }
   r.position = pB;
-  r.hasPoint = true;
   SnellSurfacePoint c = snellSurfacePoint(depthMips, snellPixelToUv(pc, size), sl);
   r.fetches += 1;
   if (!c.valid) {
@@ -189,14 +186,15 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
     }
     SnellDepthPlane pl = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
     fetches += pl.fetches;
+    // An unbuilt plane has a zero normal, so the ray misses it; its facing plane exists
+    // only when B was read (position 0, the camera, gives no plane either).
     SnellRayPlaneHit ph = snellRayPlane(origin, dir, pl.position, pl.normal);
 #if SNELL_PLANE_FACING_FALLBACK
-    if (pl.hasPoint && (!pl.valid || !ph.valid)) {
+    if (!ph.valid) {
       ph = snellRayPlane(origin, dir, pl.position, pl.position);
-      pl.valid = true;
     }
 #endif
-    if (!pl.valid || !ph.valid) {
+    if (!ph.valid) {
       if (k == 0) {
         return snellHitMiss(fetches);
       }
