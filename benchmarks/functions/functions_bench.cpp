@@ -17,15 +17,6 @@
 
 #include "parity_registry.hpp"
 
-namespace snell_parity {
-
-std::vector<CaseSpec>& registry() {
-  static std::vector<CaseSpec> cases;
-  return cases;
-}
-
-}  // namespace snell_parity
-
 namespace {
 
 using snell_parity::CaseSpec;

@@ -22,11 +22,6 @@
 
 namespace snell_parity {
 
-std::vector<CaseSpec>& registry() {
-  static std::vector<CaseSpec> cases;
-  return cases;
-}
-
 namespace {
 
 namespace fs = std::filesystem;

@@ -43,7 +43,12 @@ struct CaseSpec {
   std::function<void()> setup = {};
 };
 
-std::vector<CaseSpec>& registry();
+// Every case file registers into this one list, whichever executable links them
+// (inline: one list across translation units, filled during static initialization).
+inline std::vector<CaseSpec>& registry() {
+  static std::vector<CaseSpec> cases;
+  return cases;
+}
 
 struct Registrar {
   explicit Registrar(CaseSpec spec) { registry().push_back(std::move(spec)); }

@@ -35,11 +35,6 @@
 
 namespace snell_parity {
 
-std::vector<CaseSpec>& registry() {
-  static std::vector<CaseSpec> cases;
-  return cases;
-}
-
 namespace {
 
 using property::Tally;

@@ -24,11 +24,6 @@
 
 namespace snell_parity {
 
-std::vector<CaseSpec>& registry() {
-  static std::vector<CaseSpec> cases;
-  return cases;
-}
-
 namespace {
 
 using property::Tally;
