@@ -50,6 +50,19 @@ constexpr float kSceneFovy = 0.9f;  // radians, vertical
 constexpr float kSceneNear = 0.5f;
 constexpr float kSceneFar = 40.0f;
 
+// The window depth of view distance v under `convention` (near n, far f), in
+// double: the reference the tests build depth buffers from, written from the
+// projection formulas rather than through snellDelinearizeDepth.
+inline double windowDepth(double v, double n, double f, int convention) {
+  switch (convention) {
+    case SNELL_DEPTH_GL:
+    case SNELL_DEPTH_ZERO_ONE: return f * (v - n) / (v * (f - n));
+    case SNELL_DEPTH_REVERSED: return n * (f - v) / (v * (f - n));
+    case SNELL_DEPTH_INFINITE_GL: return 1.0 - n / v;
+    default: return n / v;  // INFINITE_REVERSED
+  }
+}
+
 enum SceneKind { kScenePlane = 0, kSceneSphereBack = 1, kSceneStep = 2, kSceneAnnulus = 3, kSceneSpike = 4 };
 
 // A surface point along the pixel ray q = (x, y, -1): point = s q, s the view
@@ -164,16 +177,7 @@ struct DepthScene {
   };
 
   // The window depth of view distance v (double) for this scene's convention.
-  double windowDepth(double v) const {
-    const double n = zNear, f = zFar;
-    switch (convention) {
-      case SNELL_DEPTH_GL:
-      case SNELL_DEPTH_ZERO_ONE: return f * (v - n) / (v * (f - n));
-      case SNELL_DEPTH_REVERSED: return n * (f - v) / (v * (f - n));
-      case SNELL_DEPTH_INFINITE_GL: return 1.0 - n / v;
-      default: return n / v;
-    }
-  }
+  double windowDepth(double v) const { return snell_test::windowDepth(v, zNear, zFar, convention); }
 
   // First point of origin + t dir (t >= 0) inside the frustum and behind or on the surface.
   std::optional<glm::dvec3> referenceHit(glm::dvec3 origin, glm::dvec3 dir) const {

@@ -29,6 +29,8 @@
 #include <cstdio>
 #include <random>
 
+#include "support/depth_scenes.hpp"
+
 namespace {
 
 using glm::dvec3;
@@ -42,15 +44,7 @@ constexpr double kRadius = 1.8;
 const dvec3 kCrackPoint = kCentre + dvec3(0.2, -0.1, 0.3);
 const dvec3 kCrackNormal = glm::normalize(dvec3(0.4, 0.6, 0.7));
 
-double windowDepth(double v, int convention) {
-  switch (convention) {
-    case SNELL_DEPTH_GL:
-    case SNELL_DEPTH_ZERO_ONE: return kFar * (v - kNear) / (v * (kFar - kNear));
-    case SNELL_DEPTH_REVERSED: return kNear * (kFar - v) / (v * (kFar - kNear));
-    case SNELL_DEPTH_INFINITE_GL: return 1.0 - kNear / v;
-    default: return kNear / v;  // INFINITE_REVERSED
-  }
-}
+double windowDepth(double v, int convention) { return snell_test::windowDepth(v, kNear, kFar, convention); }
 bool reversed(int c) { return c == SNELL_DEPTH_REVERSED || c == SNELL_DEPTH_INFINITE_REVERSED; }
 
 // Within the rounding of two float depths (2^-24 relative each, plus slack for the double evaluation).

@@ -21,6 +21,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "support/depth_scenes.hpp"
+
 namespace {
 
 using glm::dvec2;
@@ -65,15 +67,7 @@ vec3 backgroundColor(const dvec3& q) {
   return odd ? vec3(0.0f, 0.7f, 0.3f) : vec3(0.0f, 0.3f, 0.8f);
 }
 
-double windowDepth(double v, int convention) {
-  switch (convention) {
-    case SNELL_DEPTH_GL:
-    case SNELL_DEPTH_ZERO_ONE: return kFar * (v - kNear) / (v * (kFar - kNear));
-    case SNELL_DEPTH_REVERSED: return kNear * (kFar - v) / (v * (kFar - kNear));
-    case SNELL_DEPTH_INFINITE_GL: return 1.0 - kNear / v;
-    default: return kNear / v;  // INFINITE_REVERSED
-  }
-}
+double windowDepth(double v, int convention) { return snell_test::windowDepth(v, kNear, kFar, convention); }
 
 struct MaskScene {
   snell::Texture2D color;                          // S: rgb, alpha = Sousa's mask
