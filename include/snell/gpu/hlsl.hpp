@@ -272,12 +272,7 @@ inline std::string parityHlslShaderSource(const std::string& caseFile, const std
   s += "void main(uint3 id : SV_DispatchThreadID) {\n";
   s += "  uint i = id.x;\n";
   s += "  if (i >= snellParityCount) return;\n";
-  s += "  SnellParityOut o = " + entry +
-       "(snellParityIn[4u * i], snellParityIn[4u * i + 1u], snellParityIn[4u * i + 2u], snellParityIn[4u * i + 3u]);\n";
-  s += "  snellParityResult[4u * i] = o.a;\n";
-  s += "  snellParityResult[4u * i + 1u] = o.b;\n";
-  s += "  snellParityResult[4u * i + 2u] = o.c;\n";
-  s += "  snellParityResult[4u * i + 3u] = o.d;\n";
+  s += detail::parityCallAndStore(entry);
   s += "}\n";
   return s;
 }

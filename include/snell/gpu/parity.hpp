@@ -65,6 +65,21 @@ struct ParityTexture {
 
 constexpr int kParityLocalSize = 64;
 
+namespace detail {
+// The statements the GLSL and the HLSL parity mains share (both languages spell
+// them alike): run `entry` on input i, store its four vectors as result i.
+inline std::string parityCallAndStore(const std::string& entry) {
+  std::string s;
+  s += "  SnellParityOut o = " + entry +
+       "(snellParityIn[4u * i], snellParityIn[4u * i + 1u], snellParityIn[4u * i + 2u], snellParityIn[4u * i + 3u]);\n";
+  s += "  snellParityResult[4u * i] = o.a;\n";
+  s += "  snellParityResult[4u * i + 1u] = o.b;\n";
+  s += "  snellParityResult[4u * i + 2u] = o.c;\n";
+  s += "  snellParityResult[4u * i + 3u] = o.d;\n";
+  return s;
+}
+}  // namespace detail
+
 // The generated compute shader. `in`/`out` are GLSL keywords, hence the names.
 inline std::string parityShaderSource(const std::string& caseFile, const std::string& entry) {
   std::string s;
@@ -78,12 +93,7 @@ inline std::string parityShaderSource(const std::string& caseFile, const std::st
   s += "void main() {\n";
   s += "  uint i = gl_GlobalInvocationID.x;\n";
   s += "  if (i >= uint(snellParityCount)) return;\n";
-  s += "  SnellParityOut o = " + entry +
-       "(snellParityIn[4u * i], snellParityIn[4u * i + 1u], snellParityIn[4u * i + 2u], snellParityIn[4u * i + 3u]);\n";
-  s += "  snellParityResult[4u * i] = o.a;\n";
-  s += "  snellParityResult[4u * i + 1u] = o.b;\n";
-  s += "  snellParityResult[4u * i + 2u] = o.c;\n";
-  s += "  snellParityResult[4u * i + 3u] = o.d;\n";
+  s += detail::parityCallAndStore(entry);
   s += "}\n";
   return s;
 }
