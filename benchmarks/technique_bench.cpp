@@ -1,14 +1,15 @@
-// CPU-build throughput of the two-interface refraction technique per preset
-// (snellTwoInterfaceRefraction on the glass sphere in front of a painting,
+// CPU-build throughput of the two-interface refraction technique per row of
+// the technique table (snellTechniqueTable(): BM_TwoInterface/<name>, exit slot
+// on the opaque scene; snellTwoInterfaceRefraction on the glass sphere in front of a painting,
 // tests/support/technique_scene.hpp, 256x256 buffers): pixels/s, fetches/px.
 #include <benchmark/benchmark.h>
 
 #include <snell/snell.hpp>
+#include <snell/technique_table.hpp>
 
 #include <vector>
 
 #include "support/technique_scene.hpp"
-#include "technique_presets.hpp"
 
 namespace {
 
@@ -38,9 +39,10 @@ const std::vector<Pixel>& pixels() {
   return v;
 }
 
-void BM_TwoInterface(benchmark::State& state) {
+void twoInterface(benchmark::State& state, int technique) {
   const technique_test::Scene& s = scene();
-  const SnellTechniqueOptions o = snell_bench::preset(int(state.range(0)));
+  SnellTechniqueOptions o = snellTechniquePreset(technique);
+  o.exitMode = SNELL_EXIT_SCENE;
   const std::vector<Pixel>& px = pixels();
   double fetches = 0.0;
   std::size_t n = 0;
@@ -57,6 +59,10 @@ void BM_TwoInterface(benchmark::State& state) {
   state.SetItemsProcessed(int64_t(n));
   state.counters["fetches/px"] = n ? fetches / double(n) : 0.0;
 }
-BENCHMARK(BM_TwoInterface)->DenseRange(0, 6)->ArgName("preset(DIR,ISR,PlaneN,PlaneD,Single,March,DDA)");
+const bool kRegistered = [] {
+  for (const SnellTechniqueInfo& t : snellTechniqueTable())
+    benchmark::RegisterBenchmark(("BM_TwoInterface/" + std::string(t.name)).c_str(), twoInterface, t.id);
+  return true;
+}();
 
 }  // namespace

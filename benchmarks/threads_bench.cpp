@@ -12,13 +12,14 @@
 //     the serial BVH build's share of the calling thread's CPU time (with 1
 //     thread: of the whole bake; CPU time, so other processes' load does not
 //     move it).
-//   BM_RefractFrame/<preset>/threads:T   snellTwoInterfaceRefraction for every
+//   BM_RefractFrame/<technique>/threads:T   snellTwoInterfaceRefraction for every
 //     pixel of the glass sphere of tests/support/technique_scene.hpp in a
 //     512x512 frame (rows through an atomic counter, colours written to a
-//     frame buffer), per preset. Items: sphere pixels.
+//     frame buffer), per row of the technique table. Items: sphere pixels.
 #include <benchmark/benchmark.h>
 
 #include <snell/snell.hpp>
+#include <snell/technique_table.hpp>
 #include <snell/wyman_dn.hpp>
 
 #include "lab/mesh_generators.hpp"
@@ -32,7 +33,6 @@
 #include <vector>
 
 #include "support/technique_scene.hpp"
-#include "technique_presets.hpp"
 
 namespace {
 
@@ -128,10 +128,11 @@ const FrameInput& frameInput() {
   return f;
 }
 
-void refractFrame(benchmark::State& state, int presetIndex) {
+void refractFrame(benchmark::State& state, int technique) {
   const FrameInput& f = frameInput();
   const technique_test::Scene& s = f.scene;
-  const snell::SnellTechniqueOptions o = snell_bench::preset(presetIndex);
+  snell::SnellTechniqueOptions o = snell::snellTechniquePreset(technique);
+  o.exitMode = SNELL_EXIT_SCENE;
   const int threads = static_cast<int>(state.range(0));
   std::vector<glm::vec3> color(static_cast<std::size_t>(kFrameSize * kFrameSize));
   for (auto _ : state) {
@@ -163,9 +164,8 @@ const bool kRegistered = [] {
       for (const MeshInput& m : meshes())
         if (m.name == mesh) bakeWymanDn(st, &m);
     })->Apply(threadCounts);
-  for (int k = 0; k < snell_bench::kPresetCount; ++k)
-    benchmark::RegisterBenchmark(("BM_RefractFrame/" + std::string(snell_bench::kPresetNames[k])).c_str(), refractFrame,
-                                 k)
+  for (const snell::SnellTechniqueInfo& t : snell::snellTechniqueTable())
+    benchmark::RegisterBenchmark(("BM_RefractFrame/" + std::string(t.name)).c_str(), refractFrame, t.id)
         ->Apply(threadCounts);
   return true;
 }();

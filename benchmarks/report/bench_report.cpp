@@ -322,22 +322,21 @@ std::string stepsSection(const Results& b) {
 }
 
 std::string techniqueSection(const Results& b) {
-  static const char* presets[] = {"DIR (binary search)", "ISR (Wyman)", "plane, normal-based", "plane, depth-based",
-                                  "single sample", "linear march", "DDA march"};
-  std::map<int, std::string> byPreset;
+  const std::string prefix = "BM_TwoInterface/";
+  std::vector<std::string> names;  // registration order = the technique table's
   for (const std::string& n : b.order())
-    if (n.rfind("BM_TwoInterface/", 0) == 0) byPreset[static_cast<int>(lastNumber(n))] = n;
-  std::string s = "## Whole technique per preset (CPU, single thread)\n\n";
+    if (n.rfind(prefix, 0) == 0) names.push_back(n);
+  std::string s = "## Whole technique per row of the technique table (CPU, single thread)\n\n";
   s += "`benchmarks/technique_bench.cpp`: `snellTwoInterfaceRefraction` (both interfaces, exit into the opaque "
        "scene), glass sphere in front of a painting, 256x256 buffers, every second pixel of the sphere in each "
        "direction. Cost ratio: time per pixel over single sample's.\n\n";
-  s += "| preset | pixels/s | ns/pixel | cost ratio | fetches/px |\n|---|---:|---:|---:|---:|\n";
-  const double single = byPreset.count(4) ? b.itemsPerSecond(byPreset[4]) : std::nan("");
-  for (const int k : {4, 1, 2, 0, 3, 5, 6}) {
-    if (!byPreset.count(k)) continue;
-    const double ips = b.itemsPerSecond(byPreset[k]);
-    s += std::string("| ") + presets[k] + " | " + rate(ips) + " | " + ns(ips) + " | " + ratio(single / ips) + " | " +
-         fmt("%.1f", b.num(byPreset[k], "fetches/px")) + " |\n";
+  s += "| technique | pixels/s | ns/pixel | cost ratio | fetches/px |\n|---|---:|---:|---:|---:|\n";
+  const auto single = std::find(names.begin(), names.end(), prefix + "single");
+  const double unit = single != names.end() ? b.itemsPerSecond(*single) : std::nan("");
+  for (const std::string& n : names) {
+    const double ips = b.itemsPerSecond(n);
+    s += "| " + n.substr(prefix.size()) + " | " + rate(ips) + " | " + ns(ips) + " | " + ratio(unit / ips) + " | " +
+         fmt("%.1f", b.num(n, "fetches/px")) + " |\n";
   }
   return s + "\n";
 }
@@ -397,9 +396,9 @@ std::string threadsSection(const Results& b) {
     return r;
   };
   s += rows("BM_BakeWymanDn/", true);
-  s += "\nA 512x512 frame of `snellTwoInterfaceRefraction` per preset (the sphere's pixels of "
+  s += "\nA 512x512 frame of `snellTwoInterfaceRefraction` per technique (the sphere's pixels of "
        "`tests/support/technique_scene.hpp`).\n\n";
-  head = "| preset | sphere pixels | frame, 1 thread | pixels/s, 1 thread";
+  head = "| technique | sphere pixels | frame, 1 thread | pixels/s, 1 thread";
   rule = "|---|---:|---:|---:";
   for (int t = 2; t <= maxThreads; t *= 2) {
     head += " | " + std::to_string(t) + " threads | scaling | CPU-time bound";

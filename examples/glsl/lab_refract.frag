@@ -1,12 +1,12 @@
 #version 450 core
 #extension GL_GOOGLE_include_directive : require  // or resolve includes your own way
 // snell-lab pass 4: the refractive object's front faces, shaded with one
-// technique (LAB_TECHNIQUE, set by the host before compiling) through
+// technique (LAB_TECHNIQUE, a SNELL_TECHNIQUE_* id set by the host before compiling) through
 // labShade (lab_technique.glsl), the very function snell-lab runs per pixel in
 // C++ on the read-back buffers. Outputs: colour, per-pixel stats, and the
 // fragment's inputs (position, normal, d_N) so the CPU evaluates the same pixel.
 #ifndef LAB_TECHNIQUE
-#  define LAB_TECHNIQUE 2
+#  define LAB_TECHNIQUE SNELL_TECHNIQUE_PLANE_NORMAL_1
 #endif
 #include "lab_technique.glsl"
 

@@ -7,10 +7,10 @@ description: the lab's per-pixel technique call (snell-lab, examples/lab): one
   scene's buffers (the paintings; the environment where the exit ray finds
   none) and runs snellTwoInterfaceRefraction.
 use: LabParams p = labParams(clipFromView, zNear, zFar, ior, absorption, envX, envY, envZ, backRange);
-     SnellTwoInterfaceResult r = labShade(LAB_TECHNIQUE_PLANE_NORMAL_1, frontPosition, frontNormal,
+     SnellTwoInterfaceResult r = labShade(SNELL_TECHNIQUE_PLANE_NORMAL_1, frontPosition, frontNormal,
          dN, backDepth, backNormal, backPyramid, sceneDepth, sceneNormal, scenePyramid,
          sceneColor, environment, p);
-  technique   LAB_TECHNIQUE_* below
+  technique   SNELL_TECHNIQUE_* (shade/technique_presets.glsl)
   frontPosition, frontNormal, dN: the front-face fragment (view space), Wyman's d_N
   back*       the back-face pass: depth (GL_GREATER, cleared to 0), view-space
               normals, its depth min/max pyramid
@@ -34,17 +34,6 @@ source: the composition of DESIGN.md sec. 2; the presets' own sources.
 #include "snell/shade/technique_options.glsl"
 #include "snell/shade/technique_presets.glsl"
 #include "snell/shade/two_interface_shade.glsl"
-
-#define LAB_TECHNIQUE_SINGLE 0
-#define LAB_TECHNIQUE_PLANE_NORMAL_0 1
-#define LAB_TECHNIQUE_PLANE_NORMAL_1 2
-#define LAB_TECHNIQUE_PLANE_NORMAL_2 3
-#define LAB_TECHNIQUE_PLANE_DEPTH_1 4
-#define LAB_TECHNIQUE_DIR 5
-#define LAB_TECHNIQUE_ISR 6
-#define LAB_TECHNIQUE_LINEAR_MARCH 7
-#define LAB_TECHNIQUE_DDA 8
-#define LAB_TECHNIQUE_COUNT 9
 
 struct LabParams {
   mat4 clipFromView;
@@ -74,24 +63,8 @@ SNELL_FN LabParams labParams(mat4 clipFromView, float zNear, float zFar, float i
 }
 
 SNELL_FN SnellTechniqueOptions labTechniqueOptions(int technique, LabParams p) {
-  SnellTechniqueOptions o = snellPresetSingleSample();
-  if (technique == LAB_TECHNIQUE_PLANE_NORMAL_0) {
-    o = snellPresetPlaneNormal(0);
-  } else if (technique == LAB_TECHNIQUE_PLANE_NORMAL_1) {
-    o = snellPresetPlaneNormal(1);
-  } else if (technique == LAB_TECHNIQUE_PLANE_NORMAL_2) {
-    o = snellPresetPlaneNormal(2);
-  } else if (technique == LAB_TECHNIQUE_PLANE_DEPTH_1) {
-    o = snellPresetPlaneDepth(1);
-  } else if (technique == LAB_TECHNIQUE_DIR) {
-    o = snellPresetDir();
-  } else if (technique == LAB_TECHNIQUE_ISR) {
-    o = snellPresetIsr();
-  } else if (technique == LAB_TECHNIQUE_LINEAR_MARCH) {
-    o = snellPresetLinearMarch();
-    o.back.maxDistance = p.backRange;
-  } else if (technique == LAB_TECHNIQUE_DDA) {
-    o = snellPresetDdaMarch();
+  SnellTechniqueOptions o = snellTechniquePreset(technique);
+  if (o.back.strategy == SNELL_STRATEGY_LINEAR_MARCH || o.back.strategy == SNELL_STRATEGY_DDA) {
     o.back.maxDistance = p.backRange;
   }
   o.exitMode = SNELL_EXIT_SCENE;

@@ -41,7 +41,7 @@ LabOptions options64(const std::string& out) {
 TEST(LabRun, SphereSceneEndToEnd) {
   labtest::TempDir dir;
   const LabResult r = snell::lab::runLab(options64(dir.file("out")));
-  ASSERT_EQ(r.rows.size(), snell::lab::allTechniques().size());
+  ASSERT_EQ(r.rows.size(), snell::snellTechniqueTable().size());
   EXPECT_EQ(r.width, 64);
   EXPECT_GT(r.objectPixels, 400u);
   for (const TechniqueRow& t : r.rows) {

@@ -55,7 +55,7 @@ Texture2D environmentTexture(const SceneFrame& frame);
 
 class GpuLab {
  public:
-  // backend: "auto", "osmesa" or "egl". `techniques`: LAB_TECHNIQUE_* ids, one
+  // backend: "auto", "osmesa" or "egl". `techniques`: SNELL_TECHNIQUE_* ids, one
   // program each. dN: Wyman's d_N per vertex of frame.object (zeros when absent).
   GpuLab(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
          const std::vector<int>& techniques, const ShaderDirs& dirs);

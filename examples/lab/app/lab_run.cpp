@@ -209,55 +209,287 @@ void writeJson(const fs::path& path, const LabResult& r) {
   writeText(path, j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
 
-}  // namespace
+// ---- The stages of one lab run, in order (runLab below). ----
 
-LabResult runLab(const LabOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  // Techniques first: a typo should not cost a ray trace.
-  std::vector<const TechniqueInfo*> techniques;
-  if (options.techniques.empty()) {
-    for (const TechniqueInfo& t : allTechniques()) techniques.push_back(&t);
-  } else {
-    for (const TechniqueInfo& t : allTechniques())
-      if (std::find(options.techniques.begin(), options.techniques.end(), t.name) != options.techniques.end())
-        techniques.push_back(&t);
-  }
+// Stage 1: the requested rows of the technique table, in table order. Before the
+// scene loads: a typo should not cost a ray trace.
+std::vector<const SnellTechniqueInfo*> selectTechniques(const LabOptions& options) {
+  std::vector<const SnellTechniqueInfo*> techniques;
+  for (const SnellTechniqueInfo& t : snellTechniqueTable())
+    if (options.techniques.empty() ||
+        std::find(options.techniques.begin(), options.techniques.end(), t.name) != options.techniques.end())
+      techniques.push_back(&t);
+  return techniques;
+}
 
-  Scene scene = loadScene(options.scenePath);
-  if (options.width > 0) scene.camera.width = options.width;
-  if (options.height > 0) scene.camera.height = options.height;
-  const SceneFrame frame = buildFrame(scene, scene.frameTime(0));
-  const int W = frame.camera.width, H = frame.camera.height;
+// Stage 2: the ground truth, full paths and the two-interface reference.
+struct References {
+  TraceResult full, two;
+};
 
-  LabResult result;
-  result.scene = scene.name.empty() ? fs::path(options.scenePath).stem().string() : scene.name;
-  result.width = W;
-  result.height = H;
-  result.frames = options.frames;
-
-  // Ground truth.
+References traceReferences(const SceneFrame& frame, const LabOptions& options, LabResult& result) {
   const ReferenceTracer tracer(frame);
   TraceOptions to;
   to.threads = options.threads;
   to.progress = !options.quiet;
   to.mode = TraceMode::Full;
-  const TraceResult full = tracer.render(frame.camera, to);
+  References refs{tracer.render(frame.camera, to), {}};
   to.mode = TraceMode::TwoInterfaces;
-  const TraceResult two = tracer.render(frame.camera, to);
-  result.traceSeconds = full.stats.seconds + two.stats.seconds;
-  result.objectPixels = full.mask.count();
-  result.mseTwoVsFull = compareImages(full.color, two.color, full.mask).mse;
+  refs.two = tracer.render(frame.camera, to);
+  result.traceSeconds = refs.full.stats.seconds + refs.two.stats.seconds;
+  result.objectPixels = refs.full.mask.count();
+  result.mseTwoVsFull = compareImages(refs.full.color, refs.two.color, refs.full.mask).mse;
+  return refs;
+}
 
-  // Wyman's d_N, when ISR is asked for.
-  std::vector<float> dN;
+// Wyman's d_N per vertex, when ISR is asked for (else none: the shaders read 0).
+std::vector<float> wymanDnIfNeeded(const SceneFrame& frame, const std::vector<const SnellTechniqueInfo*>& techniques) {
   const bool wantIsr = std::any_of(techniques.begin(), techniques.end(),
-                                   [](const TechniqueInfo* t) { return t->id == LAB_TECHNIQUE_ISR; });
-  if (wantIsr) dN = computeWymanDn(frame.object.positions, frame.object.normals, frame.object.indices);
+                                   [](const SnellTechniqueInfo* t) { return t->id == SNELL_TECHNIQUE_ISR; });
+  if (!wantIsr) return {};
+  return computeWymanDn(frame.object.positions, frame.object.normals, frame.object.indices);
+}
 
-  // GPU passes 1-3 once (the frame is static), then every technique's pass 4.
+// Stage 4, per technique: what the C++ build computes for one covered pixel of the GPU's front pass.
+struct CpuShader {
+  const SnellTechniqueInfo& info;
+  const CpuBuffers& cb;
+  const LabParams& params;
+
+  SnellTwoInterfaceResult operator()(vec3 p1, vec3 n1, float dN) const {
+    return labShade(info.id, p1, n1, dN, cb.backDepth, cb.backNormal, cb.backPyramid, cb.sceneDepth, cb.sceneNormal,
+                    cb.scenePyramid, cb.sceneColor, cb.environment, params);
+  }
+
+  // Is a CPU/GPU difference at (x, y) a rounding tie (a texel or TIR boundary that the two builds'
+  // last-bit differences put on opposite sides) rather than a disagreement between the functions?
+  // Nudges P1 or N1 by 1..maxUlps ulps per component (every sign pattern) and looks for a C++ result
+  // within 1/255 of the GPU colour: returns the smallest nudge that reproduces it, or -1. With
+  // `reproduced`, counts every reproducing nudge (and `tried`, every nudge) instead of stopping.
+  int tieUlps(const TechniqueBuffers& tb, int x, int y, int maxUlps, int* reproduced, int* tried) const {
+    const vec4 pf = tb.position.at(x, y), nf = tb.normal.at(x, y), gf = tb.color.at(x, y);
+    int best = -1;
+    for (int ulps = 1; ulps <= maxUlps; ulps *= 2)
+      for (int which = 0; which < 2; ++which)
+        for (int dx = -1; dx <= 1; ++dx)
+          for (int dy = -1; dy <= 1; ++dy)
+            for (int dz = -1; dz <= 1; ++dz) {
+              vec3 q(pf), m(nf);
+              vec3& v = which == 0 ? q : m;
+              const int d[3] = {dx, dy, dz};
+              for (int a = 0; a < 3; ++a)
+                for (int s = 0; s < ulps * std::abs(d[a]); ++s) v[a] = std::nextafter(v[a], d[a] > 0 ? 1e30f : -1e30f);
+              const SnellTwoInterfaceResult rr = (*this)(q, m, pf.w);
+              float e = 0.0f;
+              for (int a = 0; a < 3; ++a) e = std::max(e, std::abs(clamp01(rr.color[a]) - clamp01(gf[a])));
+              if (tried) ++*tried;
+              if (e <= 1.0f / 255.0f) {
+                if (reproduced) ++*reproduced;
+                if (best < 0) best = ulps;
+                if (!reproduced) return best;
+              }
+            }
+    return best;
+  }
+};
+
+// Stage 4a: the C++ image of one technique: the same labShade per covered pixel of the GPU's front
+// pass, on the read-back inputs. rgb colour; stats x = fell back, y = fetches.
+void shadeOnCpu(const CpuShader& shade, const TechniqueBuffers& tb, int threads, Image& color, Image& stats) {
+  parallelRows(tb.normal.height, threads, [&](int y) {
+    for (int x = 0; x < tb.normal.width; ++x) {
+      const vec4 n = tb.normal.at(x, y);
+      if (!(n.w > 0.0f)) continue;
+      const vec4 p = tb.position.at(x, y);
+      const SnellTwoInterfaceResult r = shade(vec3(p), vec3(n), p.w);
+      color.at(x, y) = vec4(r.color, 1.0f);
+      stats.at(x, y) = vec4(r.fellBack ? 1.0f : 0.0f, static_cast<float>(r.fetches), 0.0f, 0.0f);
+    }
+  });
+}
+
+// Stage 4b: the row's shares and the CPU-vs-GPU agreement, over the front pass's covered pixels.
+void compareCpuGpu(const CpuShader& shade, const TechniqueBuffers& tb, const Image& cpuColor, const Image& cpuStats,
+                   TechniqueRow& row) {
+  std::size_t covered = 0, invalid = 0, backMiss = 0, exitMiss = 0, beyond1 = 0, beyond4 = 0, fetchDiff = 0;
+  double fetches = 0.0;
+  for (int y = 0; y < tb.normal.height; ++y)
+    for (int x = 0; x < tb.normal.width; ++x) {
+      if (!(tb.normal.at(x, y).w > 0.0f)) continue;
+      ++covered;
+      const vec4 s = tb.stats.at(x, y);
+      invalid += s.x > 0.5f;
+      backMiss += s.z < 0.5f;
+      exitMiss += s.w < 0.5f;
+      fetches += static_cast<double>(s.y);
+      fetchDiff += s.y != cpuStats.at(x, y).y;
+      float d = 0.0f;
+      for (int c = 0; c < 3; ++c)
+        d = std::max(d, std::abs(clamp01(tb.color.at(x, y)[c]) - clamp01(cpuColor.at(x, y)[c])));
+      if (static_cast<double>(d) > row.cpuGpuMaxAbs) {
+        row.cpuGpuMaxAbs = static_cast<double>(d);
+        row.worstX = x;
+        row.worstY = y;
+      }
+      beyond1 += d > 1.0f / 255.0f;
+      if (d > 4.0f / 255.0f) {
+        ++beyond4;
+        ++row.cpuGpuBeyond4Pixels;
+        row.cpuGpuBeyond4Ties += shade.tieUlps(tb, x, y, kTieUlps, nullptr, nullptr) > 0;
+      }
+    }
+  const double n = covered ? static_cast<double>(covered) : 1.0;
+  row.invalidShare = static_cast<double>(invalid) / n;
+  row.backMissShare = static_cast<double>(backMiss) / n;
+  row.exitMissShare = static_cast<double>(exitMiss) / n;
+  row.fetchesPerPixel = fetches / n;
+  row.cpuGpuBeyond1 = static_cast<double>(beyond1) / n;
+  row.cpuGpuBeyond4 = static_cast<double>(beyond4) / n;
+  row.fetchMismatch = static_cast<double>(fetchDiff) / n;
+}
+
+// SNELL_LAB_DEBUG_PARITY: the worst pixel's inputs and both builds' results, on stderr.
+void debugWorstPixel(const CpuShader& shade, const TechniqueBuffers& tb, const Image& cpuColor, const Image& cpuStats,
+                     const TechniqueRow& row) {
+  if (!std::getenv("SNELL_LAB_DEBUG_PARITY") || row.worstX < 0) return;
+  const int x = row.worstX, y = row.worstY;
+  const glm::dvec4 p(tb.position.at(x, y)), nn(tb.normal.at(x, y)), g(tb.color.at(x, y)), c(cpuColor.at(x, y));
+  const glm::dvec4 gs(tb.stats.at(x, y)), cs(cpuStats.at(x, y));
+  std::fprintf(stderr,
+               "[parity] %s worst pixel (%d, %d): |d| %.2f/255; P1 (%.9g %.9g %.9g) N1 (%.9g %.9g %.9g) dN %.9g\n"
+               "  gpu rgb (%.5f %.5f %.5f) fellBack %g fetches %g backHit %g exitHit %g\n"
+               "  cpu rgb (%.5f %.5f %.5f) fellBack %g fetches %g\n",
+               shade.info.name, x, y, 255.0 * row.cpuGpuMaxAbs, p.x, p.y, p.z, nn.x, nn.y, nn.z, p.w, g.x, g.y, g.z,
+               gs.x, gs.y, gs.z, gs.w, c.x, c.y, c.z, cs.x, cs.y);
+  int reproduced = 0, tried = 0;
+  const int bestUlps = shade.tieUlps(tb, x, y, 32, &reproduced, &tried);
+  std::fprintf(stderr, "  input nudges (P1 or N1, 1..32 ulps) reproducing the GPU colour: %d of %d, smallest %d ulps\n",
+               reproduced, tried, bestUlps);
+}
+
+// Stage 4: one technique on the GPU, the same in C++, compared; its image (the object composited over
+// the scene) for the pictures.
+TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const CpuShader& shade, const StaticBuffers& sb,
+                          const References& refs, int threads, Image& image) {
+  gpu.renderTechnique(index);  // also compiles the shader's JIT code: not timed
+  const TechniqueBuffers tb = gpu.readTechnique();
+  Image cpuColor(tb.color.width, tb.color.height), cpuStats(tb.color.width, tb.color.height);
+  shadeOnCpu(shade, tb, threads, cpuColor, cpuStats);
+  TechniqueRow row;
+  row.name = shade.info.name;
+  row.label = shade.info.label;
+  compareCpuGpu(shade, tb, cpuColor, cpuStats, row);
+  debugWorstPixel(shade, tb, cpuColor, cpuStats, row);
+  image = composite(tb.color, tb.normal, sb.sceneColor);
+  row.mseFull = compareImages(refs.full.color, image, refs.full.mask).mse;
+  row.mseTwo = compareImages(refs.two.color, image, refs.full.mask).mse;
+  return row;
+}
+
+// Stage 5: all techniques interleaved, frame after frame; median per technique, ratios to single sample
+// (to the first row when single sample did not run).
+void timeTechniques(GpuLab& gpu, const std::vector<const SnellTechniqueInfo*>& techniques, int frames,
+                    LabResult& result) {
+  std::vector<std::vector<double>> times(techniques.size());
+  for (int f = 0; f < frames; ++f)
+    for (std::size_t i = 0; i < techniques.size(); ++i) times[i].push_back(gpu.renderTechnique(i));
+  double unit = 0.0;
+  for (std::size_t i = 0; i < techniques.size(); ++i) {
+    result.rows[i].medianMs = median(times[i]);
+    if (techniques[i]->id == SNELL_TECHNIQUE_SINGLE) unit = result.rows[i].medianMs;
+  }
+  if (unit <= 0.0 && !result.rows.empty()) unit = result.rows[0].medianMs;
+  for (TechniqueRow& r : result.rows) r.costRatio = unit > 0.0 ? r.medianMs / unit : 0.0;
+}
+
+// Stage 6: the pictures (ground truth, model error, a panel per technique, the overview) and the tables.
+void writeOutputs(const fs::path& out, const References& refs, const std::vector<Image>& images,
+                  const std::string& gpuDescription, LabResult& result,
+                  std::chrono::steady_clock::time_point start) {
+  const Image& full = refs.full.color;
+  const Image& two = refs.two.color;
+  const int W = result.width, H = result.height;
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) throw Error(ErrorKind::Io, "cannot create output directory " + out.string() + ": " + ec.message());
+  writePng((out / "ground_truth.png").string(), full);
+  const Image modelHeat = errorHeatMap(full, two, refs.full.mask);
+  writePng((out / "reference_two_interfaces.png").string(),
+           composePanel({{&full, "ray traced (full)"}, {&two, "two interfaces"}, {&modelHeat, "error"}},
+                        result.scene + ": two-interface model, MSE " + fmt("%.3g", result.mseTwoVsFull)));
+  const int factor = W >= 512 ? 2 : 1;
+  std::vector<Image> tiles;
+  std::vector<std::string> labels;
+  tiles.push_back(downscale(full, factor));
+  labels.push_back("ray traced");
+  tiles.push_back(downscale(two, factor));
+  labels.push_back("two interfaces " + fmt("%.2g", result.mseTwoVsFull));
+  for (std::size_t i = 0; i < result.rows.size(); ++i) {
+    const TechniqueRow& r = result.rows[i];
+    const Image heat = errorHeatMap(full, images[i], refs.full.mask);
+    char caption[256];
+    std::snprintf(caption, sizeof caption,
+                  "%s, %s: MSE %.3g (two-interface ref. %.3g), invalid %.1f%%, %.1f fetches/px, %.2fx single sample",
+                  result.scene.c_str(), r.label.c_str(), r.mseFull, r.mseTwo, 100.0 * r.invalidShare,
+                  r.fetchesPerPixel, r.costRatio);
+    writePng((out / (r.name + ".png")).string(),
+             composePanel({{&full, "ray traced"}, {&images[i], r.label}, {&heat, "error (RMS, white 0.25)"}}, caption));
+    tiles.push_back(downscale(images[i], factor));
+    labels.push_back(r.label + " " + fmt("%.2g", r.mseFull) + " " + fmt("%.2fx", r.costRatio));
+  }
+  // Overview: rows of four tiles.
+  const int perRow = 4, scale = 1;
+  std::vector<Image> rows;
+  for (std::size_t i = 0; i < tiles.size(); i += perRow) {
+    std::vector<PanelItem> items;
+    for (std::size_t j = i; j < std::min(tiles.size(), i + perRow); ++j) items.push_back({&tiles[j], labels[j]});
+    rows.push_back(composePanel(items, "", 6, scale));
+  }
+  int cw = 0, ch = 0;
+  for (const Image& r : rows) {
+    cw = std::max(cw, r.width);
+    ch += r.height;
+  }
+  const std::string title = result.scene + ": MSE vs ray tracing, time vs single sample (" + std::to_string(W) + "x" +
+                            std::to_string(H) + ", " + gpuDescription.substr(0, gpuDescription.find(',')) + ")";
+  const int titleH = textHeight(title, 1) + 8;
+  Image overview(std::max(cw, textWidth(title, 1) + 12), ch + titleH, vec4(0.06f, 0.06f, 0.07f, 1.0f));
+  drawText(overview, 6, 4, title, vec3(1.0f), 1);
+  int yTop = titleH;
+  for (const Image& r : rows) {
+    blit(overview, r, 0, yTop);
+    yTop += r.height;
+  }
+  writePng((out / "overview.png").string(), overview);
+  writeText(out / "table.md", "# snell-lab: " + result.scene + "\n\n" + result.markdown + "\n" + result.targets);
+  result.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  writeJson(out / "table.json", result);
+}
+
+}  // namespace
+
+LabResult runLab(const LabOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<const SnellTechniqueInfo*> techniques = selectTechniques(options);
+
+  Scene scene = loadScene(options.scenePath);
+  if (options.width > 0) scene.camera.width = options.width;
+  if (options.height > 0) scene.camera.height = options.height;
+  const SceneFrame frame = buildFrame(scene, scene.frameTime(0));
+
+  LabResult result;
+  result.scene = scene.name.empty() ? fs::path(options.scenePath).stem().string() : scene.name;
+  result.width = frame.camera.width;
+  result.height = frame.camera.height;
+  result.frames = options.frames;
+
+  const References refs = traceReferences(frame, options, result);
+
+  // Stage 3: the GPU passes that do not depend on the technique (scene, back faces, pyramids), once:
+  // the frame is static. Their read-back buffers are what the C++ side shades from.
   std::vector<int> ids;
-  for (const TechniqueInfo* t : techniques) ids.push_back(t->id);
-  GpuLab gpu(options.backend, frame, dN, ids, options.dirs);
+  for (const SnellTechniqueInfo* t : techniques) ids.push_back(t->id);
+  GpuLab gpu(options.backend, frame, wymanDnIfNeeded(frame, techniques), ids, options.dirs);
   result.gpu = gpu.description();
   result.staticPassMs = gpu.renderStatic();
   const StaticBuffers sb = gpu.readStatic();
@@ -265,191 +497,14 @@ LabResult runLab(const LabOptions& options) {
   const CpuBuffers cb = cpuBuffers(sb, k, frame);
   const LabParams params = labParams(k.clipFromView, k.zNear, k.zFar, k.ior, k.absorption, k.envX, k.envY, k.envZ, k.backRange);
 
-  std::vector<Image> gpuImages;
-  for (std::size_t i = 0; i < techniques.size(); ++i) {
-    const TechniqueInfo& info = *techniques[i];
-    gpu.renderTechnique(i);  // also compiles the shader's JIT code: not timed
-    const TechniqueBuffers tb = gpu.readTechnique();
-    // The CPU image: the same labShade, per covered pixel, on the read-back inputs.
-    Image cpuColor(W, H);
-    Image cpuStats(W, H);
-    parallelRows(H, options.threads, [&](int y) {
-      for (int x = 0; x < W; ++x) {
-        const vec4 n = tb.normal.at(x, y);
-        if (!(n.w > 0.0f)) continue;
-        const vec4 p = tb.position.at(x, y);
-        const SnellTwoInterfaceResult r =
-            labShade(info.id, vec3(p), vec3(n), p.w, cb.backDepth, cb.backNormal, cb.backPyramid, cb.sceneDepth,
-                     cb.sceneNormal, cb.scenePyramid, cb.sceneColor, cb.environment, params);
-        cpuColor.at(x, y) = vec4(r.color, 1.0f);
-        cpuStats.at(x, y) = vec4(r.fellBack ? 1.0f : 0.0f, static_cast<float>(r.fetches), 0.0f, 0.0f);
-      }
-    });
-    TechniqueRow row;
-    row.name = info.name;
-    row.label = info.label;
-    // Is a CPU/GPU difference a rounding tie (a texel or TIR boundary that the two builds' last-bit
-    // differences put on opposite sides) rather than a disagreement between the functions? Nudge P1 or N1
-    // by 1..maxUlps ulps per component (every sign pattern) and look for a C++ result within 1/255 of the
-    // GPU colour: returns the smallest nudge that reproduces it, or -1.
-    const auto tieUlps = [&](int x, int y, int maxUlps, int* reproduced, int* tried) {
-      const vec4 pf = tb.position.at(x, y), nf = tb.normal.at(x, y), gf = tb.color.at(x, y);
-      int best = -1;
-      for (int ulps = 1; ulps <= maxUlps; ulps *= 2)
-        for (int which = 0; which < 2; ++which)
-          for (int dx = -1; dx <= 1; ++dx)
-            for (int dy = -1; dy <= 1; ++dy)
-              for (int dz = -1; dz <= 1; ++dz) {
-                vec3 q(pf), m(nf);
-                vec3& v = which == 0 ? q : m;
-                const int d[3] = {dx, dy, dz};
-                for (int a = 0; a < 3; ++a)
-                  for (int s = 0; s < ulps * std::abs(d[a]); ++s) v[a] = std::nextafter(v[a], d[a] > 0 ? 1e30f : -1e30f);
-                const SnellTwoInterfaceResult rr =
-                    labShade(info.id, q, m, pf.w, cb.backDepth, cb.backNormal, cb.backPyramid, cb.sceneDepth,
-                             cb.sceneNormal, cb.scenePyramid, cb.sceneColor, cb.environment, params);
-                float e = 0.0f;
-                for (int a = 0; a < 3; ++a) e = std::max(e, std::abs(clamp01(rr.color[a]) - clamp01(gf[a])));
-                if (tried) ++*tried;
-                if (e <= 1.0f / 255.0f) {
-                  if (reproduced) ++*reproduced;
-                  if (best < 0) best = ulps;
-                  if (!reproduced) return best;
-                }
-              }
-      return best;
-    };
-    std::size_t covered = 0, invalid = 0, backMiss = 0, exitMiss = 0, beyond1 = 0, beyond4 = 0, fetchDiff = 0;
-    double fetches = 0.0;
-    for (int y = 0; y < H; ++y)
-      for (int x = 0; x < W; ++x) {
-        if (!(tb.normal.at(x, y).w > 0.0f)) continue;
-        ++covered;
-        const vec4 s = tb.stats.at(x, y);
-        invalid += s.x > 0.5f;
-        backMiss += s.z < 0.5f;
-        exitMiss += s.w < 0.5f;
-        fetches += static_cast<double>(s.y);
-        fetchDiff += s.y != cpuStats.at(x, y).y;
-        float d = 0.0f;
-        for (int c = 0; c < 3; ++c)
-          d = std::max(d, std::abs(clamp01(tb.color.at(x, y)[c]) - clamp01(cpuColor.at(x, y)[c])));
-        if (static_cast<double>(d) > row.cpuGpuMaxAbs) {
-          row.cpuGpuMaxAbs = static_cast<double>(d);
-          row.worstX = x;
-          row.worstY = y;
-        }
-        beyond1 += d > 1.0f / 255.0f;
-        if (d > 4.0f / 255.0f) {
-          ++beyond4;
-          ++row.cpuGpuBeyond4Pixels;
-          row.cpuGpuBeyond4Ties += tieUlps(x, y, kTieUlps, nullptr, nullptr) > 0;
-        }
-      }
-    const double n = covered ? static_cast<double>(covered) : 1.0;
-    row.invalidShare = static_cast<double>(invalid) / n;
-    row.backMissShare = static_cast<double>(backMiss) / n;
-    row.exitMissShare = static_cast<double>(exitMiss) / n;
-    row.fetchesPerPixel = fetches / n;
-    row.cpuGpuBeyond1 = static_cast<double>(beyond1) / n;
-    row.cpuGpuBeyond4 = static_cast<double>(beyond4) / n;
-    row.fetchMismatch = static_cast<double>(fetchDiff) / n;
-    if (std::getenv("SNELL_LAB_DEBUG_PARITY") && row.worstX >= 0) {
-      const int x = row.worstX, y = row.worstY;
-      const glm::dvec4 p(tb.position.at(x, y)), nn(tb.normal.at(x, y)), g(tb.color.at(x, y)), c(cpuColor.at(x, y));
-      const glm::dvec4 gs(tb.stats.at(x, y)), cs(cpuStats.at(x, y));
-      std::fprintf(stderr,
-                   "[parity] %s worst pixel (%d, %d): |d| %.2f/255; P1 (%.9g %.9g %.9g) N1 (%.9g %.9g %.9g) dN %.9g\n"
-                   "  gpu rgb (%.5f %.5f %.5f) fellBack %g fetches %g backHit %g exitHit %g\n"
-                   "  cpu rgb (%.5f %.5f %.5f) fellBack %g fetches %g\n",
-                   info.name, x, y, 255.0 * row.cpuGpuMaxAbs, p.x, p.y, p.z, nn.x, nn.y, nn.z, p.w, g.x, g.y, g.z, gs.x,
-                   gs.y, gs.z, gs.w, c.x, c.y, c.z, cs.x, cs.y);
-      int reproduced = 0, tried = 0;
-      const int bestUlps = tieUlps(x, y, 32, &reproduced, &tried);
-      std::fprintf(stderr, "  input nudges (P1 or N1, 1..32 ulps) reproducing the GPU colour: %d of %d, smallest %d ulps\n",
-                   reproduced, tried, bestUlps);
-    }
-    Image img = composite(tb.color, tb.normal, sb.sceneColor);
-    row.mseFull = compareImages(full.color, img, full.mask).mse;
-    row.mseTwo = compareImages(two.color, img, full.mask).mse;
-    result.rows.push_back(row);
-    gpuImages.push_back(std::move(img));
-  }
+  std::vector<Image> images(techniques.size());
+  for (std::size_t i = 0; i < techniques.size(); ++i)
+    result.rows.push_back(runTechnique(gpu, i, CpuShader{*techniques[i], cb, params}, sb, refs, options.threads, images[i]));
 
-  // Timing: all techniques interleaved, frame after frame; median per technique.
-  std::vector<std::vector<double>> times(techniques.size());
-  for (int f = 0; f < options.frames; ++f)
-    for (std::size_t i = 0; i < techniques.size(); ++i) times[i].push_back(gpu.renderTechnique(i));
-  double unit = 0.0;
-  for (std::size_t i = 0; i < techniques.size(); ++i) {
-    result.rows[i].medianMs = median(times[i]);
-    if (techniques[i]->id == LAB_TECHNIQUE_SINGLE) unit = result.rows[i].medianMs;
-  }
-  if (unit <= 0.0 && !result.rows.empty()) unit = result.rows[0].medianMs;
-  for (TechniqueRow& r : result.rows) r.costRatio = unit > 0.0 ? r.medianMs / unit : 0.0;
-
+  timeTechniques(gpu, techniques, options.frames, result);
   result.markdown = markdownTable(result);
   result.targets = targetsText(result);
-
-  if (!options.outDir.empty()) {
-    const fs::path out(options.outDir);
-    std::error_code ec;
-    fs::create_directories(out, ec);
-    if (ec) throw Error(ErrorKind::Io, "cannot create output directory " + out.string() + ": " + ec.message());
-    writePng((out / "ground_truth.png").string(), full.color);
-    const Image modelHeat = errorHeatMap(full.color, two.color, full.mask);
-    writePng((out / "reference_two_interfaces.png").string(),
-             composePanel({{&full.color, "ray traced (full)"}, {&two.color, "two interfaces"}, {&modelHeat, "error"}},
-                          result.scene + ": two-interface model, MSE " + fmt("%.3g", result.mseTwoVsFull)));
-    const int factor = W >= 512 ? 2 : 1;
-    std::vector<Image> tiles;
-    std::vector<std::string> labels;
-    tiles.push_back(downscale(full.color, factor));
-    labels.push_back("ray traced");
-    tiles.push_back(downscale(two.color, factor));
-    labels.push_back("two interfaces " + fmt("%.2g", result.mseTwoVsFull));
-    for (std::size_t i = 0; i < techniques.size(); ++i) {
-      const TechniqueRow& r = result.rows[i];
-      const Image heat = errorHeatMap(full.color, gpuImages[i], full.mask);
-      char caption[256];
-      std::snprintf(caption, sizeof caption,
-                    "%s, %s: MSE %.3g (two-interface ref. %.3g), invalid %.1f%%, %.1f fetches/px, %.2fx single sample",
-                    result.scene.c_str(), r.label.c_str(), r.mseFull, r.mseTwo, 100.0 * r.invalidShare,
-                    r.fetchesPerPixel, r.costRatio);
-      writePng((out / (r.name + ".png")).string(),
-               composePanel({{&full.color, "ray traced"}, {&gpuImages[i], r.label}, {&heat, "error (RMS, white 0.25)"}},
-                            caption));
-      tiles.push_back(downscale(gpuImages[i], factor));
-      labels.push_back(r.label + " " + fmt("%.2g", r.mseFull) + " " + fmt("%.2fx", r.costRatio));
-    }
-    // Overview: rows of four tiles.
-    const int perRow = 4, scale = 1;
-    std::vector<Image> rows;
-    for (std::size_t i = 0; i < tiles.size(); i += perRow) {
-      std::vector<PanelItem> items;
-      for (std::size_t j = i; j < std::min(tiles.size(), i + perRow); ++j) items.push_back({&tiles[j], labels[j]});
-      rows.push_back(composePanel(items, "", 6, scale));
-    }
-    int cw = 0, ch = 0;
-    for (const Image& r : rows) {
-      cw = std::max(cw, r.width);
-      ch += r.height;
-    }
-    const std::string title = result.scene + ": MSE vs ray tracing, time vs single sample (" + std::to_string(W) + "x" +
-                              std::to_string(H) + ", " + gpu.description().substr(0, gpu.description().find(',')) + ")";
-    const int titleH = textHeight(title, 1) + 8;
-    Image overview(std::max(cw, textWidth(title, 1) + 12), ch + titleH, vec4(0.06f, 0.06f, 0.07f, 1.0f));
-    drawText(overview, 6, 4, title, vec3(1.0f), 1);
-    int yTop = titleH;
-    for (const Image& r : rows) {
-      blit(overview, r, 0, yTop);
-      yTop += r.height;
-    }
-    writePng((out / "overview.png").string(), overview);
-    writeText(out / "table.md", "# snell-lab: " + result.scene + "\n\n" + result.markdown + "\n" + result.targets);
-    result.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    writeJson(out / "table.json", result);
-  }
+  if (!options.outDir.empty()) writeOutputs(options.outDir, refs, images, gpu.description(), result, start);
   result.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

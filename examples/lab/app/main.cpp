@@ -50,12 +50,14 @@ int main(int argc, char** argv) {
   std::string size;
   std::vector<std::string> techniqueArgs;
   std::string techniqueHelp = "techniques to compare (repeat or comma-separate; default: all):";
-  for (const TechniqueInfo& t : allTechniques()) techniqueHelp += std::string("\n  ") + t.name + ": " + t.description;
+  for (const snell::SnellTechniqueInfo& t : snell::snellTechniqueTable())
+    techniqueHelp += std::string("\n  ") + t.name + ": " + snell::snellDescribeTechnique(t);
 
   CLI::App app{"snell-lab: image-space refraction techniques rendered on the GL driver (Mesa llvmpipe by default) "
                "against an Embree ray tracer. Writes per-technique panels (ground truth | technique | error), an "
                "overview, and the error/cost table (Markdown and JSON)."};
-  app.footer("Exit codes: 0 ok, 2 usage, 3 missing file, 4 malformed file, 5 render or GL failure.\n"
+  app.footer("In the lab the marches' back-face slot walks the object's bounding-box diagonal.\n"
+             "Exit codes: 0 ok, 2 usage, 3 missing file, 4 malformed file, 5 render or GL failure.\n"
              "Defaults take about a minute on 2 cores (bunny, 512x512, 9 techniques, 15 timed frames).");
   app.add_option("scene", o.scenePath,
                  "scene file (JSON, see examples/scenes/README.md); default: the bundled bunny, " + o.scenePath +
@@ -85,7 +87,7 @@ int main(int argc, char** argv) {
   }
   for (const std::string& t : techniqueArgs) {
     if (t == "all") continue;
-    if (!findTechnique(t)) {
+    if (!snell::snellFindTechnique(t)) {
       std::fprintf(stderr, "snell-lab: unknown technique '%s'; valid: %s, all\n", t.c_str(), techniqueNames().c_str());
       return 2;
     }

@@ -24,9 +24,29 @@ presets (back slot / exit slot):
   snellPresetLinearMarch()         screen-space ray march, view-space steps +
                                    bisection / the same
   snellPresetDdaMarch()            perspective-correct pixel DDA march / the same
+the technique table (the one list of named techniques: snell-lab's
+  --technique names, the benchmarks and the tests all draw on it; names and
+  labels for C++ in include/snell/technique_table.hpp):
+  id                              name            preset
+  SNELL_TECHNIQUE_SINGLE          single          snellPresetSingleSample()
+  SNELL_TECHNIQUE_PLANE_NORMAL_0  plane-normal-0  snellPresetPlaneNormal(0)
+  SNELL_TECHNIQUE_PLANE_NORMAL_1  plane-normal-1  snellPresetPlaneNormal(1)
+  SNELL_TECHNIQUE_PLANE_NORMAL_2  plane-normal-2  snellPresetPlaneNormal(2)
+  SNELL_TECHNIQUE_PLANE_DEPTH     plane-depth     snellPresetPlaneDepth(1)
+  SNELL_TECHNIQUE_DIR             dir             snellPresetDir()
+  SNELL_TECHNIQUE_ISR             isr             snellPresetIsr()
+  SNELL_TECHNIQUE_LINEAR_MARCH    linear-march    snellPresetLinearMarch()
+  SNELL_TECHNIQUE_DDA             dda             snellPresetDdaMarch()
+  SNELL_TECHNIQUE_COUNT           the number of ids (ids are 0 .. COUNT - 1)
+  SnellTechniqueOptions o = snellTechniquePreset(SNELL_TECHNIQUE_PLANE_NORMAL_1);
+  Adding a technique: a preset function here, an id, a branch in
+  snellTechniquePreset and a row in include/snell/technique_table.hpp (a
+  compile-time check there keeps the two the same length).
 options: the defaults of technique_options.glsl and of each strategy's file.
 contract: pure constructors, no texture access; iteration counts are stored as
-  given (each strategy clamps them).
+  given (each strategy clamps them). snellTechniquePreset of an id outside
+  0 .. SNELL_TECHNIQUE_COUNT - 1: snellTechniquePresetSlots(-1, -1), whose
+  slots answer every ray with a miss (snellIntersectWith).
 source: Oliveira & Brauwers 2007 (sec. 3.3, 5 steps; sec. 6, bounding box);
   Wyman 2005 via O&B 2007 sec. 2.1, eqs. 1-2; Mayer & Assarsson,
   "Constant-Time Light Refraction Simulation" (methods 1 and 2, step 5);
@@ -92,6 +112,49 @@ SNELL_FN SnellTechniqueOptions snellPresetLinearMarch() {
 
 SNELL_FN SnellTechniqueOptions snellPresetDdaMarch() {
   return snellTechniquePresetSlots(SNELL_STRATEGY_DDA, SNELL_STRATEGY_DDA);
+}
+
+#define SNELL_TECHNIQUE_SINGLE 0
+#define SNELL_TECHNIQUE_PLANE_NORMAL_0 1
+#define SNELL_TECHNIQUE_PLANE_NORMAL_1 2
+#define SNELL_TECHNIQUE_PLANE_NORMAL_2 3
+#define SNELL_TECHNIQUE_PLANE_DEPTH 4
+#define SNELL_TECHNIQUE_DIR 5
+#define SNELL_TECHNIQUE_ISR 6
+#define SNELL_TECHNIQUE_LINEAR_MARCH 7
+#define SNELL_TECHNIQUE_DDA 8
+#define SNELL_TECHNIQUE_COUNT 9
+
+/* the technique table's constructor: id -> preset */
+SNELL_FN SnellTechniqueOptions snellTechniquePreset(int technique) {
+  if (technique == SNELL_TECHNIQUE_SINGLE) {
+    return snellPresetSingleSample();
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_0) {
+    return snellPresetPlaneNormal(0);
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_1) {
+    return snellPresetPlaneNormal(1);
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_2) {
+    return snellPresetPlaneNormal(2);
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_DEPTH) {
+    return snellPresetPlaneDepth(1);
+  }
+  if (technique == SNELL_TECHNIQUE_DIR) {
+    return snellPresetDir();
+  }
+  if (technique == SNELL_TECHNIQUE_ISR) {
+    return snellPresetIsr();
+  }
+  if (technique == SNELL_TECHNIQUE_LINEAR_MARCH) {
+    return snellPresetLinearMarch();
+  }
+  if (technique == SNELL_TECHNIQUE_DDA) {
+    return snellPresetDdaMarch();
+  }
+  return snellTechniquePresetSlots(-1, -1);
 }
 
 #endif

@@ -259,6 +259,10 @@ SNELL_FN SnellParityOut caseSnellPresetDdaMarch(vec4 a, vec4 b, vec4 c, vec4 d) 
   return techPackOptions(snellPresetDdaMarch());
 }
 
+SNELL_FN SnellParityOut caseSnellTechniquePreset(vec4 a, vec4 b, vec4 c, vec4 d) {
+  return techPackOptions(snellTechniquePreset(int(a.x)));
+}
+
 /* ray case: a = (origin, strategy), b = (dir, steps), c = matrix, d = (scene?, -, -, -) */
 SNELL_FN SnellParityOut caseSnellIntersectWith(vec4 a, vec4 b, vec4 c, vec4 d) {
   int strategy = int(a.w);

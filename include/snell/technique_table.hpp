@@ -1,0 +1,81 @@
+// The technique table for C++ callers: the name, label and source of every
+// SNELL_TECHNIQUE_* id of glsl/snell/shade/technique_presets.glsl (GLSL has
+// no strings, so they live here; the ids and the presets live there, once).
+// snell-lab's --technique list, its table rows, the benchmarks and the tests
+// all iterate this table: adding a technique is a preset and an id there plus
+// one row here.
+#pragma once
+#include "shade.hpp"
+
+#include <array>
+#include <string>
+
+namespace snell {
+
+struct SnellTechniqueInfo {
+  int id;              // SNELL_TECHNIQUE_*
+  const char* name;    // command-line and file name (snell-lab --technique, table.json "technique")
+  const char* label;   // table and picture label
+  const char* method;  // the published method, one line (the parameters come from the preset)
+};
+
+// Every technique, in id order (single sample first: the lab's cost unit).
+inline const std::array<SnellTechniqueInfo, SNELL_TECHNIQUE_COUNT>& snellTechniqueTable() {
+  static const std::array<SnellTechniqueInfo, SNELL_TECHNIQUE_COUNT> table = {{
+      {SNELL_TECHNIQUE_SINGLE, "single", "single sample", "one depth sample behind the ray origin (GPU Gems baseline)"},
+      {SNELL_TECHNIQUE_PLANE_NORMAL_0, "plane-normal-0", "normal plane, 0 it.", "Mayer & Assarsson normal-based plane"},
+      {SNELL_TECHNIQUE_PLANE_NORMAL_1, "plane-normal-1", "normal plane, 1 it.", "Mayer & Assarsson normal-based plane"},
+      {SNELL_TECHNIQUE_PLANE_NORMAL_2, "plane-normal-2", "normal plane, 2 it.", "Mayer & Assarsson normal-based plane"},
+      {SNELL_TECHNIQUE_PLANE_DEPTH, "plane-depth", "depth plane, 1 it.", "Mayer & Assarsson depth-based plane"},
+      {SNELL_TECHNIQUE_DIR, "dir", "DIR (CBS 5)", "Oliveira & Brauwers 2007, conservative binary search"},
+      {SNELL_TECHNIQUE_ISR, "isr", "ISR (Wyman)", "Wyman 2005, distance interpolation"},
+      {SNELL_TECHNIQUE_LINEAR_MARCH, "linear-march", "linear march", "screen-space ray march"},
+      {SNELL_TECHNIQUE_DDA, "dda", "DDA march", "perspective-correct pixel DDA march (McGuire & Mara)"},
+  }};
+  return table;
+}
+
+// The row of that command-line name, or nullptr.
+inline const SnellTechniqueInfo* snellFindTechnique(const std::string& name) {
+  for (const SnellTechniqueInfo& t : snellTechniqueTable())
+    if (name == t.name) return &t;
+  return nullptr;
+}
+
+// One slot's strategy and parameters in words, from the options themselves
+// (so no description restates a default): "CBS, 5 steps, range from the pyramid".
+inline std::string snellDescribeIntersect(const SnellIntersectOptions& o) {
+  const std::string n = std::to_string(o.steps);
+  const auto distance = [&] {
+    std::string d = std::to_string(o.maxDistance);
+    d.erase(d.find_last_not_of('0') + 1);
+    if (!d.empty() && d.back() == '.') d.pop_back();
+    return d;
+  };
+  const std::string range = o.rangeSource == SNELL_RANGE_EXPLICIT ? "range from a bounding box" : "range from the pyramid";
+  switch (o.strategy) {
+    case SNELL_STRATEGY_SINGLE: return "single sample";
+    case SNELL_STRATEGY_PLANE_NORMAL: return "normal plane, " + n + (o.steps == 1 ? " iteration" : " iterations");
+    case SNELL_STRATEGY_PLANE_DEPTH:
+      return "depth plane (depth mips = the min/max pyramid), " + n + (o.steps == 1 ? " iteration" : " iterations");
+    case SNELL_STRATEGY_CBS: return "conservative binary search, " + n + " steps, " + range;
+    case SNELL_STRATEGY_BINARY: return "binary search, " + n + " steps, " + range;
+    case SNELL_STRATEGY_LINEAR_BINARY:
+      return "linear search, " + n + " steps + " + std::to_string(o.refineSteps) + " binary steps, " + range;
+    case SNELL_STRATEGY_LINEAR_MARCH:
+      return "linear march, " + n + " view-space steps + " + std::to_string(o.refineSteps) + " bisections over " +
+             distance();
+    case SNELL_STRATEGY_DDA: return "pixel DDA march, up to " + n + " steps over " + distance();
+    case SNELL_STRATEGY_WYMAN: return "distance interpolation between d_V and the per-vertex d_N";
+    default: return "no strategy (every ray misses)";
+  }
+}
+
+// "method; back faces: ...; exit: ..." for --help and the docs, from the preset.
+inline std::string snellDescribeTechnique(const SnellTechniqueInfo& t) {
+  const SnellTechniqueOptions o = snellTechniquePreset(t.id);
+  const std::string back = snellDescribeIntersect(o.back), exit = snellDescribeIntersect(o.exit);
+  return std::string(t.method) + "; back faces: " + back + "; exit: " + (exit == back ? "the same" : exit);
+}
+
+}  // namespace snell

@@ -1,0 +1,85 @@
+// The technique table (shade/technique_presets.glsl ids and constructor,
+// include/snell/technique_table.hpp names): the names users and scripts rely
+// on, one row per id in id order, and each id's preset checked against what
+// the papers prescribe (strategy and step count per slot), not against the
+// table's own constructor.
+#include <snell/technique_table.hpp>
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+using namespace snell;
+
+namespace {
+
+struct Expected {
+  const char* name;
+  int back, backSteps, exit, exitSteps;
+};
+
+// snell-lab --technique names and table.json "technique" values (issue 11: keep them).
+const Expected kExpected[] = {
+    {"single", SNELL_STRATEGY_SINGLE, 0, SNELL_STRATEGY_SINGLE, 0},
+    {"plane-normal-0", SNELL_STRATEGY_PLANE_NORMAL, 0, SNELL_STRATEGY_PLANE_NORMAL, 0},
+    {"plane-normal-1", SNELL_STRATEGY_PLANE_NORMAL, 1, SNELL_STRATEGY_PLANE_NORMAL, 1},
+    {"plane-normal-2", SNELL_STRATEGY_PLANE_NORMAL, 2, SNELL_STRATEGY_PLANE_NORMAL, 2},
+    {"plane-depth", SNELL_STRATEGY_PLANE_DEPTH, 1, SNELL_STRATEGY_PLANE_DEPTH, 1},
+    {"dir", SNELL_STRATEGY_CBS, 5, SNELL_STRATEGY_CBS, 5},  // O&B 2007 sec. 3.3: c = 5
+    {"isr", SNELL_STRATEGY_WYMAN, 0, SNELL_STRATEGY_SINGLE, 0},
+    {"linear-march", SNELL_STRATEGY_LINEAR_MARCH, 32, SNELL_STRATEGY_LINEAR_MARCH, 32},
+    {"dda", SNELL_STRATEGY_DDA, 256, SNELL_STRATEGY_DDA, 256},
+};
+
+}  // namespace
+
+TEST(TechniqueTable, OneRowPerIdInIdOrderWithTheDocumentedNames) {
+  const auto& table = snellTechniqueTable();
+  ASSERT_EQ(table.size(), sizeof kExpected / sizeof kExpected[0]);
+  std::set<std::string> names, labels;
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    EXPECT_EQ(table[i].id, static_cast<int>(i));
+    EXPECT_STREQ(table[i].name, kExpected[i].name);
+    EXPECT_TRUE(names.insert(table[i].name).second) << table[i].name;
+    EXPECT_TRUE(labels.insert(table[i].label).second) << table[i].label;
+    EXPECT_EQ(snellFindTechnique(table[i].name), &table[i]);
+  }
+  EXPECT_EQ(snellFindTechnique("plane-normal"), nullptr);
+  EXPECT_EQ(snellFindTechnique(""), nullptr);
+}
+
+TEST(TechniqueTable, EachPresetHasThePublishedSlots) {
+  for (const SnellTechniqueInfo& t : snellTechniqueTable()) {
+    const Expected& e = kExpected[t.id];
+    const SnellTechniqueOptions o = snellTechniquePreset(t.id);
+    EXPECT_EQ(o.back.strategy, e.back) << t.name;
+    EXPECT_EQ(o.back.steps, e.backSteps) << t.name;
+    EXPECT_EQ(o.exit.strategy, e.exit) << t.name;
+    EXPECT_EQ(o.exit.steps, e.exitSteps) << t.name;
+    EXPECT_EQ(o.back.rangeSource, SNELL_RANGE_PYRAMID) << t.name;
+    // The shared optics defaults, untouched by any preset.
+    EXPECT_EQ(o.tirPolicy, SNELL_TIR_CRITICAL) << t.name;
+    EXPECT_EQ(o.ior, 1.5f) << t.name;
+    EXPECT_TRUE(o.reflection) << t.name;
+  }
+}
+
+TEST(TechniqueTable, AnIdOutsideTheTableMissesEveryRay) {
+  for (int id : {-1, SNELL_TECHNIQUE_COUNT, 1000}) {
+    const SnellTechniqueOptions o = snellTechniquePreset(id);
+    EXPECT_EQ(o.back.strategy, -1);
+    EXPECT_EQ(o.exit.strategy, -1);
+  }
+}
+
+TEST(TechniqueTable, DescriptionsComeFromTheOptions) {
+  const SnellTechniqueInfo& dir = snellTechniqueTable()[SNELL_TECHNIQUE_DIR];
+  EXPECT_EQ(snellDescribeTechnique(dir),
+            "Oliveira & Brauwers 2007, conservative binary search; back faces: conservative binary search, 5 steps, "
+            "range from the pyramid; exit: the same");
+  SnellIntersectOptions march = snellIntersectOptions(SNELL_STRATEGY_LINEAR_MARCH);
+  march.maxDistance = 2.5f;
+  EXPECT_EQ(snellDescribeIntersect(march), "linear march, 32 view-space steps + 4 bisections over 2.5");
+  EXPECT_EQ(snellDescribeIntersect(snellIntersectOptions(-1)), "no strategy (every ray misses)");
+}
