@@ -9,5 +9,6 @@
 #include "camera/view_to_uv.glsl"
 #include "camera/pixel_to_uv.glsl"
 #include "camera/uv_depth_to_view.glsl"
+#include "camera/uv_z_to_view.glsl"
 #include "camera/tex_ray.glsl"
 #endif

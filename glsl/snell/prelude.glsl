@@ -71,5 +71,11 @@ contract: macros only; no function is defined here.
 #define SNELL_EPS 1e-6f
 /* Largest finite float; results that would be infinite are clamped to it. */
 #define SNELL_FLT_MAX 3.402823466e38f
+/* Smallest normal float. Divisors and "positive" tests use it instead of 0:
+   GPUs may flush denormals to zero, so a denormal input is treated as 0 in
+   every language (same flags on CPU and GPU). */
+#define SNELL_FLT_MIN 1.175494351e-38f
+/* True when the float x is neither NaN nor +-Inf. */
+#define SNELL_FINITE(x) (!isnan(x) && !isinf(x))
 
 #endif

@@ -15,7 +15,6 @@
 #include "shade/environment_cube_face.glsl"
 #include "shade/environment.glsl"
 #include "shade/technique_options.glsl"
-#include "shade/technique_range.glsl"
 #include "shade/technique_presets.glsl"
 #include "shade/technique_intersect.glsl"
 #include "shade/two_interface.glsl"

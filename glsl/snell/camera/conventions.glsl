@@ -16,12 +16,7 @@ options:
   SNELL_DEPTH_INFINITE_REVERSED  reversed Z with an infinite far plane:
                                  depth = zNear / distance, 0 is "infinitely far"
   SNELL_DEPTH_CONVENTION_COUNT   number of conventions (valid values 0 .. COUNT-1)
-  SNELL_CAMERA_FINITE(x)         true when the float x is neither NaN nor +-Inf
-  SNELL_CAMERA_FLT_MIN           smallest normal float. Divisors and "positive"
-                                 tests use it instead of 0: GPUs may flush
-                                 denormals to zero, so a denormal input is
-                                 treated as 0 in every language (same flags on
-                                 CPU and GPU)
+  (SNELL_FINITE and SNELL_FLT_MIN, used by every family, are in prelude.glsl)
   SNELL_CAMERA_MAT4_COLUMNS(c0, c1, c2, c3)  a mat4 from four column vec4s in
                                  every language (GLSL/GLM constructors take
                                  columns, HLSL's take rows)
@@ -54,8 +49,6 @@ source: OpenGL 4.5 core spec sec. 13.6 (coordinate transformations, glDepthRange
 
 /* isnan/isinf rather than comparison tricks: GPU compilers may rewrite !(a > b)
    into a <= b, which changes the NaN answer. */
-#define SNELL_CAMERA_FINITE(x) (!isnan(x) && !isinf(x))
-#define SNELL_CAMERA_FLT_MIN 1.175494351e-38f
 
 #if defined(SNELL_LANG_HLSL)
 #  define SNELL_CAMERA_MAT4_COLUMNS(c0, c1, c2, c3) transpose(float4x4(c0, c1, c2, c3))

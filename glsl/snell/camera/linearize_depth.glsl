@@ -44,10 +44,10 @@ source: the window depth of glm::perspective / perspectiveZO / infinitePerspecti
 
 SNELL_FN float snellLinearizeDepth(float depthValue, float zNear, float zFar, int convention) {
   bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
-  if (isnan(depthValue) || !SNELL_CAMERA_FINITE(zNear) || !(zNear >= SNELL_CAMERA_FLT_MIN)) {
+  if (isnan(depthValue) || !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
     return 0.0f;
   }
-  if (!infinite && (!SNELL_CAMERA_FINITE(zFar) || !(zFar > zNear))) {
+  if (!infinite && (!SNELL_FINITE(zFar) || !(zFar > zNear))) {
     return 0.0f;
   }
   float d = clamp(depthValue, 0.0f, 1.0f);
@@ -72,10 +72,10 @@ SNELL_FN float snellDelinearizeDepth(float viewDistance, float zNear, float zFar
   bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
   float farValue = reversed ? 0.0f : 1.0f;
   if (convention < 0 || convention >= SNELL_DEPTH_CONVENTION_COUNT || isnan(viewDistance) ||
-      !SNELL_CAMERA_FINITE(zNear) || !(zNear >= SNELL_CAMERA_FLT_MIN)) {
+      !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
     return farValue;
   }
-  if (!infinite && (!SNELL_CAMERA_FINITE(zFar) || !(zFar > zNear))) {
+  if (!infinite && (!SNELL_FINITE(zFar) || !(zFar > zNear))) {
     return farValue;
   }
   if (!(viewDistance > zNear)) {

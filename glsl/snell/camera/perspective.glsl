@@ -37,16 +37,16 @@ SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, f
   vec4 zero4 = vec4(0.0f, 0.0f, 0.0f, 0.0f);
   mat4 zero = SNELL_CAMERA_MAT4_COLUMNS(zero4, zero4, zero4, zero4);
   bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
-  if (convention < 0 || convention >= SNELL_DEPTH_CONVENTION_COUNT || !SNELL_CAMERA_FINITE(fovy) ||
-      !(fovy > 0.0f) || !(fovy < SNELL_PI) || !SNELL_CAMERA_FINITE(aspect) || !(aspect > 0.0f) ||
-      !SNELL_CAMERA_FINITE(zNear) || !(zNear >= SNELL_CAMERA_FLT_MIN)) {
+  if (convention < 0 || convention >= SNELL_DEPTH_CONVENTION_COUNT || !SNELL_FINITE(fovy) ||
+      !(fovy > 0.0f) || !(fovy < SNELL_PI) || !SNELL_FINITE(aspect) || !(aspect > 0.0f) ||
+      !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
     return zero;
   }
-  if (!infinite && (!SNELL_CAMERA_FINITE(zFar) || !(zFar > zNear))) {
+  if (!infinite && (!SNELL_FINITE(zFar) || !(zFar > zNear))) {
     return zero;
   }
   float tanHalfFovy = tan(fovy / 2.0f);
-  if (!SNELL_CAMERA_FINITE(tanHalfFovy) || !(tanHalfFovy > 0.0f)) {
+  if (!SNELL_FINITE(tanHalfFovy) || !(tanHalfFovy > 0.0f)) {
     return zero;
   }
   // Same operation order as glm::perspective, so the GL matrix matches it in float.
@@ -70,9 +70,9 @@ SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, f
     c = 0.0f;
     d = zNear;
   }
-  if (!SNELL_CAMERA_FINITE(a) || !SNELL_CAMERA_FINITE(b) || !SNELL_CAMERA_FINITE(c) ||
-      !SNELL_CAMERA_FINITE(d) || !(a >= SNELL_CAMERA_FLT_MIN) || !(b >= SNELL_CAMERA_FLT_MIN) ||
-      !(abs(d) >= SNELL_CAMERA_FLT_MIN)) {
+  if (!SNELL_FINITE(a) || !SNELL_FINITE(b) || !SNELL_FINITE(c) ||
+      !SNELL_FINITE(d) || !(a >= SNELL_FLT_MIN) || !(b >= SNELL_FLT_MIN) ||
+      !(abs(d) >= SNELL_FLT_MIN)) {
     return zero;
   }
   return SNELL_CAMERA_MAT4_COLUMNS(vec4(a, 0.0f, 0.0f, 0.0f), vec4(0.0f, b, 0.0f, 0.0f),
@@ -98,8 +98,8 @@ SNELL_FN mat4 snellPerspectiveInverse(float fovy, float aspect, float zNear, flo
   float ib = 1.0f / b;
   float id = 1.0f / d;
   float cd = c / d;
-  if (!SNELL_CAMERA_FINITE(ia) || !SNELL_CAMERA_FINITE(ib) || !SNELL_CAMERA_FINITE(id) ||
-      !SNELL_CAMERA_FINITE(cd)) {
+  if (!SNELL_FINITE(ia) || !SNELL_FINITE(ib) || !SNELL_FINITE(id) ||
+      !SNELL_FINITE(cd)) {
     return SNELL_CAMERA_MAT4_COLUMNS(zero4, zero4, zero4, zero4);
   }
   return SNELL_CAMERA_MAT4_COLUMNS(vec4(ia, 0.0f, 0.0f, 0.0f), vec4(0.0f, ib, 0.0f, 0.0f),

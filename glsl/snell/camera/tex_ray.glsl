@@ -74,13 +74,13 @@ SNELL_FN SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, float zF
   r.ts = vec2(0.0f, 0.0f);
   r.dt = vec2(0.0f, 0.0f);
   r.valid = false;
-  if (!SNELL_CAMERA_FINITE(p1.x) || !SNELL_CAMERA_FINITE(p1.y) || !SNELL_CAMERA_FINITE(p1.z) ||
-      !SNELL_CAMERA_FINITE(t1.x) || !SNELL_CAMERA_FINITE(t1.y) || !SNELL_CAMERA_FINITE(t1.z) ||
-      !SNELL_CAMERA_FINITE(zNearest) || !SNELL_CAMERA_FINITE(zFarthest)) {
+  if (!SNELL_FINITE(p1.x) || !SNELL_FINITE(p1.y) || !SNELL_FINITE(p1.z) ||
+      !SNELL_FINITE(t1.x) || !SNELL_FINITE(t1.y) || !SNELL_FINITE(t1.z) ||
+      !SNELL_FINITE(zNearest) || !SNELL_FINITE(zFarthest)) {
     return r;
   }
-  if (!(abs(t1.z) >= SNELL_CAMERA_FLT_MIN) || !(zNearest <= -SNELL_CAMERA_FLT_MIN) ||
-      !(zFarthest <= -SNELL_CAMERA_FLT_MIN)) {
+  if (!(abs(t1.z) >= SNELL_FLT_MIN) || !(zNearest <= -SNELL_FLT_MIN) ||
+      !(zFarthest <= -SNELL_FLT_MIN)) {
     return r;
   }
   float ls = (zNearest - p1.z) / t1.z;
@@ -89,8 +89,8 @@ SNELL_FN SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, float zF
   vec3 e = vec3(p1.x + le * t1.x, p1.y + le * t1.y, zFarthest);
   SnellNdc ns = snellClipToNdc(snellViewToClip(clipFromView, s));
   SnellNdc ne = snellClipToNdc(snellViewToClip(clipFromView, e));
-  if (!SNELL_CAMERA_FINITE(s.x) || !SNELL_CAMERA_FINITE(s.y) || !SNELL_CAMERA_FINITE(e.x) ||
-      !SNELL_CAMERA_FINITE(e.y) || !ns.valid || !ne.valid) {
+  if (!SNELL_FINITE(s.x) || !SNELL_FINITE(s.y) || !SNELL_FINITE(e.x) ||
+      !SNELL_FINITE(e.y) || !ns.valid || !ne.valid) {
     return r;
   }
   vec2 ts = vec2(ns.ndc.x, ns.ndc.y) * 0.5f + 0.5f;
@@ -98,9 +98,9 @@ SNELL_FN SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, float zF
   vec2 dt = te - ts;
   float k1 = 1.0f / zNearest;
   float k2 = zNearest == zFarthest ? 0.0f : (zNearest * zFarthest) / (zNearest - zFarthest);
-  if (!SNELL_CAMERA_FINITE(ts.x) || !SNELL_CAMERA_FINITE(ts.y) || !SNELL_CAMERA_FINITE(dt.x) ||
-      !SNELL_CAMERA_FINITE(dt.y) || !SNELL_CAMERA_FINITE(k1) || !SNELL_CAMERA_FINITE(k2) ||
-      !SNELL_CAMERA_FINITE(k1 * k2)) {
+  if (!SNELL_FINITE(ts.x) || !SNELL_FINITE(ts.y) || !SNELL_FINITE(dt.x) ||
+      !SNELL_FINITE(dt.y) || !SNELL_FINITE(k1) || !SNELL_FINITE(k2) ||
+      !SNELL_FINITE(k1 * k2)) {
     return r;
   }
   r.s = s;
@@ -114,7 +114,7 @@ SNELL_FN SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, float zF
 }
 
 SNELL_FN float snellTexRayAlpha(SnellTexRay r, float pz) {
-  if (!r.valid || r.k2 == 0.0f || !SNELL_CAMERA_FINITE(pz) || !(pz <= -SNELL_CAMERA_FLT_MIN)) {
+  if (!r.valid || r.k2 == 0.0f || !SNELL_FINITE(pz) || !(pz <= -SNELL_FLT_MIN)) {
     return 0.0f;
   }
   float alpha = ((r.s.z - pz) / pz) * (r.k1 * r.k2);

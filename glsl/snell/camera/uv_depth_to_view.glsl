@@ -39,17 +39,17 @@ SNELL_FN SnellViewPoint snellUvDepthToView(vec2 uv, float depthValue, mat4 viewF
   SnellViewPoint r;
   r.position = vec3(0.0f, 0.0f, 0.0f);
   r.valid = false;
-  if (!SNELL_CAMERA_FINITE(uv.x) || !SNELL_CAMERA_FINITE(uv.y) || isnan(depthValue) || convention < 0 ||
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || isnan(depthValue) || convention < 0 ||
       convention >= SNELL_DEPTH_CONVENTION_COUNT) {
     return r;
   }
   float zNdc = snellDepthToNdcZ(depthValue, convention);
   vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, zNdc, 1.0f));
-  if (!SNELL_CAMERA_FINITE(h.w) || !(abs(h.w) >= SNELL_CAMERA_FLT_MIN)) {
+  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
     return r;
   }
   vec3 p = vec3(h.x, h.y, h.z) / h.w;
-  if (!SNELL_CAMERA_FINITE(p.x) || !SNELL_CAMERA_FINITE(p.y) || !SNELL_CAMERA_FINITE(p.z) || !(p.z < 0.0f)) {
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z) || !(p.z < 0.0f)) {
     return r;
   }
   r.position = p;
@@ -61,21 +61,21 @@ SNELL_FN SnellViewPoint snellUvDistanceToView(vec2 uv, float viewDistance, mat4 
   SnellViewPoint r;
   r.position = vec3(0.0f, 0.0f, 0.0f);
   r.valid = false;
-  if (!SNELL_CAMERA_FINITE(uv.x) || !SNELL_CAMERA_FINITE(uv.y) || !SNELL_CAMERA_FINITE(viewDistance) ||
-      !(viewDistance >= SNELL_CAMERA_FLT_MIN)) {
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewDistance) ||
+      !(viewDistance >= SNELL_FLT_MIN)) {
     return r;
   }
   vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, 0.5f, 1.0f));
-  if (!SNELL_CAMERA_FINITE(h.w) || !(abs(h.w) >= SNELL_CAMERA_FLT_MIN)) {
+  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
     return r;
   }
   vec3 q = vec3(h.x, h.y, h.z) / h.w;
-  if (!SNELL_CAMERA_FINITE(q.x) || !SNELL_CAMERA_FINITE(q.y) || !SNELL_CAMERA_FINITE(q.z) || !(q.z < 0.0f)) {
+  if (!SNELL_FINITE(q.x) || !SNELL_FINITE(q.y) || !SNELL_FINITE(q.z) || !(q.z < 0.0f)) {
     return r;
   }
   float s = viewDistance / -q.z;
   vec3 p = vec3(q.x * s, q.y * s, -viewDistance);
-  if (!SNELL_CAMERA_FINITE(p.x) || !SNELL_CAMERA_FINITE(p.y)) {
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y)) {
     return r;
   }
   r.position = p;

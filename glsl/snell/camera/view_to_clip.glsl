@@ -34,8 +34,8 @@ SNELL_FN SnellNdc snellClipToNdc(vec4 clip) {
   SnellNdc r;
   r.ndc = vec3(0.0f, 0.0f, 0.0f);
   r.valid = false;
-  if (!SNELL_CAMERA_FINITE(clip.x) || !SNELL_CAMERA_FINITE(clip.y) || !SNELL_CAMERA_FINITE(clip.z) ||
-      !SNELL_CAMERA_FINITE(clip.w) || !(clip.w >= SNELL_CAMERA_FLT_MIN)) {
+  if (!SNELL_FINITE(clip.x) || !SNELL_FINITE(clip.y) || !SNELL_FINITE(clip.z) ||
+      !SNELL_FINITE(clip.w) || !(clip.w >= SNELL_FLT_MIN)) {
     return r;
   }
   vec3 q = vec3(clip.x, clip.y, clip.z) / clip.w;

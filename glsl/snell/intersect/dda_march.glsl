@@ -86,34 +86,34 @@ source: M. McGuire, M. Mara, "Efficient GPU Screen-Space Ray Tracing", JCGT
 /* McGuire & Mara 2014: pixel-space march, z from homogeneous interpolation of 1/w */
 SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
                                 float maxDistance, float thickness, float stride, int steps) {
-  if (!SNELL_CAMERA_FINITE(origin.x) || !SNELL_CAMERA_FINITE(origin.y) || !SNELL_CAMERA_FINITE(origin.z) ||
-      !SNELL_CAMERA_FINITE(dir.x) || !SNELL_CAMERA_FINITE(dir.y) || !SNELL_CAMERA_FINITE(dir.z) ||
-      !SNELL_CAMERA_FINITE(maxDistance) || !(maxDistance > 0.0f) || !SNELL_CAMERA_FINITE(surface.zNear)) {
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
+      !SNELL_FINITE(maxDistance) || !(maxDistance > 0.0f) || !SNELL_FINITE(surface.zNear)) {
     return snellHitMiss(0);
   }
   float thick = isnan(thickness) ? SNELL_DDA_THICKNESS : clamp(thickness, 0.0f, SNELL_FLT_MAX);
   float px = isnan(stride) ? 1.0f : clamp(stride, 1.0f, SNELL_FLT_MAX);
   float len = length(dir);
-  if (!SNELL_CAMERA_FINITE(len) || !(len >= SNELL_CAMERA_FLT_MIN) || !(origin.z <= -surface.zNear)) {
+  if (!SNELL_FINITE(len) || !(len >= SNELL_FLT_MIN) || !(origin.z <= -surface.zNear)) {
     return snellHitMiss(0);
   }
   float tMax = min(maxDistance, 1e30f) / len;
   if (dir.z > 0.0f) {
     float tNear = (-surface.zNear - origin.z) / dir.z;
-    tMax = SNELL_CAMERA_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
   }
-  if (!SNELL_CAMERA_FINITE(tMax) || !(tMax > 0.0f)) {
+  if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
     return snellHitMiss(0);
   }
   vec3 end = origin + tMax * dir;
   vec4 h0 = snellViewToClip(surface.clipFromView, origin);
   vec4 h1 = snellViewToClip(surface.clipFromView, end);
   ivec2 size = SNELL_TEXTURE_SIZE(depthTex, surface.lod);
-  if (!SNELL_CAMERA_FINITE(end.x) || !SNELL_CAMERA_FINITE(end.y) || !SNELL_CAMERA_FINITE(end.z) ||
-      !SNELL_CAMERA_FINITE(h0.x) || !SNELL_CAMERA_FINITE(h0.y) || !SNELL_CAMERA_FINITE(h0.w) ||
-      !SNELL_CAMERA_FINITE(h1.x) || !SNELL_CAMERA_FINITE(h1.y) || !SNELL_CAMERA_FINITE(h1.w) ||
-      !(h0.w >= SNELL_CAMERA_FLT_MIN) || !(h1.w >= SNELL_CAMERA_FLT_MIN) ||
-      !(h0.w <= 1.0f / SNELL_CAMERA_FLT_MIN) || !(h1.w <= 1.0f / SNELL_CAMERA_FLT_MIN) || size.x <= 0 || size.y <= 0) {
+  if (!SNELL_FINITE(end.x) || !SNELL_FINITE(end.y) || !SNELL_FINITE(end.z) ||
+      !SNELL_FINITE(h0.x) || !SNELL_FINITE(h0.y) || !SNELL_FINITE(h0.w) ||
+      !SNELL_FINITE(h1.x) || !SNELL_FINITE(h1.y) || !SNELL_FINITE(h1.w) ||
+      !(h0.w >= SNELL_FLT_MIN) || !(h1.w >= SNELL_FLT_MIN) ||
+      !(h0.w <= 1.0f / SNELL_FLT_MIN) || !(h1.w <= 1.0f / SNELL_FLT_MIN) || size.x <= 0 || size.y <= 0) {
     return snellHitMiss(0);
   }
   // Homogeneous end points: k = 1/w and Q = p k are linear in screen space.
@@ -127,9 +127,9 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
   vec2 uv0 = vec2(h0.x * k0, h0.y * k0) * 0.5f + 0.5f;
   vec2 duv = vec2(h1.x * k1, h1.y * k1) * 0.5f + 0.5f - uv0;
   float major = max(abs(duv.x * float(size.x)), abs(duv.y * float(size.y)));
-  if (!SNELL_CAMERA_FINITE(major) || !SNELL_CAMERA_FINITE(q0.x) || !SNELL_CAMERA_FINITE(q0.y) ||
-      !SNELL_CAMERA_FINITE(q0.z) || !SNELL_CAMERA_FINITE(q1.x) || !SNELL_CAMERA_FINITE(q1.y) ||
-      !SNELL_CAMERA_FINITE(q1.z)) {
+  if (!SNELL_FINITE(major) || !SNELL_FINITE(q0.x) || !SNELL_FINITE(q0.y) ||
+      !SNELL_FINITE(q0.z) || !SNELL_FINITE(q1.x) || !SNELL_FINITE(q1.y) ||
+      !SNELL_FINITE(q1.z)) {
     return snellHitMiss(0);
   }
   float ds = major > px ? px / major : 1.0f;

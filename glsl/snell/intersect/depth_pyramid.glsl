@@ -56,7 +56,7 @@ source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
 
 SNELL_FN vec4 snellDepthPyramidBase(float depthValue, SnellDepthSurface s) {
   vec4 empty = vec4(s.emptyDepth, 0.0f, 0.0f, 0.0f);
-  if (!SNELL_CAMERA_FINITE(depthValue) || depthValue == s.emptyDepth) {
+  if (!SNELL_FINITE(depthValue) || depthValue == s.emptyDepth) {
     return empty;
   }
   float v = snellLinearizeDepth(depthValue, s.zNear, s.zFar, s.convention);

@@ -69,21 +69,21 @@ source: the classic screen-space ray march (e.g. Sousa, "Crysis 2", 2011;
 /* screen-space ray march: equal view-space steps, then bisection */
 SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
                                    float maxDistance, int steps, int refineSteps) {
-  if (!SNELL_CAMERA_FINITE(origin.x) || !SNELL_CAMERA_FINITE(origin.y) || !SNELL_CAMERA_FINITE(origin.z) ||
-      !SNELL_CAMERA_FINITE(dir.x) || !SNELL_CAMERA_FINITE(dir.y) || !SNELL_CAMERA_FINITE(dir.z) ||
-      !SNELL_CAMERA_FINITE(maxDistance) || !(maxDistance > 0.0f)) {
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
+      !SNELL_FINITE(maxDistance) || !(maxDistance > 0.0f)) {
     return snellHitMiss(0);
   }
   float len = length(dir);
-  if (!SNELL_CAMERA_FINITE(len) || !(len >= SNELL_CAMERA_FLT_MIN)) {
+  if (!SNELL_FINITE(len) || !(len >= SNELL_FLT_MIN)) {
     return snellHitMiss(0);
   }
   float tMax = maxDistance / len;
   if (dir.z > 0.0f) {
     float tNear = (-surface.zNear - origin.z) / dir.z;
-    tMax = SNELL_CAMERA_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
   }
-  if (!SNELL_CAMERA_FINITE(tMax) || !(tMax > 0.0f)) {
+  if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
     return snellHitMiss(0);
   }
   int n = clamp(steps, 1, SNELL_LINEAR_MARCH_MAX_STEPS);

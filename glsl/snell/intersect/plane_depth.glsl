@@ -111,7 +111,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   float span = max(abs(uv2.x - sq.uv.x) * float(size0.x), abs(uv2.y - sq.uv.y) * float(size0.y));
   int top = min(maxLod, s.lod + SNELL_PLANE_DEPTH_MAX_SPAN_LOD);
   int level = s.lod;
-  if (span > 1.0f && SNELL_CAMERA_FINITE(span)) {
+  if (span > 1.0f && SNELL_FINITE(span)) {
     level = s.lod + int(ceil(log2(span)));
   }
   level = max(s.lod, min(level, top));
@@ -167,8 +167,8 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
 SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D depthMips, SnellDepthSurface s,
                                            int maxLod, int iterations) {
   float len2 = dot(dir, dir);
-  if (!SNELL_CAMERA_FINITE(origin.x) || !SNELL_CAMERA_FINITE(origin.y) || !SNELL_CAMERA_FINITE(origin.z) ||
-      !SNELL_CAMERA_FINITE(len2) || !(len2 >= 1e-30f)) {
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
     return snellHitMiss(0);
   }
   SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);

@@ -2,9 +2,9 @@
 description: what the two plane strategies (plane_normal.glsl, plane_depth.glsl)
   share: the iteration options of Mayer & Assarsson's step 5 ("iteratively
   refine the approximation, using P_e as the location to sample screen buffers
-  and generate a new plane") and the final step 4 lookup that turns a point on
-  the ray into a SnellHit.
-use: SnellHit h = snellHitOnSurface(p, depthTex, surface, fetchesSoFar);
+  and generate a new plane") and the final step 4 lookup that turns a plane
+  hit into a SnellHit (snellPlaneHit, on intersect/hit_on_surface.glsl).
+use: SnellHit h = snellPlaneHit(p, planeUv, depthTex, surface, fetchesSoFar);
 options:
   SNELL_PLANE_ITERATIONS      refinement iterations callers pass by default (1);
                               0 is the constant-time method (one plane)
@@ -16,15 +16,7 @@ options:
                               the camera (normal = B_k, the line of sight);
                               0: plane k is a miss (k = 0) or ends the
                               refinement, as in the poster
-contract (snellHitOnSurface):
-  - projects the view-space point p; the hit is (uv = its projection, position
-    = p) and valid exactly when p is finite, in front of the camera, projects
-    into [0,1]^2 and the depth texture has a surface at that uv
-    (snellSampleSurface valid, level s.lod): the approximation landed on the
-    surface, not in an empty texel or off screen.
-  - fetches = fetchesSoFar + 1 when p projects (the step 4 lookup; an off-screen
-    uv is counted though snellSampleSurface answers it without reading), else
-    fetchesSoFar. A miss is snellHitMiss with that count.
+contract (snellPlaneHit): the comment above the function.
 source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
   steps 4 and 5.
 */
@@ -35,6 +27,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 #include "../camera/view_to_uv.glsl"
 #include "hit.glsl"
 #include "depth_surface.glsl"
+#include "hit_on_surface.glsl"
 
 #ifndef SNELL_PLANE_ITERATIONS
 #  define SNELL_PLANE_ITERATIONS 1
@@ -60,23 +53,6 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 #  define SNELL_PLANE_HOLD 1
 #endif
 
-SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
-  if (!sp.valid) {
-    return snellHitMiss(fetchesSoFar);
-  }
-  SnellSurfaceSample x = snellSampleSurface(depthTex, sp.uv, s);
-  if (!x.valid) {
-    return snellHitMiss(fetchesSoFar + 1);
-  }
-  SnellHit h;
-  h.uv = sp.uv;
-  h.position = p;
-  h.valid = true;
-  h.fetches = fetchesSoFar + 1;
-  return h;
-}
-
 /* The last step of both plane methods (Mayer & Assarsson steps 4-5): the plane
    hit p is accepted where the buffer has a surface at its projection. Where it has
    none (the tangent plane of a convex object's back face lies outside the object,
@@ -92,7 +68,7 @@ SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, Snel
   }
   SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
   if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f) ||
-      !SNELL_CAMERA_FINITE(planeUv.x) || !SNELL_CAMERA_FINITE(planeUv.y)) {
+      !SNELL_FINITE(planeUv.x) || !SNELL_FINITE(planeUv.y)) {
     return h;
   }
   h.uv = planeUv;

@@ -44,11 +44,11 @@ SNELL_FN SnellTexRay snellSearchSegment(vec3 origin, vec3 dir, float zNearest, f
   bad.ts = vec2(0.0f, 0.0f);
   bad.dt = vec2(0.0f, 0.0f);
   bad.valid = false;
-  if (!SNELL_CAMERA_FINITE(origin.z) || !SNELL_CAMERA_FINITE(dir.z) || !SNELL_CAMERA_FINITE(zNearest) ||
-      !SNELL_CAMERA_FINITE(zFarthest)) {
+  if (!SNELL_FINITE(origin.z) || !SNELL_FINITE(dir.z) || !SNELL_FINITE(zNearest) ||
+      !SNELL_FINITE(zFarthest)) {
     return bad;
   }
-  if (!(dir.z <= -SNELL_CAMERA_FLT_MIN) || !(zNearest > zFarthest) || !(origin.z > zFarthest)) {
+  if (!(dir.z <= -SNELL_FLT_MIN) || !(zNearest > zFarthest) || !(origin.z > zFarthest)) {
     return bad;
   }
   float zStart = origin.z < zNearest ? origin.z : zNearest;

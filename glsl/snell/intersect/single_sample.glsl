@@ -41,8 +41,8 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation"
 
 SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface s) {
   float len2 = dot(dir, dir);
-  if (!SNELL_CAMERA_FINITE(origin.x) || !SNELL_CAMERA_FINITE(origin.y) || !SNELL_CAMERA_FINITE(origin.z) ||
-      !SNELL_CAMERA_FINITE(len2) || !(len2 >= 1e-30f)) {
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
     return snellHitMiss(0);
   }
   SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);

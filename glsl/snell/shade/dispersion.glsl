@@ -63,7 +63,7 @@ struct SnellDispersion {
 };
 
 SNELL_FN vec3 snellDispersionIors(float iorD, float abbe) {
-  if (isnan(iorD) || !(iorD >= SNELL_CAMERA_FLT_MIN) || isinf(iorD)) {
+  if (isnan(iorD) || !(iorD >= SNELL_FLT_MIN) || isinf(iorD)) {
     return vec3(1.0f, 1.0f, 1.0f);
   }
   if (isnan(abbe) || !(abbe > 0.0f) || isinf(abbe)) {

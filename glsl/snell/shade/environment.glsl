@@ -106,7 +106,7 @@ SNELL_FN float snellAtan2(float y, float x) {
 }
 
 SNELL_FN vec2 snellEquirectUv(vec3 dir) {
-  if (!SNELL_CAMERA_FINITE(dir.x) || !SNELL_CAMERA_FINITE(dir.y) || !SNELL_CAMERA_FINITE(dir.z)) {
+  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
     return vec2(0.5f, 0.5f);
   }
   float horizontal = sqrt(dir.x * dir.x + dir.z * dir.z);

@@ -38,7 +38,7 @@ SNELL_FN SnellCubeFace snellCubeFaceUv(vec3 dir) {
   r.face = 0;
   r.uv = vec2(0.5f, 0.5f);
   r.valid = false;
-  if (!SNELL_CAMERA_FINITE(dir.x) || !SNELL_CAMERA_FINITE(dir.y) || !SNELL_CAMERA_FINITE(dir.z)) {
+  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
     return r;
   }
   float ax = abs(dir.x);
@@ -63,7 +63,7 @@ SNELL_FN SnellCubeFace snellCubeFaceUv(vec3 dir) {
     sc = dir.z >= 0.0f ? dir.x : -dir.x;
     tc = -dir.y;
   }
-  if (!(ma >= SNELL_CAMERA_FLT_MIN)) {
+  if (!(ma >= SNELL_FLT_MIN)) {
     r.face = 0;
     return r;
   }

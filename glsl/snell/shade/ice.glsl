@@ -73,7 +73,7 @@ SNELL_FN SnellIce snellIce(vec3 eye, vec3 frontNormal, vec3 backNormal, float a,
     return s;
   }
   s.valid = true;
-  float k = (!isnan(eta) && eta >= SNELL_CAMERA_FLT_MIN && eta < SNELL_FLT_MAX) ? eta : 1.0f;
+  float k = (!isnan(eta) && eta >= SNELL_FLT_MIN && eta < SNELL_FLT_MAX) ? eta : 1.0f;
   vec3 nr = snellIceNormalBlend(nf, backNormal, a);
   SnellRefraction r = snellRefract(e, nr, k, SNELL_ICE_TIR_POLICY);
   s.refracted = r.direction;

@@ -43,12 +43,12 @@ SNELL_FN vec3 snellUnpackBump(vec3 texel) {
 }
 
 SNELL_FN vec2 snellPerturbUv(vec2 uv, vec2 bump, float scale) {
-  float u = SNELL_CAMERA_FINITE(uv.x) ? uv.x : 0.5f;
-  float v = SNELL_CAMERA_FINITE(uv.y) ? uv.y : 0.5f;
+  float u = SNELL_FINITE(uv.x) ? uv.x : 0.5f;
+  float v = SNELL_FINITE(uv.y) ? uv.y : 0.5f;
   float du = scale * bump.x;
   float dv = scale * bump.y;
-  du = SNELL_CAMERA_FINITE(du) ? du : 0.0f;
-  dv = SNELL_CAMERA_FINITE(dv) ? dv : 0.0f;
+  du = SNELL_FINITE(du) ? du : 0.0f;
+  dv = SNELL_FINITE(dv) ? dv : 0.0f;
   return clamp(vec2(u + du, v + dv), vec2(-SNELL_FLT_MAX, -SNELL_FLT_MAX), vec2(SNELL_FLT_MAX, SNELL_FLT_MAX));
 }
 

@@ -32,11 +32,11 @@ source: common screen-space reflection practice (edge attenuation of
 #endif
 
 SNELL_FN float snellScreenEdgeFade(vec2 uv, float width) {
-  if (!SNELL_CAMERA_FINITE(uv.x) || !SNELL_CAMERA_FINITE(uv.y)) {
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y)) {
     return 0.0f;
   }
   float e = min(min(uv.x, 1.0f - uv.x), min(uv.y, 1.0f - uv.y));
-  if (isnan(width) || !(width >= SNELL_CAMERA_FLT_MIN)) {
+  if (isnan(width) || !(width >= SNELL_FLT_MIN)) {
     return e >= 0.0f ? 1.0f : 0.0f;
   }
   float w = min(width, 0.5f);

@@ -105,8 +105,8 @@ SNELL_FN SnellRefractiveTextureMapParams snellRefractiveTextureMapParams(vec2 ex
    normal float. */
 SNELL_FN float snellRefractiveTextureMapAxis(float x, float lo, float hi) {
   float len = hi - lo;
-  if (!SNELL_CAMERA_FINITE(x) || !SNELL_CAMERA_FINITE(lo) || !SNELL_CAMERA_FINITE(hi) || !SNELL_CAMERA_FINITE(len) ||
-      !(abs(len) >= SNELL_CAMERA_FLT_MIN)) {
+  if (!SNELL_FINITE(x) || !SNELL_FINITE(lo) || !SNELL_FINITE(hi) || !SNELL_FINITE(len) ||
+      !(abs(len) >= SNELL_FLT_MIN)) {
     return 0.5f;
   }
   // (x - lo) may overflow to +-inf, never NaN; clamp keeps it finite.
@@ -125,11 +125,11 @@ SNELL_FN SnellRefractiveTextureMapHit snellRefractiveTextureMap(vec3 vertex, vec
   if (h.valid) {
     h.position = hit.position;
   } else {
-    h.position = vec3(SNELL_CAMERA_FINITE(vertex.x) ? vertex.x : 0.0f, SNELL_CAMERA_FINITE(planeY) ? planeY : 0.0f,
-                      SNELL_CAMERA_FINITE(vertex.z) ? vertex.z : 0.0f);
+    h.position = vec3(SNELL_FINITE(vertex.x) ? vertex.x : 0.0f, SNELL_FINITE(planeY) ? planeY : 0.0f,
+                      SNELL_FINITE(vertex.z) ? vertex.z : 0.0f);
   }
-  float px = h.valid || SNELL_CAMERA_FINITE(vertex.x) ? h.position.x : vertex.x;
-  float pz = h.valid || SNELL_CAMERA_FINITE(vertex.z) ? h.position.z : vertex.z;
+  float px = h.valid || SNELL_FINITE(vertex.x) ? h.position.x : vertex.x;
+  float pz = h.valid || SNELL_FINITE(vertex.z) ? h.position.z : vertex.z;
   vec2 e = vec2(snellRefractiveTextureMapAxis(px, p.extentMin.x, p.extentMax.x),
                 snellRefractiveTextureMapAxis(pz, p.extentMin.y, p.extentMax.y));
   h.inRange = h.valid && e.x >= 0.0f && e.x <= 1.0f && e.y >= 0.0f && e.y <= 1.0f;

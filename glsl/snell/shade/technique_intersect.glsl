@@ -55,7 +55,7 @@ source: DESIGN.md sec. 2 ("every intersector is interchangeable in both
 #include "../intersect/linear_march.glsl"
 #include "../intersect/dda_march.glsl"
 #include "technique_options.glsl"
-#include "technique_range.glsl"
+#include "../intersect/depth_range.glsl"
 
 #ifndef SNELL_TECHNIQUE_STRATEGIES
 #  define SNELL_TECHNIQUE_STRATEGIES 0x1FF

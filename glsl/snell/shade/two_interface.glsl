@@ -68,7 +68,7 @@ source: C. Wyman, "An Approximate Image-Space Approach for Interactive
 #include "../optics/wyman_distance.glsl"
 #include "../intersect/hit.glsl"
 #include "../intersect/depth_surface.glsl"
-#include "../intersect/plane_refine.glsl"
+#include "../intersect/hit_on_surface.glsl"
 #include "technique_options.glsl"
 #include "technique_intersect.glsl"
 
@@ -108,8 +108,8 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.fellBack = true;
   p.valid = false;
   SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy);
-  if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_CAMERA_FINITE(frontPosition.x) ||
-      !SNELL_CAMERA_FINITE(frontPosition.y) || !SNELL_CAMERA_FINITE(frontPosition.z)) {
+  if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_FINITE(frontPosition.x) ||
+      !SNELL_FINITE(frontPosition.y) || !SNELL_FINITE(frontPosition.z)) {
     return p;
   }
   vec3 t1 = r1.direction;
@@ -135,7 +135,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.fetches = h.fetches;
   // length() squares first: it overflows beyond ~1.8e19 (Wyman's estimate with a huge dN).
   float pathLength = length(h.position - frontPosition);
-  if (!h.valid || !SNELL_CAMERA_FINITE(pathLength)) {
+  if (!h.valid || !SNELL_FINITE(pathLength)) {
     return p;
   }
   p.hit = true;

@@ -116,8 +116,8 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
   e.fellBack = true;
   e.fetches = 0;
   vec3 d = snellSafeNormalize(dir);
-  if (dot(d, d) == 0.0f || !SNELL_CAMERA_FINITE(origin.x) || !SNELL_CAMERA_FINITE(origin.y) ||
-      !SNELL_CAMERA_FINITE(origin.z)) {
+  if (dot(d, d) == 0.0f || !SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) ||
+      !SNELL_FINITE(origin.z)) {
     return e;
   }
   float envLod = snellRoughnessToLod(o.roughness, o.environmentLevels);

@@ -109,7 +109,7 @@ SNELL_FN vec4 snellWater(SNELL_TEX2D sceneColor, SNELL_TEX2D reflectionMap, vec2
   float facing = 1.0f - nDotL;
   float fresnel = snellFresnelBiasPower(nDotL, p.fresnelBias, p.fresnelPower);
   float distScale = 1.0f;
-  if (!isnan(viewDistance) && viewDistance >= SNELL_CAMERA_FLT_MIN) {
+  if (!isnan(viewDistance) && viewDistance >= SNELL_FLT_MIN) {
     float q = p.deepDistance / viewDistance;
     distScale = isnan(q) ? 1.0f : clamp(q, 0.0f, 1.0f);
   }

@@ -36,8 +36,8 @@ source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
   Objects", I3D 2007, sec. 3 (2nd pass: min/max reduction) and sec. 6
   ("using the limits of the object's bounding box as Zmin and Zmax").
 */
-#ifndef SNELL_SHADE_TECHNIQUE_RANGE_GLSL
-#define SNELL_SHADE_TECHNIQUE_RANGE_GLSL
+#ifndef SNELL_INTERSECT_DEPTH_RANGE_GLSL
+#define SNELL_INTERSECT_DEPTH_RANGE_GLSL
 #include "../prelude.glsl"
 #include "../camera/conventions.glsl"
 
@@ -77,7 +77,7 @@ SNELL_FN int snellTextureTopLod(SNELL_TEX2D tex) {
 SNELL_FN SnellDepthRange snellDepthRangeFromPyramid(SNELL_TEX2D pyramidTex) {
   int top = snellTextureTopLod(pyramidTex);
   vec4 t = SNELL_TEXEL_FETCH(pyramidTex, ivec2(0, 0), top);
-  if (!(t.w > 0.0f) || !(t.y > 0.0f) || !(t.z >= t.y) || !SNELL_CAMERA_FINITE(t.z)) {
+  if (!(t.w > 0.0f) || !(t.y > 0.0f) || !(t.z >= t.y) || !SNELL_FINITE(t.z)) {
     return snellDepthRangeInvalid();
   }
   SnellDepthRange r;
@@ -96,7 +96,7 @@ SNELL_FN SnellDepthRange snellDepthRangeFromBox(mat4 viewFromObject, vec3 boxMin
     float y = (i == 2 || i == 3 || i == 6 || i == 7) ? boxMax.y : boxMin.y;
     float z = i >= 4 ? boxMax.z : boxMin.z;
     vec4 p = SNELL_MUL(viewFromObject, vec4(x, y, z, 1.0f));
-    if (!SNELL_CAMERA_FINITE(p.z)) {
+    if (!SNELL_FINITE(p.z)) {
       return snellDepthRangeInvalid();
     }
     zNearest = max(zNearest, p.z);
@@ -106,7 +106,7 @@ SNELL_FN SnellDepthRange snellDepthRangeFromBox(mat4 viewFromObject, vec3 boxMin
     return snellDepthRangeInvalid();
   }
   SnellDepthRange r;
-  r.zNearest = min(zNearest, -SNELL_CAMERA_FLT_MIN);
+  r.zNearest = min(zNearest, -SNELL_FLT_MIN);
   r.zFarthest = zFarthest;
   if (!(r.zFarthest < r.zNearest)) {
     r.zNearest = r.zNearest * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
