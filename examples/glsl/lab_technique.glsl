@@ -6,7 +6,8 @@ description: the lab's per-pixel technique call (snell-lab, examples/lab): one
   shade/technique_presets.glsl by number, points the exit slot at the opaque
   scene's buffers (the paintings; the environment where the exit ray finds
   none) and runs snellTwoInterfaceRefraction.
-use: LabParams p = labParams(clipFromView, zNear, zFar, ior, absorption, envX, envY, envZ, backRange);
+use: LabParams p = labParams(clipFromView, zNear, zFar, ior, absorption, envX, envY, envZ, backRange, exitRange,
+                             SNELL_DEPTH_FILTER_BILINEAR);
      SnellTwoInterfaceResult r = labShade(SNELL_TECHNIQUE_PLANE_NORMAL_1, frontPosition, frontNormal,
          dN, backDepth, backNormal, backPyramid, sceneDepth, sceneNormal, scenePyramid,
          sceneColor, environment, p);
@@ -22,8 +23,12 @@ use: LabParams p = labParams(clipFromView, zNear, zFar, ior, absorption, envX, e
 contract: every technique uses SNELL_EXIT_SCENE with SNELL_FALLBACK_ENVIRONMENT,
   the critical-angle TIR policy, Fresnel reflection of the environment at the
   first interface and Beer-Lambert absorption along the found chord. The
-  marches (linear, DDA) in the back slot walk at most p.backRange (the
-  object's bounding-box diagonal); every other parameter is the preset's.
+  marches (linear, DDA, the image-space bound) in the back slot walk at most
+  p.backRange (the object's bounding-box diagonal), the bound's exit slot
+  p.exitRange (the diagonal of the box around the object and the opaque
+  scene); p.depthFilter BILINEAR reads both depth buffers bilinearly in every
+  slot of every technique (the bound always does); every other parameter is
+  the preset's.
 source: the composition of DESIGN.md sec. 2; the presets' own sources.
 */
 #ifndef LAB_TECHNIQUE_GLSL
@@ -45,10 +50,12 @@ struct LabParams {
   vec3 envY;
   vec3 envZ;
   float backRange;
+  float exitRange;
+  int depthFilter;
 };
 
 SNELL_FN LabParams labParams(mat4 clipFromView, float zNear, float zFar, float ior, vec3 absorption, vec3 envX,
-                             vec3 envY, vec3 envZ, float backRange) {
+                             vec3 envY, vec3 envZ, float backRange, float exitRange, int depthFilter) {
   LabParams p;
   p.clipFromView = clipFromView;
   p.zNear = zNear;
@@ -59,6 +66,8 @@ SNELL_FN LabParams labParams(mat4 clipFromView, float zNear, float zFar, float i
   p.envY = envY;
   p.envZ = envZ;
   p.backRange = backRange;
+  p.exitRange = exitRange;
+  p.depthFilter = depthFilter;
   return p;
 }
 
@@ -66,6 +75,13 @@ SNELL_FN SnellTechniqueOptions labTechniqueOptions(int technique, LabParams p) {
   SnellTechniqueOptions o = snellTechniquePreset(technique);
   if (o.back.strategy == SNELL_STRATEGY_LINEAR_MARCH || o.back.strategy == SNELL_STRATEGY_DDA) {
     o.back.maxDistance = p.backRange;
+  }
+  if (technique == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND) {
+    o.exit.maxDistance = p.exitRange;
+  }
+  if (p.depthFilter == SNELL_DEPTH_FILTER_BILINEAR) {
+    o.back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+    o.exit.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
   }
   o.exitMode = SNELL_EXIT_SCENE;
   o.fallback = SNELL_FALLBACK_ENVIRONMENT;

@@ -12,25 +12,43 @@
 
 namespace snell {
 
+// How a technique's cost grows (Mayer & Assarsson's distinction): a fixed handful of lookups per
+// pixel whatever the ray's length and the resolution; a search or march whose precision (or step
+// count) is tied to the ray's length in pixels; or the image-space bound, a reference for the others.
+enum class SnellTechniqueKind { ConstantTime, Search, Reference };
+
 struct SnellTechniqueInfo {
-  int id;              // SNELL_TECHNIQUE_*
-  const char* name;    // command-line and file name (snell-lab --technique, table.json "technique")
-  const char* label;   // table and picture label
-  const char* method;  // the published method, one line (the parameters come from the preset)
+  int id;                   // SNELL_TECHNIQUE_*
+  const char* name;         // command-line and file name (snell-lab --technique, table.json "technique")
+  const char* label;        // table and picture label
+  const char* method;       // the published method, one line (the parameters come from the preset)
+  SnellTechniqueKind kind;
 };
 
 // Every technique, in id order (single sample first: the lab's cost unit).
 inline const std::array<SnellTechniqueInfo, SNELL_TECHNIQUE_COUNT>& snellTechniqueTable() {
   static const std::array<SnellTechniqueInfo, SNELL_TECHNIQUE_COUNT> table = {{
-      {SNELL_TECHNIQUE_SINGLE, "single", "single sample", "one depth sample behind the ray origin (GPU Gems baseline)"},
-      {SNELL_TECHNIQUE_PLANE_NORMAL_0, "plane-normal-0", "normal plane, 0 it.", "Mayer & Assarsson normal-based plane"},
-      {SNELL_TECHNIQUE_PLANE_NORMAL_1, "plane-normal-1", "normal plane, 1 it.", "Mayer & Assarsson normal-based plane"},
-      {SNELL_TECHNIQUE_PLANE_NORMAL_2, "plane-normal-2", "normal plane, 2 it.", "Mayer & Assarsson normal-based plane"},
-      {SNELL_TECHNIQUE_PLANE_DEPTH, "plane-depth", "depth plane, 1 it.", "Mayer & Assarsson depth-based plane"},
-      {SNELL_TECHNIQUE_DIR, "dir", "DIR (CBS 5)", "Oliveira & Brauwers 2007, conservative binary search"},
-      {SNELL_TECHNIQUE_ISR, "isr", "ISR (Wyman)", "Wyman 2005, distance interpolation"},
-      {SNELL_TECHNIQUE_LINEAR_MARCH, "linear-march", "linear march", "screen-space ray march"},
-      {SNELL_TECHNIQUE_DDA, "dda", "DDA march", "perspective-correct pixel DDA march (McGuire & Mara)"},
+      {SNELL_TECHNIQUE_SINGLE, "single", "single sample", "one depth sample behind the ray origin (GPU Gems baseline)",
+       SnellTechniqueKind::ConstantTime},
+      {SNELL_TECHNIQUE_PLANE_NORMAL_0, "plane-normal-0", "normal plane, 0 it.", "Mayer & Assarsson normal-based plane",
+       SnellTechniqueKind::ConstantTime},
+      {SNELL_TECHNIQUE_PLANE_NORMAL_1, "plane-normal-1", "normal plane, 1 it.", "Mayer & Assarsson normal-based plane",
+       SnellTechniqueKind::ConstantTime},
+      {SNELL_TECHNIQUE_PLANE_NORMAL_2, "plane-normal-2", "normal plane, 2 it.", "Mayer & Assarsson normal-based plane",
+       SnellTechniqueKind::ConstantTime},
+      {SNELL_TECHNIQUE_PLANE_DEPTH, "plane-depth", "depth plane, 1 it.", "Mayer & Assarsson depth-based plane",
+       SnellTechniqueKind::ConstantTime},
+      {SNELL_TECHNIQUE_DIR, "dir", "DIR (CBS 5)", "Oliveira & Brauwers 2007, conservative binary search",
+       SnellTechniqueKind::Search},
+      {SNELL_TECHNIQUE_ISR, "isr", "ISR (Wyman)", "Wyman 2005, distance interpolation",
+       SnellTechniqueKind::ConstantTime},
+      {SNELL_TECHNIQUE_LINEAR_MARCH, "linear-march", "linear march", "screen-space ray march",
+       SnellTechniqueKind::Search},
+      {SNELL_TECHNIQUE_DDA, "dda", "DDA march", "perspective-correct pixel DDA march (McGuire & Mara)",
+       SnellTechniqueKind::Search},
+      {SNELL_TECHNIQUE_IMAGE_SPACE_BOUND, "image-space-bound", "image-space bound",
+       "the best any image-space method can do with these buffers (a reference, not a real-time method)",
+       SnellTechniqueKind::Reference},
   }};
   return table;
 }

@@ -159,7 +159,9 @@ std::vector<ParityIO> uvInputs(std::uint32_t seed, bool withLod) {
     const int levels = (which ? planePyramidB : planePyramidA).levelCount();
     ParityIO in{};
     in.v[0] = glm::vec4(uv, 0.0f, float(which));
-    in.v[1] = glm::vec4(0.0f, 0.0f, 0.0f, withLod && g.chance(0.5f) ? float(g.integer(1, levels - 1)) : 0.0f);
+    // z: the depth filter for the snellSampleSurface case (every other input bilinear; no draw from g,
+    // so the other cases' inputs are unchanged).
+    in.v[1] = glm::vec4(0.0f, 0.0f, float(i % 2), withLod && g.chance(0.5f) ? float(g.integer(1, levels - 1)) : 0.0f);
     in.v[2] = matrixEntries(which ? sceneB() : sceneA());
     v.push_back(in);
   }

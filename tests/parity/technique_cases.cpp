@@ -248,6 +248,7 @@ TECH_CASE(snellPresetPlaneDepth, SnellPresetPlaneDepth, [] { return smallIntInpu
 TECH_CASE(snellPresetSingleSample, SnellPresetSingleSample, [] { return smallIntInputs(817, 0, 1); }, 0xFFFF, 16, kExact);
 TECH_CASE(snellPresetLinearMarch, SnellPresetLinearMarch, [] { return smallIntInputs(818, 0, 1); }, 0xFFFF, 16, kExact);
 TECH_CASE(snellPresetDdaMarch, SnellPresetDdaMarch, [] { return smallIntInputs(819, 0, 1); }, 0xFFFF, 16, kExact);
+TECH_CASE(snellPresetImageSpaceBound, SnellPresetImageSpaceBound, [] { return smallIntInputs(825, 0, 1); }, 0xFFFF, 16, kExact);
 // Every id of the technique table and a few outside it.
 TECH_CASE(snellTechniquePreset, SnellTechniquePreset, [] { return smallIntInputs(824, -2, SNELL_TECHNIQUE_COUNT + 2); }, 0xFFFF, 16, kExact);
 // Searches and marches through the sphere's back faces and the painting plane.

@@ -41,6 +41,49 @@ TEST(IntersectSingle, SurfacePointIsTheAnalyticPointAtTheTexelCentre) {
   }
 }
 
+// SNELL_DEPTH_FILTER_BILINEAR: on a slanted plane the interpolated window depth is the plane's depth at
+// any uv (window depth is affine in screen space over a plane), in every depth convention; nearest reads
+// are off by up to half a texel's depth step. Next to an empty texel it is the nearest texel's value.
+TEST(IntersectSingle, BilinearDepthIsExactOnAPlaneAndNeverBlendsEmptyTexels) {
+  for (int conv = 0; conv < SNELL_DEPTH_CONVENTION_COUNT; ++conv) {
+    const DepthScene sc = snell_test::slantedPlane(64, 48, conv);
+    SnellDepthSurface linear = sc.surface();
+    linear.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(1.0 / 64.0, 1.0 - 1.0 / 48.0);  // keep all four texels inside
+    double worstLinear = 0.0, worstNearest = 0.0;
+    for (int i = 0; i < 2000; ++i) {
+      const glm::dvec2 uv(u(rng), u(rng));
+      const snell_test::AnalyticSample a = sc.sampleAt(uv);
+      if (!a.valid) continue;
+      const double truth = (sc.pixelRay(uv) * a.s).z;
+      const SnellSurfaceSample l = snellSampleSurface(sc.depth, glm::vec2(uv), linear);
+      const SnellSurfaceSample n = snellSampleSurface(sc.depth, glm::vec2(uv), sc.surface());
+      ASSERT_TRUE(l.valid && n.valid) << conv;
+      worstLinear = std::max(worstLinear, std::abs(double(l.viewZ) - truth) / -truth);
+      worstNearest = std::max(worstNearest, std::abs(double(n.viewZ) - truth) / -truth);
+    }
+    EXPECT_LT(worstLinear, 2e-4) << conv;  // float window depth, linearized
+    EXPECT_GT(worstNearest, 10.0 * worstLinear) << conv;
+  }
+  // A surface texel next to empty ones (the silhouette scene's rim): the texel's own depth.
+  const DepthScene rim = snell_test::silhouette(64, 64);
+  SnellDepthSurface linear = rim.surface();
+  linear.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  int rimTexels = 0;
+  for (int y = 1; y < 63; ++y)
+    for (int x = 1; x < 63; ++x) {
+      const bool here = rim.depth.fetch(glm::ivec2(x, y), 0).x != rim.emptyDepth;
+      const bool emptyRight = rim.depth.fetch(glm::ivec2(x + 1, y), 0).x == rim.emptyDepth;
+      if (!here || !emptyRight) continue;
+      ++rimTexels;
+      // Towards the empty neighbour (three quarters of the way to this texel's right edge).
+      const glm::vec2 uv((float(x) + 0.75f) / 64.0f, (float(y) + 0.5f) / 64.0f);
+      EXPECT_EQ(snellSampleSurface(rim.depth, uv, linear).viewZ, snellSampleSurface(rim.depth, uv, rim.surface()).viewZ);
+    }
+  EXPECT_GT(rimTexels, 4);
+}
+
 TEST(IntersectSingle, UvZToViewInvertsTheProjection) {
   const glm::mat4 m = snellPerspective(1.1f, 1.4f, 0.2f, 90.0f);
   std::mt19937 rng(3);

@@ -30,6 +30,7 @@ const Expected kExpected[] = {
     {"isr", SNELL_STRATEGY_WYMAN, 0, SNELL_STRATEGY_SINGLE, 0},
     {"linear-march", SNELL_STRATEGY_LINEAR_MARCH, 32, SNELL_STRATEGY_LINEAR_MARCH, 32},
     {"dda", SNELL_STRATEGY_DDA, 256, SNELL_STRATEGY_DDA, 256},
+    {"image-space-bound", SNELL_STRATEGY_LINEAR_MARCH, 512, SNELL_STRATEGY_LINEAR_MARCH, 512},
 };
 
 }  // namespace

@@ -17,8 +17,9 @@ namespace snell::lab {
 
 namespace fs = std::filesystem;
 
-ShadeConstants shadeConstants(const SceneFrame& frame) {
+ShadeConstants shadeConstants(const SceneFrame& frame, int depthFilter) {
   ShadeConstants k;
+  k.depthFilter = depthFilter;
   k.viewFromWorld = frame.camera.viewFromWorld();
   k.clipFromView = frame.camera.clipFromView();
   k.zNear = frame.camera.zNear;
@@ -35,6 +36,16 @@ ShadeConstants shadeConstants(const SceneFrame& frame) {
   k.envY = m[1];
   k.envZ = m[2];
   k.backRange = meshBounds(frame.object).diagonal();
+  // Every exit ray starts inside the object and ends on the object or the opaque scene (else it leaves
+  // the scene): the diagonal of the box around both bounds how far it can travel to a hit.
+  const auto box = meshBounds(frame.object);
+  vec3 lo = box.lo, hi = box.hi;
+  for (const Painting& painting : frame.paintings)
+    for (const vec3& c : painting.corners()) {
+      lo = glm::min(lo, c);
+      hi = glm::max(hi, c);
+    }
+  k.exitRange = glm::length(hi - lo);
   return k;
 }
 
@@ -146,12 +157,12 @@ struct GpuLab::Impl {
   gpu::VertexArray vao;
 
   Impl(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
-       const std::vector<int>& ids, const ShaderDirs& dirs)
+       const std::vector<int>& ids, const ShaderDirs& dirs, NormalFilter normalFilter, int depthFilter)
       : ctx(gpu::parseBackend(backend)),
         gl(ctx.gl()),
         width(frame.camera.width),
         height(frame.camera.height),
-        k(shadeConstants(frame)),
+        k(shadeConstants(frame, depthFilter)),
         techniques(ids),
         positions(gl),
         normals(gl),
@@ -190,6 +201,12 @@ struct GpuLab::Impl {
     gl.BindTexture(GL_TEXTURE_2D, sceneFb.colorTexture(0));
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    const GLint normalGl = normalFilter == NormalFilter::Linear ? GL_LINEAR : GL_NEAREST;
+    for (GLuint normalTexture : {backFb.colorTexture(0), sceneFb.colorTexture(1)}) {
+      gl.BindTexture(GL_TEXTURE_2D, normalTexture);
+      gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, normalGl);
+      gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, normalGl);
+    }
     gl.BindTexture(GL_TEXTURE_2D, 0);
 
     const mat4 viewFromClip = glm::inverse(k.clipFromView);
@@ -224,6 +241,8 @@ struct GpuLab::Impl {
       setIf(prog, "envY", k.envY);
       setIf(prog, "envZ", k.envZ);
       setIf(prog, "backRange", k.backRange);
+      setIf(prog, "exitRange", k.exitRange);
+      setIf(prog, "depthFilter", k.depthFilter);
       const char* samplers[] = {"backDepth",  "backNormal",   "backPyramid", "sceneDepth",
                                 "sceneNormal", "scenePyramid", "sceneColor",  "environment"};
       for (int u = 0; u < 8; ++u) setIf(prog, samplers[u], u);
@@ -337,8 +356,9 @@ struct GpuLab::Impl {
 };
 
 GpuLab::GpuLab(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
-               const std::vector<int>& techniques, const ShaderDirs& dirs)
-    : impl_(std::make_unique<Impl>(backend, frame, dN, techniques, dirs)) {}
+               const std::vector<int>& techniques, const ShaderDirs& dirs, NormalFilter normalFilter,
+               int depthFilter)
+    : impl_(std::make_unique<Impl>(backend, frame, dN, techniques, dirs, normalFilter, depthFilter)) {}
 
 GpuLab::~GpuLab() = default;
 

@@ -9,6 +9,7 @@
 #include "lab/scene.hpp"
 
 #include <snell/bridge.hpp>
+#include <snell/intersect.hpp>
 
 #include <filesystem>
 #include <memory>
@@ -38,6 +39,11 @@ struct TechniqueBuffers {
   Image normal;    // xyz interpolated front normal, w coverage (1 on the object)
 };
 
+// How both sides read the normal buffers (back faces and opaque scene): GL_LINEAR
+// (the default: empty texels hold a zero normal, so a filtered read renormalized
+// blends only the surface's own normals, also at the silhouette) or GL_NEAREST.
+enum class NormalFilter { Linear, Nearest };
+
 // The per-frame constants both the GPU and the CPU pass to labShade.
 struct ShadeConstants {
   mat4 viewFromWorld{1.0f};
@@ -47,8 +53,10 @@ struct ShadeConstants {
   vec3 absorption{0.0f};
   vec3 envX{1, 0, 0}, envY{0, 1, 0}, envZ{0, 0, 1};  // world-from-view, environment rotation folded in
   float backRange = 10.0f;                            // object bounding-box diagonal
+  float exitRange = 10.0f;                            // diagonal of the box around object and opaque scene
+  int depthFilter = SNELL_DEPTH_FILTER_NEAREST;       // how every technique reads both depth buffers
 };
-ShadeConstants shadeConstants(const SceneFrame& frame);
+ShadeConstants shadeConstants(const SceneFrame& frame, int depthFilter = SNELL_DEPTH_FILTER_NEAREST);
 
 // The environment as both sides sample it: intensity applied, GL_LINEAR, clamp to edge.
 Texture2D environmentTexture(const SceneFrame& frame);
@@ -58,7 +66,7 @@ class GpuLab {
   // backend: "auto", "osmesa" or "egl". `techniques`: SNELL_TECHNIQUE_* ids, one
   // program each. dN: Wyman's d_N per vertex of frame.object (zeros when absent).
   GpuLab(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
-         const std::vector<int>& techniques, const ShaderDirs& dirs);
+         const std::vector<int>& techniques, const ShaderDirs& dirs, NormalFilter normalFilter, int depthFilter);
   ~GpuLab();
   GpuLab(const GpuLab&) = delete;
   GpuLab& operator=(const GpuLab&) = delete;

@@ -13,13 +13,15 @@ namespace snell::lab {
 
 struct LabOptions {
   std::string scenePath;
-  std::vector<std::string> techniques;  // command-line names; empty: all
+  std::vector<std::string> techniques;  // command-line names; empty: all. The image-space bound always runs.
   int width = 0, height = 0;            // 0: the scene's resolution
   int frames = 15;                      // timed frames (median), all techniques interleaved
   std::string backend = "auto";         // auto | osmesa | egl
   std::string outDir = "lab-out";       // "" writes nothing
   bool quiet = false;                   // no progress bars, no table on stdout
   int threads = 0;                      // tracer and CPU shading threads (0: all cores)
+  NormalFilter normalFilter = NormalFilter::Linear;  // how both sides read the normal buffers
+  int depthFilter = SNELL_DEPTH_FILTER_NEAREST;      // how every technique reads the depth buffers
   ShaderDirs dirs;
 };
 
@@ -27,6 +29,9 @@ struct TechniqueRow {
   std::string name, label;
   double mseFull = 0.0;        // vs the full ray tracer (Fresnel + TIR), object pixels
   double mseTwo = 0.0;         // vs the two-interface reference
+  double mseBound = 0.0;       // vs the image-space bound's image: the technique's own error
+  double boundRatio = 0.0;     // mseTwo / the bound's mseTwo (1 = as good as any image-space method)
+  double unshadedShare = 0.0;  // object pixels (ray tracer's mask) the technique's front pass did not shade
   double invalidShare = 0.0;   // object pixels whose technique fell back (no back or exit hit, TIR)
   double backMissShare = 0.0;  // ... of them: no hit in the back-face buffer
   double exitMissShare = 0.0;  // ... no hit in the opaque scene's buffer (environment used instead)
@@ -47,6 +52,11 @@ struct LabResult {
   int width = 0, height = 0;
   std::size_t objectPixels = 0;
   double mseTwoVsFull = 0.0;  // the two-interface model's own error (model + TIR)
+  // The image-space bound's error vs the two-interface reference, split by pixel: where the bound
+  // found no exit in the buffers (off-screen or hidden: information the buffers lack) and the rest
+  // (the buffers' resolution and depth discretization). Both are MSE contributions over the object
+  // pixels, so they add up to the bound's mseTwo.
+  double boundInformationMse = 0.0, boundInformationShare = 0.0, boundBufferMse = 0.0;
   double traceSeconds = 0.0, staticPassMs = 0.0, totalSeconds = 0.0;
   int frames = 0;
   std::string gpu;

@@ -72,6 +72,18 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("-o,--out", o.outDir, "output directory (PNGs, table.md, table.json)")->capture_default_str();
   app.add_option("--threads", o.threads, "ray tracer and CPU shading threads (0: all cores)")->capture_default_str();
+  std::string normalFilter = "linear";
+  app.add_option("--normal-filter", normalFilter,
+                 "how the techniques read the normal buffers: linear (filtered, renormalized; empty texels hold 0) "
+                 "or nearest (the texel containing the point)")
+      ->check(CLI::IsMember({"linear", "nearest"}))
+      ->capture_default_str();
+  std::string depthFilter = "nearest";
+  app.add_option("--depth-filter", depthFilter,
+                 "how every technique reads the depth buffers: nearest (the texel containing the point) or bilinear "
+                 "(between texel centres where all four hold a surface; the image-space bound always does)")
+      ->check(CLI::IsMember({"nearest", "bilinear"}))
+      ->capture_default_str();
   app.add_flag("-q,--quiet", o.quiet, "no progress bars and no table on stdout");
   try {
     app.parse(argc, argv);
@@ -106,6 +118,8 @@ int main(int argc, char** argv) {
     o.width = w;
     o.height = h;
   }
+  o.normalFilter = normalFilter == "nearest" ? NormalFilter::Nearest : NormalFilter::Linear;
+  o.depthFilter = depthFilter == "bilinear" ? SNELL_DEPTH_FILTER_BILINEAR : SNELL_DEPTH_FILTER_NEAREST;
   o.dirs = shaderDirs();
   try {
     const LabResult r = runLab(o);

@@ -9,10 +9,27 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
                 back faces drawn with glDepthFunc(GL_GREATER) after clearing to 0,
                 1.0f for a scene drawn with GL_LESS after clearing to 1)
   lod           the mip level the searches read (0 = full resolution); set the field
+  depthFilter   how a depth is read (set the field; snellIntersectWith sets it from
+                SnellIntersectOptions.depthFilter):
+                SNELL_DEPTH_FILTER_NEAREST  0 (default) the texel containing uv
+                SNELL_DEPTH_FILTER_BILINEAR 1 the window depth interpolated
+                  bilinearly between the four texel centres around uv, where
+                  all four hold a surface, else the nearest texel. Window depth
+                  is affine in screen space over a plane (it is a + b / z), so
+                  planes are read exactly between texel centres; at the
+                  silhouette no surface is blended with an empty texel. Across a
+                  depth discontinuity inside the buffer it still invents a
+                  one-texel ramp (Oliveira & Brauwers 2007 sec. 3.1), which is
+                  why it is not the default.
 contract (snellSampleSurface):
-  - reads the texel containing uv (nearest, no filtering: filtering depth invents
-    surfaces between foreground and background, Oliveira & Brauwers 2007 sec. 3.1)
-    at level lod through SNELL_TEXEL_FETCH, red channel, and costs one fetch;
+  - NEAREST: reads the texel containing uv (no filtering: filtering depth
+    invents surfaces between foreground and background, Oliveira & Brauwers
+    2007 sec. 3.1) at level lod through SNELL_TEXEL_FETCH, red channel, and
+    costs one fetch. BILINEAR: the four texels (clamped to the edge) through
+    SNELL_TEXEL_FETCH, counted as one fetch (one textureGather in a shader that
+    has it); valid as NEAREST is (the texel containing uv decides);
+    interpolated = true when the four were blended (false for NEAREST, at the
+    silhouette and whenever valid is false);
   - valid = false (viewZ = 0) when uv lies outside [0,1]^2 (off screen: no
     information, never clamped to the edge), when uv is NaN, when the texel equals
     emptyDepth, or when the depth does not linearize (NaN, bad zNear/zFar);
@@ -26,6 +43,9 @@ source: Oliveira & Brauwers 2007 sec. 3.1 and Algorithm 2 ("invalid texels have
 #include "../camera/linearize_depth.glsl"
 #include "../camera/pixel_to_uv.glsl"
 
+#define SNELL_DEPTH_FILTER_NEAREST 0
+#define SNELL_DEPTH_FILTER_BILINEAR 1
+
 struct SnellDepthSurface {
   mat4 clipFromView;
   float zNear;
@@ -33,11 +53,13 @@ struct SnellDepthSurface {
   int convention;
   float emptyDepth;
   int lod;
+  int depthFilter;
 };
 
 struct SnellSurfaceSample {
   float viewZ;
   bool valid;
+  bool interpolated;  // BILINEAR and all four texels held a surface: viewZ is the depth at uv itself
 };
 
 SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, float zFar, int convention,
@@ -49,6 +71,7 @@ SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, flo
   s.convention = convention;
   s.emptyDepth = emptyDepth;
   s.lod = 0;
+  s.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
   return s;
 }
 
@@ -56,6 +79,7 @@ SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, Sn
   SnellSurfaceSample r;
   r.viewZ = 0.0f;
   r.valid = false;
+  r.interpolated = false;
   // Written so NaN fails: every comparison with NaN is false.
   if (!(uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) {
     return r;
@@ -68,8 +92,30 @@ SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, Sn
   if (d == s.emptyDepth) {
     return r;
   }
+  if (s.depthFilter == SNELL_DEPTH_FILTER_BILINEAR) {
+    // Texel-centre coordinates: texel i's centre sits at i + 0.5.
+    float tx = uv.x * float(size.x) - 0.5f;
+    float ty = uv.y * float(size.y) - 0.5f;
+    float fx = floor(tx);
+    float fy = floor(ty);
+    int x0 = clamp(int(fx), 0, size.x - 1);
+    int y0 = clamp(int(fy), 0, size.y - 1);
+    int x1 = clamp(int(fx) + 1, 0, size.x - 1);
+    int y1 = clamp(int(fy) + 1, 0, size.y - 1);
+    float d00 = SNELL_TEXEL_FETCH(depthTex, ivec2(x0, y0), s.lod).x;
+    float d10 = SNELL_TEXEL_FETCH(depthTex, ivec2(x1, y0), s.lod).x;
+    float d01 = SNELL_TEXEL_FETCH(depthTex, ivec2(x0, y1), s.lod).x;
+    float d11 = SNELL_TEXEL_FETCH(depthTex, ivec2(x1, y1), s.lod).x;
+    if (d00 != s.emptyDepth && d10 != s.emptyDepth && d01 != s.emptyDepth && d11 != s.emptyDepth) {
+      float wx = tx - fx;
+      float wy = ty - fy;
+      d = mix(mix(d00, d10, wx), mix(d01, d11, wx), wy);
+      r.interpolated = true;
+    }
+  }
   float v = snellLinearizeDepth(d, s.zNear, s.zFar, s.convention);
   if (!(v > 0.0f)) {
+    r.interpolated = false;
     return r;
   }
   r.viewZ = -v;

@@ -7,7 +7,9 @@ use: SnellSurfacePoint b = snellSurfacePoint(depthTex, uv, surface);   // b.posi
 contract:
   - snellSurfacePoint: one snellSampleSurface at uv (one fetch, level s.lod);
     uv = the centre of the texel read (snellPixelToUv of snellUvToPixel at level
-    s.lod), position = snellUvZToView(s.clipFromView, that centre, viewZ). valid
+    s.lod), or uv itself when the sample was interpolated (s.depthFilter
+    BILINEAR with four surface texels: the depth there is the surface's at uv),
+    position = snellUvZToView(s.clipFromView, that uv, viewZ). valid
     = false (uv and position 0) when the sample is invalid (off screen, empty,
     NaN) or the reconstruction is. Costs one fetch whatever the outcome.
   - texel-centre reconstruction is what makes the plane strategies exact on
@@ -41,7 +43,7 @@ SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, Snel
     return r;
   }
   ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
-  vec2 centre = snellPixelToUv(snellUvToPixel(uv, size), size);
+  vec2 centre = x.interpolated ? uv : snellPixelToUv(snellUvToPixel(uv, size), size);
   SnellViewPoint p = snellUvZToView(s.clipFromView, centre, x.viewZ);
   if (!p.valid) {
     return r;

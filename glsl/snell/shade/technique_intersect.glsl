@@ -38,6 +38,8 @@ contract:
   - any other strategy value: snellHitMiss(0).
   - every result is the strategy's own SnellHit (contracts in intersect/), with
     the range fetch added.
+  - the strategy reads the surface with o.depthFilter (the surface's
+    depthFilter field is replaced by it).
 source: DESIGN.md sec. 2 ("every intersector is interchangeable in both
   slots"); the strategies' own sources.
 */
@@ -64,7 +66,9 @@ source: DESIGN.md sec. 2 ("every intersector is interchangeable in both
 #define SNELL_TECHNIQUE_HAS(k) ((SNELL_TECHNIQUE_STRATEGIES & (1 << (k))) != 0)
 
 SNELL_FN SnellHit snellIntersectWith(int strategy, vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
-                                     SNELL_TEX2D pyramidTex, SnellDepthSurface surface, SnellIntersectOptions o) {
+                                     SNELL_TEX2D pyramidTex, SnellDepthSurface readAs, SnellIntersectOptions o) {
+  SnellDepthSurface surface = readAs;
+  surface.depthFilter = o.depthFilter;
   if ((SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_SINGLE) && strategy == SNELL_STRATEGY_SINGLE) ||
       (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_WYMAN) && strategy == SNELL_STRATEGY_WYMAN)) {
     return snellIntersectSingleSample(origin, dir, depthTex, surface);

@@ -45,7 +45,9 @@ contract (defaults):
   SNELL_LINEAR_MARCH_MAX_DISTANCE (LINEAR_MARCH) or SNELL_DDA_MAX_DISTANCE;
   thickness = SNELL_DDA_THICKNESS; stride = SNELL_DDA_STRIDE; normalLod = 0;
   maxLod = -1 (the pyramid's top level); rangeSource = PYRAMID; zNearest =
-  zFarthest = 0. An unknown strategy is stored as given (snellIntersectWith
+  zFarthest = 0; depthFilter = SNELL_DEPTH_FILTER_NEAREST (how the strategy reads
+  the depth buffer: intersect/depth_surface.glsl; the dispatcher hands it to the
+  strategy in the surface's depthFilter field). An unknown strategy is stored as given (snellIntersectWith
   answers it with a miss).
   SnellTechniqueOptions: back = CBS, exit = PLANE_NORMAL, exitMode =
   ENVIRONMENT, fallback = ENVIRONMENT, fallbackDistance = 1, edgeFadeWidth =
@@ -66,6 +68,7 @@ source: the composition of DESIGN.md sec. 2 (a technique = optics, an
 #define SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
 #include "../prelude.glsl"
 #include "../optics/refract.glsl"
+#include "../intersect/depth_surface.glsl"
 #include "../intersect/binary_search.glsl"
 #include "../intersect/conservative_binary_search.glsl"
 #include "../intersect/linear_binary_search.glsl"
@@ -104,6 +107,7 @@ struct SnellIntersectOptions {
   int rangeSource;
   float zNearest;
   float zFarthest;
+  int depthFilter;
 };
 
 struct SnellTechniqueOptions {
@@ -141,6 +145,7 @@ SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
   o.rangeSource = SNELL_RANGE_PYRAMID;
   o.zNearest = 0.0f;
   o.zFarthest = 0.0f;
+  o.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
   if (strategy == SNELL_STRATEGY_CBS) {
     o.steps = SNELL_CBS_STEPS;
   } else if (strategy == SNELL_STRATEGY_BINARY) {

@@ -24,6 +24,17 @@ presets (back slot / exit slot):
   snellPresetLinearMarch()         screen-space ray march, view-space steps +
                                    bisection / the same
   snellPresetDdaMarch()            perspective-correct pixel DDA march / the same
+  snellPresetImageSpaceBound()     not a real-time method: the best any
+                                   image-space technique can do with the same
+                                   buffers, for measuring the others against:
+                                   the linear march at its compile-time limits
+                                   (SNELL_LINEAR_MARCH_MAX_STEPS steps of at
+                                   most ~1 px, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS
+                                   bisections) on bilinear depth reads
+                                   (SNELL_DEPTH_FILTER_BILINEAR: exact on
+                                   planes between texel centres) / the same; set back.maxDistance
+                                   and exit.maxDistance to the depths the
+                                   object and the scene span
 the technique table (the one list of named techniques: snell-lab's
   --technique names, the benchmarks and the tests all draw on it; names and
   labels for C++ in include/snell/technique_table.hpp):
@@ -37,6 +48,7 @@ the technique table (the one list of named techniques: snell-lab's
   SNELL_TECHNIQUE_ISR             isr             snellPresetIsr()
   SNELL_TECHNIQUE_LINEAR_MARCH    linear-march    snellPresetLinearMarch()
   SNELL_TECHNIQUE_DDA             dda             snellPresetDdaMarch()
+  SNELL_TECHNIQUE_IMAGE_SPACE_BOUND  image-space-bound  snellPresetImageSpaceBound()
   SNELL_TECHNIQUE_COUNT           the number of ids (ids are 0 .. COUNT - 1)
   SnellTechniqueOptions o = snellTechniquePreset(SNELL_TECHNIQUE_PLANE_NORMAL_1);
   Adding a technique: a preset function here, an id, a branch in
@@ -114,6 +126,18 @@ SNELL_FN SnellTechniqueOptions snellPresetDdaMarch() {
   return snellTechniquePresetSlots(SNELL_STRATEGY_DDA, SNELL_STRATEGY_DDA);
 }
 
+/* The image-space bound: the linear march at its limits, both slots. */
+SNELL_FN SnellTechniqueOptions snellPresetImageSpaceBound() {
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
+  o.back.steps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  o.back.refineSteps = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  o.exit.steps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  o.exit.refineSteps = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  o.back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  o.exit.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  return o;
+}
+
 #define SNELL_TECHNIQUE_SINGLE 0
 #define SNELL_TECHNIQUE_PLANE_NORMAL_0 1
 #define SNELL_TECHNIQUE_PLANE_NORMAL_1 2
@@ -123,7 +147,8 @@ SNELL_FN SnellTechniqueOptions snellPresetDdaMarch() {
 #define SNELL_TECHNIQUE_ISR 6
 #define SNELL_TECHNIQUE_LINEAR_MARCH 7
 #define SNELL_TECHNIQUE_DDA 8
-#define SNELL_TECHNIQUE_COUNT 9
+#define SNELL_TECHNIQUE_IMAGE_SPACE_BOUND 9
+#define SNELL_TECHNIQUE_COUNT 10
 
 /* the technique table's constructor: id -> preset */
 SNELL_FN SnellTechniqueOptions snellTechniquePreset(int technique) {
@@ -153,6 +178,9 @@ SNELL_FN SnellTechniqueOptions snellTechniquePreset(int technique) {
   }
   if (technique == SNELL_TECHNIQUE_DDA) {
     return snellPresetDdaMarch();
+  }
+  if (technique == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND) {
+    return snellPresetImageSpaceBound();
   }
   return snellTechniquePresetSlots(-1, -1);
 }

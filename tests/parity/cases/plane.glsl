@@ -88,6 +88,7 @@ SNELL_FN SnellParityOut caseSnellDepthSurface(vec4 a, vec4 b, vec4 c, vec4 d) {
 SNELL_FN SnellParityOut caseSnellSampleSurface(vec4 a, vec4 b, vec4 c, vec4 d) {
   SnellDepthSurface s = planeParitySurface(a.w, c);
   s.lod = int(b.w);
+  s.depthFilter = int(b.z);
   SnellSurfaceSample x;
   if (a.w > 0.5f) {
     x = s.lod > 0 ? snellSampleSurface(planePyramidB, vec2(a.x, a.y), s) : snellSampleSurface(planeDepthB, vec2(a.x, a.y), s);

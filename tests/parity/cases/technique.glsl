@@ -259,6 +259,10 @@ SNELL_FN SnellParityOut caseSnellPresetDdaMarch(vec4 a, vec4 b, vec4 c, vec4 d) 
   return techPackOptions(snellPresetDdaMarch());
 }
 
+SNELL_FN SnellParityOut caseSnellPresetImageSpaceBound(vec4 a, vec4 b, vec4 c, vec4 d) {
+  return techPackOptions(snellPresetImageSpaceBound());
+}
+
 SNELL_FN SnellParityOut caseSnellTechniquePreset(vec4 a, vec4 b, vec4 c, vec4 d) {
   return techPackOptions(snellTechniquePreset(int(a.x)));
 }
