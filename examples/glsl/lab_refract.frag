@@ -33,6 +33,7 @@ layout(location = 9) uniform vec3 envZ;
 layout(location = 10) uniform float backRange;
 layout(location = 11) uniform float exitRange;
 layout(location = 12) uniform int depthFilter;
+layout(location = 13) uniform int reflectionMode;
 
 layout(location = 0) out vec4 color;
 layout(location = 1) out vec4 stats;     // x fell back, y texel fetches, z back hit, w exit hit
@@ -40,7 +41,7 @@ layout(location = 2) out vec4 position;  // xyz view-space front position, w d_N
 layout(location = 3) out vec4 normal;    // xyz interpolated front normal, w 1 (coverage)
 
 void main() {
-  LabParams p = labParams(projection, zNear, zFar, ior, absorption, envX, envY, envZ, backRange, exitRange, depthFilter);
+  LabParams p = labParams(projection, zNear, zFar, ior, absorption, envX, envY, envZ, backRange, exitRange, depthFilter, reflectionMode);
   SnellTwoInterfaceResult r = labShade(LAB_TECHNIQUE, vsPosition, vsNormal, vsDn, backDepth, backNormal,
                                        backPyramid, sceneDepth, sceneNormal, scenePyramid, sceneColor,
                                        environment, p);

@@ -7,7 +7,7 @@ description: the lab's per-pixel technique call (snell-lab, examples/lab): one
   scene's buffers (the paintings; the environment where the exit ray finds
   none) and runs snellTwoInterfaceRefraction.
 use: LabParams p = labParams(clipFromView, zNear, zFar, ior, absorption, envX, envY, envZ, backRange, exitRange,
-                             SNELL_DEPTH_FILTER_BILINEAR);
+                             SNELL_DEPTH_FILTER_NEAREST, SNELL_REFLECT_SCENE);
      SnellTwoInterfaceResult r = labShade(SNELL_TECHNIQUE_PLANE_NORMAL_1, frontPosition, frontNormal,
          dN, backDepth, backNormal, backPyramid, sceneDepth, sceneNormal, scenePyramid,
          sceneColor, environment, p);
@@ -21,8 +21,11 @@ use: LabParams p = labParams(clipFromView, zNear, zFar, ior, absorption, envX, e
               envX/envY/envZ, the columns of world-from-view with the
               environment's rotation folded in)
 contract: every technique uses SNELL_EXIT_SCENE with SNELL_FALLBACK_ENVIRONMENT,
-  the critical-angle TIR policy, Fresnel reflection of the environment at the
-  first interface and Beer-Lambert absorption along the found chord. The
+  the critical-angle TIR policy, Fresnel reflection at the first interface
+  (p.reflectionMode: SNELL_REFLECT_SCENE resolves R against the opaque scene
+  with the exit slot's strategy and parameters, as the ray-traced reference
+  does; SNELL_REFLECT_ENVIRONMENT the environment only) and Beer-Lambert
+  absorption along the found chord. The
   marches (linear, DDA, the image-space bound) in the back slot walk at most
   p.backRange (the object's bounding-box diagonal), the bound's exit slot
   p.exitRange (the diagonal of the box around the object and the opaque
@@ -52,10 +55,12 @@ struct LabParams {
   float backRange;
   float exitRange;
   int depthFilter;
+  int reflectionMode;
 };
 
 SNELL_FN LabParams labParams(mat4 clipFromView, float zNear, float zFar, float ior, vec3 absorption, vec3 envX,
-                             vec3 envY, vec3 envZ, float backRange, float exitRange, int depthFilter) {
+                             vec3 envY, vec3 envZ, float backRange, float exitRange, int depthFilter,
+                             int reflectionMode) {
   LabParams p;
   p.clipFromView = clipFromView;
   p.zNear = zNear;
@@ -68,6 +73,7 @@ SNELL_FN LabParams labParams(mat4 clipFromView, float zNear, float zFar, float i
   p.backRange = backRange;
   p.exitRange = exitRange;
   p.depthFilter = depthFilter;
+  p.reflectionMode = reflectionMode;
   return p;
 }
 
@@ -91,6 +97,8 @@ SNELL_FN SnellTechniqueOptions labTechniqueOptions(int technique, LabParams p) {
   o.iors = vec3(p.ior, p.ior, p.ior);
   o.absorption = p.absorption;
   o.reflection = true;
+  o.reflectionMode = p.reflectionMode;
+  o.reflect = o.exit;
   o.envX = p.envX;
   o.envY = p.envY;
   o.envZ = p.envZ;

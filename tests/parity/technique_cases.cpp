@@ -108,7 +108,7 @@ std::vector<ParityIO> techniqueInputs(std::uint32_t seed) {
     in.v[1] = glm::vec4(n, float(g.integer(0, 8)));
     in.v[2] = matrixEntries();
     const float roughness = g.chance(0.7f) ? 0.0f : g.uniform(0.0f, 1.0f);
-    in.v[3] = glm::vec4(ior, g.uniform(0.0f, 5.0f), float(g.integer(0, 127)), roughness);
+    in.v[3] = glm::vec4(ior, g.uniform(0.0f, 5.0f), float(g.integer(0, 255)), roughness);
     v.push_back(in);
   }
   return v;
@@ -257,5 +257,5 @@ TECH_CASE(snellIntersectWith, SnellIntersectWith, [] { return dispatchInputs(820
 TECH_CASE(snellTwoInterfaceTrace, SnellTwoInterfaceTrace, [] { return techniqueInputs(821); }, 0x0808, 15, (snell_parity::Tolerance{1e-4f, 1e-4f}));
 // Fetches (3), hit valid (6), fellBack (7) exact; colours 1e-4.
 TECH_CASE(snellTwoInterfaceExit, SnellTwoInterfaceExit, [] { return exitInputs(822); }, 0x00C8, 11, (snell_parity::Tolerance{1e-4f, 1e-4f}));
-// Fetches (3) and flags (7) exact; colour, directions, points, fresnel 1e-4.
-TECH_CASE(snellTwoInterfaceRefraction, SnellTwoInterfaceRefraction, [] { return techniqueInputs(823); }, 0x0088, 15, (snell_parity::Tolerance{1e-4f, 1e-4f}));
+// Fetches (3), flags (7) and the reflection hit (15) exact; colour, directions, points, fresnel 1e-4.
+TECH_CASE(snellTwoInterfaceRefraction, SnellTwoInterfaceRefraction, [] { return techniqueInputs(823); }, 0x8088, 16, (snell_parity::Tolerance{1e-4f, 1e-4f}));

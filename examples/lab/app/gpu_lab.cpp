@@ -17,9 +17,10 @@ namespace snell::lab {
 
 namespace fs = std::filesystem;
 
-ShadeConstants shadeConstants(const SceneFrame& frame, int depthFilter) {
+ShadeConstants shadeConstants(const SceneFrame& frame, int depthFilter, int reflectionMode) {
   ShadeConstants k;
   k.depthFilter = depthFilter;
+  k.reflectionMode = reflectionMode;
   k.viewFromWorld = frame.camera.viewFromWorld();
   k.clipFromView = frame.camera.clipFromView();
   k.zNear = frame.camera.zNear;
@@ -157,12 +158,13 @@ struct GpuLab::Impl {
   gpu::VertexArray vao;
 
   Impl(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
-       const std::vector<int>& ids, const ShaderDirs& dirs, NormalFilter normalFilter, int depthFilter)
+       const std::vector<int>& ids, const ShaderDirs& dirs, NormalFilter normalFilter, int depthFilter,
+       int reflectionMode)
       : ctx(gpu::parseBackend(backend)),
         gl(ctx.gl()),
         width(frame.camera.width),
         height(frame.camera.height),
-        k(shadeConstants(frame, depthFilter)),
+        k(shadeConstants(frame, depthFilter, reflectionMode)),
         techniques(ids),
         positions(gl),
         normals(gl),
@@ -243,6 +245,7 @@ struct GpuLab::Impl {
       setIf(prog, "backRange", k.backRange);
       setIf(prog, "exitRange", k.exitRange);
       setIf(prog, "depthFilter", k.depthFilter);
+      setIf(prog, "reflectionMode", k.reflectionMode);
       const char* samplers[] = {"backDepth",  "backNormal",   "backPyramid", "sceneDepth",
                                 "sceneNormal", "scenePyramid", "sceneColor",  "environment"};
       for (int u = 0; u < 8; ++u) setIf(prog, samplers[u], u);
@@ -357,8 +360,8 @@ struct GpuLab::Impl {
 
 GpuLab::GpuLab(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
                const std::vector<int>& techniques, const ShaderDirs& dirs, NormalFilter normalFilter,
-               int depthFilter)
-    : impl_(std::make_unique<Impl>(backend, frame, dN, techniques, dirs, normalFilter, depthFilter)) {}
+               int depthFilter, int reflectionMode)
+    : impl_(std::make_unique<Impl>(backend, frame, dN, techniques, dirs, normalFilter, depthFilter, reflectionMode)) {}
 
 GpuLab::~GpuLab() = default;
 

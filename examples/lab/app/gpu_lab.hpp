@@ -9,7 +9,7 @@
 #include "lab/scene.hpp"
 
 #include <snell/bridge.hpp>
-#include <snell/intersect.hpp>
+#include <snell/shade.hpp>
 
 #include <filesystem>
 #include <memory>
@@ -55,8 +55,10 @@ struct ShadeConstants {
   float backRange = 10.0f;                            // object bounding-box diagonal
   float exitRange = 10.0f;                            // diagonal of the box around object and opaque scene
   int depthFilter = SNELL_DEPTH_FILTER_NEAREST;       // how every technique reads both depth buffers
+  int reflectionMode = SNELL_REFLECT_SCENE;           // the first surface reflects the scene (else the environment)
 };
-ShadeConstants shadeConstants(const SceneFrame& frame, int depthFilter = SNELL_DEPTH_FILTER_NEAREST);
+ShadeConstants shadeConstants(const SceneFrame& frame, int depthFilter = SNELL_DEPTH_FILTER_NEAREST,
+                              int reflectionMode = SNELL_REFLECT_SCENE);
 
 // The environment as both sides sample it: intensity applied, GL_LINEAR, clamp to edge.
 Texture2D environmentTexture(const SceneFrame& frame);
@@ -66,7 +68,8 @@ class GpuLab {
   // backend: "auto", "osmesa" or "egl". `techniques`: SNELL_TECHNIQUE_* ids, one
   // program each. dN: Wyman's d_N per vertex of frame.object (zeros when absent).
   GpuLab(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
-         const std::vector<int>& techniques, const ShaderDirs& dirs, NormalFilter normalFilter, int depthFilter);
+         const std::vector<int>& techniques, const ShaderDirs& dirs, NormalFilter normalFilter, int depthFilter,
+         int reflectionMode);
   ~GpuLab();
   GpuLab(const GpuLab&) = delete;
   GpuLab& operator=(const GpuLab&) = delete;

@@ -610,13 +610,14 @@ LabResult runLab(const LabOptions& options) {
   std::vector<int> ids;
   for (const SnellTechniqueInfo* t : techniques) ids.push_back(t->id);
   GpuLab gpu(options.backend, frame, wymanDnIfNeeded(frame, techniques), ids, options.dirs, options.normalFilter,
-             options.depthFilter);
+             options.depthFilter, options.reflectionMode);
   result.gpu = gpu.description();
   result.staticPassMs = gpu.renderStatic();
   const StaticBuffers sb = gpu.readStatic();
-  const ShadeConstants k = shadeConstants(frame, options.depthFilter);
+  const ShadeConstants k = shadeConstants(frame, options.depthFilter, options.reflectionMode);
   const CpuBuffers cb = cpuBuffers(sb, k, frame, options.normalFilter);
-  const LabParams params = labParams(k.clipFromView, k.zNear, k.zFar, k.ior, k.absorption, k.envX, k.envY, k.envZ, k.backRange, k.exitRange, k.depthFilter);
+  const LabParams params = labParams(k.clipFromView, k.zNear, k.zFar, k.ior, k.absorption, k.envX, k.envY, k.envZ, k.backRange, k.exitRange, k.depthFilter,
+                                     k.reflectionMode);
 
   std::vector<Image> images(techniques.size());
   for (std::size_t i = 0; i < techniques.size(); ++i)

@@ -84,6 +84,13 @@ int main(int argc, char** argv) {
                  "(between texel centres where all four hold a surface; the image-space bound always does)")
       ->check(CLI::IsMember({"nearest", "bilinear"}))
       ->capture_default_str();
+  std::string reflection = "scene";
+  app.add_option("--reflection", reflection,
+                 "what the first surface reflects: scene (the reflected ray against the opaque scene's buffers with "
+                 "the exit slot's strategy, the environment where it finds nothing, as the ray tracer does) or "
+                 "environment (the environment only)")
+      ->check(CLI::IsMember({"scene", "environment"}))
+      ->capture_default_str();
   app.add_flag("-q,--quiet", o.quiet, "no progress bars and no table on stdout");
   try {
     app.parse(argc, argv);
@@ -120,6 +127,7 @@ int main(int argc, char** argv) {
   }
   o.normalFilter = normalFilter == "nearest" ? NormalFilter::Nearest : NormalFilter::Linear;
   o.depthFilter = depthFilter == "bilinear" ? SNELL_DEPTH_FILTER_BILINEAR : SNELL_DEPTH_FILTER_NEAREST;
+  o.reflectionMode = reflection == "environment" ? SNELL_REFLECT_ENVIRONMENT : SNELL_REFLECT_SCENE;
   o.dirs = shaderDirs();
   try {
     const LabResult r = runLab(o);

@@ -32,6 +32,11 @@ options (strategy constants, the values of SnellIntersectOptions.strategy):
   zFarthest fields: a bounding box, snellDepthRangeFromBox)
   exit modes: SNELL_EXIT_ENVIRONMENT 0 (distant environment along T2),
   SNELL_EXIT_SCENE 1 (the opaque scene's depth/colour buffers, exit slot)
+  reflection modes (the first surface's reflected ray R, when reflection is
+  on): SNELL_REFLECT_ENVIRONMENT 0 (the environment along R),
+  SNELL_REFLECT_SCENE 1 (R from P1 against the opaque scene's buffers with the
+  `reflect` slot's strategy, the environment where it finds nothing:
+  screen-space reflection, what a ray tracer's F bg(R) computes)
   fallbacks when the exit-slot hit is invalid: SNELL_FALLBACK_ENVIRONMENT 0
   (environment along T2), SNELL_FALLBACK_EDGE_FADE 1 (scene colour at the
   clamped projection of P2 + fallbackDistance T2, faded to the environment
@@ -55,8 +60,9 @@ contract (defaults):
   iorOutside = 1, dispersion = 1 (one trace; 3 = one per channel with iors,
   e.g. snellDispersionIors(1.5168f, 64.17f) from shade/dispersion.glsl), iors =
   (1.5, 1.5, 1.5), absorption = 0 (Beer-Lambert sigma per channel, per view
-  unit), reflection = true (Fresnel-weighted environment reflection at the
-  first interface), roughness = 0, sceneColorLevels = environmentLevels = 1
+  unit), reflection = true (Fresnel-weighted reflection at the first
+  interface), reflectionMode = ENVIRONMENT, reflect = LINEAR_MARCH (its
+  defaults; read only in SCENE mode), roughness = 0, sceneColorLevels = environmentLevels = 1
   (mip levels for snellRoughnessToLod), envX/envY/envZ = the columns of the
   world-from-view rotation used for environment lookups (identity).
 source: the composition of DESIGN.md sec. 2 (a technique = optics, an
@@ -95,6 +101,9 @@ source: the composition of DESIGN.md sec. 2 (a technique = optics, an
 #define SNELL_FALLBACK_ENVIRONMENT 0
 #define SNELL_FALLBACK_EDGE_FADE 1
 
+#define SNELL_REFLECT_ENVIRONMENT 0
+#define SNELL_REFLECT_SCENE 1
+
 struct SnellIntersectOptions {
   int strategy;
   int steps;
@@ -124,6 +133,8 @@ struct SnellTechniqueOptions {
   vec3 iors;
   vec3 absorption;
   bool reflection;
+  int reflectionMode;
+  SnellIntersectOptions reflect;
   float roughness;
   int sceneColorLevels;
   int environmentLevels;
@@ -180,6 +191,8 @@ SNELL_FN SnellTechniqueOptions snellTechniqueOptions() {
   o.iors = vec3(1.5f, 1.5f, 1.5f);
   o.absorption = vec3(0.0f, 0.0f, 0.0f);
   o.reflection = true;
+  o.reflectionMode = SNELL_REFLECT_ENVIRONMENT;
+  o.reflect = snellIntersectOptions(SNELL_STRATEGY_LINEAR_MARCH);
   o.roughness = 0.0f;
   o.sceneColorLevels = 1;
   o.environmentLevels = 1;

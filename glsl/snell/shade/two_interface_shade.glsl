@@ -57,8 +57,13 @@ contract (snellTwoInterfaceRefraction):
     without a back hit; finite: a back hit whose |P2 - P1| overflows a float
     counts as none, two_interface.glsl).
   - reflection (o.reflection): F = snellFresnelDielectric(cos(V, N1), eta of
-    the green/single trace); R = reflect(V, N1); color = F env(R) + (1 - F)
-    transmitted, +1 fetch; else F = 0, color = transmitted. The second
+    the green/single trace); R = reflect(V, N1); color = F bg(R) + (1 - F)
+    transmitted; bg(R) = env(R), +1 fetch (SNELL_REFLECT_ENVIRONMENT), or
+    (SNELL_REFLECT_SCENE) snellTwoInterfaceExit(P1, R, scene..., o with exit =
+    o.reflect, SCENE mode, FALLBACK_ENVIRONMENT): the scene colour where the
+    reflect slot finds the scene, else env(R), its fetches added and its hit
+    in reflectionHit (snellHitMiss(0) otherwise); else F = 0, color =
+    transmitted. The second
     interface's Fresnel loss and internally reflected light are not modelled.
   - an invalid path (NaN / zero inputs): color 0, fellBack true, the
     reflection still added when R is defined.
@@ -98,6 +103,7 @@ struct SnellTwoInterfaceResult {
   vec3 exitPoint;      // P2 (P1 when the back hit failed)
   vec3 exitDirection;  // T2 (T1 on fallback)
   SnellHit exitHit;    // the exit slot's hit in the scene buffers (SCENE mode)
+  SnellHit reflectionHit;  // the reflection slot's hit in the scene buffers (SNELL_REFLECT_SCENE)
   float pathLength;    // |P2 - P1| inside the object
   float fresnel;       // F at the first interface (0 without reflection)
   int fetches;
@@ -174,6 +180,7 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   r.exitPoint = p.exitPoint;
   r.exitDirection = p.exitDirection;
   r.exitHit = e.hit;
+  r.reflectionHit = snellHitMiss(0);
   r.pathLength = p.pathLength;
   r.fresnel = 0.0f;
   r.fetches = p.fetches + e.fetches;
@@ -202,11 +209,26 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   if (o.reflection && dot(v, v) > 0.0f && dot(n1, n1) > 0.0f) {
     float f = snellFresnelDielectric(dot(v, n1), eta);
     vec3 rv = reflect(v, n1);
-    vec3 world = rv.x * o.envX + rv.y * o.envY + rv.z * o.envZ;
-    vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, snellRoughnessToLod(o.roughness, o.environmentLevels));
-    r.fetches = r.fetches + 1;
+    vec3 reflected = vec3(0.0f, 0.0f, 0.0f);
+    if (o.reflectionMode == SNELL_REFLECT_SCENE) {
+      // The reflection slot: the exit machinery with the reflect slot's strategy, from P1 along R.
+      SnellTechniqueOptions ro = o;
+      ro.exit = o.reflect;
+      ro.exitMode = SNELL_EXIT_SCENE;
+      ro.fallback = SNELL_FALLBACK_ENVIRONMENT;
+      SnellTwoInterfaceExit re = snellTwoInterfaceExit(frontPosition, rv, sceneDepth, sceneNormal, scenePyramid,
+                                                       sceneColor, scene, environment, ro);
+      reflected = re.color;
+      r.reflectionHit = re.hit;
+      r.fetches = r.fetches + re.fetches;
+    } else {
+      vec3 world = rv.x * o.envX + rv.y * o.envY + rv.z * o.envZ;
+      vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, snellRoughnessToLod(o.roughness, o.environmentLevels));
+      reflected = vec3(env.x, env.y, env.z);
+      r.fetches = r.fetches + 1;
+    }
     r.fresnel = f;
-    r.color = f * vec3(env.x, env.y, env.z) + (1.0f - f) * transmitted;
+    r.color = f * reflected + (1.0f - f) * transmitted;
   }
   return r;
 }

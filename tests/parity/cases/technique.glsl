@@ -98,6 +98,10 @@ SNELL_FN SnellTechniqueOptions techOptions(vec4 a, vec4 b, vec4 d) {
   o.reflection = !techBit(d.z, 8);
   o.tirPolicy = techBit(d.z, 16) ? SNELL_TIR_ZERO : (techBit(d.z, 32) ? SNELL_TIR_REFLECT : SNELL_TIR_CRITICAL);
   o.absorption = techBit(d.z, 64) ? vec3(0.1f, 0.2f, 0.4f) : vec3(0.0f, 0.0f, 0.0f);
+  o.reflectionMode = techBit(d.z, 128) ? SNELL_REFLECT_SCENE : SNELL_REFLECT_ENVIRONMENT;
+  if (techBit(d.z, 128)) {
+    o.reflect = o.exit;
+  }
   o.roughness = d.w;
   o.sceneColorLevels = 7;
   o.environmentLevels = 8;
@@ -328,7 +332,7 @@ SNELL_FN SnellParityOut caseSnellTwoInterfaceRefraction(vec4 a, vec4 b, vec4 c, 
              techFlag(t.backHit) + 2.0f * techFlag(t.fellBack) + 4.0f * techFlag(t.tir) +
                  8.0f * techFlag(t.exitHit.valid));
   r.c = vec4(t.exitPoint.x, t.exitPoint.y, t.exitPoint.z, t.pathLength);
-  r.d = vec4(t.exitHit.uv.x, t.exitHit.uv.y, t.fresnel, 0.0f);
+  r.d = vec4(t.exitHit.uv.x, t.exitHit.uv.y, t.fresnel, techFlag(t.reflectionHit.valid));
   return r;
 }
 
