@@ -145,6 +145,29 @@ TEST(LabRun, AnObjectOutOfViewIsAnError) {
   }
 }
 
+// The guard band on the sphere at the screen edge: the buffers then hold more of the exact paths (the
+// bound's information error shrinks) and the image-space bound gets closer to the reference.
+TEST(LabRun, GuardBandRecoversExitsOffTheViewport) {
+  LabOptions o = options64("");
+  o.scenePath = labtest::scenesDir() + "/sphere_edge.json";
+  o.techniques = {"single"};
+  o.frames = 1;
+  o.guardBand = 0.0;
+  const LabResult none = snell::lab::runLab(o);
+  o.guardBand = 0.2;
+  const LabResult band = snell::lab::runLab(o);
+  EXPECT_EQ(none.guardBand, 0);
+  EXPECT_EQ(band.guardBand, 13);  // 0.2 x 64, per side
+  std::printf("[guard band] information share %.3f -> %.3f, MSE %.4g -> %.4g; bound %.4g -> %.4g\n",
+              none.boundInformationShare, band.boundInformationShare, none.boundInformationMse,
+              band.boundInformationMse, none.row("image-space-bound")->mseTwo, band.row("image-space-bound")->mseTwo);
+  EXPECT_GT(none.boundInformationShare, 0.05);  // the scene's point: many exits leave the viewport
+  EXPECT_LT(band.boundInformationShare, 0.6 * none.boundInformationShare);
+  EXPECT_LT(band.row("image-space-bound")->mseTwo, 0.8 * none.row("image-space-bound")->mseTwo);
+  for (const LabResult* r : {&none, &band})
+    for (const TechniqueRow& t : r->rows) EXPECT_EQ(t.cpuGpuBeyond4Pixels, t.cpuGpuBeyond4Ties) << t.name;
+}
+
 // The environment basis handed to the shaders reproduces the lab's
 // equirectangular mapping, rotation included, through snellEquirectUv.
 TEST(LabRun, EnvironmentBasisMatchesTheLabMapping) {

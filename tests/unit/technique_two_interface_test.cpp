@@ -655,3 +655,46 @@ TEST(TechniqueReflection, FindsTheMirroredPaintingAtTheAnalyticPosition) {
   EXPECT_FALSE(r.reflectionHit.valid);
   EXPECT_EQ(r.reflectionHit.fetches, 0);
 }
+
+// The guard band: buffers rendered with a wider field of view than the viewport (snell-lab's
+// bufferClipFromView) hold the surface beyond the viewport's edge, and every strategy reads them through
+// the surface's own projection, so an exit ray that leaves the viewport is still resolved, at the analytic
+// point. Here the viewport is the central 80% of the buffer's field of view in each direction.
+TEST(TechniqueGuardBand, FindsExitsBeyondTheViewportAtTheAnalyticPoint) {
+  const snell_test::DepthScene buffer = snell_test::slantedPlane(160, 120);  // the guard-banded buffer
+  const double viewportShare = 0.8;
+  int offViewport = 0, found = 0;
+  std::vector<double> errors;
+  for (int k = 0; k < 400; ++k) {
+    // A target on the plane in the band between the viewport's edge and the buffer's.
+    const double side = (k % 4 < 2 ? 1.0 : -1.0);
+    const double band = viewportShare + (1.0 - viewportShare) * (0.1 + 0.8 * ((k / 4) % 10) / 10.0);
+    const double along = -0.8 + 1.6 * ((k / 40) % 10) / 10.0;
+    const glm::dvec2 ndc = k % 2 ? glm::dvec2(side * band, along) : glm::dvec2(along, side * band);
+    const glm::dvec2 uv = 0.5 * (ndc + 1.0);
+    const snell_test::AnalyticSample a = buffer.sampleAt(uv);
+    ASSERT_TRUE(a.valid);
+    const glm::dvec3 target = buffer.pixelRay(uv) * a.s;
+    // The ray starts on the viewport's side: from a point in front of the plane near the view axis.
+    const glm::dvec3 origin(0.2 * along, 0.1, -2.5);
+    const glm::dvec3 dir = glm::normalize(target - origin);
+    const glm::dvec2 viewportNdc = glm::dvec2(target.x, target.y) / (-target.z) /
+                                   (glm::dvec2(buffer.tanHalfX, buffer.tanHalfY) * viewportShare);
+    offViewport += std::abs(viewportNdc.x) > 1.0 || std::abs(viewportNdc.y) > 1.0;
+    SnellIntersectOptions o = snellIntersectOptions(SNELL_STRATEGY_LINEAR_MARCH);
+    o.steps = 256;
+    o.refineSteps = 16;
+    o.maxDistance = 20.0f;
+    o.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;  // the image-space bound's reads: exact on the plane
+    const SnellHit h = snellIntersectWith(o.strategy, glm::vec3(origin), glm::vec3(dir), buffer.depth, buffer.normals,
+                                          buffer.depth, buffer.surface(), o);
+    if (!h.valid) continue;
+    ++found;
+    errors.push_back(glm::length(glm::dvec3(h.position) - target) / glm::length(target - origin));
+  }
+  EXPECT_EQ(offViewport, 400);  // every target lies outside the viewport
+  EXPECT_GE(found, 396);
+  std::sort(errors.begin(), errors.end());
+  ASSERT_FALSE(errors.empty());
+  EXPECT_LT(errors[errors.size() * 99 / 100], 1e-4);  // relative to the ray's length
+}

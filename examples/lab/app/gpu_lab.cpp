@@ -17,12 +17,18 @@ namespace snell::lab {
 
 namespace fs = std::filesystem;
 
-ShadeConstants shadeConstants(const SceneFrame& frame, int depthFilter, int reflectionMode) {
+ShadeConstants shadeConstants(const SceneFrame& frame, int depthFilter, int reflectionMode, int margin) {
   ShadeConstants k;
+  k.margin = std::max(0, margin);
+  const float W = static_cast<float>(frame.camera.width), H = static_cast<float>(frame.camera.height);
+  mat4 shrink(1.0f);
+  shrink[0][0] = W / (W + 2.0f * static_cast<float>(k.margin));
+  shrink[1][1] = H / (H + 2.0f * static_cast<float>(k.margin));
   k.depthFilter = depthFilter;
   k.reflectionMode = reflectionMode;
   k.viewFromWorld = frame.camera.viewFromWorld();
   k.clipFromView = frame.camera.clipFromView();
+  k.bufferClipFromView = shrink * k.clipFromView;
   k.zNear = frame.camera.zNear;
   k.zFar = frame.camera.zFar;
   k.ior = frame.ior;
@@ -145,6 +151,7 @@ struct GpuLab::Impl {
   const gpu::GlApi& gl;
   int width, height;
   ShadeConstants k;
+  int bufferWidth, bufferHeight;
   std::vector<int> techniques;
   GLsizei vertexCount = 0;
   gpu::StorageBuffer positions, normals, indices;
@@ -159,12 +166,14 @@ struct GpuLab::Impl {
 
   Impl(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
        const std::vector<int>& ids, const ShaderDirs& dirs, NormalFilter normalFilter, int depthFilter,
-       int reflectionMode)
+       int reflectionMode, int margin)
       : ctx(gpu::parseBackend(backend)),
         gl(ctx.gl()),
         width(frame.camera.width),
         height(frame.camera.height),
-        k(shadeConstants(frame, depthFilter, reflectionMode)),
+        k(shadeConstants(frame, depthFilter, reflectionMode, margin)),
+        bufferWidth(width + 2 * k.margin),
+        bufferHeight(height + 2 * k.margin),
         techniques(ids),
         positions(gl),
         normals(gl),
@@ -178,11 +187,11 @@ struct GpuLab::Impl {
                                     flatten(dirs.labGlsl / "lab_back.frag", dirs))),
         pyramid(gpu::Program::graphics(gl, flatten(dirs.labGlsl / "lab_fullscreen.vert", dirs),
                                        flatten(dirs.labGlsl / "depth_pyramid.frag", dirs))),
-        sceneFb(gl, width, height, 2, true),
-        backFb(gl, width, height, 1, true),
+        sceneFb(gl, bufferWidth, bufferHeight, 2, true),
+        backFb(gl, bufferWidth, bufferHeight, 1, true),
         frontFb(gl, width, height, 4, true),
-        scenePyramid(gl, width, height),
-        backPyramid(gl, width, height),
+        scenePyramid(gl, bufferWidth, bufferHeight),
+        backPyramid(gl, bufferWidth, bufferHeight),
         vao(gl) {
     // The mesh: positions (w = d_N), normals, indices, pulled by gl_VertexID.
     const Mesh& m = frame.object;
@@ -211,18 +220,18 @@ struct GpuLab::Impl {
     }
     gl.BindTexture(GL_TEXTURE_2D, 0);
 
-    const mat4 viewFromClip = glm::inverse(k.clipFromView);
+    const mat4 viewFromClip = glm::inverse(k.bufferClipFromView);
     setIf(background, "viewFromClip", viewFromClip);
     setIf(background, "envX", k.envX);
     setIf(background, "envY", k.envY);
     setIf(background, "envZ", k.envZ);
-    setIf(background, "viewport", vec2(static_cast<float>(width), static_cast<float>(height)));
+    setIf(background, "viewport", vec2(static_cast<float>(bufferWidth), static_cast<float>(bufferHeight)));
     setIf(background, "environment", 0);
     setIf(scene, "viewFromWorld", k.viewFromWorld);
-    setIf(scene, "clipFromView", k.clipFromView);
+    setIf(scene, "clipFromView", k.bufferClipFromView);
     setIf(scene, "painting", 0);
     setIf(back, "viewFromWorld", k.viewFromWorld);
-    setIf(back, "clipFromView", k.clipFromView);
+    setIf(back, "clipFromView", k.bufferClipFromView);
     setIf(pyramid, "source", 0);
     setIf(pyramid, "zNear", k.zNear);
     setIf(pyramid, "zFar", k.zFar);
@@ -234,7 +243,7 @@ struct GpuLab::Impl {
                                                  flattenWithDefines(dirs.labGlsl / "lab_refract.frag", defines, dirs));
       setIf(prog, "viewFromWorld", k.viewFromWorld);
       setIf(prog, "clipFromView", k.clipFromView);
-      setIf(prog, "projection", k.clipFromView);
+      setIf(prog, "projection", k.bufferClipFromView);  // how the techniques read the buffers
       setIf(prog, "zNear", k.zNear);
       setIf(prog, "zFar", k.zFar);
       setIf(prog, "ior", k.ior);
@@ -360,8 +369,9 @@ struct GpuLab::Impl {
 
 GpuLab::GpuLab(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
                const std::vector<int>& techniques, const ShaderDirs& dirs, NormalFilter normalFilter,
-               int depthFilter, int reflectionMode)
-    : impl_(std::make_unique<Impl>(backend, frame, dN, techniques, dirs, normalFilter, depthFilter, reflectionMode)) {}
+               int depthFilter, int reflectionMode, int margin)
+    : impl_(std::make_unique<Impl>(backend, frame, dN, techniques, dirs, normalFilter, depthFilter, reflectionMode,
+                                   margin)) {}
 
 GpuLab::~GpuLab() = default;
 

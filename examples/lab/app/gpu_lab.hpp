@@ -25,7 +25,8 @@ struct ShaderDirs {
   std::filesystem::path snellGlsl;
 };
 
-// Read back after passes 1-3.
+// Read back after passes 1-3: the viewport plus the guard band on every side
+// (ShadeConstants::margin texels), rendered with bufferClipFromView.
 struct StaticBuffers {
   Image sceneColor, sceneDepth, sceneNormal;  // depth in .x (window depth, GL convention, 1 = empty)
   Image backDepth, backNormal;                // depth in .x (0 = empty)
@@ -47,7 +48,12 @@ enum class NormalFilter { Linear, Nearest };
 // The per-frame constants both the GPU and the CPU pass to labShade.
 struct ShadeConstants {
   mat4 viewFromWorld{1.0f};
-  mat4 clipFromView{1.0f};
+  mat4 clipFromView{1.0f};        // the viewport's projection (the front-face pass, the pictures)
+  // The guard band: the scene and back-face buffers cover `margin` more texels on every side, at the same
+  // texel density, through bufferClipFromView (clipFromView with x and y scaled by W / (W + 2 margin),
+  // H / (H + 2 margin)); the techniques read the buffers through it, so exits just off the viewport are found.
+  int margin = 0;
+  mat4 bufferClipFromView{1.0f};
   float zNear = 0.1f, zFar = 100.0f;
   float ior = 1.5f;
   vec3 absorption{0.0f};
@@ -58,7 +64,7 @@ struct ShadeConstants {
   int reflectionMode = SNELL_REFLECT_SCENE;           // the first surface reflects the scene (else the environment)
 };
 ShadeConstants shadeConstants(const SceneFrame& frame, int depthFilter = SNELL_DEPTH_FILTER_NEAREST,
-                              int reflectionMode = SNELL_REFLECT_SCENE);
+                              int reflectionMode = SNELL_REFLECT_SCENE, int margin = 0);
 
 // The environment as both sides sample it: intensity applied, GL_LINEAR, clamp to edge.
 Texture2D environmentTexture(const SceneFrame& frame);
@@ -69,7 +75,7 @@ class GpuLab {
   // program each. dN: Wyman's d_N per vertex of frame.object (zeros when absent).
   GpuLab(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
          const std::vector<int>& techniques, const ShaderDirs& dirs, NormalFilter normalFilter, int depthFilter,
-         int reflectionMode);
+         int reflectionMode, int margin);
   ~GpuLab();
   GpuLab(const GpuLab&) = delete;
   GpuLab& operator=(const GpuLab&) = delete;

@@ -67,8 +67,10 @@ CpuBuffers cpuBuffers(const StaticBuffers& b, const ShadeConstants& k, const Sce
   c.sceneDepth = Texture2D(b.sceneDepth);
   c.sceneNormal = Texture2D(b.sceneNormal, normalFilter);
   c.sceneColor = Texture2D(b.sceneColor, Filter::Linear);
-  c.backPyramid = snellBuildDepthPyramid(c.backDepth, snellDepthSurface(k.clipFromView, k.zNear, k.zFar, SNELL_DEPTH_GL, 0.0f));
-  c.scenePyramid = snellBuildDepthPyramid(c.sceneDepth, snellDepthSurface(k.clipFromView, k.zNear, k.zFar, SNELL_DEPTH_GL, 1.0f));
+  c.backPyramid =
+      snellBuildDepthPyramid(c.backDepth, snellDepthSurface(k.bufferClipFromView, k.zNear, k.zFar, SNELL_DEPTH_GL, 0.0f));
+  c.scenePyramid =
+      snellBuildDepthPyramid(c.sceneDepth, snellDepthSurface(k.bufferClipFromView, k.zNear, k.zFar, SNELL_DEPTH_GL, 1.0f));
   c.environment = environmentTexture(frame);
   return c;
 }
@@ -86,11 +88,13 @@ void parallelRows(int height, int threads, F&& f) {
   for (std::thread& t : pool) t.join();
 }
 
-// Composite: the object's pixels from `object` where the front pass covered them, else the scene.
-Image composite(const Image& object, const Image& coverage, const Image& scene) {
-  Image out = scene;
-  for (std::size_t i = 0; i < out.texels.size(); ++i)
-    if (coverage.texels[i].w > 0.0f) out.texels[i] = vec4(vec3(object.texels[i]), 1.0f);
+// Composite: the object's pixels from `object` where the front pass covered them, else the scene (whose
+// buffer holds `margin` more texels on every side: the guard band).
+Image composite(const Image& object, const Image& coverage, const Image& scene, int margin) {
+  Image out(object.width, object.height);
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x)
+      out.at(x, y) = coverage.at(x, y).w > 0.0f ? vec4(vec3(object.at(x, y)), 1.0f) : scene.at(x + margin, y + margin);
   return out;
 }
 
@@ -123,8 +127,10 @@ std::string markdownTable(const LabResult& r) {
   const TechniqueRow* bound = r.row("image-space-bound");
   const TechniqueRow* single = r.row("single");
   s += "\n" + r.scene + ", " + std::to_string(r.width) + "x" + std::to_string(r.height) + ", " +
-       std::to_string(r.objectPixels) + " object pixels. MSE: linear RGB clamped to [0, 1], over the object's pixels "
-       "(Mayer & Assarsson's measure).\n\nWhere the error comes from:\n";
+       std::to_string(r.objectPixels) + " object pixels, scene and back-face buffers " +
+       std::to_string(r.width + 2 * r.guardBand) + "x" + std::to_string(r.height + 2 * r.guardBand) + " (a guard band of " +
+       std::to_string(r.guardBand) + " texels around the viewport). MSE: linear RGB clamped to [0, 1], over the "
+       "object's pixels (Mayer & Assarsson's measure).\n\nWhere the error comes from:\n";
   s += "- model: the two-interface reference (two refractions, Fresnel reflection of the scene at the first "
        "surface, no internal bounces) is " + fmt("%.3g", r.mseTwoVsFull) + " from the full ray tracer; no technique "
        "that models two interfaces can get closer to the ray tracer than that.\n";
@@ -135,7 +141,7 @@ std::string markdownTable(const LabResult& r) {
          "and the scene's extent) is " + fmt("%.3g", bound->mseTwo) +
          " from the two-interface reference: " + fmt("%.3g", r.boundInformationMse) + " on the " +
          fmt("%.1f %%", 100.0 * r.boundInformationShare) + " of object pixels whose exact path the buffers do not hold "
-         "(its exit point or its hit on the scene off screen or hidden behind a nearer surface), " + fmt("%.3g", r.boundBufferMse) +
+         "(its exit point or its hit on the scene outside the buffers or hidden behind a nearer surface), " + fmt("%.3g", r.boundBufferMse) +
          " elsewhere (buffer resolution, depth and normal reads).\n";
     s += "- the technique itself: \"own error\" is its MSE against the bound's image; \"x bound\" is its MSE vs the "
          "two-interface reference over the bound's (1.00x: as good as any image-space method with these buffers).\n";
@@ -186,6 +192,7 @@ void writeJson(const fs::path& path, const LabResult& r) {
   j["width"] = r.width;
   j["height"] = r.height;
   j["object_pixels"] = r.objectPixels;
+  j["guard_band_texels"] = r.guardBand;
   j["frames"] = r.frames;
   j["gpu"] = r.gpu;
   j["mse_two_interface_vs_full"] = r.mseTwoVsFull;
@@ -268,9 +275,10 @@ References traceReferences(const SceneFrame& frame, const LabOptions& options, L
 Mask missingInformation(const References& refs, const SceneFrame& frame, const StaticBuffers& sb,
                         const ShadeConstants& k) {
   const Mask& object = refs.full.mask;
-  const int W = object.width, H = object.height;
-  Mask missing(W, H);
-  const glm::dmat4 clipFromWorld = glm::dmat4(k.clipFromView) * glm::dmat4(k.viewFromWorld);
+  Mask missing(object.width, object.height);
+  // What the buffers hold: the viewport and the guard band around it.
+  const int W = sb.backDepth.width, H = sb.backDepth.height;
+  const glm::dmat4 clipFromWorld = glm::dmat4(k.bufferClipFromView) * glm::dmat4(k.viewFromWorld);
   // The buffer texel a world point projects to, or false when it is off screen / behind the camera.
   const auto texel = [&](const glm::dvec3& p, int* px, int* py) {
     const glm::dvec4 c = clipFromWorld * glm::dvec4(p, 1.0);
@@ -286,8 +294,8 @@ Mask missingInformation(const References& refs, const SceneFrame& frame, const S
     return static_cast<double>(snellLinearizeDepth(depth.at(x, y).x, k.zNear, k.zFar, SNELL_DEPTH_GL));
   };
   const double backTolerance = 0.02 * static_cast<double>(k.backRange);
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x) {
+  for (int y = 0; y < object.height; ++y)
+    for (int x = 0; x < object.width; ++x) {
       if (!object.at(x, y)) continue;
       const std::vector<PathEvent> in = refs.tracer->principalPath(primaryRay(frame.camera, x, y), 2, TirPolicy::Critical);
       if (in.size() < 2 || in[0].type != PathEventType::Enter ||
@@ -326,6 +334,7 @@ struct CpuShader {
   const SnellTechniqueInfo& info;
   const CpuBuffers& cb;
   const LabParams& params;
+  int margin;  // guard band of the buffers, texels per side
 
   SnellTwoInterfaceResult operator()(vec3 p1, vec3 n1, float dN) const {
     return labShade(info.id, p1, n1, dN, cb.backDepth, cb.backNormal, cb.backPyramid, cb.sceneDepth, cb.sceneNormal,
@@ -465,7 +474,7 @@ TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const CpuShader& shade
                     " pixels where the ray tracer sees the object (does the near plane cut the object, or does the "
                     "camera sit inside it?); no error can be measured");
   row.unshadedShare = objectPixels ? static_cast<double>(unshaded) / static_cast<double>(objectPixels) : 0.0;
-  image = composite(tb.color, tb.normal, sb.sceneColor);
+  image = composite(tb.color, tb.normal, sb.sceneColor, shade.margin);
   row.mseFull = compareImages(refs.full.color, image, refs.full.mask).mse;
   row.mseTwo = compareImages(refs.two.color, image, refs.full.mask).mse;
   return row;
@@ -609,19 +618,21 @@ LabResult runLab(const LabOptions& options) {
   // the frame is static. Their read-back buffers are what the C++ side shades from.
   std::vector<int> ids;
   for (const SnellTechniqueInfo* t : techniques) ids.push_back(t->id);
+  const int margin = static_cast<int>(std::lround(options.guardBand * std::max(result.width, result.height)));
+  result.guardBand = margin;
   GpuLab gpu(options.backend, frame, wymanDnIfNeeded(frame, techniques), ids, options.dirs, options.normalFilter,
-             options.depthFilter, options.reflectionMode);
+             options.depthFilter, options.reflectionMode, margin);
   result.gpu = gpu.description();
   result.staticPassMs = gpu.renderStatic();
   const StaticBuffers sb = gpu.readStatic();
-  const ShadeConstants k = shadeConstants(frame, options.depthFilter, options.reflectionMode);
+  const ShadeConstants k = shadeConstants(frame, options.depthFilter, options.reflectionMode, margin);
   const CpuBuffers cb = cpuBuffers(sb, k, frame, options.normalFilter);
-  const LabParams params = labParams(k.clipFromView, k.zNear, k.zFar, k.ior, k.absorption, k.envX, k.envY, k.envZ, k.backRange, k.exitRange, k.depthFilter,
+  const LabParams params = labParams(k.bufferClipFromView, k.zNear, k.zFar, k.ior, k.absorption, k.envX, k.envY, k.envZ, k.backRange, k.exitRange, k.depthFilter,
                                      k.reflectionMode);
 
   std::vector<Image> images(techniques.size());
   for (std::size_t i = 0; i < techniques.size(); ++i)
-    result.rows.push_back(runTechnique(gpu, i, CpuShader{*techniques[i], cb, params}, sb, refs, options.threads, images[i]));
+    result.rows.push_back(runTechnique(gpu, i, CpuShader{*techniques[i], cb, params, k.margin}, sb, refs, options.threads, images[i]));
   scoreAgainstTheBound(techniques, images, missingInformation(refs, frame, sb, k), refs, result);
 
   timeTechniques(gpu, techniques, options.frames, result);

@@ -23,6 +23,7 @@ struct LabOptions {
   NormalFilter normalFilter = NormalFilter::Linear;  // how both sides read the normal buffers
   int depthFilter = SNELL_DEPTH_FILTER_NEAREST;      // how every technique reads the depth buffers
   int reflectionMode = SNELL_REFLECT_SCENE;          // what the first surface reflects
+  double guardBand = 0.1;  // scene and back-face buffers wider than the viewport by this share of its size per side
   ShaderDirs dirs;
 };
 
@@ -51,6 +52,7 @@ struct TechniqueRow {
 struct LabResult {
   std::string scene;
   int width = 0, height = 0;
+  int guardBand = 0;  // texels the scene and back-face buffers extend beyond the viewport on every side
   std::size_t objectPixels = 0;
   double mseTwoVsFull = 0.0;  // the two-interface model's own error (model + TIR)
   // The image-space bound's error vs the two-interface reference, split by pixel: where the bound

@@ -91,6 +91,11 @@ int main(int argc, char** argv) {
                  "environment (the environment only)")
       ->check(CLI::IsMember({"scene", "environment"}))
       ->capture_default_str();
+  app.add_option("--guard-band", o.guardBand,
+                 "extra border of the scene and back-face buffers beyond the viewport, per side, as a share of the "
+                 "render size (0: the viewport only), so that exits just off screen are found")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   app.add_flag("-q,--quiet", o.quiet, "no progress bars and no table on stdout");
   try {
     app.parse(argc, argv);
