@@ -111,6 +111,7 @@ SNELL_FN SnellTwoInterfaceResult labShade(int technique, vec3 frontPosition, vec
                                           SNELL_TEX2D sceneColor, SNELL_ENVIRONMENT_TEX environment, LabParams p) {
   SnellDepthSurface back = snellDepthSurface(p.clipFromView, p.zNear, p.zFar, SNELL_DEPTH_GL, 0.0f);
   SnellDepthSurface scene = snellDepthSurface(p.clipFromView, p.zNear, p.zFar, SNELL_DEPTH_GL, 1.0f);
+  scene.closed = false;  // where the scene buffer is empty, the environment shows
   SnellTechniqueOptions o = labTechniqueOptions(technique, p);
   return snellTwoInterfaceRefraction(frontPosition, frontNormal, dN, backDepth, backNormal, backPyramid, back,
                                      sceneDepth, sceneNormal, scenePyramid, sceneColor, scene, environment, o);

@@ -618,7 +618,16 @@ LabResult runLab(const LabOptions& options) {
   // the frame is static. Their read-back buffers are what the C++ side shades from.
   std::vector<int> ids;
   for (const SnellTechniqueInfo* t : techniques) ids.push_back(t->id);
-  const int margin = static_cast<int>(std::lround(options.guardBand * std::max(result.width, result.height)));
+  // The margin asked for, grown until both buffer sides are multiples of 32 where that is possible: the
+  // depth pyramid's levels then halve exactly for five levels (odd sizes drop a texel row per level, which
+  // shifts the coarse levels the depth-based plane reads).
+  int margin = static_cast<int>(std::lround(options.guardBand * std::max(result.width, result.height)));
+  if (margin > 0)
+    for (int m = margin; m < margin + 32; ++m)
+      if ((result.width + 2 * m) % 32 == 0 && (result.height + 2 * m) % 32 == 0) {
+        margin = m;
+        break;
+      }
   result.guardBand = margin;
   GpuLab gpu(options.backend, frame, wymanDnIfNeeded(frame, techniques), ids, options.dirs, options.normalFilter,
              options.depthFilter, options.reflectionMode, margin);

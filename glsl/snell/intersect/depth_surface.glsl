@@ -21,6 +21,11 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
                   depth discontinuity inside the buffer it still invents a
                   one-texel ramp (Oliveira & Brauwers 2007 sec. 3.1), which is
                   why it is not the default.
+  closed        true (default): an empty texel beside the surface hides more of
+                it (a closed object's back faces curve away behind the
+                silhouette: the plane methods keep their last plane there,
+                SNELL_PLANE_HOLD); false: empty texels are open space (the
+                opaque scene: the environment shows there), set the field
 contract (snellSampleSurface):
   - NEAREST: reads the texel containing uv (no filtering: filtering depth
     invents surfaces between foreground and background, Oliveira & Brauwers
@@ -54,6 +59,7 @@ struct SnellDepthSurface {
   float emptyDepth;
   int lod;
   int depthFilter;
+  bool closed;
 };
 
 struct SnellSurfaceSample {
@@ -72,6 +78,7 @@ SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, flo
   s.emptyDepth = emptyDepth;
   s.lod = 0;
   s.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+  s.closed = true;
   return s;
 }
 

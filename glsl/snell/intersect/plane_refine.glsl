@@ -48,7 +48,9 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 #  define SNELL_PLANE_FACING_FALLBACK 1
 #endif
 /* 1: a plane hit whose projection lands on an empty texel is kept on the last
-   valid plane (snellPlaneHit); 0: it is a miss. */
+   valid plane (snellPlaneHit) on a surface whose emptiness hides more of it
+   (SnellDepthSurface.closed, the default: a closed object's back faces curve
+   away behind their silhouette); 0: it is a miss on every surface. */
 #ifndef SNELL_PLANE_HOLD
 #  define SNELL_PLANE_HOLD 1
 #endif
@@ -57,13 +59,15 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
    hit p is accepted where the buffer has a surface at its projection. Where it has
    none (the tangent plane of a convex object's back face lies outside the object,
    so rim rays project past the silhouette), the plane itself is the best estimate
-   left: with SNELL_PLANE_HOLD the hit stays at p, valid, with uv = planeUv, the
+   left: with SNELL_PLANE_HOLD, on a closed surface (s.closed: an open one such
+   as the opaque scene has nothing behind its empty texels but the
+   environment), the hit stays at p, valid, with uv = planeUv, the
    texel the plane was built from, so a normal read at h.uv returns that plane's
    normal. Off-screen or behind-the-camera p is a miss either way, and so is a
    NaN or infinite planeUv (no texel: the hit's uv stays finite). */
 SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
   SnellHit h = snellHitOnSurface(p, depthTex, s, fetchesSoFar);
-  if (h.valid || SNELL_PLANE_HOLD == 0) {
+  if (h.valid || SNELL_PLANE_HOLD == 0 || !s.closed) {
     return h;
   }
   SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
