@@ -41,6 +41,23 @@ contract: macros only; no function is defined here.
 #  endif
 #endif
 
+/* SNELL_PRECISE before a local declaration: its value is computed exactly as
+   written (no fused multiply-add), so GPU and C++ agree to the last bit where a
+   comparison downstream is sensitive to it. `precise` exists in desktop GLSL
+   400+ and HLSL; elsewhere (GLSL 330, ES) it is empty. */
+#ifndef SNELL_PRECISE
+#  if defined(SNELL_LANG_HLSL)
+#    define SNELL_PRECISE precise
+#  elif defined(SNELL_LANG_GLSL)
+#    if __VERSION__ >= 400 && !defined(GL_ES)
+#      define SNELL_PRECISE precise
+#    endif
+#  endif
+#endif
+#ifndef SNELL_PRECISE
+#  define SNELL_PRECISE
+#endif
+
 #if defined(SNELL_LANG_GLSL)
 #  ifndef SNELL_TEX2D
 #    define SNELL_TEX2D sampler2D

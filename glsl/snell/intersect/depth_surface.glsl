@@ -101,8 +101,8 @@ SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, Sn
   }
   if (s.depthFilter == SNELL_DEPTH_FILTER_BILINEAR) {
     // Texel-centre coordinates: texel i's centre sits at i + 0.5.
-    float tx = uv.x * float(size.x) - 0.5f;
-    float ty = uv.y * float(size.y) - 0.5f;
+    SNELL_PRECISE float tx = uv.x * float(size.x) - 0.5f;
+    SNELL_PRECISE float ty = uv.y * float(size.y) - 0.5f;
     float fx = floor(tx);
     float fy = floor(ty);
     int x0 = clamp(int(fx), 0, size.x - 1);
@@ -116,7 +116,10 @@ SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, Sn
     if (d00 != s.emptyDepth && d10 != s.emptyDepth && d01 != s.emptyDepth && d11 != s.emptyDepth) {
       float wx = tx - fx;
       float wy = ty - fy;
-      d = mix(mix(d00, d10, wx), mix(d01, d11, wx), wy);
+      SNELL_PRECISE float d0 = d00 + wx * (d10 - d00);
+      SNELL_PRECISE float d1 = d01 + wx * (d11 - d01);
+      SNELL_PRECISE float dm = d0 + wy * (d1 - d0);
+      d = dm;
       r.interpolated = true;
     }
   }
