@@ -7,6 +7,8 @@
 //     snell::snellBuildDepthPyramid builds in C++, bit for bit, on every level.
 #include <gtest/gtest.h>
 
+#include <snell/gpu/depth_pyramid_pass.hpp>
+
 #include <snell/depth_pyramid.hpp>
 #include <snell/gpu/context.hpp>
 #include <snell/gpu/include_flattener.hpp>
@@ -76,41 +78,19 @@ TEST_P(DepthPyramidGpu, AnalyticScenesRenderTheSameOnGpuAndCpu) {
 TEST_P(DepthPyramidGpu, GlPassEqualsCppBuilderOnEveryLevel) {
   Context ctx(GetParam());
   const GlApi& gl = ctx.gl();
-  const Program program = Program::graphics(
-      gl, flattenGlslSource(R"(#version 450 core
-void main() {
-  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
-  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-)", "pyramid_fullscreen.vert", {}),
-      flattenGlslFile(kRoot / "examples" / "glsl" / "depth_pyramid.frag", {kRoot / "glsl"}));
-  VertexArray vao(gl);
+  // The library's pass (include/snell/gpu/depth_pyramid_pass.hpp), as snell-lab uses it.
+  const DepthPyramidPass pass(gl, flattenGlslFile(kRoot / "examples" / "glsl" / "depth_pyramid.frag", {kRoot / "glsl"}));
   for (int conv : {SNELL_DEPTH_GL, SNELL_DEPTH_REVERSED}) {
     for (const DepthScene& sc : {snell_test::sphereBack(203, 117, conv), snell_test::silhouette(128, 64, conv),
                                  snell_test::thinSpike(97, 160, conv)}) {
       const snell::Texture2D cpu = snell::snellBuildDepthPyramid(sc.depth, sc.surface());
       const Texture depth(gl, sc.depth);
-      std::vector<std::unique_ptr<Framebuffer>> levels;
-      int w = sc.width, h = sc.height, mismatches = 0, texels = 0;
+      const DepthPyramid pyramid(gl, sc.width, sc.height);
+      ASSERT_EQ(pyramid.levels(), cpu.levelCount());
+      pass.build(pyramid, depth.id(), sc.zNear, sc.zFar, sc.convention, sc.emptyDepth);
+      int mismatches = 0, texels = 0;
       for (int lod = 0; lod < cpu.levelCount(); ++lod) {
-        levels.push_back(std::make_unique<Framebuffer>(gl, w, h, 1, false));
-        Framebuffer& fb = *levels.back();
-        fb.bind();
-        gl.ActiveTexture(GL_TEXTURE0);
-        gl.BindTexture(GL_TEXTURE_2D, lod == 0 ? depth.id() : levels[levels.size() - 2]->colorTexture(0));
-        program.set("baseLevel", lod == 0 ? 1 : 0);
-        program.set("sourceLod", 0);
-        program.setSampler("source", 0);
-        program.set("emptyDepth", sc.emptyDepth);
-        if (program.hasUniform("zNear")) program.set("zNear", sc.zNear);
-        if (program.hasUniform("zFar")) program.set("zFar", sc.zFar);
-        if (program.hasUniform("convention")) program.set("convention", sc.convention);
-        vao.bind();
-        program.use();
-        gl.Disable(GL_DEPTH_TEST);
-        gl.DrawArrays(GL_TRIANGLES, 0, 3);
-        checkGl(gl, "pyramid pass");
-        const snell::Image got = fb.readColor(0);
+        const snell::Image got = pyramid.readLevel(lod);
         const snell::Image& want = cpu.level(lod);
         ASSERT_EQ(got.width, want.width);
         ASSERT_EQ(got.height, want.height);
@@ -125,10 +105,7 @@ void main() {
             ++mismatches;
           }
         }
-        w = std::max(1, w / 2);
-        h = std::max(1, h / 2);
       }
-      gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
       std::printf("[pyramid] %s conv %d levels %d texels %d mismatches %d\n", sc.name.c_str(), conv, cpu.levelCount(),
                   texels, mismatches);
       EXPECT_EQ(mismatches, 0) << sc.name;

@@ -3,6 +3,7 @@
 #include "technique.hpp"
 
 #include <snell/gpu/context.hpp>
+#include <snell/gpu/depth_pyramid_pass.hpp>
 #include <snell/gpu/include_flattener.hpp>
 #include <snell/gpu/program.hpp>
 #include <snell/gpu/resources.hpp>
@@ -96,49 +97,6 @@ gpu::FlatSource flatten(const fs::path& file, const ShaderDirs& dirs) {
   return gpu::flattenGlslFile(file, {dirs.snellGlsl, dirs.labGlsl});
 }
 
-// A depth min/max pyramid as one RGBA32F texture with its full mip chain, one
-// framebuffer per level (the GL pass writes level L+1 while reading level L).
-struct Pyramid {
-  gpu::GlHandle<gpu::detail::DeleteTexture> texture;
-  std::vector<gpu::GlHandle<gpu::detail::DeleteFramebuffer>> fbos;
-  std::vector<ivec2> sizes;
-
-  Pyramid(const gpu::GlApi& gl, int width, int height) {
-    GLuint id = 0;
-    gl.GenTextures(1, &id);
-    texture = gpu::GlHandle<gpu::detail::DeleteTexture>(gl, id);
-    gl.BindTexture(GL_TEXTURE_2D, id);
-    int w = width, h = height;
-    for (int lod = 0;; ++lod) {
-      sizes.emplace_back(w, h);
-      gl.TexImage2D(GL_TEXTURE_2D, lod, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
-      if (w == 1 && h == 1) break;
-      w = std::max(1, w / 2);
-      h = std::max(1, h / 2);
-    }
-    const int levels = static_cast<int>(sizes.size());
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, levels - 1);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    gl.BindTexture(GL_TEXTURE_2D, 0);
-    for (int lod = 0; lod < levels; ++lod) {
-      GLuint fbo = 0;
-      gl.GenFramebuffers(1, &fbo);
-      fbos.emplace_back(gl, fbo);
-      gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
-      gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, id, lod);
-      const GLenum buf = GL_COLOR_ATTACHMENT0;
-      gl.DrawBuffers(1, &buf);
-      gpu::checkFramebufferComplete(gl, "depth pyramid level " + std::to_string(lod) + " framebuffer");
-    }
-    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
-    gpu::checkGl(gl, "pyramid allocation");
-  }
-};
-
 template <class T>
 void setIf(const gpu::Program& p, const std::string& name, const T& value) {
   if (p.hasUniform(name)) p.set(name, value);
@@ -158,10 +116,11 @@ struct GpuLab::Impl {
   gpu::Texture environment;
   std::vector<gpu::Texture> paintingTextures;
   std::vector<std::array<vec3, 4>> paintingCorners;
-  gpu::Program background, scene, back, pyramid;
+  gpu::Program background, scene, back;
+  gpu::DepthPyramidPass pyramidPass;
   std::vector<gpu::Program> refract;
   gpu::Framebuffer sceneFb, backFb, frontFb;
-  Pyramid scenePyramid, backPyramid;
+  gpu::DepthPyramid scenePyramid, backPyramid;
   gpu::VertexArray vao;
 
   Impl(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
@@ -185,8 +144,7 @@ struct GpuLab::Impl {
                                      flatten(dirs.labGlsl / "lab_scene.frag", dirs))),
         back(gpu::Program::graphics(gl, flatten(dirs.labGlsl / "lab_mesh.vert", dirs),
                                     flatten(dirs.labGlsl / "lab_back.frag", dirs))),
-        pyramid(gpu::Program::graphics(gl, flatten(dirs.labGlsl / "lab_fullscreen.vert", dirs),
-                                       flatten(dirs.labGlsl / "depth_pyramid.frag", dirs))),
+        pyramidPass(gl, flatten(dirs.labGlsl / "depth_pyramid.frag", dirs)),
         sceneFb(gl, bufferWidth, bufferHeight, 2, true),
         backFb(gl, bufferWidth, bufferHeight, 1, true),
         frontFb(gl, width, height, 4, true),
@@ -232,10 +190,6 @@ struct GpuLab::Impl {
     setIf(scene, "painting", 0);
     setIf(back, "viewFromWorld", k.viewFromWorld);
     setIf(back, "clipFromView", k.bufferClipFromView);
-    setIf(pyramid, "source", 0);
-    setIf(pyramid, "zNear", k.zNear);
-    setIf(pyramid, "zFar", k.zFar);
-    setIf(pyramid, "convention", SNELL_DEPTH_GL);
 
     for (int id : techniques) {
       const std::string defines = "#define LAB_TECHNIQUE " + std::to_string(id) + "\n";
@@ -267,36 +221,6 @@ struct GpuLab::Impl {
     positions.bindBase(0);
     normals.bindBase(1);
     indices.bindBase(2);
-  }
-
-  void buildPyramid(const Pyramid& pyr, GLuint depthTexture, float emptyDepth) {
-    gl.Disable(GL_DEPTH_TEST);
-    gl.Disable(GL_CULL_FACE);
-    pyramid.use();
-    vao.bind();
-    setIf(pyramid, "emptyDepth", emptyDepth);
-    setIf(pyramid, "sourceLod", 0);
-    for (std::size_t lod = 0; lod < pyr.sizes.size(); ++lod) {
-      gl.BindFramebuffer(GL_FRAMEBUFFER, pyr.fbos[lod].id());
-      gl.Viewport(0, 0, pyr.sizes[lod].x, pyr.sizes[lod].y);
-      gl.ActiveTexture(GL_TEXTURE0);
-      if (lod == 0) {
-        gl.BindTexture(GL_TEXTURE_2D, depthTexture);
-        setIf(pyramid, "baseLevel", 1);
-      } else {
-        // Read level lod - 1 only (no feedback loop with the attached level).
-        gl.BindTexture(GL_TEXTURE_2D, pyr.texture.id());
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, static_cast<GLint>(lod - 1));
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(lod - 1));
-        setIf(pyramid, "baseLevel", 0);
-      }
-      gl.DrawArrays(GL_TRIANGLES, 0, 3);
-    }
-    gl.BindTexture(GL_TEXTURE_2D, pyr.texture.id());
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(pyr.sizes.size() - 1));
-    gl.BindTexture(GL_TEXTURE_2D, 0);
-    gpu::checkGl(gl, "depth pyramid pass");
   }
 
   void drawStatic() {
@@ -337,8 +261,8 @@ struct GpuLab::Impl {
     gl.DepthFunc(GL_LESS);
     gpu::checkGl(gl, "back-face pass");
     // (3) Both depth pyramids.
-    buildPyramid(backPyramid, backFb.depthTexture(), 0.0f);
-    buildPyramid(scenePyramid, sceneFb.depthTexture(), 1.0f);
+    pyramidPass.build(backPyramid, backFb.depthTexture(), k.zNear, k.zFar, SNELL_DEPTH_GL, 0.0f);
+    pyramidPass.build(scenePyramid, sceneFb.depthTexture(), k.zNear, k.zFar, SNELL_DEPTH_GL, 1.0f);
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 
@@ -352,8 +276,8 @@ struct GpuLab::Impl {
     gl.DepthFunc(GL_LESS);
     gl.Enable(GL_CULL_FACE);
     gl.CullFace(GL_BACK);
-    const GLuint units[8] = {backFb.depthTexture(),   backFb.colorTexture(0),   backPyramid.texture.id(),
-                             sceneFb.depthTexture(),  sceneFb.colorTexture(1),  scenePyramid.texture.id(),
+    const GLuint units[8] = {backFb.depthTexture(),   backFb.colorTexture(0),   backPyramid.texture(),
+                             sceneFb.depthTexture(),  sceneFb.colorTexture(1),  scenePyramid.texture(),
                              sceneFb.colorTexture(0), environment.id()};
     for (int u = 0; u < 8; ++u) {
       gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(u));

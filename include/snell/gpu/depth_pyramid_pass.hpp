@@ -1,0 +1,149 @@
+// The depth min/max pyramid (glsl/snell/intersect/depth_pyramid.glsl) built on
+// the GPU: the reusable pass behind snell-lab's back-face and scene pyramids
+// and the GL-vs-C++ pyramid test. One RGBA32F texture with its full mip chain;
+// level 0 from a depth texture (snellDepthPyramidBase), each next level the 2x2
+// reduction of the one before (snellDepthMinMaxReduce), one full-screen
+// triangle per level through examples/glsl/depth_pyramid.frag (or a shader
+// with its uniforms). The result equals snell::snellBuildDepthPyramid bit for
+// bit on every level (tests/gpu/depth_pyramid_gpu_test.cpp).
+//
+//   snell::gpu::DepthPyramidPass pass(gl, flattenGlslFile("examples/glsl/depth_pyramid.frag", {"glsl"}));
+//   snell::gpu::DepthPyramid pyramid(gl, width, height);
+//   pass.build(pyramid, depthTexture, zNear, zFar, SNELL_DEPTH_GL, 0.0f);   // then bind pyramid.texture()
+#pragma once
+#include "error.hpp"
+#include "include_flattener.hpp"
+#include "program.hpp"
+#include "resources.hpp"
+
+#include <snell/bridge.hpp>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace snell::gpu {
+
+// The pyramid's storage: every level of a GL_RGBA32F texture (sampled nearest
+// within and between levels, clamp to edge) and one framebuffer per level.
+class DepthPyramid {
+ public:
+  DepthPyramid(const GlApi& gl, int width, int height) : gl_(&gl) {
+    if (width <= 0 || height <= 0)
+      throw Error("DepthPyramid: size " + std::to_string(width) + "x" + std::to_string(height) + " is empty");
+    GLuint id = 0;
+    gl.GenTextures(1, &id);
+    texture_ = GlHandle<detail::DeleteTexture>(gl, id);
+    gl.BindTexture(GL_TEXTURE_2D, id);
+    for (int w = width, h = height;; w = std::max(1, w / 2), h = std::max(1, h / 2)) {
+      gl.TexImage2D(GL_TEXTURE_2D, static_cast<GLint>(sizes_.size()), GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
+      sizes_.emplace_back(w, h);
+      if (w == 1 && h == 1) break;
+    }
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, levels() - 1);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    for (int lod = 0; lod < levels(); ++lod) {
+      GLuint fbo = 0;
+      gl.GenFramebuffers(1, &fbo);
+      fbos_.emplace_back(gl, fbo);
+      gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+      gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, id, lod);
+      const GLenum buf = GL_COLOR_ATTACHMENT0;
+      gl.DrawBuffers(1, &buf);
+      checkFramebufferComplete(gl, "depth pyramid level " + std::to_string(lod) + " framebuffer");
+    }
+    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    checkGl(gl, "depth pyramid allocation");
+  }
+
+  GLuint texture() const { return texture_.id(); }
+  int levels() const { return static_cast<int>(sizes_.size()); }
+  ivec2 size(int lod) const { return sizes_.at(static_cast<std::size_t>(lod)); }
+  GLuint framebuffer(int lod) const { return fbos_.at(static_cast<std::size_t>(lod)).id(); }
+
+  // One level, read back (glReadPixels from its framebuffer).
+  snell::Image readLevel(int lod) const {
+    const ivec2 s = size(lod);
+    snell::Image img(s.x, s.y);
+    gl_->BindFramebuffer(GL_FRAMEBUFFER, framebuffer(lod));
+    gl_->ReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl_->ReadPixels(0, 0, s.x, s.y, GL_RGBA, GL_FLOAT, img.texels.data());
+    gl_->BindFramebuffer(GL_FRAMEBUFFER, 0);
+    checkGl(*gl_, "DepthPyramid::readLevel (glReadPixels)");
+    return img;
+  }
+
+ private:
+  const GlApi* gl_;
+  GlHandle<detail::DeleteTexture> texture_;
+  std::vector<GlHandle<detail::DeleteFramebuffer>> fbos_;
+  std::vector<ivec2> sizes_;
+};
+
+class DepthPyramidPass {
+ public:
+  // fragment: examples/glsl/depth_pyramid.frag, flattened with glsl/ on the include path.
+  DepthPyramidPass(const GlApi& gl, const FlatSource& fragment)
+      : gl_(&gl), program_(Program::graphics(gl, fullScreenTriangle(), fragment)), vao_(gl) {}
+
+  // Fills every level of `target` from depthTexture (level 0's size), whose texels are window depths in
+  // `convention` with emptyDepth meaning "no surface". Leaves texture unit 0 unbound, depth test off.
+  void build(const DepthPyramid& target, GLuint depthTexture, float zNear, float zFar, int convention,
+             float emptyDepth) const {
+    const GlApi& gl = *gl_;
+    gl.Disable(GL_DEPTH_TEST);
+    gl.Disable(GL_CULL_FACE);
+    program_.use();
+    vao_.bind();
+    program_.set("zNear", zNear);
+    program_.set("zFar", zFar);
+    program_.set("convention", convention);
+    program_.set("emptyDepth", emptyDepth);
+    program_.set("sourceLod", 0);
+    program_.setSampler("source", 0);
+    gl.ActiveTexture(GL_TEXTURE0);
+    for (int lod = 0; lod < target.levels(); ++lod) {
+      gl.BindFramebuffer(GL_FRAMEBUFFER, target.framebuffer(lod));
+      gl.Viewport(0, 0, target.size(lod).x, target.size(lod).y);
+      if (lod == 0) {
+        gl.BindTexture(GL_TEXTURE_2D, depthTexture);
+        program_.set("baseLevel", 1);
+      } else {
+        // Read level lod - 1 only: no feedback loop with the level being written.
+        gl.BindTexture(GL_TEXTURE_2D, target.texture());
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, lod - 1);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, lod - 1);
+        program_.set("baseLevel", 0);
+      }
+      gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    gl.BindTexture(GL_TEXTURE_2D, target.texture());
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, target.levels() - 1);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    checkGl(gl, "depth pyramid pass");
+  }
+
+ private:
+  const GlApi* gl_;
+  Program program_;
+  VertexArray vao_;
+
+  static FlatSource fullScreenTriangle() {
+    return flattenGlslSource(R"(#version 450 core
+void main() {
+  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
+  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+}
+)",
+                             "snell_depth_pyramid_pass.vert", {});
+  }
+};
+
+}  // namespace snell::gpu
