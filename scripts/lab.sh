@@ -6,10 +6,16 @@
 # pictures, table.md and table.json go to lab-out/. Extra arguments are passed
 # to snell-lab (e.g. `bash scripts/lab.sh examples/scenes/sphere_painting.json`,
 # `bash scripts/lab.sh --help`). About a minute on 2 cores after the build.
+# Paths in the arguments (scene files, --out) are taken relative to the
+# directory it is run from; the build happens in the repository.
 set -euo pipefail
-cd "$(dirname "$0")/.."
+caller=$(pwd)
+repo=$(cd "$(dirname "$0")/.." && pwd)
+cd "$repo"
 bash scripts/install-deps.sh
 build=${SNELL_BUILD_DIR:-build}
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j "$(nproc)" --target snell-lab
-"$build/examples/lab/snell-lab" "$@"
+lab=$(cd "$build" && pwd)/examples/lab/snell-lab
+cd "$caller"
+"$lab" "$@"
