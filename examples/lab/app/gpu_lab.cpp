@@ -18,15 +18,13 @@ namespace snell::lab {
 
 namespace fs = std::filesystem;
 
-ShadeConstants shadeConstants(const SceneFrame& frame, int depthFilter, int reflectionMode, int margin) {
+ShadeConstants shadeConstants(const SceneFrame& frame, int margin) {
   ShadeConstants k;
   k.margin = std::max(0, margin);
   const float W = static_cast<float>(frame.camera.width), H = static_cast<float>(frame.camera.height);
   mat4 shrink(1.0f);
   shrink[0][0] = W / (W + 2.0f * static_cast<float>(k.margin));
   shrink[1][1] = H / (H + 2.0f * static_cast<float>(k.margin));
-  k.depthFilter = depthFilter;
-  k.reflectionMode = reflectionMode;
   k.viewFromWorld = frame.camera.viewFromWorld();
   k.clipFromView = frame.camera.clipFromView();
   k.bufferClipFromView = shrink * k.clipFromView;
@@ -43,10 +41,10 @@ ShadeConstants shadeConstants(const SceneFrame& frame, int depthFilter, int refl
   k.envX = m[0];
   k.envY = m[1];
   k.envZ = m[2];
-  k.backRange = meshBounds(frame.object).diagonal();
+  const Bounds box = meshBounds(frame.object);
+  k.backRange = box.diagonal();
   // Every exit ray starts inside the object and ends on the object or the opaque scene (else it leaves
   // the scene): the diagonal of the box around both bounds how far it can travel to a hit.
-  const auto box = meshBounds(frame.object);
   vec3 lo = box.lo, hi = box.hi;
   for (const Painting& painting : frame.paintings)
     for (const vec3& c : painting.corners()) {
@@ -124,13 +122,12 @@ struct GpuLab::Impl {
   gpu::VertexArray vao;
 
   Impl(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
-       const std::vector<int>& ids, const ShaderDirs& dirs, NormalFilter normalFilter, int depthFilter,
-       int reflectionMode, int margin)
+       const std::vector<int>& ids, const ShaderDirs& dirs, const ShadeConstants& constants)
       : ctx(gpu::parseBackend(backend)),
         gl(ctx.gl()),
         width(frame.camera.width),
         height(frame.camera.height),
-        k(shadeConstants(frame, depthFilter, reflectionMode, margin)),
+        k(constants),
         bufferWidth(width + 2 * k.margin),
         bufferHeight(height + 2 * k.margin),
         techniques(ids),
@@ -170,7 +167,7 @@ struct GpuLab::Impl {
     gl.BindTexture(GL_TEXTURE_2D, sceneFb.colorTexture(0));
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    const GLint normalGl = normalFilter == NormalFilter::Linear ? GL_LINEAR : GL_NEAREST;
+    const GLint normalGl = k.normalFilter == NormalFilter::Linear ? GL_LINEAR : GL_NEAREST;
     for (GLuint normalTexture : {backFb.colorTexture(0), sceneFb.colorTexture(1)}) {
       gl.BindTexture(GL_TEXTURE_2D, normalTexture);
       gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, normalGl);
@@ -292,10 +289,8 @@ struct GpuLab::Impl {
 };
 
 GpuLab::GpuLab(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
-               const std::vector<int>& techniques, const ShaderDirs& dirs, NormalFilter normalFilter,
-               int depthFilter, int reflectionMode, int margin)
-    : impl_(std::make_unique<Impl>(backend, frame, dN, techniques, dirs, normalFilter, depthFilter, reflectionMode,
-                                   margin)) {}
+               const std::vector<int>& techniques, const ShaderDirs& dirs, const ShadeConstants& k)
+    : impl_(std::make_unique<Impl>(backend, frame, dN, techniques, dirs, k)) {}
 
 GpuLab::~GpuLab() = default;
 

@@ -60,11 +60,13 @@ struct ShadeConstants {
   vec3 envX{1, 0, 0}, envY{0, 1, 0}, envZ{0, 0, 1};  // world-from-view, environment rotation folded in
   float backRange = 10.0f;                            // object bounding-box diagonal
   float exitRange = 10.0f;                            // diagonal of the box around object and opaque scene
+  NormalFilter normalFilter = NormalFilter::Linear;   // how both sides read the normal buffers
   int depthFilter = SNELL_DEPTH_FILTER_NEAREST;       // how every technique reads both depth buffers
   int reflectionMode = SNELL_REFLECT_SCENE;           // the first surface reflects the scene (else the environment)
 };
-ShadeConstants shadeConstants(const SceneFrame& frame, int depthFilter = SNELL_DEPTH_FILTER_NEAREST,
-                              int reflectionMode = SNELL_REFLECT_SCENE, int margin = 0);
+// The frame's constants with a guard band of `margin` texels per side; the read
+// modes keep their defaults (set the fields).
+ShadeConstants shadeConstants(const SceneFrame& frame, int margin = 0);
 
 // The environment as both sides sample it: intensity applied, GL_LINEAR, clamp to edge.
 Texture2D environmentTexture(const SceneFrame& frame);
@@ -73,9 +75,9 @@ class GpuLab {
  public:
   // backend: "auto", "osmesa" or "egl". `techniques`: SNELL_TECHNIQUE_* ids, one
   // program each. dN: Wyman's d_N per vertex of frame.object (zeros when absent).
+  // k: shadeConstants(frame, margin) with the read modes the C++ side uses too.
   GpuLab(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
-         const std::vector<int>& techniques, const ShaderDirs& dirs, NormalFilter normalFilter, int depthFilter,
-         int reflectionMode, int margin);
+         const std::vector<int>& techniques, const ShaderDirs& dirs, const ShadeConstants& k);
   ~GpuLab();
   GpuLab(const GpuLab&) = delete;
   GpuLab& operator=(const GpuLab&) = delete;

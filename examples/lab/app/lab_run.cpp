@@ -59,8 +59,8 @@ struct CpuBuffers {
   Texture2D environment;
 };
 
-CpuBuffers cpuBuffers(const StaticBuffers& b, const ShadeConstants& k, const SceneFrame& frame, NormalFilter normals) {
-  const Filter normalFilter = normals == NormalFilter::Linear ? Filter::Linear : Filter::Nearest;
+CpuBuffers cpuBuffers(const StaticBuffers& b, const ShadeConstants& k, const SceneFrame& frame) {
+  const Filter normalFilter = k.normalFilter == NormalFilter::Linear ? Filter::Linear : Filter::Nearest;
   CpuBuffers c;
   c.backDepth = Texture2D(b.backDepth);
   c.backNormal = Texture2D(b.backNormal, normalFilter);
@@ -629,13 +629,15 @@ LabResult runLab(const LabOptions& options) {
         break;
       }
   result.guardBand = margin;
-  GpuLab gpu(options.backend, frame, wymanDnIfNeeded(frame, techniques), ids, options.dirs, options.normalFilter,
-             options.depthFilter, options.reflectionMode, margin);
+  ShadeConstants k = shadeConstants(frame, margin);
+  k.normalFilter = options.normalFilter;
+  k.depthFilter = options.depthFilter;
+  k.reflectionMode = options.reflectionMode;
+  GpuLab gpu(options.backend, frame, wymanDnIfNeeded(frame, techniques), ids, options.dirs, k);
   result.gpu = gpu.description();
   result.staticPassMs = gpu.renderStatic();
   const StaticBuffers sb = gpu.readStatic();
-  const ShadeConstants k = shadeConstants(frame, options.depthFilter, options.reflectionMode, margin);
-  const CpuBuffers cb = cpuBuffers(sb, k, frame, options.normalFilter);
+  const CpuBuffers cb = cpuBuffers(sb, k, frame);
   const LabParams params = labParams(k.bufferClipFromView, k.zNear, k.zFar, k.ior, k.absorption, k.envX, k.envY, k.envZ, k.backRange, k.exitRange, k.depthFilter,
                                      k.reflectionMode);
 
