@@ -10,13 +10,14 @@
 #
 # Environment: SNELL_FUZZ_TIME (seconds per target, default 20),
 # SNELL_FUZZ_BUILD_DIR (default build/fuzz), CLANGXX (default clang++-14 or clang++),
-# SNELL_FUZZ_TARGETS (default "include_flattener scene obj").
+# SNELL_FUZZ_TARGETS (default "include_flattener scene obj image"),
+# SNELL_FUZZ_BUILD_ONLY=1 (build the targets and stop: tests/fuzz/campaign.sh).
 # Needs clang-14 and libclang-rt-14-dev (scripts/install-deps.sh).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 out=${SNELL_FUZZ_BUILD_DIR:-$root/build/fuzz}
 seconds=${SNELL_FUZZ_TIME:-10}
-targets=${SNELL_FUZZ_TARGETS:-"include_flattener scene obj"}
+targets=${SNELL_FUZZ_TARGETS:-"include_flattener scene obj image"}
 cxx=${CLANGXX:-$(command -v clang++-14 || command -v clang++ || true)}
 [ -n "$cxx" ] || { echo "run_fuzzers: clang++ not found (install clang-14 libclang-rt-14-dev)" >&2; exit 1; }
 mkdir -p "$out/obj"
@@ -48,6 +49,8 @@ for t in $targets; do
   [ "$t" = include_flattener ] || extra=("${objs[@]}")
   "$cxx" "${common[@]}" -fsanitize=fuzzer "$root/tests/fuzz/fuzz_$t.cpp" "${extra[@]}" -o "$out/fuzz_$t" -lpthread
 done
+
+[ "${SNELL_FUZZ_BUILD_ONLY:-0}" = 1 ] && exit 0
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}

@@ -268,12 +268,76 @@ TEST(LabLoaderErrors, CorruptImagesNameThePathAndTheReason) {
   const std::string bigPath = dir.write("big.png", huge);
   EXPECT_EQ(labtest::errorOf([&] { readImage(bigPath); }, ErrorKind::Parse),
             bigPath + ": cannot decode image: Image too large to decode");
+  // 16384 x 16384 passes stb_image's own checks (1 GiB of bytes, 4 GiB as floats).
+  huge.replace(16, 8, std::string("\x00\x00\x40\x00\x00\x00\x40\x00", 8));
+  const std::string widePath = dir.write("wide.png", huge);
+  EXPECT_EQ(labtest::errorOf([&] { readImage(widePath); }, ErrorKind::Parse),
+            widePath + ": image is 16384 x 16384 pixels; the lab reads at most 33554432 (8192 x 4096)");
 
   const std::string empty = dir.write("empty.png", "");
   const std::string emptyMsg = labtest::errorOf([&] { readImage(empty); }, ErrorKind::Parse);
   EXPECT_EQ(emptyMsg.rfind(empty + ": cannot decode image: ", 0), 0u) << emptyMsg;
   // A Radiance header that promises 100000 x 100000 texels and ends.
   const std::string hdr = dir.write("sky.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 100000 +X 100000\n\x02\x02");
-  const std::string hdrMsg = labtest::errorOf([&] { readImage(hdr); }, ErrorKind::Parse);
-  EXPECT_EQ(hdrMsg.rfind(hdr + ": cannot decode image: ", 0), 0u) << hdrMsg;
+  EXPECT_EQ(labtest::errorOf([&] { readImage(hdr); }, ErrorKind::Parse),
+            hdr + ": image is 100000 x 100000 pixels; the lab reads at most 33554432 (8192 x 4096)");
+  // Formats stb_image knows but the lab does not read (GIF, PSD, PNM): never decoded.
+  const std::string gif = dir.write("a.gif", std::string("GIF89a\x01\x00\x01\x00\x80\x00\x00", 13));
+  EXPECT_EQ(labtest::errorOf([&] { readImage(gif); }, ErrorKind::Parse), gif + ": cannot decode image: Image not of any known type, or corrupt");
+  const std::string pnm = dir.write("a.ppm", "P6\n1 1\n255\n\x01\x02\x03");
+  EXPECT_EQ(labtest::errorOf([&] { readImage(pnm); }, ErrorKind::Parse), pnm + ": cannot decode image: Image not of any known type, or corrupt");
+}
+
+// issue 16, found by fuzz_image: stb_image 2.27 wrote past its Huffman
+// arrays on a JPEG table of more than 256 codes, and turned a Radiance header
+// of width 0 into an image of no texels (snell::Image threw invalid_argument).
+TEST(LabLoaderErrors, ImageFuzzFindingsAreParseErrors) {
+  const std::string dir = std::string(SNELL_SOURCE_DIR) + "/tests/fuzz/regressions/image/";
+  const std::string jpegMsg = labtest::errorOf([&] { readImage(dir + "jpeg_dht_overflow.jpg"); }, ErrorKind::Parse);
+  EXPECT_EQ(jpegMsg.rfind(dir + "jpeg_dht_overflow.jpg: cannot decode image: a JPEG Huffman table defines ", 0), 0u);
+  EXPECT_NE(jpegMsg.find(" codes, at most 256 are allowed (corrupt JPEG)"), std::string::npos) << jpegMsg;
+  EXPECT_EQ(labtest::errorOf([&] { readImage(dir + "hdr_zero_width.hdr"); }, ErrorKind::Parse),
+            dir + "hdr_zero_width.hdr: cannot decode image: its header says 0 x 6 pixels");
+  EXPECT_EQ(labtest::errorOf([&] { readImage(dir + "hdr_zero_run_hang.hdr"); }, ErrorKind::Parse),
+            dir + "hdr_zero_run_hang.hdr: cannot decode image: scanline 3 of the Radiance file has a run of length 0 "
+                  "(the file is truncated)");
+  // The same on a file cut inside its first scanline: stb_image read zeros past the end and hung.
+  const std::string sky = readFile(std::string(SNELL_SOURCE_DIR) + "/tests/fuzz/corpus/image/sky.hdr");
+  const std::string::size_type data = sky.find("+X 8\n") + 5;
+  ASSERT_NE(data, std::string::npos + 5);
+  const labtest::TempDir tmp;
+  const std::string cut = tmp.write("cut.hdr", sky.substr(0, data + 10));
+  EXPECT_EQ(labtest::errorOf([&] { readImage(cut); }, ErrorKind::Parse),
+            cut + ": cannot decode image: scanline 0 of the Radiance file has a run of length 0 (the file is truncated)");
+  EXPECT_EQ(readImage(std::string(SNELL_SOURCE_DIR) + "/tests/fuzz/corpus/image/sky.hdr").width, 8);
+  EXPECT_EQ(labtest::errorOf([&] { readImage(dir + "png_idat_length_past_end.png"); }, ErrorKind::Parse),
+            dir + "png_idat_length_past_end.png: cannot decode image: PNG chunk 'IDAT' claims 1610612785 bytes, the file "
+                  "has 0 left (truncated or corrupt)");
+  // A valid JPEG (every DHT within bounds) still decodes: the check refuses no good file.
+  const snell::Image good = readImage(std::string(SNELL_SOURCE_DIR) + "/tests/fuzz/corpus/image/rgb.jpg");
+  EXPECT_EQ(good.width, 8);
+  EXPECT_EQ(good.height, 6);
+}
+
+// issue 16: every line kind the lab does not use (skin weights, lines, points,
+// smoothing groups, tags, materials, groups) is blanked before tinyobjloader
+// sees the text, which converted a `vw` joint id of 1e30 to int (undefined
+// behaviour). They change nothing, and later lines keep their numbers.
+TEST(LabLoaderErrors, ObjUnusedLinesNeverReachTheParser) {
+  const std::string tetra = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  const std::string hostile =
+      "vw 0 1e30 0.5 6.4e11 0.5\nvw 99999999999999999999\nl 1 99999999999\np -99999999999\ns 1e99\n"
+      "t a 99999999999/1/0 1 2\nusemtl x\nmtllib nowhere.mtl\no obj\ng grp\nvp 0 0\nvt 1e99 nan\n";
+  const Mesh reference = parseObj(tetra, "tetra.obj");
+  const Mesh m = parseObj(hostile + tetra, "hostile.obj");
+  EXPECT_EQ(m.positions, reference.positions);
+  EXPECT_EQ(m.indices, reference.indices);
+  EXPECT_EQ(meshError(hostile + kTriangle + "f 1 2 9\n", ErrorKind::Mesh),
+            "m.obj:16: face vertex index 9 is out of range: the file has 3 vertices");
+  // The fuzzer's input: nothing in it is a face, and no line of it reaches tinyobjloader unchecked.
+  const std::string finding = std::string(SNELL_SOURCE_DIR) + "/tests/fuzz/regressions/obj/vw_joint_id_overflow.obj";
+  EXPECT_EQ(labtest::errorOf([&] { loadObj(finding); }, ErrorKind::Mesh),
+            finding + ": the OBJ file has no faces (empty mesh)");
+  EXPECT_EQ(meshError(readFile(finding) + "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 x\n", ErrorKind::Parse),
+            "m.obj:23: malformed face vertex 'x'");
 }

@@ -21,34 +21,50 @@ namespace {
 
 // tinyobjloader reads a number it cannot parse as 0 and an index past the int
 // range wrapped around (atoi), so a truncated or corrupt file would load as a
-// wrong mesh without a word. This pass checks the lines the lab uses (v, vn,
-// f) before it and names the line of the first bad one.
+// wrong mesh without a word; and it converts numbers of lines the lab never
+// uses to int unchecked (a `vw` skin-weight joint id of 1e30 is undefined
+// behaviour inside the library, found by fuzzing: issue 16). This pass checks
+// the lines the lab uses (v, vn, f) and names the line of the first bad one;
+// it returns the only text tinyobjloader is given: those lines rebuilt from
+// their checked tokens, with the texture-coordinate part of each face corner
+// dropped (the lab ignores it), and every other line (vt, vw, l, p, s, o, g,
+// usemtl, mtllib, t, anything unknown) left empty, so line numbers still match.
 class ObjLineCheck {
  public:
   ObjLineCheck(const std::string& text, const std::string& name) : text_(text), name_(name) {}
 
-  void run() {
+  std::string run() {
     // Pass 1 counts: a positive index may refer to a vertex defined further down.
     forEachLine([this](const std::vector<std::string>& t) {
       if (t[0] == "v") ++total_[0];
       if (t[0] == "vt") ++total_[1];
       if (t[0] == "vn") ++total_[2];
     });
-    forEachLine([this](const std::vector<std::string>& t) {
+    std::string checked;
+    checked.reserve(text_.size());
+    std::size_t lines = 0;
+    forEachLine([&](const std::vector<std::string>& t) {
+      for (; lines + 1 < line_; ++lines) checked += '\n';
       if (t[0] == "v") {
         checkNumbers(t, "vertex");
         ++seen_[0];
+        appendLine(checked, t);
       } else if (t[0] == "vt") {
         ++seen_[1];
       } else if (t[0] == "vn") {
         checkNumbers(t, "normal");
         ++seen_[2];
+        appendLine(checked, t);
       } else if (t[0] == "f") {
         if (t.size() < 4)
           fail(ErrorKind::Parse, "face has " + std::to_string(t.size() - 1) + " vertices, expected at least 3");
-        for (std::size_t i = 1; i < t.size(); ++i) checkCorner(t[i]);
+        checked += 'f';
+        for (std::size_t i = 1; i < t.size(); ++i) checked += ' ' + checkCorner(t[i]);
       }
+      checked += '\n';
+      ++lines;
     });
+    return checked;
   }
 
  private:
@@ -94,6 +110,10 @@ class ObjLineCheck {
     }
   }
 
+  static void appendLine(std::string& out, const std::vector<std::string>& t) {
+    for (std::size_t i = 0; i < t.size(); ++i) out += (i ? " " : "") + t[i];
+  }
+
   void checkNumbers(const std::vector<std::string>& t, const char* what) const {
     if (t.size() < 4)
       fail(ErrorKind::Parse, std::string(what) + " has " + std::to_string(t.size() - 1) +
@@ -109,10 +129,11 @@ class ObjLineCheck {
     }
   }
 
-  // "v", "v/vt", "v//vn" or "v/vt/vn".
-  void checkCorner(const std::string& corner) const {
+  // "v", "v/vt", "v//vn" or "v/vt/vn"; returns "v" or "v//vn".
+  std::string checkCorner(const std::string& corner) const {
     if (std::count(corner.begin(), corner.end(), '/') > 2)
       fail(ErrorKind::Parse, "malformed face vertex '" + corner + "'");
+    std::string kept[3];
     std::size_t start = 0;
     for (int part = 0; part < 3 && start <= corner.size(); ++part) {
       std::size_t slash = corner.find('/', start);
@@ -121,7 +142,9 @@ class ObjLineCheck {
       start = slash + 1;
       if (index.empty() && part > 0) continue;  // "1//3": no texture coordinate
       checkIndex(index, part, corner);
+      kept[part] = index;
     }
+    return kept[2].empty() ? kept[0] : kept[0] + "//" + kept[2];
   }
 
   void checkIndex(const std::string& index, int kind, const std::string& corner) const {
@@ -148,13 +171,13 @@ class ObjLineCheck {
 }  // namespace
 
 Mesh parseObj(const std::string& text, const std::string& name) {
-  ObjLineCheck(text, name).run();
+  const std::string checked = ObjLineCheck(text, name).run();
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
   tinyobj::ObjReader reader;
   // Materials are ignored: the lab's object material is the scene's IOR.
-  if (!reader.ParseFromString(text, std::string(), config)) {
+  if (!reader.ParseFromString(checked, std::string(), config)) {
     std::string msg = reader.Error();
     while (!msg.empty() && (msg.back() == '\n' || msg.back() == '\r')) msg.pop_back();
     throw Error(ErrorKind::Parse, name + ": not a valid OBJ file: " + (msg.empty() ? "parse error" : msg));

@@ -20,10 +20,19 @@ enum class PngEncoding {
 // reason ("No space left on device") on failure.
 void writePng(const std::string& path, const Image& image, PngEncoding encoding = PngEncoding::Srgb);
 
+// The most texels an image may have (8192 x 4096: 512 MiB as linear RGBA floats).
+inline constexpr long long kMaxImagePixels = 8192LL * 4096LL;
+
 // PNG, JPEG, BMP, TGA (8-bit: decoded from sRGB to linear unless `linear`) or
 // Radiance HDR (already linear) through stb_image, as linear RGBA (alpha 1).
 // Error(Io) naming the path when it is missing or a directory, Error(Parse)
-// when it is not an image stb_image can decode.
+// naming it when it is not an image stb_image can decode or has more than
+// kMaxImagePixels texels (checked on the header, before anything is allocated).
 Image readImage(const std::string& path, bool linear = false);
+
+// The same on a file's bytes; `name` is the file name used in messages. A
+// smaller `maxPixels` keeps the fuzzer fast (tests/fuzz/fuzz_image.cpp).
+Image decodeImage(const std::string& bytes, const std::string& name, bool linear = false,
+                  long long maxPixels = kMaxImagePixels);
 
 }  // namespace snell::lab
