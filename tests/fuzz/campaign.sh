@@ -42,10 +42,11 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 limits=(-rss_limit_mb=2048 -malloc_limit_mb=1024 -timeout=25 -max_len=65536)
 # "cov: N ft: M" of a corpus, as libFuzzer reports it after loading it.
-coverage() { "$out/fuzz_$1" -runs=0 "${limits[@]}" "$2" 2>&1 | grep -m1 -oE 'INITED cov: [0-9]+ ft: [0-9]+' | sed 's/INITED //'; }
+coverage() { { "$out/fuzz_$1" -runs=0 "${limits[@]}" "$2" 2>&1 || true; } | grep -oE 'INITED cov: [0-9]+ ft: [0-9]+' | head -n 1 | sed 's/INITED //' || true; }
 
 # One target: fuzz, merge into the committed corpus, write its summary row.
 campaign_target() {
+  set +e  # a step that fails leaves "?" in the row, it does not end the campaign
   local t=$1 m=$2
   local work=$dir/$t/corpus findings=$dir/$t/findings committed=$root/tests/fuzz/corpus/$t
   rm -f "$dir/$t/row.md"
@@ -70,7 +71,8 @@ campaign_target() {
   local list="" f why
   for f in "$findings"/*; do
     [ -e "$f" ] || continue
-    why=$("$out/fuzz_$t" "${limits[@]}" "$f" 2>&1 | grep -m1 -E 'runtime error|ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)' || echo "no longer reproduces")
+    why=$({ "$out/fuzz_$t" "${limits[@]}" "$f" 2>&1 || true; } | grep -E 'runtime error|ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)' | head -n 1)
+    [ -n "$why" ] || why="no longer reproduces"
     list+="$(basename "$f"): ${why//|/\\|}<br>"
   done
   echo "| $t | $m | ${execs:-?} | ${rate:-?} | ${before:-?} | ${after:-?} | $added | ${list:-none} |" > "$dir/$t/row.md"

@@ -301,6 +301,9 @@ TEST(LabLoaderErrors, ImageFuzzFindingsAreParseErrors) {
   EXPECT_EQ(labtest::errorOf([&] { readImage(dir + "hdr_zero_run_hang.hdr"); }, ErrorKind::Parse),
             dir + "hdr_zero_run_hang.hdr: cannot decode image: scanline 3 of the Radiance file has a run of length 0 "
                   "(the file is truncated)");
+  // stb_image takes a header line that starts with NUL for the empty line that ends the header.
+  const std::string nulMsg = labtest::errorOf([&] { readImage(dir + "hdr_nul_header_line_hang.hdr"); }, ErrorKind::Parse);
+  EXPECT_EQ(nulMsg.rfind(dir + "hdr_nul_header_line_hang.hdr: cannot decode image: scanline ", 0), 0u) << nulMsg;
   // The same on a file cut inside its first scanline: stb_image read zeros past the end and hung.
   const std::string sky = readFile(std::string(SNELL_SOURCE_DIR) + "/tests/fuzz/corpus/image/sky.hdr");
   const std::string::size_type data = sky.find("+X 8\n") + 5;

@@ -123,10 +123,10 @@ void checkHdrRunLengths(const std::string& b, int width, int height, const std::
   const std::size_t n = b.size();
   std::size_t p = 0;
   const auto get8 = [&] { return p < n ? static_cast<unsigned>(static_cast<unsigned char>(b[p++])) : (++p, 0u); };
-  const auto skipLine = [&] {  // returns whether the line was empty
-    const std::size_t start = p;
+  const auto skipLine = [&] {  // returns whether stb_image takes the line for empty
+    // stb_image keeps a line in a C string: one that starts with NUL is empty to it.
+    const bool empty = p >= n || b[p] == '\n' || b[p] == '\0';
     while (p < n && b[p] != '\n') ++p;
-    const bool empty = p == start;
     ++p;
     return empty;
   };
