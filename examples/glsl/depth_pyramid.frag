@@ -4,16 +4,38 @@
 // drawn as a full-screen triangle into an RGBA32F target of the output level's
 // size. baseLevel = 1: level 0 from the depth buffer; else level L+1 from level
 // sourceLod = L of the pyramid. Texel layout: glsl/snell/intersect/depth_pyramid.glsl.
+// snell::gpu::DepthPyramidPass runs it on GL; the C++ twin is snell::snellBuildDepthPyramid.
+// Portable: compiles unchanged after any of #version 330 core, 450 core,
+// 300 es, 310 es, or as Vulkan GLSL (tests/compile/check_glsl.sh).
+#ifdef GL_ES
+precision highp float;
+precision highp int;
+precision highp sampler2D;
+#endif
 #include "snell/intersect/depth_pyramid.glsl"
 
-layout(binding = 0) uniform sampler2D source;  // the depth buffer (baseLevel) or the pyramid so far
-layout(location = 0) uniform int sourceLod;
-layout(location = 1) uniform int baseLevel;
-layout(location = 2) uniform float zNear;
-layout(location = 3) uniform float zFar;
-layout(location = 4) uniform int convention;
-layout(location = 5) uniform float emptyDepth;
+#ifdef VULKAN
+// Vulkan has no free uniforms: the sampler at binding 0 of set 0, the rest as push constants.
+layout(set = 0, binding = 0) uniform sampler2D source;
+layout(push_constant) uniform PyramidParams {
+  int sourceLod;
+  int baseLevel;
+  float zNear;
+  float zFar;
+  int convention;
+  float emptyDepth;
+};
 layout(location = 0) out vec4 texel;
+#else
+uniform sampler2D source;  // the depth buffer (baseLevel) or the pyramid so far
+uniform int sourceLod;
+uniform int baseLevel;
+uniform float zNear;
+uniform float zFar;
+uniform int convention;
+uniform float emptyDepth;
+out vec4 texel;
+#endif
 
 void main() {
   ivec2 px = ivec2(gl_FragCoord.xy);

@@ -21,6 +21,7 @@ contract: macros only; no function is defined here.
 */
 #ifndef SNELL_PRELUDE_GLSL
 #define SNELL_PRELUDE_GLSL
+#include "version.glsl"
 
 #if defined(__cplusplus)
 #  ifndef SNELL_CXX_BRIDGE

@@ -1,10 +1,17 @@
-// A user's tool built against the installed package: calls a snell function in
-// C++ and finds the shader sources through the exported SNELL_GLSL_DIR.
+// A user's tool built against snell (tests/install/run_consumer.cmake builds it
+// in every consumption mode): calls a snell function in C++, flattens the
+// shader sources it was pointed at with the GPU layer's flattener, and checks
+// the version macros.
+#include <snell/gpu/include_flattener.hpp>
 #include <snell/snell.hpp>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+
+#if !defined(SNELL_VERSION_MAJOR) || SNELL_VERSION != SNELL_VERSION_MAJOR * 10000 + SNELL_VERSION_MINOR * 100 + SNELL_VERSION_PATCH
+#error "SNELL_VERSION_* missing or inconsistent"
+#endif
 
 int main() {
   // Straight through at normal incidence: the direction is unchanged.
@@ -14,13 +21,18 @@ int main() {
     std::fprintf(stderr, "snellRefract gave an unexpected result\n");
     return 1;
   }
-  for (const char* f : {SNELL_GLSL_DIR "/snell/snell.glsl", SNELL_GLSL_DIR "/snell/prelude.glsl",
-                        SNELL_HLSL_DIR "/snell/bridge.hlsl"}) {
+  for (const char* f : {SNELL_GLSL_DIR "/snell/snell.glsl", SNELL_HLSL_DIR "/snell/bridge.hlsl",
+                        SNELL_SINGLE_FILE_DIR "/snell.glsl"}) {
     if (!std::filesystem::exists(f)) {
-      std::fprintf(stderr, "installed shader source missing: %s\n", f);
+      std::fprintf(stderr, "shader source missing: %s\n", f);
       return 1;
     }
   }
-  std::puts("snell consumer: ok");
+  const snell::gpu::FlatSource flat = snell::gpu::flattenGlslFile(SNELL_GLSL_DIR "/snell/optics.glsl", {SNELL_GLSL_DIR});
+  if (flat.text.find("SnellRefraction snellRefract(") == std::string::npos) {
+    std::fprintf(stderr, "the flattened optics.glsl has no snellRefract\n");
+    return 1;
+  }
+  std::printf("snell consumer: ok (snell %d.%d.%d)\n", SNELL_VERSION_MAJOR, SNELL_VERSION_MINOR, SNELL_VERSION_PATCH);
   return 0;
 }

@@ -1,0 +1,5236 @@
+// snell 0.2.0, single-file GLSL: glsl/snell/snell.glsl with every #include spliced in
+// (snell-flatten --no-line). Generated: do not edit; regenerate with
+// `cmake --build build --target single_file`. No #version line: put it, and on
+// ES the precision statements, before this text.
+/* Aggregator: all of snell. GLSL users may include single files instead. */
+#ifndef SNELL_SNELL_GLSL
+#define SNELL_SNELL_GLSL
+/* optics/ family aggregator: every public function of glsl/snell/optics. */
+#ifndef SNELL_OPTICS_GLSL
+#define SNELL_OPTICS_GLSL
+/*
+description: normalize that never produces NaN or infinity.
+use: vec3 n = snellSafeNormalize(v);
+options: -
+contract: returns v / |v| when every component is finite and |v|^2 is a normal
+  float above 1e-30 and below FLT_MAX; otherwise (0,0,0) (zero, denormal-small,
+  NaN, infinite, or so large that |v|^2 overflows). Callers test dot(n, n) == 0
+  for "invalid".
+source: -
+*/
+#ifndef SNELL_OPTICS_SAFE_NORMALIZE_GLSL
+#define SNELL_OPTICS_SAFE_NORMALIZE_GLSL
+/*
+description: the language bridge. Every file in glsl/snell includes this first, so
+  one body compiles as GLSL (330 core, 450 core, ES 310), as C++17 with GLM (through
+  <snell/bridge.hpp>) and as HLSL (through hlsl_like/snell/bridge.hlsl).
+use: GLSL: `#include "snell/prelude.glsl"` after your `#version` line (and, on ES,
+  after `precision highp float; precision highp sampler2D;`).
+options:
+  SNELL_FN             qualifier before every function (C++: inline; else empty)
+  SNELL_TEX2D          type of a texture parameter (GLSL sampler2D, C++ const
+                       snell::Texture2D&, HLSL Texture2D<float4>)
+  SNELL_TEXEL_FETCH(tex, px, lod)  vec4 at integer texel px (ivec2) of mip lod;
+                       callers clamp px into the level first (GL leaves
+                       out-of-range fetches undefined)
+  SNELL_SAMPLE_LOD(tex, uv, lod)   vec4 filtered by the texture's own
+                       filter state at explicit mip level lod (float)
+  SNELL_TEXTURE_SIZE(tex, lod)     ivec2 size of mip level lod (0 <= lod < levels;
+                       base level 0)
+  Define any hook before this file to redirect reads (reversed-Z, linear depth,
+  texture arrays, a Hi-Z chain).
+contract: macros only; no function is defined here.
+*/
+#ifndef SNELL_PRELUDE_GLSL
+#define SNELL_PRELUDE_GLSL
+/*
+description: snell's version, the one place it is written: CMake's project()
+  reads it, and every language gets it through the prelude (C++, GLSL, HLSL).
+  SNELL_VERSION is MAJOR * 10000 + MINOR * 100 + PATCH, for #if tests.
+  Changes between versions: CHANGELOG.md.
+contract: macros only.
+*/
+#ifndef SNELL_VERSION_GLSL
+#define SNELL_VERSION_GLSL
+#define SNELL_VERSION_MAJOR 0
+#define SNELL_VERSION_MINOR 2
+#define SNELL_VERSION_PATCH 0
+#define SNELL_VERSION (SNELL_VERSION_MAJOR * 10000 + SNELL_VERSION_MINOR * 100 + SNELL_VERSION_PATCH)
+#endif
+
+#if defined(__cplusplus)
+#  ifndef SNELL_CXX_BRIDGE
+#    error "C++: include <snell/snell.hpp> (or a family header), not a .glsl file"
+#  endif
+#  define SNELL_LANG_CXX 1
+#elif defined(SNELL_HLSL)
+#  define SNELL_LANG_HLSL 1
+#else
+#  define SNELL_LANG_GLSL 1
+#endif
+
+#ifndef SNELL_FN
+#  if defined(SNELL_LANG_CXX)
+#    define SNELL_FN inline
+#  else
+#    define SNELL_FN
+#  endif
+#endif
+
+/* SNELL_PRECISE before a local declaration: its value is computed exactly as
+   written (no fused multiply-add), so GPU and C++ agree to the last bit where a
+   comparison downstream is sensitive to it. `precise` exists in desktop GLSL
+   400+ and HLSL; elsewhere (GLSL 330, ES) it is empty. */
+#ifndef SNELL_PRECISE
+#  if defined(SNELL_LANG_HLSL)
+#    define SNELL_PRECISE precise
+#  elif defined(SNELL_LANG_GLSL)
+#    if __VERSION__ >= 400 && !defined(GL_ES)
+#      define SNELL_PRECISE precise
+#    endif
+#  endif
+#endif
+#ifndef SNELL_PRECISE
+#  define SNELL_PRECISE
+#endif
+
+#if defined(SNELL_LANG_GLSL)
+#  ifndef SNELL_TEX2D
+#    define SNELL_TEX2D sampler2D
+#  endif
+#  ifndef SNELL_TEXEL_FETCH
+#    define SNELL_TEXEL_FETCH(tex, px, lod) texelFetch(tex, px, lod)
+#  endif
+#  ifndef SNELL_SAMPLE_LOD
+#    define SNELL_SAMPLE_LOD(tex, uv, lod) textureLod(tex, uv, lod)
+#  endif
+#  ifndef SNELL_TEXTURE_SIZE
+/* Level size from the base size: Mesa 22.3 llvmpipe evaluates textureSize with
+   one invocation's lod for a whole SIMD batch when lod varies per invocation. */
+#    define SNELL_TEXTURE_SIZE(tex, lod) max(textureSize(tex, 0) >> (lod), ivec2(1, 1))
+#  endif
+#endif
+
+/* Matrix times column vector: GLSL and GLM write m * v, HLSL mul(m, v). */
+#if defined(SNELL_LANG_HLSL)
+#  define SNELL_MUL(m, v) mul(m, v)
+#else
+#  define SNELL_MUL(m, v) ((m) * (v))
+#endif
+
+/* Shared numeric constants: #defines, because a global `const` is a uniform in
+   HLSL and has different linkage rules in C++. */
+#define SNELL_PI 3.14159265358979f
+#define SNELL_EPS 1e-6f
+/* Largest finite float; results that would be infinite are clamped to it. */
+#define SNELL_FLT_MAX 3.402823466e38f
+/* Smallest normal float. Divisors and "positive" tests use it instead of 0:
+   GPUs may flush denormals to zero, so a denormal input is treated as 0 in
+   every language (same flags on CPU and GPU). */
+#define SNELL_FLT_MIN 1.175494351e-38f
+/* True when the float x is neither NaN nor +-Inf. */
+#define SNELL_FINITE(x) (!isnan(x) && !isinf(x))
+
+#endif
+
+SNELL_FN vec3 snellSafeNormalize(vec3 v) {
+  float len2 = dot(v, v);
+  // NaN fails every comparison; an infinite component makes len2 infinite.
+  if (!(len2 > 1e-30f) || !(len2 < SNELL_FLT_MAX)) {
+    return vec3(0.0f, 0.0f, 0.0f);
+  }
+  return v * inversesqrt(len2);
+}
+
+#endif
+/*
+description: Snell refraction of a direction at an interface, with an explicit
+  policy for total internal reflection (TIR).
+use: SnellRefraction r = snellRefract(incident, normal, eta, SNELL_TIR_CRITICAL);
+  incident  direction of travel towards the surface (need not be normalized)
+  normal    surface normal (need not be normalized); flipped to face the
+            incident ray when it points away from it
+  eta       n_incident / n_transmitted (1.0f / 1.5f entering glass from air)
+  policy    SNELL_TIR_ZERO      direction (0,0,0) on TIR, as GLSL refract()
+            SNELL_TIR_CRITICAL  transmission angle clamped to the critical angle:
+                                the ray tangent to the surface (Wyman 2005,
+                                Oliveira & Brauwers 2007 sec. 5)
+            SNELL_TIR_REFLECT   mirror reflection on TIR
+contract:
+  - r.direction is unit length, or (0,0,0) exactly when r.valid is false or
+    (TIR and SNELL_TIR_ZERO);
+  - r.tir is true when eta^2 (1 - cos_i^2) > 1, evaluated as
+    (1 - eta^2) + eta^2 cos_i^2 < 0;
+  - eta = 1 returns the normalized incident direction (up to rounding);
+  - r.valid is false (direction 0, tir false) when incident or normal is zero,
+    denormal-small, NaN or infinite, or eta is not a finite positive number;
+  - at normal incidence under CRITICAL the tangent is undefined, but TIR cannot
+    happen there (sin_i = 0), so the case does not arise.
+source: Snell's law in vector form: t = eta i + (eta cos_i - cos_t) n with
+  cos_t = sqrt(1 - eta^2 (1 - cos_i^2)) (GLSL 4.50 spec, refract()).
+*/
+#ifndef SNELL_OPTICS_REFRACT_GLSL
+#define SNELL_OPTICS_REFRACT_GLSL
+
+
+
+#define SNELL_TIR_ZERO 0
+#define SNELL_TIR_CRITICAL 1
+#define SNELL_TIR_REFLECT 2
+
+struct SnellRefraction {
+  vec3 direction;
+  bool tir;
+  bool valid;
+};
+
+SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int policy) {
+  SnellRefraction r;
+  r.direction = vec3(0.0f, 0.0f, 0.0f);
+  r.tir = false;
+  r.valid = false;
+  vec3 i = snellSafeNormalize(incident);
+  vec3 n = snellSafeNormalize(normal);
+  // eta > 0 is false for NaN; eta < FLT_MAX is false for +Inf.
+  if (dot(i, i) == 0.0f || dot(n, n) == 0.0f || !(eta > 0.0f) || !(eta < SNELL_FLT_MAX)) {
+    return r;
+  }
+  r.valid = true;
+  float cosI = -dot(n, i);
+  if (cosI < 0.0f) {
+    n = -n;
+    cosI = -cosI;
+  }
+  cosI = min(cosI, 1.0f);
+  // cos_t^2 = 1 - eta^2 (1 - cos_i^2), written as (1 - eta^2) + eta^2 cos_i^2: the
+  // same value, but exact for eta = 1 and accurate near grazing incidence, where
+  // 1 - cos_i^2 would round away the small cos_i^2.
+  float eta2 = eta * eta;
+  float cos2T = (1.0f - eta2) + eta2 * (cosI * cosI);
+  if (cos2T < 0.0f) {
+    r.tir = true;
+    if (policy == SNELL_TIR_REFLECT) {
+      r.direction = snellSafeNormalize(i + (2.0f * cosI) * n);
+    } else if (policy == SNELL_TIR_CRITICAL) {
+      // sin_t = 1: the transmitted ray grazes the surface along i's tangent part.
+      r.direction = snellSafeNormalize(i + cosI * n);
+    }
+    return r;
+  }
+  float cosT = sqrt(cos2T);
+  r.direction = snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
+  return r;
+}
+
+#endif
+/*
+description: G. Oliveira's approximate refracted ray: the incident direction
+  plus the inverted normal weighted by a made-up "refraction factor",
+  normalized. No angles, no square root of Snell's law; the factor has nothing
+  to do with an index of refraction (0: no bending, large: straight down -N).
+use: vec3 t = snellApproxRefract(incident, normal, factor);
+  incident  direction of travel towards the surface (need not be normalized);
+            the paper's camera_ray is its negation (vertex to eye)
+  normal    surface normal (need not be normalized); flipped to face the
+            incident ray when it points away from it, as in snellRefract
+  factor    refraction factor >= 0 (the paper's refraction_coeff)
+options: -
+contract:
+  - returns normalize(i - factor * n) with i = normalize(incident) and n the
+    unit normal facing the incident ray (dot(i, n) <= 0): a unit vector;
+  - factor 0 returns i (up to rounding); a negative or NaN factor is treated
+    as 0;
+    as factor grows the result tends to -n; factor = +inf returns -n;
+    for factor > 1 it is evaluated as normalize(i / factor - n) so huge
+    factors never overflow;
+  - the sum never vanishes: for factor > 0 its component along n is
+    dot(i, n) - factor < 0, and for factor 0 it is i itself;
+  - returns (0,0,0) when incident or normal is zero, denormal-small, NaN or
+    infinite.
+source: G. Oliveira, "Refractive Texture Mapping, Part Two", Gamasutra 2000,
+  Equation 8 ("adding the incident ray with the inverted normal and
+  multiplying a factor to the normal") and Listing 4
+  (refracted = -(normal * refraction_coeff + camera_ray), normalized).
+*/
+#ifndef SNELL_OPTICS_APPROX_REFRACT_GLSL
+#define SNELL_OPTICS_APPROX_REFRACT_GLSL
+
+
+
+SNELL_FN vec3 snellApproxRefract(vec3 incident, vec3 normal, float factor) {
+  vec3 i = snellSafeNormalize(incident);
+  vec3 n = snellSafeNormalize(normal);
+  if (dot(i, i) == 0.0f || dot(n, n) == 0.0f) {
+    return vec3(0.0f, 0.0f, 0.0f);
+  }
+  if (dot(i, n) > 0.0f) {
+    n = -n;
+  }
+  // A comparison, not max(): max() with a NaN operand is undefined in GLSL.
+  float k = factor > 0.0f ? factor : 0.0f;
+  if (k > 1.0f) {
+    return snellSafeNormalize(i * (1.0f / k) - n);
+  }
+  return snellSafeNormalize(i - k * n);
+}
+
+#endif
+/*
+description: exact Fresnel reflectance of a smooth dielectric interface for
+  unpolarized light: the average of the s- and p-polarized reflectances, 1
+  under total internal reflection.
+use: float F = snellFresnelDielectric(cosI, eta);
+  cosI  cosine of the angle between the incident ray and the normal; its sign
+        is ignored (either orientation of the normal works)
+  eta   n_incident / n_transmitted (1.0f / 1.5f entering glass from air);
+        snellIorToEta(nI, nT) builds it
+options: -
+contract:
+  - result in [0, 1]; never NaN;
+  - |cosI| is clamped to [0, 1]; a NaN cosI is treated as 0 (grazing), so the
+    result is 1;
+  - TIR (eta^2 (1 - cos_i^2) >= 1, evaluated as cos_t^2 = (1 - eta^2) +
+    eta^2 cos_i^2 <= 0, as in snellRefract) gives exactly 1; at sin_t = 1 the formula's
+    limit is 1 as well, so the switch is continuous;
+  - eta NaN, below 1e-30 (zero, negative, denormal: GPUs may flush them) or
+    +inf gives 1 (treated as an opaque mirror: nothing is
+    transmitted); finite positive eta is clamped to [1e-6, 1e6], far outside
+    any physical ratio, so that no product overflows;
+  - eta = 1 gives 0 except at grazing incidence (cosI = 0), where it is 1
+    (the TIR branch: sin_t = 1).
+source: Fresnel equations for dielectrics (e.g. Born & Wolf, Principles of
+  Optics, sec. 1.5.2; Pharr, Jakob & Humphreys, PBRT 3rd ed., sec. 8.2.1):
+  r_s = (eta cos_i - cos_t) / (eta cos_i + cos_t),
+  r_p = (cos_i - eta cos_t) / (cos_i + eta cos_t),
+  F = (r_s^2 + r_p^2) / 2, cos_t = sqrt(1 - eta^2 (1 - cos_i^2)),
+  written with eta = n_i / n_t (each ratio divided through by n_t).
+*/
+#ifndef SNELL_OPTICS_FRESNEL_DIELECTRIC_GLSL
+#define SNELL_OPTICS_FRESNEL_DIELECTRIC_GLSL
+
+
+SNELL_FN float snellFresnelDielectric(float cosI, float eta) {
+  // Comparisons are false for NaN; eta < FLT_MAX is false for +inf.
+  if (!(eta >= 1e-30f) || !(eta < SNELL_FLT_MAX)) {
+    return 1.0f;
+  }
+  float e = min(max(eta, 1e-6f), 1e6f);
+  float c = abs(cosI);
+  // NaN: grazing. Tested before min(): GPUs return 1 for min(NaN, 1) (llvmpipe),
+  // GLM returns NaN; and not as `c > 0 ? .. : 0`, which compilers rewrite as
+  // cosI != 0, true for NaN.
+  if (!(c >= 0.0f)) {
+    return 1.0f;
+  }
+  c = min(c, 1.0f);
+  // cos_t^2 = 1 - eta^2 (1 - cos_i^2), as (1 - eta^2) + eta^2 cos_i^2 (exact for
+  // eta = 1, accurate at grazing incidence), the same form as snellRefract.
+  float e2 = e * e;
+  float cos2T = (1.0f - e2) + e2 * (c * c);
+  if (cos2T <= 0.0f) {
+    return 1.0f;
+  }
+  float cosT = sqrt(cos2T);  // > 0 here, so no denominator vanishes
+  float rs = (e * c - cosT) / (e * c + cosT);
+  float rp = (c - e * cosT) / (c + e * cosT);
+  return 0.5f * (rs * rs + rp * rp);
+}
+
+#endif
+/*
+description: Schlick's approximation of the Fresnel reflectance,
+  F = f0 + (1 - f0) (1 - cos_i)^5.
+use: float F = snellFresnelSchlick(cosI, f0);
+  cosI  cosine of the angle between the incident ray and the normal; its sign
+        is ignored
+  f0    reflectance at normal incidence, e.g. snellIorToF0(1.0f, 1.5f) = 0.04f
+  Leaving a denser medium (n_i > n_t) Schlick knows nothing about TIR: pass the
+  cosine of the transmitted angle there, or use snellFresnelDielectric.
+options: -
+contract:
+  - result in [f0, 1] (so in [0, 1]); never NaN;
+  - |cosI| is clamped to [0, 1]; a NaN cosI is treated as 0 (grazing): 1;
+  - f0 is clamped to [0, 1]; a NaN f0 is treated as 1 (result 1);
+  - the fifth power is written as multiplications (no pow), so GLSL, HLSL and
+    C++ round it identically.
+source: C. Schlick, "An Inexpensive BRDF Model for Physically-based
+  Rendering", Computer Graphics Forum 13(3), 1994, eq. 24.
+*/
+#ifndef SNELL_OPTICS_FRESNEL_SCHLICK_GLSL
+#define SNELL_OPTICS_FRESNEL_SCHLICK_GLSL
+
+
+SNELL_FN float snellFresnelSchlick(float cosI, float f0) {
+  float c = abs(cosI);
+  // NaN: grazing, result 1. Tested before min(): GPUs return 1 for min(NaN, 1)
+  // (llvmpipe), GLM returns NaN; and not as `c > 0 ? .. : 0`, which compilers
+  // rewrite as cosI != 0, true for NaN.
+  if (!(c >= 0.0f)) {
+    return 1.0f;
+  }
+  c = min(c, 1.0f);
+  // Comparisons rather than clamp(): clamp() of a NaN is undefined in GLSL.
+  float f = f0 > 0.0f ? min(f0, 1.0f) : (f0 <= 0.0f ? 0.0f : 1.0f);
+  float m = 1.0f - c;
+  float m2 = m * m;
+  return f + (1.0f - f) * (m2 * m2 * m);
+}
+
+#endif
+/*
+description: Sousa's artist-tuned Fresnel term for water and glass,
+  max(bias + (1 - bias) (1 - N.L)^power, 0).
+use: float F = snellFresnelBiasPower(nDotL, bias, power);
+  nDotL  cosine between the unit normal and the unit vector towards the eye
+         (Sousa: NdotL = max(dot(vEye, vReflBump), 0))
+  bias   reflectance at normal incidence (Sousa: 0.2 water, 0.4 glass)
+  power  falloff exponent (Sousa: 5.0 for both)
+options: -
+contract:
+  - nDotL is saturated to [0, 1] as the water listing does with max(.., 0) (and
+    the upper clamp keeps pow() off a negative base); a NaN nDotL is treated
+    as 0 (facing = 1);
+  - power is clamped to [0, 1e6]; power below 1e-30 (0, negative, denormal)
+    or NaN makes the pow term exactly 1 (x^0 = 1; GLSL leaves pow(0, 0) undefined); a base of exactly 0
+    with power > 0 gives 0 without calling pow;
+  - bias is clamped to [-1e6, 1e6]; a NaN bias is treated as 1;
+  - result = max(bias + (1 - bias) t, 0) with t in [0, 1]: in [bias, 1] for
+    bias in [0, 1]; Sousa's formula does not cap bias > 1 and neither does
+    this; never NaN or infinite.
+source: T. Sousa, "Generic Refraction Simulation", GPU Gems 2, ch. 19 (2005),
+  Example 19-3 (Fresnel(NdotL, fresnelBias, fresnelPow)), used with
+  (0.2, 5.0) in Example 19-4 (water) and (0.4, 5.0) in Example 19-5 (glass).
+*/
+#ifndef SNELL_OPTICS_FRESNEL_BIAS_POWER_GLSL
+#define SNELL_OPTICS_FRESNEL_BIAS_POWER_GLSL
+
+
+SNELL_FN float snellFresnelBiasPower(float nDotL, float bias, float power) {
+  // Comparisons rather than clamp()/max(): they are undefined for NaN in GLSL.
+  float c = nDotL > 0.0f ? min(nDotL, 1.0f) : 0.0f;
+  float facing = 1.0f - c;
+  // Below 1e-30 counts as 0: GPUs may flush denormals, and pow(0, tiny) is 0.
+  float p = power >= 1e-30f ? min(power, 1e6f) : 0.0f;
+  float b = bias >= -1e6f ? min(bias, 1e6f) : (bias < 0.0f ? -1e6f : 1.0f);
+  float t = 1.0f;
+  if (p > 0.0f) {
+    t = facing > 0.0f ? pow(facing, p) : 0.0f;
+  }
+  return max(b + (1.0f - b) * t, 0.0f);
+}
+
+#endif
+/*
+description: the ice paper's cheap Fresnel term, f = (1 - |e.n|)^3: 0 looking
+  straight at the surface, 1 at grazing angles.
+use: float f = snellFresnelCubic(eye, normal);
+  eye     the eye vector; either orientation works (the paper's e runs from the
+          viewer to the vertex, the vertex-to-eye vector gives the same result)
+  normal  surface normal, either orientation
+  Neither needs to be normalized.
+options: -
+contract:
+  - result in [0, 1]: f = (1 - c)^3 with c = |dot(normalize(eye),
+    normalize(normal))| clamped to [0, 1];
+  - sign convention: the paper writes (1 - e.n)^3 with e from the viewer to
+    the vertex, which read literally gives values in [1, 8] on front faces
+    (e.n < 0); the intended term (0 head-on, 1 at grazing) is (1 - cos)^3 with
+    cos the unsigned cosine, which is what this computes;
+  - eye or normal zero, denormal-small, NaN or infinite: treated as grazing,
+    result 1.
+source: "Real-Time Ice Rendering" (ice shader report), sec. 3.2, equation 4,
+  f = (1 - e.n)^3, after Jensen & Golias 2001.
+*/
+#ifndef SNELL_OPTICS_FRESNEL_CUBIC_GLSL
+#define SNELL_OPTICS_FRESNEL_CUBIC_GLSL
+
+
+
+SNELL_FN float snellFresnelCubic(vec3 eye, vec3 normal) {
+  vec3 e = snellSafeNormalize(eye);
+  vec3 n = snellSafeNormalize(normal);
+  if (dot(e, e) == 0.0f || dot(n, n) == 0.0f) {
+    return 1.0f;
+  }
+  float c = min(abs(dot(e, n)), 1.0f);
+  float m = 1.0f - c;
+  return m * m * m;
+}
+
+#endif
+/*
+description: relative index of refraction eta = n_incident / n_transmitted, the
+  eta that snellRefract and snellFresnelDielectric take.
+use: float eta = snellIorToEta(1.0f, 1.5f);  // air into glass: 0.6667
+  iorIncident     absolute IOR of the medium the ray travels in
+  iorTransmitted  absolute IOR of the medium it enters
+options: -
+contract:
+  - either IOR NaN, below 1e-30 (zero, negative, denormal: GPUs may flush
+    denormals to 0, so they cannot count as valid) or +inf: returns 1 (no
+    bending, no reflection: the interface is ignored);
+  - otherwise iorIncident / iorTransmitted clamped to [1e-6, 1e6] (finite,
+    positive, and far outside any physical ratio), so the result is always a
+    valid eta for snellRefract.
+source: Snell's law n_1 sin(theta_1) = n_2 sin(theta_2) (G. Oliveira 2000,
+  Equation 7), so sin(theta_2) = (n_1 / n_2) sin(theta_1).
+*/
+#ifndef SNELL_OPTICS_IOR_TO_ETA_GLSL
+#define SNELL_OPTICS_IOR_TO_ETA_GLSL
+
+
+SNELL_FN float snellIorToEta(float iorIncident, float iorTransmitted) {
+  if (!(iorIncident >= 1e-30f) || !(iorIncident < SNELL_FLT_MAX) || !(iorTransmitted >= 1e-30f) ||
+      !(iorTransmitted < SNELL_FLT_MAX)) {
+    return 1.0f;
+  }
+  return min(max(iorIncident / iorTransmitted, 1e-6f), 1e6f);
+}
+
+#endif
+/*
+description: reflectance at normal incidence from two indices of refraction,
+  f0 = ((n1 - n2) / (n1 + n2))^2 (0.04 for air/glass 1.5), the f0 of
+  snellFresnelSchlick.
+use: float f0 = snellIorToF0(1.0f, 1.5f);
+options: -
+contract:
+  - exactly symmetric in its arguments; result in [0, 1];
+  - evaluated as ((n1/2 - n2/2) / (n1/2 + n2/2))^2: halving is exact, keeps the
+    sum from overflowing, and the difference of close IORs stays exact (a form
+    through eta = n1 / n2 would lose digits there);
+  - either IOR invalid for snellIorToEta (NaN, below 1e-30, +inf): 0 (no
+    reflection), matching snellIorToEta's eta = 1.
+source: normal-incidence limit of the Fresnel equations (cos_i = cos_t = 1 in
+  r_s, r_p); Schlick 1994, eq. 24's f0.
+*/
+#ifndef SNELL_OPTICS_IOR_TO_F0_GLSL
+#define SNELL_OPTICS_IOR_TO_F0_GLSL
+
+
+SNELL_FN float snellIorToF0(float iorIncident, float iorTransmitted) {
+  if (!(iorIncident >= 1e-30f) || !(iorIncident < SNELL_FLT_MAX) || !(iorTransmitted >= 1e-30f) ||
+      !(iorTransmitted < SNELL_FLT_MAX)) {
+    return 0.0f;
+  }
+  float a = 0.5f * iorIncident;
+  float b = 0.5f * iorTransmitted;
+  float r = (a - b) / (a + b);
+  return r * r;
+}
+
+#endif
+/*
+description: two-sided refraction on the cheap: blend the front-face normal
+  with the (negated) back-face normal, then refract once with the result
+  instead of refracting at both interfaces. Not physically correct; fine for
+  strongly distorting materials such as ice.
+use: vec3 nr = snellIceNormalBlend(frontNormal, backNormal, a);
+     vec3 nr = snellIceNormalBlend(frontNormal, backNormal);  // a = SNELL_ICE_NORMAL_BLEND
+     then snellRefract(eye, nr, eta, policy) (the paper's equation 2).
+  frontNormal  outward normal of the front face at the pixel
+  backNormal   outward normal of the back face at the pixel, as stored by a
+               back-face normal pass (it points away from the viewer; the
+               equation negates it). Neither needs to be normalized.
+  a            share of the back-face normal in [0, 1]
+options:
+  SNELL_ICE_NORMAL_BLEND  default a (0.33f, the value used in the paper)
+contract:
+  - returns normalize((1 - a) nf - a nb) with nf, nb the normalized inputs: a
+    unit vector, or (0,0,0) when frontNormal is invalid;
+  - a is clamped to [0, 1]; a NaN a uses SNELL_ICE_NORMAL_BLEND;
+  - a = 0 returns nf; a = 1 returns -nb;
+  - frontNormal zero, denormal-small, NaN or infinite: (0,0,0);
+  - backNormal invalid (same tests): nf (one-sided refraction);
+  - the blend vanishes (nb = nf with a = 0.5, or a direction lost to
+    cancellation): nf.
+source: "Real-Time Ice Rendering", sec. 3.2, equation 1,
+  n_r = (1 - a) n_f - a n_b, a = 0.33.
+*/
+#ifndef SNELL_OPTICS_ICE_NORMAL_BLEND_GLSL
+#define SNELL_OPTICS_ICE_NORMAL_BLEND_GLSL
+
+
+
+#ifndef SNELL_ICE_NORMAL_BLEND
+#  define SNELL_ICE_NORMAL_BLEND 0.33f
+#endif
+
+SNELL_FN vec3 snellIceNormalBlend(vec3 frontNormal, vec3 backNormal, float a) {
+  vec3 nf = snellSafeNormalize(frontNormal);
+  if (dot(nf, nf) == 0.0f) {
+    return vec3(0.0f, 0.0f, 0.0f);
+  }
+  vec3 nb = snellSafeNormalize(backNormal);
+  if (dot(nb, nb) == 0.0f) {
+    return nf;
+  }
+  // Comparisons rather than clamp(): clamp() of a NaN is undefined in GLSL.
+  float w = a >= 0.0f ? min(a, 1.0f) : (a < 0.0f ? 0.0f : SNELL_ICE_NORMAL_BLEND);
+  vec3 r = snellSafeNormalize((1.0f - w) * nf - w * nb);
+  if (dot(r, r) == 0.0f) {
+    return nf;
+  }
+  return r;
+}
+
+SNELL_FN vec3 snellIceNormalBlend(vec3 frontNormal, vec3 backNormal) {
+  return snellIceNormalBlend(frontNormal, backNormal, SNELL_ICE_NORMAL_BLEND);
+}
+
+#endif
+/*
+description: Beer-Lambert absorption: the transmittance exp(-sigma d) of a
+  homogeneous medium with absorption coefficient sigma (per colour channel)
+  over a path of length d.
+use: vec3 T = snellBeerLambert(absorption, dist); color *= T;
+  absorption  sigma_a per channel, in inverse distance units (>= 0)
+  dist        path length inside the medium, same units
+options: -
+contract:
+  - result components in [0, 1]; never NaN;
+  - dist negative or NaN is treated as 0 (result (1,1,1)); +inf is clamped
+    to FLT_MAX;
+  - each absorption component negative or NaN is treated as 0 (that channel
+    is 1: a medium never amplifies); +inf is clamped to FLT_MAX, so
+    0 * inf never occurs (zero distance always gives 1);
+  - very large sigma d gives 0 (exp underflow; a GPU may flush the denormal
+    tail to 0 earlier than the C++ build); the exponent is clamped to 1e30
+    (exp(-1e30) is already 0), which keeps it finite on drivers that fold
+    exp's log2(e) factor into sigma or d (FLT_MAX * 1.44 overflows, and
+    times a zero distance would give NaN; llvmpipe does: docs/DESIGN.md).
+source: Beer-Lambert law, T = exp(-sigma_a d) (e.g. Pharr, Jakob & Humphreys,
+  PBRT 3rd ed., sec. 11.1, transmittance of a homogeneous medium).
+*/
+#ifndef SNELL_OPTICS_BEER_LAMBERT_GLSL
+#define SNELL_OPTICS_BEER_LAMBERT_GLSL
+
+
+SNELL_FN vec3 snellBeerLambert(vec3 absorption, float dist) {
+  // Comparisons rather than clamp()/max(): they are undefined for NaN in GLSL.
+  float d = dist > 0.0f ? min(dist, SNELL_FLT_MAX) : 0.0f;
+  vec3 s = vec3(absorption.x > 0.0f ? min(absorption.x, SNELL_FLT_MAX) : 0.0f,
+                absorption.y > 0.0f ? min(absorption.y, SNELL_FLT_MAX) : 0.0f,
+                absorption.z > 0.0f ? min(absorption.z, SNELL_FLT_MAX) : 0.0f);
+  // The min() on the product, not only on the factors: llvmpipe lowers exp(x)
+  // to exp2(x * log2(e)) and reassociates that constant onto a factor,
+  // (s * log2(e)) * d, which is inf * 0 = NaN for s = FLT_MAX, d = 0. A min()
+  // in between keeps the constant off s and d; no NaN can reach it (s, d >= 0).
+  return exp(-min(s * d, vec3(1e30f)));
+}
+
+#endif
+/*
+description: the angle between two directions, in radians [0, pi], accurate
+  for tiny and near-pi angles and identical on every backend.
+use: float theta = snellAngleBetween(a, b);  // neither needs to be normalized
+options: -
+contract:
+  - theta = 2 asin(|u - v| / 2) for the unit vectors u, v (or pi - 2 asin(|u + v|
+    / 2) when that argument is smaller), which keeps full relative precision
+    for small angles where acos(dot(u, v)) loses it all;
+  - asin is evaluated here with plain arithmetic and sqrt (Taylor series to
+    x^17 on [0, 1/2], error < 5e-8, and asin(x) = pi/2 - 2 asin(sqrt((1 - x) / 2))
+    above), because GPU drivers lower the asin builtin to cheap polynomials
+    (absolute error ~1e-4 on Mesa), which ruins ratios of small angles such as
+    Wyman's theta_t / theta_i;
+  - a or b zero, denormal-small, NaN or infinite: 0.
+source: the half-chord identity |u - v| = 2 sin(theta / 2) for unit vectors;
+  Maclaurin series of asin (Abramowitz & Stegun, eq. 4.4.40).
+*/
+#ifndef SNELL_OPTICS_ANGLE_BETWEEN_GLSL
+#define SNELL_OPTICS_ANGLE_BETWEEN_GLSL
+
+
+
+SNELL_FN float snellAngleBetween(vec3 a, vec3 b) {
+  vec3 u = snellSafeNormalize(a);
+  vec3 v = snellSafeNormalize(b);
+  if (dot(u, u) == 0.0f || dot(v, v) == 0.0f) {
+    return 0.0f;
+  }
+  float chordMinus = length(u - v);
+  float chordPlus = length(u + v);
+  // chordMinus^2 + chordPlus^2 = 4, so the smaller half-chord is <= sqrt(2)/2.
+  float x = min(0.5f * min(chordMinus, chordPlus), 1.0f);
+  // asin(x): series on [0, 1/2]; above, reduce with w = sqrt((1 - x) / 2) <= 1/2.
+  bool reduced = x > 0.5f;
+  float y = reduced ? sqrt(0.5f * (1.0f - x)) : x;
+  float y2 = y * y;
+  float p = 0.0115518009f;
+  p = p * y2 + 0.0139648438f;
+  p = p * y2 + 0.0173527644f;
+  p = p * y2 + 0.0223721591f;
+  p = p * y2 + 0.0303819444f;
+  p = p * y2 + 0.0446428571f;
+  p = p * y2 + 0.075f;
+  p = p * y2 + 0.166666667f;
+  float asinY = y + y * y2 * p;
+  float asinX = reduced ? 0.5f * SNELL_PI - 2.0f * asinY : asinY;
+  return chordMinus <= chordPlus ? 2.0f * asinX : SNELL_PI - 2.0f * asinX;
+}
+
+#endif
+/*
+description: Wyman's estimate of the distance a refracted ray travels inside an
+  object before it reaches the back surface: interpolate between the thickness
+  along the view direction (dV) and along the inverted normal (dN) by the
+  ratio of the transmission and incidence angles. Then P2 ~ P1 + d T1
+  (equation 1).
+use: float d = snellWymanDistance(thetaT, thetaI, dV, dN);
+     float d = snellWymanDistanceVec(incident, normal, refracted, dV, dN);
+  thetaT     angle between the refracted ray T1 and -N1, radians
+  thetaI     angle between the incident (view) ray V and -N1, radians
+  dV         thickness along the view ray (back depth minus front depth)
+  dN         thickness along -N1 (per vertex, precomputed)
+  incident   direction of travel of V (need not be normalized)
+  normal     N1, either orientation (flipped to face the incident ray)
+  refracted  T1, e.g. snellRefract(...).direction
+options: -
+contract:
+  - snellWymanDistance returns r dV + (1 - r) dN, evaluated as
+    dN + r (dV - dN), with r = thetaT / thetaI;
+  - angles are taken by absolute value; r is clamped to [0, 1], the range the
+    heuristic is defined on (entering a denser medium: eta = n_i / n_t <= 1, so
+    thetaT <= thetaI; r = 1 means eta = 1: d = dV; r = 0 an infinite IOR:
+    d = dN); leaving a denser medium (r > 1) is clamped to dV rather than
+    extrapolated;
+  - normal incidence (|thetaI| < 1e-30, which also covers denormals that GPUs
+    may flush to 0) or a NaN ratio: r = 1, d = dV. The limit of thetaT /
+    thetaI there is eta, but at normal incidence the view ray runs
+    along -N1, so dV and dN measure the same segment and any r gives the same
+    d; dV is the measured one;
+  - dV, dN negative or NaN are treated as 0, +inf is clamped to FLT_MAX; the
+    result lies between them, so it is finite and >= 0;
+  - snellWymanDistanceVec measures the angles with snellAngleBetween
+    (thetaI = angle(V, -N1), thetaT = angle(T1, -N1)); if any of the three
+    vectors is zero, denormal-small, NaN or infinite (e.g. a TIR result of
+    SNELL_TIR_ZERO) it returns the normal-incidence value, d = dV.
+source: M. M. Oliveira & M. Brauwers, "Real-Time Refraction Through
+  Deformable Objects", I3D 2007, sec. 2, equations 1 and 2 (after C. Wyman,
+  "An Approximate Image-Space Approach for Interactive Refraction",
+  SIGGRAPH 2005): d~ = (theta_t / theta_i) d_V + (1 - theta_t / theta_i) d_N.
+*/
+#ifndef SNELL_OPTICS_WYMAN_DISTANCE_GLSL
+#define SNELL_OPTICS_WYMAN_DISTANCE_GLSL
+
+
+
+
+SNELL_FN float snellWymanDistance(float thetaT, float thetaI, float dV, float dN) {
+  float ti = abs(thetaI);
+  float tt = abs(thetaT);
+  float r = 1.0f;
+  if (ti >= 1e-30f) {
+    float q = tt / ti;
+    // Comparisons rather than clamp(): clamp() of a NaN is undefined in GLSL.
+    r = q >= 0.0f ? min(q, 1.0f) : 1.0f;
+  }
+  float v = dV > 0.0f ? min(dV, SNELL_FLT_MAX) : 0.0f;
+  float n = dN > 0.0f ? min(dN, SNELL_FLT_MAX) : 0.0f;
+  return n + r * (v - n);
+}
+
+SNELL_FN float snellWymanDistanceVec(vec3 incident, vec3 normal, vec3 refracted, float dV, float dN) {
+  vec3 i = snellSafeNormalize(incident);
+  vec3 n = snellSafeNormalize(normal);
+  vec3 t = snellSafeNormalize(refracted);
+  if (dot(i, i) == 0.0f || dot(n, n) == 0.0f || dot(t, t) == 0.0f) {
+    return snellWymanDistance(0.0f, 0.0f, dV, dN);
+  }
+  if (dot(i, n) > 0.0f) {
+    n = -n;
+  }
+  return snellWymanDistance(snellAngleBetween(t, -n), snellAngleBetween(i, -n), dV, dN);
+}
+
+#endif
+/*
+description: intersection of a ray with a plane given by a point and a normal.
+use: SnellRayPlaneHit h = snellRayPlane(origin, dir, planePoint, planeNormal);
+     if (h.valid) { ... h.position ... }
+  origin       ray origin
+  dir          ray direction (need not be normalized: h.t is measured in units
+               of |dir|, h.position = origin + h.t * dir)
+  planePoint   any point on the plane
+  planeNormal  plane normal, either orientation, need not be normalized
+options:
+  SNELL_RAY_PLANE_PARALLEL_EPS  |cos| between dir and the plane normal below
+                                which the ray counts as parallel (1e-6f)
+contract:
+  - valid hit: t = dot(planePoint - origin, n) / dot(dir, n) >= 0 (a ray
+    starting on the plane hits at t = 0), point = origin + t dir;
+  - h.valid is false, with h.t = 0 and h.position = (0,0,0) (finite, never NaN),
+    when: the ray is parallel to the plane (within the epsilon above, also when
+    it lies in it), the hit is behind the origin (t < 0), dir or planeNormal is
+    zero, denormal-small, NaN or infinite, origin or planePoint has a NaN or
+    infinite component, or t or the point overflows.
+source: the parametric line p = o + t d (G. Oliveira 2000, Equations 9-10)
+  substituted into the plane equation dot(p - p0, n) = 0.
+*/
+#ifndef SNELL_OPTICS_RAY_PLANE_GLSL
+#define SNELL_OPTICS_RAY_PLANE_GLSL
+
+
+
+#ifndef SNELL_RAY_PLANE_PARALLEL_EPS
+#  define SNELL_RAY_PLANE_PARALLEL_EPS 1e-6f
+#endif
+
+struct SnellRayPlaneHit {
+  float t;
+  vec3 position;  // not "point": a reserved word in HLSL (geometry shader input)
+  bool valid;
+};
+
+SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, vec3 planeNormal) {
+  SnellRayPlaneHit h;
+  h.t = 0.0f;
+  h.position = vec3(0.0f, 0.0f, 0.0f);
+  h.valid = false;
+  vec3 n = snellSafeNormalize(planeNormal);
+  float dirLen2 = dot(dir, dir);
+  if (dot(n, n) == 0.0f || !(dirLen2 > 1e-30f) || !(dirLen2 < SNELL_FLT_MAX)) {
+    return h;
+  }
+  // abs(x) <= FLT_MAX is false for NaN and +-inf.
+  if (!(abs(origin.x) <= SNELL_FLT_MAX) || !(abs(origin.y) <= SNELL_FLT_MAX) ||
+      !(abs(origin.z) <= SNELL_FLT_MAX) || !(abs(planePoint.x) <= SNELL_FLT_MAX) ||
+      !(abs(planePoint.y) <= SNELL_FLT_MAX) || !(abs(planePoint.z) <= SNELL_FLT_MAX)) {
+    return h;
+  }
+  float denom = dot(dir, n);
+  if (!(abs(denom) > SNELL_RAY_PLANE_PARALLEL_EPS * sqrt(dirLen2))) {
+    return h;
+  }
+  float t = dot(planePoint - origin, n) / denom;
+  if (!(t >= 0.0f) || !(t <= SNELL_FLT_MAX)) {
+    return h;
+  }
+  vec3 p = origin + t * dir;
+  if (!(abs(p.x) <= SNELL_FLT_MAX) || !(abs(p.y) <= SNELL_FLT_MAX) || !(abs(p.z) <= SNELL_FLT_MAX)) {
+    return h;
+  }
+  h.t = t;
+  h.position = p;
+  h.valid = true;
+  return h;
+}
+
+#endif
+#endif
+/* camera/ family aggregator: every public function of glsl/snell/camera. */
+#ifndef SNELL_CAMERA_GLSL
+#define SNELL_CAMERA_GLSL
+/*
+description: the conventions every glsl/snell/camera file shares: spaces, the
+  depth-buffer conventions (integer #defines passed as `int convention`), and two
+  helper macros. No function is defined here.
+use: #include "snell/camera/conventions.glsl" (every camera file does).
+options:
+  SNELL_DEPTH_GL                 glm::perspective / glFrustum: NDC z in [-1,1],
+                                 stored as window depth 0.5 z_ndc + 0.5
+                                 (glDepthRange(0,1), the default); near -> 0, far -> 1
+  SNELL_DEPTH_ZERO_ONE           D3D / Vulkan / glClipControl(GL_ZERO_TO_ONE),
+                                 glm::perspectiveZO: NDC z in [0,1] stored as is;
+                                 near -> 0, far -> 1
+  SNELL_DEPTH_REVERSED           reversed Z: NDC z in [0,1], near -> 1, far -> 0
+  SNELL_DEPTH_INFINITE_GL        glm::infinitePerspective: GL NDC, far plane at
+                                 infinity: depth 1 is "infinitely far"
+  SNELL_DEPTH_INFINITE_REVERSED  reversed Z with an infinite far plane:
+                                 depth = zNear / distance, 0 is "infinitely far"
+  SNELL_DEPTH_CONVENTION_COUNT   number of conventions (valid values 0 .. COUNT-1)
+  (SNELL_FINITE and SNELL_FLT_MIN, used by every family, are in prelude.glsl)
+  SNELL_CAMERA_MAT4_COLUMNS(c0, c1, c2, c3)  a mat4 from four column vec4s in
+                                 every language (GLSL/GLM constructors take
+                                 columns, HLSL's take rows)
+contract:
+  - view space is right-handed; the camera sits at the origin and looks down -Z,
+    so points in front of it have z < 0. "View distance" is -z_view (> 0 in front).
+  - clip = clipFromView * vec4(p, 1); NDC = clip.xyz / clip.w, defined for w > 0.
+  - uv is [0,1]^2 over the viewport, origin bottom-left (GL window space):
+    uv = 0.5 NDC.xy + 0.5; pixel (i, j) covers uv [i, i+1]/W x [j, j+1]/H and its
+    centre is ((i + 0.5)/W, (j + 0.5)/H).
+  - "depth value" always means what the depth buffer stores (window-space depth
+    in [0,1]), never NDC z. For SNELL_DEPTH_GL window depth is 0.5 z_ndc + 0.5;
+    for the other conventions window depth equals NDC z. The GL and ZERO_ONE
+    conventions therefore store the same value for the same point,
+    d = zFar (v - zNear) / (v (zFar - zNear)), v the view distance; they differ in
+    the projection matrix and in NDC z only.
+source: OpenGL 4.5 core spec sec. 13.6 (coordinate transformations, glDepthRange),
+  sec. 13.7 (glClipControl); GLM 0.9.9 ext/matrix_clip_space.inl.
+*/
+#ifndef SNELL_CAMERA_CONVENTIONS_GLSL
+#define SNELL_CAMERA_CONVENTIONS_GLSL
+
+
+#define SNELL_DEPTH_GL 0
+#define SNELL_DEPTH_ZERO_ONE 1
+#define SNELL_DEPTH_REVERSED 2
+#define SNELL_DEPTH_INFINITE_GL 3
+#define SNELL_DEPTH_INFINITE_REVERSED 4
+#define SNELL_DEPTH_CONVENTION_COUNT 5
+
+/* isnan/isinf rather than comparison tricks: GPU compilers may rewrite !(a > b)
+   into a <= b, which changes the NaN answer. */
+
+#if defined(SNELL_LANG_HLSL)
+#  define SNELL_CAMERA_MAT4_COLUMNS(c0, c1, c2, c3) transpose(float4x4(c0, c1, c2, c3))
+#else
+#  define SNELL_CAMERA_MAT4_COLUMNS(c0, c1, c2, c3) mat4(c0, c1, c2, c3)
+#endif
+
+#endif
+/*
+description: depth-buffer value <-> positive view distance, for every depth
+  convention of conventions.glsl.
+use: float v = snellLinearizeDepth(depthValue, zNear, zFar, SNELL_DEPTH_GL);
+     float d = snellDelinearizeDepth(v, zNear, zFar, SNELL_DEPTH_REVERSED);
+  depthValue    what the depth buffer stores (window-space depth, [0,1]), NOT NDC z
+  viewDistance  -z_view of the point (> 0 in front of the camera)
+  zNear, zFar   the camera's clip-plane distances (> 0); zFar is ignored by the
+                two INFINITE conventions
+  convention    SNELL_DEPTH_GL, _ZERO_ONE, _REVERSED, _INFINITE_GL, _INFINITE_REVERSED
+contract (v = view distance, d = depth value, n = zNear, f = zFar):
+  - GL, ZERO_ONE:     d = f (v - n) / (v (f - n)),  v = n / ((1 - d) + d n / f)
+    REVERSED:         d = n (f - v) / (v (f - n)),  v = n / (d + (1 - d) n / f)
+    INFINITE_GL:      d = 1 - n / v,                v = n / (1 - d)
+    INFINITE_REVERSED d = n / v,                    v = n / d
+    (each evaluated in a form without cancellation: every sum adds positive terms)
+  - snellLinearizeDepth returns a value in [n, f] (finite conventions) or
+    [n, SNELL_FLT_MAX] (infinite ones): depth out of [0,1] is clamped into it
+    first; the far plane of an infinite convention (d = 1 INFINITE_GL, d = 0
+    INFINITE_REVERSED) returns SNELL_FLT_MAX. Depth 0 (GL/ZERO_ONE) returns n, depth
+    1 returns f (REVERSED: the other way round).
+  - snellLinearizeDepth returns 0.0f (never a valid distance, every valid one is
+    >= n > 0) when: depthValue is NaN, zNear is not a finite positive number, zFar
+    is not finite or not > zNear (finite conventions only), or the convention is
+    unknown. A denormal zNear counts as 0 (GPUs may flush it).
+  - snellDelinearizeDepth returns a value in [0,1]; the distance is clamped into
+    [n, f] (finite conventions) or [n, +inf) first, so points nearer than the near
+    plane, at or behind the camera (v <= 0), give the near-plane value and points
+    beyond the far plane (or +Inf) the far-plane value. NaN distance or invalid
+    zNear/zFar/convention (as above) give the far-plane value, i.e. the depth
+    buffer's clear value "nothing there": 1.0f, or 0.0f for the REVERSED ones
+    (1.0f for an unknown convention).
+  - the maps are inverse to each other up to rounding (a few ulp relative in v).
+source: the window depth of glm::perspective / perspectiveZO / infinitePerspective
+  (GLM 0.9.9 ext/matrix_clip_space.inl) under glDepthRange(0,1) (OpenGL 4.5 core
+  spec sec. 13.6.1); reversed Z: 1 - d of the ZERO_ONE mapping. Oliveira &
+  Brauwers 2007 (Algorithm 2) use such a positive view distance ("recover a
+  positive Z value") for the stored depth.
+*/
+#ifndef SNELL_CAMERA_LINEARIZE_DEPTH_GLSL
+#define SNELL_CAMERA_LINEARIZE_DEPTH_GLSL
+
+
+
+SNELL_FN float snellLinearizeDepth(float depthValue, float zNear, float zFar, int convention) {
+  bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
+  if (isnan(depthValue) || !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
+    return 0.0f;
+  }
+  if (!infinite && (!SNELL_FINITE(zFar) || !(zFar > zNear))) {
+    return 0.0f;
+  }
+  float d = clamp(depthValue, 0.0f, 1.0f);
+  float v = 0.0f;
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_ZERO_ONE) {
+    v = zNear / ((1.0f - d) + d * (zNear / zFar));
+  } else if (convention == SNELL_DEPTH_REVERSED) {
+    v = zNear / (d + (1.0f - d) * (zNear / zFar));
+  } else if (convention == SNELL_DEPTH_INFINITE_GL) {
+    v = d < 1.0f ? zNear / (1.0f - d) : SNELL_FLT_MAX;
+  } else if (convention == SNELL_DEPTH_INFINITE_REVERSED) {
+    v = d > 0.0f ? zNear / d : SNELL_FLT_MAX;
+  } else {
+    return 0.0f;
+  }
+  // Division results can overflow (n / denormal); clamp keeps them finite.
+  return clamp(v, zNear, infinite ? SNELL_FLT_MAX : zFar);
+}
+
+SNELL_FN float snellDelinearizeDepth(float viewDistance, float zNear, float zFar, int convention) {
+  bool reversed = convention == SNELL_DEPTH_REVERSED || convention == SNELL_DEPTH_INFINITE_REVERSED;
+  bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
+  float farValue = reversed ? 0.0f : 1.0f;
+  if (convention < 0 || convention >= SNELL_DEPTH_CONVENTION_COUNT || isnan(viewDistance) ||
+      !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
+    return farValue;
+  }
+  if (!infinite && (!SNELL_FINITE(zFar) || !(zFar > zNear))) {
+    return farValue;
+  }
+  if (!(viewDistance > zNear)) {
+    return reversed ? 1.0f : 0.0f;  // at or nearer than the near plane, or behind the camera
+  }
+  float v = viewDistance;
+  if (infinite) {
+    if (isinf(v)) {
+      return farValue;
+    }
+  } else if (v >= zFar) {
+    return farValue;
+  }
+  float d = 0.0f;
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_ZERO_ONE) {
+    d = ((v - zNear) / v) * (zFar / (zFar - zNear));
+  } else if (convention == SNELL_DEPTH_REVERSED) {
+    d = (zNear / v) * ((zFar - v) / (zFar - zNear));
+  } else if (convention == SNELL_DEPTH_INFINITE_GL) {
+    d = (v - zNear) / v;
+  } else {
+    d = zNear / v;
+  }
+  return clamp(d, 0.0f, 1.0f);
+}
+
+#endif
+/*
+description: depth-buffer value <-> NDC z for a depth convention (the
+  glDepthRange / viewport depth transform with its default range).
+use: float zNdc = snellDepthToNdcZ(depthValue, SNELL_DEPTH_GL);
+     float depthValue = snellNdcZToDepth(zNdc, SNELL_DEPTH_GL);
+contract:
+  - SNELL_DEPTH_GL and SNELL_DEPTH_INFINITE_GL: z_ndc = 2 d - 1, d = 0.5 z_ndc + 0.5;
+    every other convention (ZERO_ONE, REVERSED, INFINITE_REVERSED, and unknown
+    values) has NDC z in [0,1] and stores it unchanged.
+  - inputs are clamped into their range first (depth [0,1]; NDC z [-1,1] or
+    [0,1]), which is what a depth buffer (or GL_DEPTH_CLAMP) does with them;
+    NaN is treated as the low end of the range. Results are always finite.
+source: OpenGL 4.5 core spec sec. 13.6.1 (z_w = (f - n)/2 z_d + (n + f)/2 with the
+  default glDepthRange(0,1)) and sec. 13.7 (glClipControl GL_ZERO_TO_ONE: z_w = z_d).
+*/
+#ifndef SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
+#define SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
+
+
+
+SNELL_FN float snellDepthToNdcZ(float depthValue, int convention) {
+  float d = isnan(depthValue) ? 0.0f : clamp(depthValue, 0.0f, 1.0f);
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
+    return 2.0f * d - 1.0f;
+  }
+  return d;
+}
+
+SNELL_FN float snellNdcZToDepth(float ndcZ, int convention) {
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
+    float z = isnan(ndcZ) ? -1.0f : clamp(ndcZ, -1.0f, 1.0f);
+    return 0.5f * z + 0.5f;
+  }
+  return isnan(ndcZ) ? 0.0f : clamp(ndcZ, 0.0f, 1.0f);
+}
+
+#endif
+/*
+description: symmetric perspective projection matrices (clipFromView) for each
+  depth convention, and their exact analytic inverses (viewFromClip), built the
+  same way in every language (so parity cases and users need only 4 scalars).
+use: mat4 clipFromView = snellPerspective(fovy, aspect, zNear, zFar);   // = glm::perspective
+     mat4 clipFromView = snellPerspectiveWithDepth(fovy, aspect, zNear, zFar, SNELL_DEPTH_REVERSED);
+     mat4 viewFromClip = snellPerspectiveInverse(fovy, aspect, zNear, zFar, SNELL_DEPTH_REVERSED);
+  fovy          full vertical field of view in radians, in (0, pi)
+  aspect        viewport width / height (> 0)
+  zNear, zFar   clip-plane distances (0 < zNear < zFar); zFar ignored by INFINITE_*
+contract: with A = 1 / (aspect tan(fovy/2)), B = 1 / tan(fovy/2), the matrix maps
+  (x, y, z, 1) to (A x, B y, C z + D, -z), so clip w = -z = view distance, and
+    GL                 C = -(f + n)/(f - n)   D = -2 f n/(f - n)   (glm::perspective)
+    ZERO_ONE           C = f/(n - f)          D = -f n/(f - n)     (glm::perspectiveZO)
+    REVERSED           C = n/(f - n)          D = f n/(f - n)      (ZERO_ONE, near/far swapped)
+    INFINITE_GL        C = -1                 D = -2 n             (glm::infinitePerspective)
+    INFINITE_REVERSED  C = 0                  D = n
+  The window depth each one produces is the one of linearize_depth.glsl.
+  The inverse maps (xc, yc, zc, wc) to (xc/A, yc/B, -wc, (zc + C wc)/D) exactly
+  (no general 4x4 inversion; HLSL has none).
+  All three return the zero matrix (every projected point then has w = 0, so
+  snellClipToNdc and friends report valid = false) when fovy is not in (0, pi),
+  tan(fovy/2) is not finite positive, aspect or zNear are not finite positive,
+  zFar is not finite or not > zNear (finite conventions), the convention is
+  unknown, or an entry would overflow or be denormal (a GPU may flush it to 0).
+  GL is the convention of the paper's equations (Oliveira & Brauwers 2007, sec.
+  3.2.1: "the projection matrix used by OpenGL", clip w = -z).
+source: GLM 0.9.9 ext/matrix_clip_space.inl (perspectiveRH_NO, perspectiveRH_ZO,
+  infinitePerspectiveRH_NO); OpenGL gluPerspective.
+*/
+#ifndef SNELL_CAMERA_PERSPECTIVE_GLSL
+#define SNELL_CAMERA_PERSPECTIVE_GLSL
+
+
+
+SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, float zFar, int convention) {
+  vec4 zero4 = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  mat4 zero = SNELL_CAMERA_MAT4_COLUMNS(zero4, zero4, zero4, zero4);
+  bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
+  if (convention < 0 || convention >= SNELL_DEPTH_CONVENTION_COUNT || !SNELL_FINITE(fovy) ||
+      !(fovy > 0.0f) || !(fovy < SNELL_PI) || !SNELL_FINITE(aspect) || !(aspect > 0.0f) ||
+      !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
+    return zero;
+  }
+  if (!infinite && (!SNELL_FINITE(zFar) || !(zFar > zNear))) {
+    return zero;
+  }
+  float tanHalfFovy = tan(fovy / 2.0f);
+  if (!SNELL_FINITE(tanHalfFovy) || !(tanHalfFovy > 0.0f)) {
+    return zero;
+  }
+  // Same operation order as glm::perspective, so the GL matrix matches it in float.
+  float a = 1.0f / (aspect * tanHalfFovy);
+  float b = 1.0f / tanHalfFovy;
+  float c = 0.0f;
+  float d = 0.0f;
+  if (convention == SNELL_DEPTH_GL) {
+    c = -(zFar + zNear) / (zFar - zNear);
+    d = -(2.0f * zFar * zNear) / (zFar - zNear);
+  } else if (convention == SNELL_DEPTH_ZERO_ONE) {
+    c = zFar / (zNear - zFar);
+    d = -(zFar * zNear) / (zFar - zNear);
+  } else if (convention == SNELL_DEPTH_REVERSED) {
+    c = zNear / (zFar - zNear);
+    d = (zFar * zNear) / (zFar - zNear);
+  } else if (convention == SNELL_DEPTH_INFINITE_GL) {
+    c = -1.0f;
+    d = -2.0f * zNear;
+  } else {
+    c = 0.0f;
+    d = zNear;
+  }
+  if (!SNELL_FINITE(a) || !SNELL_FINITE(b) || !SNELL_FINITE(c) ||
+      !SNELL_FINITE(d) || !(a >= SNELL_FLT_MIN) || !(b >= SNELL_FLT_MIN) ||
+      !(abs(d) >= SNELL_FLT_MIN)) {
+    return zero;
+  }
+  return SNELL_CAMERA_MAT4_COLUMNS(vec4(a, 0.0f, 0.0f, 0.0f), vec4(0.0f, b, 0.0f, 0.0f),
+                                   vec4(0.0f, 0.0f, c, -1.0f), vec4(0.0f, 0.0f, d, 0.0f));
+}
+
+SNELL_FN mat4 snellPerspective(float fovy, float aspect, float zNear, float zFar) {
+  return snellPerspectiveWithDepth(fovy, aspect, zNear, zFar, SNELL_DEPTH_GL);
+}
+
+SNELL_FN mat4 snellPerspectiveInverse(float fovy, float aspect, float zNear, float zFar, int convention) {
+  mat4 m = snellPerspectiveWithDepth(fovy, aspect, zNear, zFar, convention);
+  // Entries read through SNELL_MUL (m[i] is a column in GLSL but a row in HLSL).
+  float a = SNELL_MUL(m, vec4(1.0f, 0.0f, 0.0f, 0.0f)).x;
+  float b = SNELL_MUL(m, vec4(0.0f, 1.0f, 0.0f, 0.0f)).y;
+  float c = SNELL_MUL(m, vec4(0.0f, 0.0f, 1.0f, 0.0f)).z;
+  float d = SNELL_MUL(m, vec4(0.0f, 0.0f, 0.0f, 1.0f)).z;
+  vec4 zero4 = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  if (a == 0.0f) {
+    return SNELL_CAMERA_MAT4_COLUMNS(zero4, zero4, zero4, zero4);
+  }
+  float ia = 1.0f / a;
+  float ib = 1.0f / b;
+  float id = 1.0f / d;
+  float cd = c / d;
+  if (!SNELL_FINITE(ia) || !SNELL_FINITE(ib) || !SNELL_FINITE(id) ||
+      !SNELL_FINITE(cd)) {
+    return SNELL_CAMERA_MAT4_COLUMNS(zero4, zero4, zero4, zero4);
+  }
+  return SNELL_CAMERA_MAT4_COLUMNS(vec4(ia, 0.0f, 0.0f, 0.0f), vec4(0.0f, ib, 0.0f, 0.0f),
+                                   vec4(0.0f, 0.0f, 0.0f, id), vec4(0.0f, 0.0f, -1.0f, cd));
+}
+
+#endif
+/*
+description: view space -> clip space -> NDC, with the perspective divide made
+  safe for points at or behind the camera.
+use: vec4 clip = snellViewToClip(clipFromView, pView);
+     SnellNdc n = snellClipToNdc(clip);   // n.ndc, n.valid
+contract:
+  - snellViewToClip is clipFromView * vec4(pView, 1) (SNELL_MUL), nothing else:
+    no check, NaN and Inf propagate as the matrix product makes them.
+  - snellClipToNdc: valid is true exactly when all four clip components are
+    finite and clip.w > 0, denormal w counting as 0 (for the perspective matrices of perspective.glsl,
+    w = -z_view: the point is in front of the camera). Then ndc = clip.xyz / w,
+    each component clamped to [-SNELL_FLT_MAX, SNELL_FLT_MAX] (a tiny w makes the
+    quotient overflow). Otherwise (w <= 0: at or behind the camera's plane; NaN
+    or Inf) valid is false and ndc is (0,0,0).
+  - points outside the frustum but in front of the camera are valid; their NDC
+    lie outside [-1,1].
+source: OpenGL 4.5 core spec sec. 13.6 (perspective division).
+*/
+#ifndef SNELL_CAMERA_VIEW_TO_CLIP_GLSL
+#define SNELL_CAMERA_VIEW_TO_CLIP_GLSL
+
+
+
+struct SnellNdc {
+  vec3 ndc;
+  bool valid;
+};
+
+SNELL_FN vec4 snellViewToClip(mat4 clipFromView, vec3 pView) {
+  return SNELL_MUL(clipFromView, vec4(pView.x, pView.y, pView.z, 1.0f));
+}
+
+SNELL_FN SnellNdc snellClipToNdc(vec4 clip) {
+  SnellNdc r;
+  r.ndc = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(clip.x) || !SNELL_FINITE(clip.y) || !SNELL_FINITE(clip.z) ||
+      !SNELL_FINITE(clip.w) || !(clip.w >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 q = vec3(clip.x, clip.y, clip.z) / clip.w;
+  r.ndc = clamp(q, vec3(-SNELL_FLT_MAX, -SNELL_FLT_MAX, -SNELL_FLT_MAX),
+                vec3(SNELL_FLT_MAX, SNELL_FLT_MAX, SNELL_FLT_MAX));
+  r.valid = true;
+  return r;
+}
+
+#endif
+/*
+description: project a view-space point to viewport uv ([0,1]^2, origin
+  bottom-left) and NDC z, in one call.
+use: SnellScreenPoint sp = snellViewToUv(clipFromView, pView);
+     if (sp.valid) { vec4 c = SNELL_SAMPLE_LOD(tex, sp.uv, 0.0f); float d = snellNdcZToDepth(sp.ndcZ, conv); }
+contract:
+  - uv = 0.5 ndc.xy + 0.5 and ndcZ = ndc.z with ndc from
+    snellClipToNdc(snellViewToClip(clipFromView, pView)); valid is that call's valid.
+  - valid is false (uv = (0,0), ndcZ = 0) for points at or behind the camera
+    (clip w <= 0), NaN or Inf; otherwise all results are finite (clamped to
+    +-SNELL_FLT_MAX), also for points off screen (uv outside [0,1]).
+  - ndcZ is NDC z, not a depth-buffer value: snellNdcZToDepth converts it.
+source: Oliveira & Brauwers 2007, Algorithm 1 (t' = 0.5 (S~.xy / S~.w) + 0.5).
+*/
+#ifndef SNELL_CAMERA_VIEW_TO_UV_GLSL
+#define SNELL_CAMERA_VIEW_TO_UV_GLSL
+
+
+
+
+struct SnellScreenPoint {
+  vec2 uv;
+  float ndcZ;
+  bool valid;
+};
+
+SNELL_FN SnellScreenPoint snellViewToUv(mat4 clipFromView, vec3 pView) {
+  SnellNdc n = snellClipToNdc(snellViewToClip(clipFromView, pView));
+  SnellScreenPoint r;
+  r.uv = vec2(0.0f, 0.0f);
+  r.ndcZ = 0.0f;
+  r.valid = n.valid;
+  if (n.valid) {
+    r.uv = vec2(n.ndc.x, n.ndc.y) * 0.5f + 0.5f;
+    r.ndcZ = n.ndc.z;
+  }
+  return r;
+}
+
+#endif
+/*
+description: integer pixel <-> viewport uv (GL window conventions).
+use: vec2 uv = snellPixelToUv(ivec2(gl_FragCoord.x, gl_FragCoord.y), size);   // pixel centre
+     ivec2 px = snellUvToPixel(uv, size);   // ready for SNELL_TEXEL_FETCH
+  size    viewport (or texture level) size in pixels, e.g. SNELL_TEXTURE_SIZE(tex, 0)
+contract:
+  - pixel (i, j) covers uv [i, i+1]/W x [j, j+1]/H, origin bottom-left (row 0 is
+    the bottom row, as glReadPixels and texel fetches order it).
+  - snellPixelToUv returns the pixel centre ((i + 0.5)/W, (j + 0.5)/H), not
+    clamped: pixels outside the viewport give uv outside [0,1]. A size component
+    <= 0 gives 0 for that component.
+  - snellUvToPixel returns the pixel containing uv, floor(uv * size), clamped into
+    [0, size - 1] (clamp-to-edge: uv outside [0,1] gives an edge pixel, so the
+    result is always a legal texelFetch coordinate). A uv component on a pixel
+    boundary belongs to the pixel above/right of it; uv = 1 to the last pixel.
+    NaN uv gives pixel 0 in that component; a size with a component <= 0
+    gives (0,0).
+  - snellUvToPixel(snellPixelToUv(p, size), size) == p for every p inside the
+    viewport (sizes up to 2^22).
+source: OpenGL 4.5 core spec sec. 8.14.2 (texel coordinates u = s W), sec. 14.5
+  (fragment centres at (i + 0.5, j + 0.5)).
+*/
+#ifndef SNELL_CAMERA_PIXEL_TO_UV_GLSL
+#define SNELL_CAMERA_PIXEL_TO_UV_GLSL
+
+
+
+SNELL_FN vec2 snellPixelToUv(ivec2 px, ivec2 size) {
+  float u = size.x > 0 ? (float(px.x) + 0.5f) / float(size.x) : 0.0f;
+  float v = size.y > 0 ? (float(px.y) + 0.5f) / float(size.y) : 0.0f;
+  return vec2(u, v);
+}
+
+SNELL_FN ivec2 snellUvToPixel(vec2 uv, ivec2 size) {
+  if (size.x <= 0 || size.y <= 0) {
+    return ivec2(0, 0);
+  }
+  float x = isnan(uv.x) ? 0.0f : clamp(floor(uv.x * float(size.x)), 0.0f, float(size.x - 1));
+  float y = isnan(uv.y) ? 0.0f : clamp(floor(uv.y * float(size.y)), 0.0f, float(size.y - 1));
+  return ivec2(int(x), int(y));
+}
+
+#endif
+/*
+description: reconstruct the view-space position seen at a uv from a depth-buffer
+  value (snellUvDepthToView) or from a linear view distance (snellUvDistanceToView).
+use: SnellViewPoint p = snellUvDepthToView(uv, depthValue, viewFromClip, SNELL_DEPTH_GL);
+     SnellViewPoint p = snellUvDistanceToView(uv, viewDistance, viewFromClip);
+  viewFromClip  inverse of the projection (snellPerspectiveInverse, or your
+                engine's inverse projection matrix)
+  depthValue    the stored depth-buffer value ([0,1], window space), not NDC z
+  viewDistance  -z_view (> 0), e.g. snellLinearizeDepth(...) or a linear depth texture
+contract:
+  - snellUvDepthToView: ndc = (2 uv - 1, snellDepthToNdcZ(depthValue, convention)),
+    h = viewFromClip * vec4(ndc, 1), position = h.xyz / h.w. depthValue is clamped
+    to [0,1]; uv outside [0,1] is allowed (the point is off screen).
+  - snellUvDistanceToView: the point at z = -viewDistance on the ray from the eye
+    through uv (found by unprojecting NDC z = 0.5, a finite point in front of the
+    camera for every convention); position.z == -viewDistance exactly. Requires a
+    perspective projection (eye at the view-space origin).
+  - valid is true exactly when the result is finite and in front of the camera
+    (position.z < 0). It is false, with position (0,0,0), for NaN/Inf inputs, an
+    unknown convention, depth on the far plane of an infinite convention (depth 1
+    INFINITE_GL, depth 0 INFINITE_REVERSED: h.w = 0, the point is at infinity, e.g.
+    sky pixels), a zero/singular matrix (|h.w| below the smallest normal float),
+    viewDistance <= 0 or denormal (at or behind the camera) or a reconstruction at or behind the camera plane.
+source: OpenGL 4.5 core spec sec. 13.6, inverted; Oliveira & Brauwers 2007 sec.
+  3.2.1 (camera-space points from depth maps under perspective projection).
+*/
+#ifndef SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
+#define SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
+
+
+
+
+struct SnellViewPoint {
+  vec3 position;
+  bool valid;
+};
+
+SNELL_FN SnellViewPoint snellUvDepthToView(vec2 uv, float depthValue, mat4 viewFromClip, int convention) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || isnan(depthValue) || convention < 0 ||
+      convention >= SNELL_DEPTH_CONVENTION_COUNT) {
+    return r;
+  }
+  float zNdc = snellDepthToNdcZ(depthValue, convention);
+  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, zNdc, 1.0f));
+  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 p = vec3(h.x, h.y, h.z) / h.w;
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z) || !(p.z < 0.0f)) {
+    return r;
+  }
+  r.position = p;
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN SnellViewPoint snellUvDistanceToView(vec2 uv, float viewDistance, mat4 viewFromClip) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewDistance) ||
+      !(viewDistance >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, 0.5f, 1.0f));
+  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 q = vec3(h.x, h.y, h.z) / h.w;
+  if (!SNELL_FINITE(q.x) || !SNELL_FINITE(q.y) || !SNELL_FINITE(q.z) || !(q.z < 0.0f)) {
+    return r;
+  }
+  float s = viewDistance / -q.z;
+  vec3 p = vec3(q.x * s, q.y * s, -viewDistance);
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y)) {
+    return r;
+  }
+  r.position = p;
+  r.valid = true;
+  return r;
+}
+
+#endif
+/*
+description: the inverse projection for a known view z: the view-space point
+  on the pixel ray of a uv at a given depth, without an inverse matrix (the
+  surface strategies reconstruct every depth texel through it).
+use: SnellViewPoint p = snellUvZToView(clipFromView, uv, viewZ);
+  uv            viewport uv ([0,1]^2, origin bottom-left)
+  viewZ         view-space z (< 0) of the wanted point
+  clipFromView  any projection with clip w = -z (perspective.glsl, glm::perspective*,
+                glFrustum, off-centre frusta); no inverse matrix is needed
+contract:
+  - the point p with p.z == viewZ whose projection has NDC xy =
+    2 uv - 1, from the 2x2 linear system clip.xy = ndc.xy clip.w (Cramer's rule on
+    the matrix columns). valid =
+    false, position (0,0,0), when an input is NaN/Inf, viewZ >= 0 or denormal, the
+    system is singular (|det| below the smallest normal float) or the result
+    overflows.
+source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC).
+*/
+#ifndef SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
+#define SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
+
+
+
+/* Column i of a matrix (the matrix's i-th basis image) without a matrix product:
+   GLSL and GLM index columns, HLSL rows. */
+#if defined(SNELL_LANG_HLSL)
+#  define SNELL_CAMERA_MAT_COLUMN(m, i) (transpose(m)[i])
+#else
+#  define SNELL_CAMERA_MAT_COLUMN(m, i) ((m)[i])
+#endif
+
+SNELL_FN SnellViewPoint snellUvZToView(mat4 clipFromView, vec2 uv, float viewZ) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
+      !(viewZ <= -SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
+  float nx = 2.0f * uv.x - 1.0f;
+  float ny = 2.0f * uv.y - 1.0f;
+  // x a00 + y a01 = b0,  x a10 + y a11 = b1
+  float a00 = c0.x - nx * c0.w;
+  float a01 = c1.x - nx * c1.w;
+  float a10 = c0.y - ny * c0.w;
+  float a11 = c1.y - ny * c1.w;
+  float b0 = -(viewZ * (c2.x - nx * c2.w) + (c3.x - nx * c3.w));
+  float b1 = -(viewZ * (c2.y - ny * c2.w) + (c3.y - ny * c3.w));
+  float det = a00 * a11 - a01 * a10;
+  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  float x = (b0 * a11 - a01 * b1) / det;
+  float y = (a00 * b1 - b0 * a10) / det;
+  if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
+    return r;
+  }
+  r.position = vec3(x, y, viewZ);
+  r.valid = true;
+  return r;
+}
+
+#endif
+/*
+description: the perspective texture-space parameterization of a view-space ray
+  segment (Oliveira & Brauwers 2007, sec. 3.2.1, eqs. 3-10, Algorithm 1): the
+  segment S-E of the refracted ray T1 between two constant-z planes, and for any
+  point P on it, from P.z alone, the image-space parameter alpha and the uv where
+  P projects, without a matrix product per step.
+use: SnellTexRay r = snellTexRaySetup(p1, t1, zNearest, zFarthest, clipFromView);
+     // march in 3D: P.z = mix(r.s.z, r.e.z, beta)  (eq. 5)
+     vec2 uv = snellTexRayUv(r, pz);   float alpha = snellTexRayAlpha(r, pz);
+  p1         view-space start of the ray (P1, the front-face hit)
+  t1         ray direction T1 (need not be normalized: eqs. 3-4 divide by T1.z)
+  zNearest   view-space z of the plane where the search starts, the back-face
+             depth nearest to the camera (the paper's Zmin, a minimum *distance*;
+             as a right-handed view-space z it is the LARGER, less negative value)
+  zFarthest  view-space z of the plane where it ends (the paper's Zmax, the
+             farthest back-face depth; the more negative value). Both are z
+             values (< 0), not distances and not the camera's clip planes.
+  clipFromView  the camera projection; eqs. 8-9 assume clip w = -z (true for every
+             matrix of perspective.glsl, glm::perspective*, glFrustum).
+contract:
+  - S = P1 + ((zNearest - P1.z)/T1.z) T1 (eq. 3), E likewise with zFarthest (eq.
+    4); S.z == zNearest and E.z == zFarthest exactly. S and E are the
+    intersections of the LINE with the planes: when T1 points towards the camera
+    (T1.z > 0) they lie behind P1 on the ray; the caller decides what that means.
+  - k1 = 1/S.z, k2 = S.z E.z/(S.z - E.z) (eq. 9), ts = t's = 0.5 S~.xy/S~.w + 0.5,
+    dt = t'e - t's (eq. 10, Algorithm 1).
+  - snellTexRayAlpha(r, pz) = (1/pz - k1) k2 (eq. 9), evaluated as the equal
+    ((S.z - pz)/pz) (k1 k2) = ((S.z - pz)/pz) E.z/(S.z - E.z), which has no
+    cancellation when pz is close to S.z. alpha = 0 at S.z, 1 at E.z; pz outside
+    [E.z, S.z] extrapolates along the line (alpha outside [0,1]); never clamped
+    to [0,1], only to +-SNELL_FLT_MAX.
+  - snellTexRayUv(r, pz) = ts + alpha dt (eq. 10): the uv where the point of the
+    line with z = pz projects (equal to projecting P with clipFromView).
+  - zNearest == zFarthest: the segment is a point: S == E, k2 = 0, dt = 0,
+    alpha = 0 for every pz, uv = ts; valid is true.
+  - valid = false, with every field 0 (so alpha = 0 and uv = (0,0)), when: any
+    input is NaN or Inf (matrix included); T1.z == 0 (the ray is parallel to the
+    planes and never reaches them); zNearest >= 0 or zFarthest >= 0 (denormal
+    values count as 0 throughout: GPUs may flush them); S or E
+    project with clip w <= 0; or any result overflows (e.g. T1.z so small that S
+    is at infinity). A plane at or behind the eye (z >= 0) is rejected rather than
+    clamped to the near plane: eq. 8 needs S~.w = -S.z > 0, the back-face depth
+    extremes of a rendered object always lie in front of the near plane, so such
+    input is a caller bug, and clamping would silently search a segment the caller
+    did not ask for.
+  - alpha (and uv) for a valid ray and pz >= 0 (or denormal), NaN or Inf (no
+    projection): alpha 0,
+    uv = ts, i.e. the search start.
+source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
+  Objects", I3D 2007, sec. 3.2.1, eqs. 3, 4, 5, 6, 8, 9, 10 and Algorithm 1.
+*/
+#ifndef SNELL_CAMERA_TEX_RAY_GLSL
+#define SNELL_CAMERA_TEX_RAY_GLSL
+
+
+
+
+struct SnellTexRay {
+  vec3 s;      // S, on the plane z = zNearest (eq. 3)
+  vec3 e;      // E, on the plane z = zFarthest (eq. 4)
+  float k1;    // 1 / S.z (eq. 9)
+  float k2;    // S.z E.z / (S.z - E.z) (eq. 9); 0 when S.z == E.z
+  vec2 ts;     // t's: uv of S (eq. 10)
+  vec2 dt;     // t'e - t's (Algorithm 1)
+  bool valid;
+};
+
+SNELL_FN SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, float zFarthest, mat4 clipFromView) {
+  SnellTexRay r;
+  r.s = vec3(0.0f, 0.0f, 0.0f);
+  r.e = vec3(0.0f, 0.0f, 0.0f);
+  r.k1 = 0.0f;
+  r.k2 = 0.0f;
+  r.ts = vec2(0.0f, 0.0f);
+  r.dt = vec2(0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(p1.x) || !SNELL_FINITE(p1.y) || !SNELL_FINITE(p1.z) ||
+      !SNELL_FINITE(t1.x) || !SNELL_FINITE(t1.y) || !SNELL_FINITE(t1.z) ||
+      !SNELL_FINITE(zNearest) || !SNELL_FINITE(zFarthest)) {
+    return r;
+  }
+  if (!(abs(t1.z) >= SNELL_FLT_MIN) || !(zNearest <= -SNELL_FLT_MIN) ||
+      !(zFarthest <= -SNELL_FLT_MIN)) {
+    return r;
+  }
+  float ls = (zNearest - p1.z) / t1.z;
+  float le = (zFarthest - p1.z) / t1.z;
+  vec3 s = vec3(p1.x + ls * t1.x, p1.y + ls * t1.y, zNearest);
+  vec3 e = vec3(p1.x + le * t1.x, p1.y + le * t1.y, zFarthest);
+  SnellNdc ns = snellClipToNdc(snellViewToClip(clipFromView, s));
+  SnellNdc ne = snellClipToNdc(snellViewToClip(clipFromView, e));
+  if (!SNELL_FINITE(s.x) || !SNELL_FINITE(s.y) || !SNELL_FINITE(e.x) ||
+      !SNELL_FINITE(e.y) || !ns.valid || !ne.valid) {
+    return r;
+  }
+  vec2 ts = vec2(ns.ndc.x, ns.ndc.y) * 0.5f + 0.5f;
+  vec2 te = vec2(ne.ndc.x, ne.ndc.y) * 0.5f + 0.5f;
+  vec2 dt = te - ts;
+  float k1 = 1.0f / zNearest;
+  float k2 = zNearest == zFarthest ? 0.0f : (zNearest * zFarthest) / (zNearest - zFarthest);
+  if (!SNELL_FINITE(ts.x) || !SNELL_FINITE(ts.y) || !SNELL_FINITE(dt.x) ||
+      !SNELL_FINITE(dt.y) || !SNELL_FINITE(k1) || !SNELL_FINITE(k2) ||
+      !SNELL_FINITE(k1 * k2)) {
+    return r;
+  }
+  r.s = s;
+  r.e = e;
+  r.k1 = k1;
+  r.k2 = k2;
+  r.ts = ts;
+  r.dt = dt;
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN float snellTexRayAlpha(SnellTexRay r, float pz) {
+  if (!r.valid || r.k2 == 0.0f || !SNELL_FINITE(pz) || !(pz <= -SNELL_FLT_MIN)) {
+    return 0.0f;
+  }
+  float alpha = ((r.s.z - pz) / pz) * (r.k1 * r.k2);
+  // pz denormal-small: inf * (a product that underflowed to 0) is NaN.
+  return isnan(alpha) ? 0.0f : clamp(alpha, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+}
+
+SNELL_FN vec2 snellTexRayUv(SnellTexRay r, float pz) {
+  float alpha = snellTexRayAlpha(r, pz);
+  vec2 uv = r.ts + alpha * r.dt;
+  return clamp(uv, vec2(-SNELL_FLT_MAX, -SNELL_FLT_MAX), vec2(SNELL_FLT_MAX, SNELL_FLT_MAX));
+}
+
+#endif
+#endif
+/* intersect/ family aggregator: every strategy for a ray against a depth buffer. */
+#ifndef SNELL_INTERSECT_GLSL
+#define SNELL_INTERSECT_GLSL
+/*
+description: the result every intersection strategy returns: where a view-space
+  ray meets a surface that exists only as a depth buffer.
+use: SnellHit h = snellIntersect...(origin, dir, depthTex, surface, ...);
+     if (h.valid) { vec4 n = SNELL_SAMPLE_LOD(normalTex, h.uv, 0.0f); ... }
+  uv        the hit's projection, viewport uv (origin bottom-left, [0,1]^2)
+  position  the hit point in view space (on the ray; z < 0)
+  valid     false when no hit was found (see each strategy's contract)
+  fetches   texel fetches spent (machine-independent cost; counted also when
+            the search fails)
+contract: snellHitMiss gives valid = false, uv = (0,0), position = (0,0,0) and the
+  fetch count it is given: finite numbers always.
+source: the common interface of DESIGN.md sec. 2 (intersect/).
+*/
+#ifndef SNELL_INTERSECT_HIT_GLSL
+#define SNELL_INTERSECT_HIT_GLSL
+
+
+struct SnellHit {
+  vec2 uv;
+  vec3 position;
+  bool valid;
+  int fetches;
+};
+
+SNELL_FN SnellHit snellHitMiss(int fetches) {
+  SnellHit h;
+  h.uv = vec2(0.0f, 0.0f);
+  h.position = vec3(0.0f, 0.0f, 0.0f);
+  h.valid = false;
+  h.fetches = fetches;
+  return h;
+}
+
+#endif
+/*
+description: how a depth texture describes a surface (the refractive object's
+  back faces, or the opaque scene), and the one way every strategy reads it.
+use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DEPTH_GL, 0.0f);
+     SnellSurfaceSample x = snellSampleSurface(depthTex, uv, s);   // x.viewZ < 0 when x.valid
+  clipFromView  the projection the depth texture was rendered with
+  zNear, zFar   its clip distances; convention: SNELL_DEPTH_* (camera/conventions.glsl)
+  emptyDepth    the texel value meaning "no surface here": the clear value (0.0f for
+                back faces drawn with glDepthFunc(GL_GREATER) after clearing to 0,
+                1.0f for a scene drawn with GL_LESS after clearing to 1)
+  lod           the mip level the searches read (0 = full resolution); set the field
+  depthFilter   how a depth is read (set the field; snellIntersectWith sets it from
+                SnellIntersectOptions.depthFilter):
+                SNELL_DEPTH_FILTER_NEAREST  0 (default) the texel containing uv
+                SNELL_DEPTH_FILTER_BILINEAR 1 the window depth interpolated
+                  bilinearly between the four texel centres around uv, where
+                  all four hold a surface, else the nearest texel. Window depth
+                  is affine in screen space over a plane (it is a + b / z), so
+                  planes are read exactly between texel centres; at the
+                  silhouette no surface is blended with an empty texel. Across a
+                  depth discontinuity inside the buffer it still invents a
+                  one-texel ramp (Oliveira & Brauwers 2007 sec. 3.1), which is
+                  why it is not the default.
+  closed        true (default): an empty texel beside the surface hides more of
+                it (a closed object's back faces curve away behind the
+                silhouette: the plane methods keep their last plane there,
+                SNELL_PLANE_HOLD); false: empty texels are open space (the
+                opaque scene: the environment shows there), set the field
+contract (snellSampleSurface):
+  - NEAREST: reads the texel containing uv (no filtering: filtering depth
+    invents surfaces between foreground and background, Oliveira & Brauwers
+    2007 sec. 3.1) at level lod through SNELL_TEXEL_FETCH, red channel, and
+    costs one fetch. BILINEAR: the four texels (clamped to the edge) through
+    SNELL_TEXEL_FETCH, counted as one fetch (one textureGather in a shader that
+    has it); valid as NEAREST is (the texel containing uv decides);
+    interpolated = true when the four were blended (false for NEAREST, at the
+    silhouette and whenever valid is false);
+  - valid = false (viewZ = 0) when uv lies outside [0,1]^2 (off screen: no
+    information, never clamped to the edge), when uv is NaN, when the texel equals
+    emptyDepth, or when the depth does not linearize (NaN, bad zNear/zFar);
+  - otherwise viewZ = -snellLinearizeDepth(texel) < 0, finite.
+source: Oliveira & Brauwers 2007 sec. 3.1 and Algorithm 2 ("invalid texels have
+  depth = 0"); depth conventions in camera/linearize_depth.glsl.
+*/
+#ifndef SNELL_INTERSECT_DEPTH_SURFACE_GLSL
+#define SNELL_INTERSECT_DEPTH_SURFACE_GLSL
+
+
+
+
+#define SNELL_DEPTH_FILTER_NEAREST 0
+#define SNELL_DEPTH_FILTER_BILINEAR 1
+
+struct SnellDepthSurface {
+  mat4 clipFromView;
+  float zNear;
+  float zFar;
+  int convention;
+  float emptyDepth;
+  int lod;
+  int depthFilter;
+  bool closed;
+};
+
+struct SnellSurfaceSample {
+  float viewZ;
+  bool valid;
+  bool interpolated;  // BILINEAR and all four texels held a surface: viewZ is the depth at uv itself
+};
+
+SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, float zFar, int convention,
+                                             float emptyDepth) {
+  SnellDepthSurface s;
+  s.clipFromView = clipFromView;
+  s.zNear = zNear;
+  s.zFar = zFar;
+  s.convention = convention;
+  s.emptyDepth = emptyDepth;
+  s.lod = 0;
+  s.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+  s.closed = true;
+  return s;
+}
+
+SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
+  SnellSurfaceSample r;
+  r.viewZ = 0.0f;
+  r.valid = false;
+  r.interpolated = false;
+  // Written so NaN fails: every comparison with NaN is false.
+  if (!(uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) {
+    return r;
+  }
+  ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
+  if (size.x <= 0 || size.y <= 0) {
+    return r;
+  }
+  float d = SNELL_TEXEL_FETCH(depthTex, snellUvToPixel(uv, size), s.lod).x;
+  if (d == s.emptyDepth) {
+    return r;
+  }
+  if (s.depthFilter == SNELL_DEPTH_FILTER_BILINEAR) {
+    // Texel-centre coordinates: texel i's centre sits at i + 0.5.
+    SNELL_PRECISE float tx = uv.x * float(size.x) - 0.5f;
+    SNELL_PRECISE float ty = uv.y * float(size.y) - 0.5f;
+    float fx = floor(tx);
+    float fy = floor(ty);
+    int x0 = clamp(int(fx), 0, size.x - 1);
+    int y0 = clamp(int(fy), 0, size.y - 1);
+    int x1 = clamp(int(fx) + 1, 0, size.x - 1);
+    int y1 = clamp(int(fy) + 1, 0, size.y - 1);
+    float d00 = SNELL_TEXEL_FETCH(depthTex, ivec2(x0, y0), s.lod).x;
+    float d10 = SNELL_TEXEL_FETCH(depthTex, ivec2(x1, y0), s.lod).x;
+    float d01 = SNELL_TEXEL_FETCH(depthTex, ivec2(x0, y1), s.lod).x;
+    float d11 = SNELL_TEXEL_FETCH(depthTex, ivec2(x1, y1), s.lod).x;
+    if (d00 != s.emptyDepth && d10 != s.emptyDepth && d01 != s.emptyDepth && d11 != s.emptyDepth) {
+      float wx = tx - fx;
+      float wy = ty - fy;
+      SNELL_PRECISE float d0 = d00 + wx * (d10 - d00);
+      SNELL_PRECISE float d1 = d01 + wx * (d11 - d01);
+      SNELL_PRECISE float dm = d0 + wy * (d1 - d0);
+      d = dm;
+      r.interpolated = true;
+    }
+  }
+  float v = snellLinearizeDepth(d, s.zNear, s.zFar, s.convention);
+  if (!(v > 0.0f)) {
+    r.interpolated = false;
+    return r;
+  }
+  r.viewZ = -v;
+  r.valid = true;
+  return r;
+}
+
+#endif
+/*
+description: the view-space point a depth texture stores at a uv: the texel
+  containing uv, reconstructed at that texel's CENTRE (the point the rasterizer
+  actually sampled, by camera/uv_z_to_view.glsl). The plane strategies build
+  their planes from these points.
+use: SnellSurfacePoint b = snellSurfacePoint(depthTex, uv, surface);   // b.position, b.uv, b.valid
+contract:
+  - snellSurfacePoint: one snellSampleSurface at uv (one fetch, level s.lod);
+    uv = the centre of the texel read (snellPixelToUv of snellUvToPixel at level
+    s.lod), or uv itself when the sample was interpolated (s.depthFilter
+    BILINEAR with four surface texels: the depth there is the surface's at uv),
+    position = snellUvZToView(s.clipFromView, that uv, viewZ). valid
+    = false (uv and position 0) when the sample is invalid (off screen, empty,
+    NaN) or the reconstruction is. Costs one fetch whatever the outcome.
+  - texel-centre reconstruction is what makes the plane strategies exact on
+    planar surfaces: a depth texel is the surface depth at its centre.
+source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC), sec. 14.5 (fragment
+  centres); Mayer & Assarsson, "Constant-Time Light Refraction Simulation",
+  step 2 (B, the point directly behind W, from the screen buffers).
+*/
+#ifndef SNELL_INTERSECT_SURFACE_POINT_GLSL
+#define SNELL_INTERSECT_SURFACE_POINT_GLSL
+
+
+
+
+
+
+
+struct SnellSurfacePoint {
+  vec3 position;  // view space, on the texel centre's pixel ray
+  vec2 uv;        // the texel centre
+  bool valid;
+};
+
+SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
+  SnellSurfacePoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.uv = vec2(0.0f, 0.0f);
+  r.valid = false;
+  SnellSurfaceSample x = snellSampleSurface(depthTex, uv, s);
+  if (!x.valid) {
+    return r;
+  }
+  ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
+  vec2 centre = x.interpolated ? uv : snellPixelToUv(snellUvToPixel(uv, size), size);
+  SnellViewPoint p = snellUvZToView(s.clipFromView, centre, x.viewZ);
+  if (!p.valid) {
+    return r;
+  }
+  r.position = p.position;
+  r.uv = centre;
+  r.valid = true;
+  return r;
+}
+
+#endif
+/*
+description: the single-sample baseline that Mayer & Assarsson compare their
+  plane methods against (the "GPU Gems" row of their table): ONE depth lookup,
+  no search. The surface point B directly behind the ray origin W gives a
+  distance d = |B - W|, and the hit is taken d further along the ray (the
+  thickness approximation of Wyman 2005 and Sousa 2005: the ray travels as far
+  as the surface is behind its start).
+use: SnellHit h = snellIntersectSingleSample(origin, dir, depthTex, surface);
+  origin    view-space ray start W (z < 0): the front-face point for the back-face
+            buffer, the exit point for the opaque scene buffer
+  dir       ray direction (any length; normalized inside)
+  depthTex  the depth texture `surface` describes (read at level surface.lod)
+contract:
+  - uvW = projection of W; B = snellSurfacePoint(depthTex, uvW, surface) (the
+    texel centre point); d = |B - W|; position = W + d normalize(dir); uv = its
+    projection. fetches = 1 always.
+  - valid is true exactly when B exists and the position lies in front of the
+    camera and projects into [0,1]^2. It says nothing about whether the surface
+    exists at uv (no second lookup: that is the baseline's point); exact when
+    dir points from W straight at B (d is then the true distance).
+  - any direction is accepted, also one towards the camera (the answer is then
+    the point d towards the camera, which the caller asked for).
+  - valid = false (snellHitMiss): origin or dir NaN/Inf, |dir|^2 below 1e-30 or
+    overflowing, origin at or behind the camera plane (no projection): fetches 0;
+    W projecting off screen, B empty/invalid, the position off screen or behind
+    the camera: fetches 1 (the lookup is counted once W projects, as a shader
+    would issue it).
+source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation"
+  (the single-sample row of the results table, step 2 for B); T. Sousa, "Generic
+  Refraction Simulation", GPU Gems 2 ch. 19 (2005); C. Wyman, "An Approximate
+  Image-Space Approach for Interactive Refraction", SIGGRAPH 2005 (P2 ~ P1 + d T1).
+*/
+#ifndef SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
+#define SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
+
+
+
+
+
+
+
+SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface s) {
+  float len2 = dot(dir, dir);
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
+    return snellHitMiss(0);
+  }
+  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  if (!w.valid) {
+    return snellHitMiss(0);
+  }
+  SnellSurfacePoint b = snellSurfacePoint(depthTex, w.uv, s);
+  if (!b.valid) {
+    return snellHitMiss(1);
+  }
+  vec3 toB = b.position - origin;
+  float d = sqrt(dot(toB, toB));
+  vec3 p = origin + (d / sqrt(len2)) * dir;
+  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
+    return snellHitMiss(1);
+  }
+  SnellHit h;
+  h.uv = sp.uv;
+  h.position = p;
+  h.valid = true;
+  h.fetches = 1;
+  return h;
+}
+
+#endif
+/*
+description: a view-space point accepted as a hit where a depth buffer has a
+  surface at its projection: the last lookup of the plane methods (Mayer &
+  Assarsson step 4) and of Wyman's distance estimate, which both produce a
+  point first and ask the buffer afterwards.
+use: SnellHit h = snellHitOnSurface(p, depthTex, surface, fetchesSoFar);
+contract:
+  - projects the view-space point p; the hit is (uv = its projection, position
+    = p) and valid exactly when p is finite, in front of the camera, projects
+    into [0,1]^2 and the depth texture has a surface at that uv
+    (snellSampleSurface valid, level s.lod): the approximation landed on the
+    surface, not in an empty texel or off screen.
+  - fetches = fetchesSoFar + 1 when p projects (the step 4 lookup; an off-screen
+    uv is counted though snellSampleSurface answers it without reading), else
+    fetchesSoFar. A miss is snellHitMiss with that count.
+source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
+  step 4.
+*/
+#ifndef SNELL_INTERSECT_HIT_ON_SURFACE_GLSL
+#define SNELL_INTERSECT_HIT_ON_SURFACE_GLSL
+
+
+
+
+
+SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  if (!sp.valid) {
+    return snellHitMiss(fetchesSoFar);
+  }
+  SnellSurfaceSample x = snellSampleSurface(depthTex, sp.uv, s);
+  if (!x.valid) {
+    return snellHitMiss(fetchesSoFar + 1);
+  }
+  SnellHit h;
+  h.uv = sp.uv;
+  h.position = p;
+  h.valid = true;
+  h.fetches = fetchesSoFar + 1;
+  return h;
+}
+
+#endif
+/*
+description: what the two plane strategies (plane_normal.glsl, plane_depth.glsl)
+  share: the iteration options of Mayer & Assarsson's step 5 ("iteratively
+  refine the approximation, using P_e as the location to sample screen buffers
+  and generate a new plane") and the final step 4 lookup that turns a plane
+  hit into a SnellHit (snellPlaneHit, on intersect/hit_on_surface.glsl).
+use: SnellHit h = snellPlaneHit(p, planeUv, depthTex, surface, fetchesSoFar);
+options:
+  SNELL_PLANE_ITERATIONS      refinement iterations callers pass by default (1);
+                              0 is the constant-time method (one plane)
+  SNELL_PLANE_MAX_ITERATIONS  compile-time bound of the refinement loops (8); a
+                              per-call count is clamped to [0, this]
+  SNELL_PLANE_FACING_FALLBACK 1 (default): when a ray does not meet plane k
+                              ahead of its origin, plane k is replaced by the
+                              plane through the same surface point B_k facing
+                              the camera (normal = B_k, the line of sight);
+                              0: plane k is a miss (k = 0) or ends the
+                              refinement, as in the poster
+contract (snellPlaneHit): the comment above the function.
+source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
+  steps 4 and 5.
+*/
+#ifndef SNELL_INTERSECT_PLANE_REFINE_GLSL
+#define SNELL_INTERSECT_PLANE_REFINE_GLSL
+
+
+
+
+
+
+
+#ifndef SNELL_PLANE_ITERATIONS
+#  define SNELL_PLANE_ITERATIONS 1
+#endif
+#ifndef SNELL_PLANE_MAX_ITERATIONS
+#  define SNELL_PLANE_MAX_ITERATIONS 8
+#endif
+/* Why the facing fallback: near the silhouette of a convex object, the back
+   face's tangent plane at B_0 (the point behind W) leans away from the
+   refracted ray, which is bent inwards, so the ray never meets it and the
+   poster's method has no hit at all for a band of rim pixels (21.8% of a
+   glass sphere's non-TIR pixels, normal-based). The facing plane is the limit
+   of Mayer & Assarsson's blurred normal level ("a more blurred mip level gives
+   a more complete representation of the scene for drastic refraction
+   effects"): a ray going deeper always meets it, and the refinement then walks
+   along the back surface to tangent planes the ray does meet. Same fetches. */
+#ifndef SNELL_PLANE_FACING_FALLBACK
+#  define SNELL_PLANE_FACING_FALLBACK 1
+#endif
+/* 1: a plane hit whose projection lands on an empty texel is kept on the last
+   valid plane (snellPlaneHit) on a surface whose emptiness hides more of it
+   (SnellDepthSurface.closed, the default: a closed object's back faces curve
+   away behind their silhouette); 0: it is a miss on every surface. */
+#ifndef SNELL_PLANE_HOLD
+#  define SNELL_PLANE_HOLD 1
+#endif
+
+/* The last step of both plane methods (Mayer & Assarsson steps 4-5): the plane
+   hit p is accepted where the buffer has a surface at its projection. Where it has
+   none (the tangent plane of a convex object's back face lies outside the object,
+   so rim rays project past the silhouette), the plane itself is the best estimate
+   left: with SNELL_PLANE_HOLD, on a closed surface (s.closed: an open one such
+   as the opaque scene has nothing behind its empty texels but the
+   environment), the hit stays at p, valid, with uv = planeUv, the
+   texel the plane was built from, so a normal read at h.uv returns that plane's
+   normal. Off-screen or behind-the-camera p is a miss either way, and so is a
+   NaN or infinite planeUv (no texel: the hit's uv stays finite). */
+SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+  SnellHit h = snellHitOnSurface(p, depthTex, s, fetchesSoFar);
+  if (h.valid || SNELL_PLANE_HOLD == 0 || !s.closed) {
+    return h;
+  }
+  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f) ||
+      !SNELL_FINITE(planeUv.x) || !SNELL_FINITE(planeUv.y)) {
+    return h;
+  }
+  h.uv = planeUv;
+  h.position = p;
+  h.valid = true;
+  return h;
+}
+
+#endif
+/*
+description: Mayer & Assarsson's planar approximation, method 1 (normal-based):
+  the depth and normal stored behind the ray origin define a plane; the ray is
+  intersected with it, the intersection projected and the buffers sampled
+  there; optionally the plane is rebuilt at that sample and the ray
+  re-intersected, N times (step 5). Constant time for a fixed N.
+use: SnellHit h = snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, surface,
+                                            normalLod, SNELL_PLANE_ITERATIONS);
+  origin     view-space ray start W (z < 0): front-face point (back-face buffer)
+             or exit point (opaque scene buffer)
+  dir        ray direction (any length)
+  depthTex   the depth texture `surface` describes (read at level surface.lod)
+  normalTex  view-space normals (xyz, any length, either orientation) matching
+             depthTex texel for texel at level 0; it may be mipmapped and filtered
+             (Mayer & Assarsson: "a more blurred mip level gives a more complete
+             representation of the scene for drastic refraction effects")
+  normalLod  the level normals are read at (SNELL_SAMPLE_LOD, the texture's filters)
+  iterations refinement iterations, clamped to [0, SNELL_PLANE_MAX_ITERATIONS]
+contract:
+  - plane k (k = 0 .. N): uv_0 = projection of W, uv_k = projection of P_(k-1);
+    B_k = snellSurfacePoint(depthTex, uv_k, surface) (texel centre point),
+    n_k = xyz of SNELL_SAMPLE_LOD(normalTex, B_k.uv, normalLod) (the same texel
+    centre); P_k = snellRayPlane(W, dir, B_k, n_k), or, when the ray does not
+    meet that plane ahead of W and SNELL_PLANE_FACING_FALLBACK is 1 (default),
+    P_k = snellRayPlane(W, dir, B_k, B_k): the plane through B_k facing the
+    camera (normal along the line of sight through B_k), see plane_refine.glsl.
+    The hit is
+    snellPlaneHit(P_N): position P_N (on the ray), uv its projection, valid
+    when the surface exists there. A refinement step that cannot build its plane
+    (B_k empty or off screen, ray parallel) stops the refinement at P_(k-1).
+    With SNELL_PLANE_HOLD (default 1), a final P whose projection lands on an
+    empty texel stays valid on the last plane, uv = that plane's texel
+    (plane_refine.glsl): rim rays of convex objects keep their bend instead of
+    being dropped.
+  - exact (up to float rounding) for a planar surface with exact normals, for
+    every N >= 0: every plane is the surface's plane.
+  - fetches = 2 (N + 1) + 1 on success (a depth and a normal read per plane,
+    one final depth read); on failure the reads issued so far (lookups at an
+    off-screen uv included).
+  - rays towards the camera are accepted: the plane is intersected wherever it
+    lies ahead of W (t >= 0).
+  - valid = false (snellHitMiss, finite): origin/dir NaN/Inf, |dir|^2 below 1e-30
+    or overflowing, W at or behind the camera plane (fetches 0); B_k empty or off
+    screen; for the first plane: n_k zero/NaN, the ray parallel to it or the
+    plane behind W (snellRayPlane invalid), and with the fallback also the
+    facing plane (a ray that does not go deeper than B_0); P behind the camera or off
+    screen; the final sample empty with SNELL_PLANE_HOLD 0.
+source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
+  steps 1-5 and "Method 1: Normal-based"; plane intersection in
+  optics/ray_plane.glsl.
+*/
+#ifndef SNELL_INTERSECT_PLANE_NORMAL_GLSL
+#define SNELL_INTERSECT_PLANE_NORMAL_GLSL
+
+
+
+
+
+
+
+
+
+SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
+                                            SnellDepthSurface s, float normalLod, int iterations) {
+  float len2 = dot(dir, dir);
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
+    return snellHitMiss(0);
+  }
+  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  if (!w.valid) {
+    return snellHitMiss(0);
+  }
+  int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
+  int fetches = 0;
+  vec2 uv = w.uv;
+  vec2 planeUv = w.uv;
+  vec3 p = origin;
+  for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
+    if (k > n) {
+      break;
+    }
+    if (k > 0) {
+      SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+      if (!sp.valid) {
+        break;  // keep P_(k-1) on plane k-1
+      }
+      uv = sp.uv;
+    }
+    SnellSurfacePoint b = snellSurfacePoint(depthTex, uv, s);
+    fetches += 1;
+    if (!b.valid) {
+      if (k == 0) {
+        return snellHitMiss(fetches);
+      }
+      break;
+    }
+    vec4 nt = SNELL_SAMPLE_LOD(normalTex, b.uv, normalLod);
+    fetches += 1;
+    SnellRayPlaneHit ph = snellRayPlane(origin, dir, b.position, vec3(nt.x, nt.y, nt.z));
+#if SNELL_PLANE_FACING_FALLBACK
+    if (!ph.valid) {
+      ph = snellRayPlane(origin, dir, b.position, b.position);
+    }
+#endif
+    if (!ph.valid) {
+      if (k == 0) {
+        return snellHitMiss(fetches);
+      }
+      break;
+    }
+    p = ph.position;
+    planeUv = b.uv;
+  }
+  return snellPlaneHit(p, planeUv, depthTex, s, fetches);
+}
+
+#endif
+/*
+description: Mayer & Assarsson's planar approximation, method 2 (depth-based):
+  no normal buffer; three surface points define the plane: B directly behind
+  the ray's reference point, the surface seen at the point d = |B - W| further
+  along the ray, and a neighbouring texel (the "screen-space derivative" of B,
+  taken as a texel offset so the method works outside fragment shaders too),
+  all read at the mip level whose texels span the region the points cover.
+  Optional refinement as in plane_normal.glsl.
+use: SnellHit h = snellIntersectPlaneDepth(origin, dir, depthMips, surface, maxLod,
+                                           SNELL_PLANE_ITERATIONS);
+  origin, dir  view-space ray (origin z < 0; dir any length)
+  depthMips    a depth texture whose level L holds, in .x, a depth value
+               representative of each 2^L x 2^L block, emptyDepth where the block
+               is empty: the depth pyramid of depth_pyramid.glsl (.x = mean depth
+               of the valid texels; snellBuildDepthPyramid in C++), or a plain
+               one-level depth texture with maxLod = surface.lod
+  surface      its camera and conventions; surface.lod is the finest level read
+  maxLod       the coarsest level that exists (and may be read)
+  iterations   refinement iterations, clamped to [0, SNELL_PLANE_MAX_ITERATIONS]
+options:
+  SNELL_PLANE_DEPTH_MAX_SPAN_LOD  the level chosen is at most surface.lod + this (6)
+contract (one plane, built around a reference point Q on the ray: Q = W for the
+  first plane, Q = P_(k-1) when refining):
+  - uvQ = projection of Q; B0 = snellSurfacePoint(depthMips, uvQ) at level
+    surface.lod (1 fetch); d = |B0 - Q|; Q2 = Q + d dir/|dir|, or Q - d dir/|dir|
+    when Q is deeper than B0 (Q.z < B0.z: the ray is past the surface);
+    uv2 = projection of Q2 (uvQ when Q2 does not project).
+  - span = largest |uv2 - uvQ| component in texels of level surface.lod; level L =
+    surface.lod + ceil(log2(span)) (0 for span <= 1), clamped to
+    [surface.lod, min(maxLod, surface.lod + SNELL_PLANE_DEPTH_MAX_SPAN_LOD)].
+  - texels at level L: pB containing uvQ, pC containing uv2 (clamped to the
+    level); a = the unit step along the larger component of pC - pB (+x when
+    pC == pB, and pC is then pB + a), b = the perpendicular unit step (+y or +x).
+    B = texel-centre point of pB (B0 reused when L == surface.lod, else 1
+    fetch); C = point of pC, or of pB - a when pC is empty (1-2 fetches); D =
+    point of pB + b, or of pB - b when empty (1-2 fetches). The three texels are
+    never collinear in the image, so the plane is defined whenever they are valid.
+  - P = snellRayPlane(W, dir, B, cross(C - B, D - B)). With
+    SNELL_PLANE_FACING_FALLBACK 1 (default), when B was read but C or D is
+    empty, the three points are degenerate, or the ray does not meet their plane
+    ahead of W, the plane through B facing the camera is used instead:
+    P = snellRayPlane(W, dir, B, B) (plane_refine.glsl). After N refinements the
+    hit is snellHitOnSurface(P_N) (position on the ray, valid when the surface
+    exists at its projection).
+  - exact (up to float rounding) on a planar surface at every level whose
+    texels hold the depth at their centre: level 0 always; the pyramid's mean
+    levels for power-of-two sizes and fully covered blocks (window depth is
+    affine in screen space over a plane, so a block mean is its centre value).
+  - fetches per plane 3..6 (1 for B0, 1 for B when L > surface.lod, 1-2 each for
+    C and D), plus 1 final lookup; on failure the reads issued so far.
+  - valid = false (snellHitMiss, finite): origin/dir NaN/Inf, |dir|^2 below 1e-30
+    or overflowing, W at or behind the camera plane (fetches 0); B0 or B empty or
+    off screen; C or D empty after the fallback, a degenerate plane, the ray
+    parallel to it or the plane behind W (with SNELL_PLANE_FACING_FALLBACK 0,
+    or when the facing plane is not met either); P behind the camera; the final lookup
+    empty or off screen. Rays towards the camera are accepted as in
+    plane_normal.glsl.
+source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
+  "Method 2: Depth-based" ("sample all three points using the mipmap level that
+  encompasses the entire region these three points span") and step 5.
+*/
+#ifndef SNELL_INTERSECT_PLANE_DEPTH_GLSL
+#define SNELL_INTERSECT_PLANE_DEPTH_GLSL
+
+
+
+
+
+
+
+
+
+
+#ifndef SNELL_PLANE_DEPTH_MAX_SPAN_LOD
+#  define SNELL_PLANE_DEPTH_MAX_SPAN_LOD 6
+#endif
+
+/* One plane around the reference point q (see the contract); valid false when
+   it cannot be built. fetches: the reads spent. */
+struct SnellDepthPlane {
+  vec2 uv;        // where B was read
+  vec3 position;  // B once it was read (also when C or D was not), else 0
+  vec3 normal;    // cross(C - B, D - B), not normalized; 0 unless valid
+  bool valid;
+  int fetches;
+};
+
+SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthMips, SnellDepthSurface s, int maxLod) {
+  SnellDepthPlane r;
+  r.uv = vec2(0.0f, 0.0f);
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.normal = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  r.fetches = 0;
+  SnellScreenPoint sq = snellViewToUv(s.clipFromView, q);
+  if (!sq.valid) {
+    return r;
+  }
+  SnellSurfacePoint b0 = snellSurfacePoint(depthMips, sq.uv, s);
+  r.fetches = 1;
+  if (!b0.valid) {
+    return r;
+  }
+  r.uv = b0.uv;
+  vec3 toB = b0.position - q;
+  float d = sqrt(dot(toB, toB));
+  vec3 q2 = q.z < b0.position.z ? q - d * dirN : q + d * dirN;
+  SnellScreenPoint s2 = snellViewToUv(s.clipFromView, q2);
+  vec2 uv2 = s2.valid ? s2.uv : sq.uv;
+  ivec2 size0 = SNELL_TEXTURE_SIZE(depthMips, s.lod);
+  float span = max(abs(uv2.x - sq.uv.x) * float(size0.x), abs(uv2.y - sq.uv.y) * float(size0.y));
+  int top = min(maxLod, s.lod + SNELL_PLANE_DEPTH_MAX_SPAN_LOD);
+  int level = s.lod;
+  if (span > 1.0f && SNELL_FINITE(span)) {
+    level = s.lod + int(ceil(log2(span)));
+  }
+  level = max(s.lod, min(level, top));
+  SnellDepthSurface sl = s;
+  sl.lod = level;
+  ivec2 size = SNELL_TEXTURE_SIZE(depthMips, level);
+  ivec2 pb = snellUvToPixel(sq.uv, size);
+  ivec2 pc = snellUvToPixel(uv2, size);
+  ivec2 a = ivec2(1, 0);
+  ivec2 dpc = pc - pb;
+  if (abs(dpc.y) > abs(dpc.x)) {
+    a = ivec2(0, dpc.y > 0 ? 1 : -1);
+  } else if (dpc.x != 0) {
+    a = ivec2(dpc.x > 0 ? 1 : -1, 0);
+  }
+  if (dpc.x == 0 && dpc.y == 0) {
+    pc = pb + a;
+  }
+  ivec2 b = a.x != 0 ? ivec2(0, 1) : ivec2(1, 0);
+  vec3 pB = b0.position;
+  if (level != s.lod) {
+    SnellSurfacePoint bl = snellSurfacePoint(depthMips, snellPixelToUv(pb, size), sl);
+    r.fetches += 1;
+    if (!bl.valid) {
+      return r;
+    }
+    pB = bl.position;
+  }
+  r.position = pB;
+  SnellSurfacePoint c = snellSurfacePoint(depthMips, snellPixelToUv(pc, size), sl);
+  r.fetches += 1;
+  if (!c.valid) {
+    c = snellSurfacePoint(depthMips, snellPixelToUv(pb - a, size), sl);
+    r.fetches += 1;
+    if (!c.valid) {
+      return r;
+    }
+  }
+  SnellSurfacePoint e = snellSurfacePoint(depthMips, snellPixelToUv(pb + b, size), sl);
+  r.fetches += 1;
+  if (!e.valid) {
+    e = snellSurfacePoint(depthMips, snellPixelToUv(pb - b, size), sl);
+    r.fetches += 1;
+    if (!e.valid) {
+      return r;
+    }
+  }
+  r.normal = cross(c.position - pB, e.position - pB);
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D depthMips, SnellDepthSurface s,
+                                           int maxLod, int iterations) {
+  float len2 = dot(dir, dir);
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
+    return snellHitMiss(0);
+  }
+  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  if (!w.valid) {
+    return snellHitMiss(0);
+  }
+  vec3 dirN = dir / sqrt(len2);
+  int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
+  int fetches = 0;
+  vec3 p = origin;
+  vec2 planeUv = w.uv;
+  for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
+    if (k > n) {
+      break;
+    }
+    SnellDepthPlane pl = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
+    fetches += pl.fetches;
+    // An unbuilt plane has a zero normal, so the ray misses it; its facing plane exists
+    // only when B was read (position 0, the camera, gives no plane either).
+    SnellRayPlaneHit ph = snellRayPlane(origin, dir, pl.position, pl.normal);
+#if SNELL_PLANE_FACING_FALLBACK
+    if (!ph.valid) {
+      ph = snellRayPlane(origin, dir, pl.position, pl.position);
+    }
+#endif
+    if (!ph.valid) {
+      if (k == 0) {
+        return snellHitMiss(fetches);
+      }
+      break;  // keep P_(k-1) on plane k-1
+    }
+    p = ph.position;
+    planeUv = pl.uv;
+  }
+  return snellPlaneHit(p, planeUv, depthMips, s, fetches);
+}
+
+#endif
+/*
+description: the depth min/max pyramid (Oliveira & Brauwers 2007, 2nd pass): a
+  parallel reduction of a depth buffer in which every texel of level L+1 holds,
+  for the block of level-0 texels below it, the nearest and farthest view
+  distance (the search range Zmin, Zmax of their sec. 3.2), the mean depth value
+  (a depth mip the plane strategies and any strategy can read through
+  snellSampleSurface with surface.lod = L) and the covered fraction. Empty
+  (invalid) texels are excluded; an all-empty block stays empty.
+use: level 0, one pass over the depth buffer (fragment: px = ivec2(gl_FragCoord.xy)):
+       out = snellDepthPyramidBase(SNELL_TEXEL_FETCH(depthTex, px, 0).x, surface);
+     level L+1 from level L (fragment or compute pass, px the output texel):
+       out = snellDepthMinMaxReduce(pyramidTex, L, px, surface.emptyDepth);
+     C++: snell::snellBuildDepthPyramid(depthTexture, surface) (include/snell/depth_pyramid.hpp)
+     zMin/zMax of the whole buffer: the top (1x1) level's y and z.
+  A full GL pass is examples/glsl/depth_pyramid.frag.
+texel layout (RGBA32F):
+  x  mean depth value (window depth, the buffer's own convention) of the valid
+     children; emptyDepth when none is valid
+  y  nearest view distance (min of -z_view, > 0) of the valid level-0 texels below
+  z  farthest view distance (max), >= y
+  w  coverage: the mean of the children's coverage (level 0: 1 valid, 0 empty);
+     > 0 exactly when some level-0 texel below is valid
+  Distances rather than depth values for y and z: they are what the searches
+  need (view z = -distance), and "nearest" then does not depend on the
+  convention (reversed Z stores the nearest point as the LARGEST depth value).
+contract:
+  - snellDepthPyramidBase: invalid when depthValue == surface.emptyDepth, NaN,
+    infinite, or does not linearize (snellLinearizeDepth <= 0: bad zNear/zFar/convention):
+    vec4(emptyDepth, 0, 0, 0). Otherwise vec4(depthValue, v, v, 1), v =
+    snellLinearizeDepth(depthValue) > 0.
+  - snellDepthMinMaxReduce: level L has size (W, H) = SNELL_TEXTURE_SIZE(tex, L);
+    level L+1 has (max(1, W/2), max(1, H/2)), and px must lie in it. The children
+    are columns 2px.x .. 2px.x+1 (and 2px.x+2 for the last column when W is odd:
+    GL's floor sizes drop no texel), column 0 alone when W == 1; rows likewise:
+    2x2 texels, 3 x 2 / 2 x 3 / 3 x 3 at odd edges (fetches = their number, 1..9).
+    A child is valid when its w > 0. Result: x = (sum of valid children's x) /
+    (their count), y = min, z = max of their y / z, w = (sum of all children's w)
+    / (number of children); with no valid child vec4(emptyDepth, 0, 0, 0).
+  - the x channel is an unweighted mean of child means: equal to the mean over
+    all level-0 texels below for full blocks of power-of-two sizes; for a planar
+    surface it is the depth at the block centre (window depth is affine in
+    screen space over a plane).
+  - the sums run in a fixed order with no products, so the GPU pass and the C++
+    build agree bit for bit (the parity test compares every level exactly).
+source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
+  Objects", I3D 2007, sec. 3 (2nd pass: "the minimum and maximum depth values
+  from each group of four elements"), after M. Harris, "Mapping Computational
+  Concepts to GPUs" (parallel reduction), GPU Gems 2 ch. 31 (2005).
+*/
+#ifndef SNELL_INTERSECT_DEPTH_PYRAMID_GLSL
+#define SNELL_INTERSECT_DEPTH_PYRAMID_GLSL
+
+
+
+
+
+SNELL_FN vec4 snellDepthPyramidBase(float depthValue, SnellDepthSurface s) {
+  vec4 empty = vec4(s.emptyDepth, 0.0f, 0.0f, 0.0f);
+  if (!SNELL_FINITE(depthValue) || depthValue == s.emptyDepth) {
+    return empty;
+  }
+  float v = snellLinearizeDepth(depthValue, s.zNear, s.zFar, s.convention);
+  if (!(v > 0.0f)) {
+    return empty;
+  }
+  return vec4(depthValue, v, v, 1.0f);
+}
+
+SNELL_FN vec4 snellDepthMinMaxReduce(SNELL_TEX2D pyramidTex, int lod, ivec2 px, float emptyDepth) {
+  ivec2 size = SNELL_TEXTURE_SIZE(pyramidTex, lod);
+  int lastX = max(1, size.x / 2) - 1;
+  int lastY = max(1, size.y / 2) - 1;
+  int countX = size.x == 1 ? 1 : (px.x == lastX ? size.x - 2 * px.x : 2);
+  int countY = size.y == 1 ? 1 : (px.y == lastY ? size.y - 2 * px.y : 2);
+  float sum = 0.0f;
+  float coverage = 0.0f;
+  float nearest = 0.0f;
+  float farthest = 0.0f;
+  int valid = 0;
+  int children = 0;
+  for (int dy = 0; dy < 3; ++dy) {
+    for (int dx = 0; dx < 3; ++dx) {
+      if (dx < countX && dy < countY) {
+        vec4 t = SNELL_TEXEL_FETCH(pyramidTex, ivec2(2 * px.x + dx, 2 * px.y + dy), lod);
+        children += 1;
+        coverage += t.w;
+        if (t.w > 0.0f) {
+          sum += t.x;
+          nearest = valid == 0 ? t.y : min(nearest, t.y);
+          farthest = valid == 0 ? t.z : max(farthest, t.z);
+          valid += 1;
+        }
+      }
+    }
+  }
+  if (valid == 0) {
+    return vec4(emptyDepth, 0.0f, 0.0f, 0.0f);
+  }
+  return vec4(sum / float(valid), nearest, farthest, coverage / float(max(children, 1)));
+}
+
+#endif
+/*
+description: the depth range [zNearest, zFarthest] the texture-space searches
+  (conservative binary search, binary, linear+binary) walk, from the two
+  sources Oliveira & Brauwers name: the top level of the depth min/max pyramid
+  (their 2nd pass, exact for the buffer) or the object's bounding box (their
+  suggested speed-up: no reduction pass, a looser range). Plus the top mip
+  level of a texture, which the range and the depth-based plane need.
+use: SnellDepthRange r = snellDepthRangeFromPyramid(pyramidTex);
+     SnellDepthRange r = snellDepthRangeFromBox(viewFromObject, boxMin, boxMax);
+     int top = snellTextureTopLod(tex);
+  pyramidTex      a depth min/max pyramid (intersect/depth_pyramid.glsl layout:
+                  y nearest, z farthest view distance, w coverage), all levels
+  viewFromObject  object-to-view transform (camera at the origin looking down -Z)
+  boxMin, boxMax  the object-space axis-aligned bounding box
+options:
+  SNELL_DEPTH_RANGE_MARGIN  relative widening of the pyramid range (1e-3f):
+                            zNearest * (1 - m), zFarthest * (1 + m), so a
+                            fronto-parallel surface (Zmin == Zmax, which the
+                            searches reject) still gets a range and the
+                            surface lies strictly inside it
+contract:
+  - snellTextureTopLod: floor(log2(max(width, height))) of level 0 (the last
+    level of a full GL mip chain); 0 for a 1x1 or size-0 texture.
+  - snellDepthRangeFromPyramid: one SNELL_TEXEL_FETCH of texel (0, 0) at the
+    top level; valid when its coverage w > 0 and 0 < y <= z are finite;
+    zNearest = -y (1 - margin), zFarthest = -z (1 + margin). Invalid (all 0)
+    for an empty buffer.
+  - snellDepthRangeFromBox: the 8 corners transformed by viewFromObject
+    (w = 1 assumed: an affine transform); zNearest = the largest corner z,
+    zFarthest = the smallest, no fetch. Valid when every corner z is finite
+    and zFarthest < 0; a box reaching to or behind the camera plane gets
+    zNearest = -FLT_MIN (the searches then start at the ray origin). A flat box
+    facing the camera (zNearest == zFarthest) is widened by
+    SNELL_DEPTH_RANGE_MARGIN as for the pyramid. Invalid: all 0.
+source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
+  Objects", I3D 2007, sec. 3 (2nd pass: min/max reduction) and sec. 6
+  ("using the limits of the object's bounding box as Zmin and Zmax").
+*/
+#ifndef SNELL_INTERSECT_DEPTH_RANGE_GLSL
+#define SNELL_INTERSECT_DEPTH_RANGE_GLSL
+
+
+
+#ifndef SNELL_DEPTH_RANGE_MARGIN
+#  define SNELL_DEPTH_RANGE_MARGIN 1e-3f
+#endif
+
+struct SnellDepthRange {
+  float zNearest;
+  float zFarthest;
+  bool valid;
+};
+
+SNELL_FN SnellDepthRange snellDepthRangeInvalid() {
+  SnellDepthRange r;
+  r.zNearest = 0.0f;
+  r.zFarthest = 0.0f;
+  r.valid = false;
+  return r;
+}
+
+SNELL_FN int snellTextureTopLod(SNELL_TEX2D tex) {
+  ivec2 size = SNELL_TEXTURE_SIZE(tex, 0);
+  int m = max(size.x, size.y);
+  int lod = 0;
+  for (int i = 0; i < 31; ++i) {
+    if (m <= 1) {
+      break;
+    }
+    m = m / 2;
+    lod = lod + 1;
+  }
+  return lod;
+}
+
+/* Oliveira & Brauwers 2007, sec. 3, 2nd pass: the top level of the min/max reduction */
+SNELL_FN SnellDepthRange snellDepthRangeFromPyramid(SNELL_TEX2D pyramidTex) {
+  int top = snellTextureTopLod(pyramidTex);
+  vec4 t = SNELL_TEXEL_FETCH(pyramidTex, ivec2(0, 0), top);
+  if (!(t.w > 0.0f) || !(t.y > 0.0f) || !(t.z >= t.y) || !SNELL_FINITE(t.z)) {
+    return snellDepthRangeInvalid();
+  }
+  SnellDepthRange r;
+  r.zNearest = -t.y * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
+  r.zFarthest = -t.z * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
+  r.valid = true;
+  return r;
+}
+
+/* Oliveira & Brauwers 2007, sec. 6: the bounding box as Zmin, Zmax */
+SNELL_FN SnellDepthRange snellDepthRangeFromBox(mat4 viewFromObject, vec3 boxMin, vec3 boxMax) {
+  float zNearest = -SNELL_FLT_MAX;
+  float zFarthest = SNELL_FLT_MAX;
+  for (int i = 0; i < 8; ++i) {
+    float x = (i == 1 || i == 3 || i == 5 || i == 7) ? boxMax.x : boxMin.x;
+    float y = (i == 2 || i == 3 || i == 6 || i == 7) ? boxMax.y : boxMin.y;
+    float z = i >= 4 ? boxMax.z : boxMin.z;
+    vec4 p = SNELL_MUL(viewFromObject, vec4(x, y, z, 1.0f));
+    if (!SNELL_FINITE(p.z)) {
+      return snellDepthRangeInvalid();
+    }
+    zNearest = max(zNearest, p.z);
+    zFarthest = min(zFarthest, p.z);
+  }
+  if (!(zFarthest < 0.0f)) {
+    return snellDepthRangeInvalid();
+  }
+  SnellDepthRange r;
+  r.zNearest = min(zNearest, -SNELL_FLT_MIN);
+  r.zFarthest = zFarthest;
+  if (!(r.zFarthest < r.zNearest)) {
+    r.zNearest = r.zNearest * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
+    r.zFarthest = r.zFarthest * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
+  }
+  r.valid = true;
+  return r;
+}
+
+#endif
+/*
+description: the ray segment the texture-space searches walk (conservative
+  binary search, binary search, linear+binary search): the part of a view-space
+  ray between two constant-z planes that bound the surface in depth, in the
+  perspective texture-space parameterization of Oliveira & Brauwers 2007.
+use: SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
+     // beta in [0,1] along S-E (eq. 5): z = r.s.z + beta (r.e.z - r.s.z), uv = snellTexRayUv(r, z)
+  origin     view-space ray origin (P1: the front-face hit for the back-face
+             buffer, the back-face exit point for the opaque scene buffer)
+  dir        ray direction (need not be normalized)
+  zNearest   view-space z (< 0) of the nearest surface point, the paper's Zmin as
+             a z value (the LARGER, less negative one); zFarthest: of the farthest
+             (the paper's Zmax, more negative). Where they come from is the
+             caller's business, both are just two numbers: the top level of the
+             depth min/max pyramid (exact for the buffer), or the object's
+             bounding box / bounding sphere transformed to view space (looser,
+             so more steps for the same precision, never wrong).
+contract:
+  - the segment starts at S on the plane z = min(zNearest, origin.z): where the
+    ray meets zNearest, or at the origin itself when the origin is already
+    deeper than zNearest (a search never runs backwards along the ray); it ends
+    at E on the plane z = zFarthest. k1, k2, ts, dt as snellTexRaySetup.
+  - valid = false (every field 0, finite) when: any input is NaN or Inf (matrix
+    included); dir.z >= 0 or denormal (the ray points towards the camera or runs
+    parallel to the image plane: it never reaches deeper planes); zNearest <=
+    zFarthest (Zmin == Zmax, swapped or empty range); the origin is at or beyond
+    zFarthest (nothing left to search); and every case snellTexRaySetup
+    rejects (a plane at or behind the eye, S or E not projectable, overflow).
+source: Oliveira & Brauwers 2007, sec. 3.2.1, eqs. 3-4 (S and E), Figure 5
+  (Zmin, Zmax); camera/tex_ray.glsl for eqs. 5-10.
+*/
+#ifndef SNELL_INTERSECT_SEARCH_SEGMENT_GLSL
+#define SNELL_INTERSECT_SEARCH_SEGMENT_GLSL
+
+
+
+
+SNELL_FN SnellTexRay snellSearchSegment(vec3 origin, vec3 dir, float zNearest, float zFarthest, mat4 clipFromView) {
+  SnellTexRay bad;
+  bad.s = vec3(0.0f, 0.0f, 0.0f);
+  bad.e = vec3(0.0f, 0.0f, 0.0f);
+  bad.k1 = 0.0f;
+  bad.k2 = 0.0f;
+  bad.ts = vec2(0.0f, 0.0f);
+  bad.dt = vec2(0.0f, 0.0f);
+  bad.valid = false;
+  if (!SNELL_FINITE(origin.z) || !SNELL_FINITE(dir.z) || !SNELL_FINITE(zNearest) ||
+      !SNELL_FINITE(zFarthest)) {
+    return bad;
+  }
+  if (!(dir.z <= -SNELL_FLT_MIN) || !(zNearest > zFarthest) || !(origin.z > zFarthest)) {
+    return bad;
+  }
+  float zStart = origin.z < zNearest ? origin.z : zNearest;
+  return snellTexRaySetup(origin, dir, zStart, zFarthest, clipFromView);
+}
+
+#endif
+/*
+description: conservative binary search (CBS): intersect a view-space ray with
+  a depth-buffer surface by a binary search in texture space that only ever
+  advances along the ray, and only onto texels that hold a surface, so the
+  result never maps to an empty texel (no undefined normal at the silhouette).
+use: SnellHit h = snellConservativeBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest);
+     SnellHit h = snellConservativeBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, steps);
+     if (h.valid) { vec4 n2 = SNELL_TEXEL_FETCH(normalTex, snellUvToPixel(h.uv, size), 0); ... }
+  origin, dir          view-space ray (P1 and T1 in the paper; dir need not be normalized)
+  depthTex, surface    the depth buffer and how to read it (depth_surface.glsl);
+                       back-face buffer or opaque scene buffer alike
+  zNearest, zFarthest  the depth range to search, as view-space z (< 0): see
+                       search_segment.glsl (min/max pyramid top level, or a
+                       bounding volume; two numbers either way)
+  steps                binary steps c (each one texel fetch)
+options:
+  SNELL_CBS_STEPS      default steps (5, the paper's choice: beta error <= 3.125%)
+  SNELL_CBS_MAX_STEPS  compile-time loop bound (24); steps is clamped to
+                       [0, SNELL_CBS_MAX_STEPS] (beyond ~24 halvings beta is
+                       below float resolution anyway)
+contract:
+  - the segment S-E is snellSearchSegment(origin, dir, zNearest, zFarthest,
+    surface.clipFromView); beta in [0,1] along it (eq. 5). Starting at beta = 0,
+    step i (dBeta = 0.5^i) tests beta + dBeta: z = S.z + b (E.z - S.z), uv =
+    snellTexRayUv (eqs. 9-10), one snellSampleSurface fetch; it advances (beta
+    += dBeta) only when the texel is valid and the point is strictly in front of
+    the surface (z > viewZ, Algorithm 2's -P.z < storedDepth); an empty or
+    off-screen texel never lets it advance.
+  - valid means: the returned point maps to a valid (non-empty, on-screen)
+    texel. After at least one advance it is the last point that advanced (its uv
+    is the uv that was fetched, so the texel is exactly the one tested). When
+    no step advanced, the start S itself is tested with one more fetch (counted)
+    and returned if its texel is valid: then the true crossing, if the ray
+    crosses the surface once on S-E, has beta < 0.5^c (or the ray starts behind
+    the surface).
+  - precision: if the ray crosses the surface once on S-E (in front of it at S,
+    behind it, or over an empty texel, at E), the returned beta is at most
+    0.5^c before the crossing: beta_error = 0.5^c - 0.5^k <= 0.5^c for a
+    crossing that needs k > c steps (the paper, sec. 3.3). After an advance the
+    returned point is strictly in front of the surface at its texel (never past
+    it); S is returned whatever its depth order (the ray may start behind).
+  - a ray that stays in front of the surface up to E returns a point near E
+    (the paper's behaviour: the search range is assumed to contain the hit).
+  - position = S + beta (E - S), uv its texture coordinate; fetches = steps
+    performed (+1 for the start test).
+  - valid = false, with snellHitMiss numbers (finite), when the segment is
+    invalid (dir.z >= 0: rays towards the camera; zNearest <= zFarthest
+    including Zmin == Zmax; NaN/Inf inputs; planes at or behind the eye): 0
+    fetches; or when nothing advanced and S maps to an empty or off-screen
+    texel (rays leaving the screen, all-empty buffers).
+source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
+  Objects", I3D 2007, sec. 3.3, Algorithm 2, the error bound
+  beta_error = 0.5^c - 0.5^k; eqs. 3-10 for the parameterization.
+*/
+#ifndef SNELL_INTERSECT_CONSERVATIVE_BINARY_SEARCH_GLSL
+#define SNELL_INTERSECT_CONSERVATIVE_BINARY_SEARCH_GLSL
+
+
+
+
+
+
+#ifndef SNELL_CBS_STEPS
+#  define SNELL_CBS_STEPS 5
+#endif
+#ifndef SNELL_CBS_MAX_STEPS
+#  define SNELL_CBS_MAX_STEPS 24
+#endif
+
+/* Oliveira & Brauwers 2007, Algorithm 2 */
+SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                                float zNearest, float zFarthest, int steps) {
+  SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
+  if (!r.valid) {
+    return snellHitMiss(0);
+  }
+  int n = clamp(steps, 0, SNELL_CBS_MAX_STEPS);
+  float dz = r.e.z - r.s.z;
+  float beta = 0.0f;
+  float dBeta = 1.0f;
+  float zHit = r.s.z;
+  vec2 uvHit = r.ts;
+  bool advanced = false;
+  int fetches = 0;
+  for (int i = 0; i < SNELL_CBS_MAX_STEPS; ++i) {
+    if (i >= n) {
+      break;
+    }
+    dBeta = dBeta * 0.5f;
+    float b = beta + dBeta;
+    float z = r.s.z + b * dz;
+    vec2 uv = snellTexRayUv(r, z);
+    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
+    fetches = fetches + 1;
+    if (x.valid && z > x.viewZ) {
+      beta = b;
+      zHit = z;
+      uvHit = uv;
+      advanced = true;
+    }
+  }
+  if (!advanced) {
+    SnellSurfaceSample x0 = snellSampleSurface(depthTex, uvHit, surface);
+    fetches = fetches + 1;
+    if (!x0.valid) {
+      return snellHitMiss(fetches);
+    }
+  }
+  SnellHit h;
+  h.uv = uvHit;
+  h.position = vec3(r.s.x + beta * (r.e.x - r.s.x), r.s.y + beta * (r.e.y - r.s.y), zHit);
+  h.valid = true;
+  h.fetches = fetches;
+  return h;
+}
+
+SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                                float zNearest, float zFarthest) {
+  return snellConservativeBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_CBS_STEPS);
+}
+
+#endif
+/*
+description: plain binary search of a view-space ray against a depth-buffer
+  surface, in texture space along S-E (Policarpo et al. 2005's refinement, with
+  Oliveira & Brauwers' perspective parameterization). It may end on an empty
+  texel: the failure conservative_binary_search.glsl exists to avoid. Kept as a
+  baseline so tests and the lab can show it.
+use: SnellHit h = snellBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest);
+     SnellHit h = snellBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, steps);
+     SnellHit h = snellBisectTexRay(r, depthTex, surface, lo, hi, steps, hitSoFar);
+  arguments as snellConservativeBinarySearch; steps = binary steps (one fetch each)
+options:
+  SNELL_BINARY_SEARCH_STEPS      default steps (5)
+  SNELL_BINARY_SEARCH_MAX_STEPS  compile-time loop bound (24); steps is clamped
+                                 to [0, SNELL_BINARY_SEARCH_MAX_STEPS]
+contract:
+  - segment S-E and beta as snellConservativeBinarySearch. Bracket [lo, hi] =
+    [0, 1]; each step tests mid = (lo + hi) / 2 (one fetch): a valid texel with
+    the point strictly in front of the surface (z > viewZ) moves lo to mid,
+    anything else (behind the surface, or an empty / off-screen texel, which the
+    paper's depth-0 storage makes look like "behind") moves hi to mid.
+  - the result is the last point tested (Figure 6's point 4), uv its texture
+    coordinate, position S + beta (E - S); steps = 0 tests S itself (one fetch).
+  - valid = whether that last texel was valid (non-empty, on screen). When it
+    is not, uv and position still report where the search ended (finite), so
+    the failure can be seen and counted: that is this function's point.
+  - precision: for a ray crossing the surface once on S-E, |beta - beta*| <=
+    0.5^c (the last midpoint is an end of the final bracket, of width 0.5^c).
+  - valid = false with snellHitMiss numbers and 0 fetches when the segment is
+    invalid (rays towards the camera, Zmin == Zmax, NaN: see search_segment.glsl).
+  - snellBisectTexRay(r, depthTex, surface, lo, hi, steps, h): the loop itself,
+    for a valid segment r (snellSearchSegment) and a bracket [lo, hi] in beta,
+    each clamped to [0, 1]: clamp(steps, 0, SNELL_BINARY_SEARCH_MAX_STEPS)
+    steps of the rule above; after each, h = the point tested (uv, position,
+    valid as above) with h.fetches + 1. With 0 steps, or a NaN lo or hi, h is
+    returned as given.
+source: F. Policarpo, M. M. Oliveira, J. Comba, "Real-Time Relief Mapping on
+  Arbitrary Polygonal Surfaces", I3D 2005 (binary search); Oliveira & Brauwers
+  2007, sec. 3.3 and Figure 6 (why it can end on an invalid texel), eqs. 3-10.
+*/
+#ifndef SNELL_INTERSECT_BINARY_SEARCH_GLSL
+#define SNELL_INTERSECT_BINARY_SEARCH_GLSL
+
+
+
+
+
+
+#ifndef SNELL_BINARY_SEARCH_STEPS
+#  define SNELL_BINARY_SEARCH_STEPS 5
+#endif
+#ifndef SNELL_BINARY_SEARCH_MAX_STEPS
+#  define SNELL_BINARY_SEARCH_MAX_STEPS 24
+#endif
+
+/* The bisection loop of Policarpo et al. 2005, shared by snellBinarySearch and
+   the refinement of snellLinearBinarySearch (see the contract). */
+SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SnellDepthSurface surface, float lo,
+                                    float hi, int steps, SnellHit h) {
+  if (isnan(lo) || isnan(hi)) {
+    return h;
+  }
+  // Outside [0, 1] the midpoints would extrapolate past S or E.
+  lo = clamp(lo, 0.0f, 1.0f);
+  hi = clamp(hi, 0.0f, 1.0f);
+  int n = clamp(steps, 0, SNELL_BINARY_SEARCH_MAX_STEPS);
+  float dz = r.e.z - r.s.z;
+  for (int i = 0; i < SNELL_BINARY_SEARCH_MAX_STEPS; ++i) {
+    if (i >= n) {
+      break;
+    }
+    float beta = 0.5f * (lo + hi);
+    float z = r.s.z + beta * dz;
+    vec2 uv = snellTexRayUv(r, z);
+    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
+    h.uv = uv;
+    h.position = vec3(r.s.x + beta * (r.e.x - r.s.x), r.s.y + beta * (r.e.y - r.s.y), z);
+    h.valid = x.valid;
+    h.fetches = h.fetches + 1;
+    if (x.valid && z > x.viewZ) {
+      lo = beta;
+    } else {
+      hi = beta;
+    }
+  }
+  return h;
+}
+
+/* Policarpo et al. 2005 binary search on Oliveira & Brauwers 2007, eqs. 5-10 */
+SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                    float zNearest, float zFarthest, int steps) {
+  SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
+  if (!r.valid) {
+    return snellHitMiss(0);
+  }
+  SnellHit h;
+  h.uv = r.ts;
+  h.position = r.s;
+  h.valid = false;
+  h.fetches = 0;
+  if (steps <= 0) {
+    h.valid = snellSampleSurface(depthTex, r.ts, surface).valid;
+    h.fetches = 1;
+    return h;
+  }
+  return snellBisectTexRay(r, depthTex, surface, 0.0f, 1.0f, steps, h);
+}
+
+SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                    float zNearest, float zFarthest) {
+  return snellBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_BINARY_SEARCH_STEPS);
+}
+
+#endif
+/*
+description: linear-then-binary search (relief mapping) of a view-space ray
+  against a depth-buffer surface, in texture space along S-E: equal steps in
+  beta until the first sample that is not in front of the surface, then a plain
+  binary search inside that step. Finds thin structures the pure binary searches
+  skip, at the cost of the linear steps; like snellBinarySearch it may end on an
+  empty texel.
+use: SnellHit h = snellLinearBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest);
+     SnellHit h = snellLinearBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest,
+                                          linearSteps, binarySteps);
+  arguments as snellConservativeBinarySearch
+  linearSteps   number of equal beta steps (1/linearSteps each, one fetch each)
+  binarySteps   binary steps inside the bracketing step (one fetch each)
+options:
+  SNELL_LINEAR_SEARCH_STEPS      default linearSteps (10, relief mapping's usual)
+  SNELL_LINEAR_SEARCH_MAX_STEPS  compile-time bound (256); linearSteps is
+                                 clamped to [1, SNELL_LINEAR_SEARCH_MAX_STEPS]
+  SNELL_BINARY_SEARCH_STEPS, SNELL_BINARY_SEARCH_MAX_STEPS  (binary_search.glsl):
+                                 default and bound of binarySteps (clamped to [0, max])
+contract:
+  - segment S-E and beta as snellConservativeBinarySearch. Linear phase: beta_i
+    = i / linearSteps, i = 1 .. linearSteps; it stops at the first sample that
+    is not (valid texel and strictly in front of the surface, z > viewZ): behind
+    the surface or an empty / off-screen texel (relief mapping's depth-0 rule).
+  - no such sample up to E: valid = false, snellHitMiss numbers, fetches spent.
+  - binary phase: bracket [beta_(i-1), beta_i], the rule of snellBinarySearch;
+    the result is the last point tested (the linear sample itself when
+    binarySteps = 0); valid = that point's texel is valid; when not, uv and
+    position still report where the search ended (finite), as snellBinarySearch.
+  - precision: for a ray crossing the surface once on S-E, |beta - beta*| <=
+    0.5^binarySteps / linearSteps.
+  - invalid segment (rays towards the camera, Zmin == Zmax, NaN: see
+    search_segment.glsl): valid = false, snellHitMiss numbers, 0 fetches.
+source: F. Policarpo, M. M. Oliveira, J. Comba, "Real-Time Relief Mapping on
+  Arbitrary Polygonal Surfaces", I3D 2005 (linear then binary search);
+  Oliveira & Brauwers 2007, sec. 3.3 (why refraction can skip the linear
+  phase), eqs. 3-10.
+*/
+#ifndef SNELL_INTERSECT_LINEAR_BINARY_SEARCH_GLSL
+#define SNELL_INTERSECT_LINEAR_BINARY_SEARCH_GLSL
+
+
+
+
+
+
+
+#ifndef SNELL_LINEAR_SEARCH_STEPS
+#  define SNELL_LINEAR_SEARCH_STEPS 10
+#endif
+#ifndef SNELL_LINEAR_SEARCH_MAX_STEPS
+#  define SNELL_LINEAR_SEARCH_MAX_STEPS 256
+#endif
+
+/* Policarpo et al. 2005, linear + binary search, on Oliveira & Brauwers 2007 eqs. 5-10 */
+SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                          float zNearest, float zFarthest, int linearSteps, int binarySteps) {
+  SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
+  if (!r.valid) {
+    return snellHitMiss(0);
+  }
+  int nl = clamp(linearSteps, 1, SNELL_LINEAR_SEARCH_MAX_STEPS);
+  int nb = clamp(binarySteps, 0, SNELL_BINARY_SEARCH_MAX_STEPS);
+  float dz = r.e.z - r.s.z;
+  float stepBeta = 1.0f / float(nl);
+  int fetches = 0;
+  int found = -1;
+  float beta = 0.0f;
+  float z = r.s.z;
+  vec2 uv = r.ts;
+  bool lastValid = false;
+  for (int i = 1; i <= SNELL_LINEAR_SEARCH_MAX_STEPS; ++i) {
+    if (i > nl) {
+      break;
+    }
+    beta = float(i) * stepBeta;
+    z = r.s.z + beta * dz;
+    uv = snellTexRayUv(r, z);
+    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
+    fetches = fetches + 1;
+    if (!(x.valid && z > x.viewZ)) {
+      found = i;
+      lastValid = x.valid;
+      break;
+    }
+  }
+  if (found < 0) {
+    return snellHitMiss(fetches);
+  }
+  SnellHit h;
+  h.uv = uv;
+  h.position = vec3(r.s.x + beta * (r.e.x - r.s.x), r.s.y + beta * (r.e.y - r.s.y), z);
+  h.valid = lastValid;
+  h.fetches = fetches;
+  return snellBisectTexRay(r, depthTex, surface, float(found - 1) * stepBeta, beta, nb, h);
+}
+
+SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                          float zNearest, float zFarthest) {
+  return snellLinearBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_LINEAR_SEARCH_STEPS,
+                                 SNELL_BINARY_SEARCH_STEPS);
+}
+
+#endif
+/*
+description: linear march in view space with binary refinement: the screen-space
+  ray-marching baseline. Equal steps along the view-space ray, each projected
+  with the depth buffer's camera and compared with the stored surface; the
+  first step behind the surface is refined by bisection.
+use: SnellHit h = snellLinearMarch(origin, dir, depthTex, surface);
+     SnellHit h = snellLinearMarch(origin, dir, depthTex, surface, maxDistance, steps, refineSteps);
+  origin, dir        view-space ray (dir need not be normalized)
+  depthTex, surface  the depth buffer and how to read it (depth_surface.glsl)
+  maxDistance        view-space length of the marched part of the ray
+  steps              equal steps of maxDistance / steps (one fetch each)
+  refineSteps        bisection steps inside the step that crossed (one fetch
+                     each while on screen)
+options:
+  SNELL_LINEAR_MARCH_STEPS              default steps (32)
+  SNELL_LINEAR_MARCH_MAX_STEPS          compile-time bound (512); steps is clamped to [1, max]
+  SNELL_LINEAR_MARCH_REFINE_STEPS       default refineSteps (4)
+  SNELL_LINEAR_MARCH_MAX_REFINE_STEPS   compile-time bound (24); refineSteps clamped to [0, max]
+  SNELL_LINEAR_MARCH_MAX_DISTANCE       default maxDistance (10.0f view-space units)
+contract:
+  - the ray is marched over t in (0, tMax], tMax = maxDistance / |dir|, cut at
+    the near plane z = -surface.zNear when dir.z > 0 (a ray towards the camera
+    is marched until it would leave the frustum through the near plane).
+    Samples t_i = i tMax / steps, i = 1 .. steps (the origin itself is not
+    tested); each is projected with surface.clipFromView (snellViewToUv).
+  - a sample "crosses" when its texel is valid and the point is on or behind the
+    surface (z <= viewZ): the surface is a solid height field (infinitely thick).
+    Empty texels do not stop the march (no surface there).
+  - the first sample that projects off screen (uv outside [0,1]^2, or not
+    projectable) ends the march: valid = false (the ray left the screen).
+  - refinement: bracket [t_(i-1), t_i]; a midpoint that crosses moves hi, any
+    other (in front, empty, off screen: no fetch then) moves lo. The result is
+    hi: a point on or behind the surface at a valid texel, never in front of
+    the crossing; uv = the uv that was fetched there. Error along the ray <=
+    (tMax / steps) 0.5^refineSteps for a single crossing (plus the depth
+    buffer's own discretization).
+  - valid = false with snellHitMiss numbers (finite) and the fetches spent when
+    no sample crosses; with 0 fetches when: an input is NaN or Inf, |dir| is 0
+    or denormal-small, maxDistance <= 0, or the origin is at or in front of
+    the near plane with dir.z > 0 (the whole ray is outside the frustum).
+source: the classic screen-space ray march (e.g. Sousa, "Crysis 2", 2011;
+  Policarpo et al. 2005 for linear + binary search), here in view space with
+  the Oliveira & Brauwers 2007 (sec. 3.1) depth-surface reading.
+*/
+#ifndef SNELL_INTERSECT_LINEAR_MARCH_GLSL
+#define SNELL_INTERSECT_LINEAR_MARCH_GLSL
+
+
+
+
+
+
+#ifndef SNELL_LINEAR_MARCH_STEPS
+#  define SNELL_LINEAR_MARCH_STEPS 32
+#endif
+#ifndef SNELL_LINEAR_MARCH_MAX_STEPS
+#  define SNELL_LINEAR_MARCH_MAX_STEPS 512
+#endif
+#ifndef SNELL_LINEAR_MARCH_REFINE_STEPS
+#  define SNELL_LINEAR_MARCH_REFINE_STEPS 4
+#endif
+#ifndef SNELL_LINEAR_MARCH_MAX_REFINE_STEPS
+#  define SNELL_LINEAR_MARCH_MAX_REFINE_STEPS 24
+#endif
+#ifndef SNELL_LINEAR_MARCH_MAX_DISTANCE
+#  define SNELL_LINEAR_MARCH_MAX_DISTANCE 10.0f
+#endif
+
+/* screen-space ray march: equal view-space steps, then bisection */
+SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                   float maxDistance, int steps, int refineSteps) {
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
+      !SNELL_FINITE(maxDistance) || !(maxDistance > 0.0f)) {
+    return snellHitMiss(0);
+  }
+  float len = length(dir);
+  if (!SNELL_FINITE(len) || !(len >= SNELL_FLT_MIN)) {
+    return snellHitMiss(0);
+  }
+  float tMax = maxDistance / len;
+  if (dir.z > 0.0f) {
+    float tNear = (-surface.zNear - origin.z) / dir.z;
+    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+  }
+  if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
+    return snellHitMiss(0);
+  }
+  int n = clamp(steps, 1, SNELL_LINEAR_MARCH_MAX_STEPS);
+  int nr = clamp(refineSteps, 0, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS);
+  float dt = tMax / float(n);
+  int fetches = 0;
+  bool found = false;
+  float tHit = 0.0f;
+  vec2 uvHit = vec2(0.0f, 0.0f);
+  for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
+    if (i > n) {
+      break;
+    }
+    float t = float(i) * dt;
+    vec3 p = origin + t * dir;
+    SnellScreenPoint sp = snellViewToUv(surface.clipFromView, p);
+    if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
+      return snellHitMiss(fetches);
+    }
+    SnellSurfaceSample x = snellSampleSurface(depthTex, sp.uv, surface);
+    fetches = fetches + 1;
+    if (x.valid && p.z <= x.viewZ) {
+      found = true;
+      tHit = t;
+      uvHit = sp.uv;
+      break;
+    }
+  }
+  if (!found) {
+    return snellHitMiss(fetches);
+  }
+  float lo = tHit - dt;
+  for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
+    if (j >= nr) {
+      break;
+    }
+    float mid = 0.5f * (lo + tHit);
+    vec3 q = origin + mid * dir;
+    SnellScreenPoint sq = snellViewToUv(surface.clipFromView, q);
+    bool crosses = false;
+    if (sq.valid && sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f) {
+      SnellSurfaceSample y = snellSampleSurface(depthTex, sq.uv, surface);
+      fetches = fetches + 1;
+      crosses = y.valid && q.z <= y.viewZ;
+    }
+    if (crosses) {
+      tHit = mid;
+      uvHit = sq.uv;
+    } else {
+      lo = mid;
+    }
+  }
+  SnellHit h;
+  h.uv = uvHit;
+  h.position = origin + tHit * dir;
+  h.valid = true;
+  h.fetches = fetches;
+  return h;
+}
+
+SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface) {
+  return snellLinearMarch(origin, dir, depthTex, surface, SNELL_LINEAR_MARCH_MAX_DISTANCE, SNELL_LINEAR_MARCH_STEPS,
+                          SNELL_LINEAR_MARCH_REFINE_STEPS);
+}
+
+#endif
+/*
+description: perspective-correct march in pixel space (a DDA): the view-space
+  ray segment is projected once, then walked in equal pixel steps along its
+  major screen axis, every pixel on the way (stride 1) or every stride-th one,
+  with the ray's depth recovered per step by homogeneous (1/w) interpolation,
+  so no matrix product per step and no pixel skipped or visited twice.
+use: SnellHit h = snellDdaMarch(origin, dir, depthTex, surface);
+     SnellHit h = snellDdaMarch(origin, dir, depthTex, surface, maxDistance, thickness, stride, steps);
+  origin, dir        view-space ray (dir need not be normalized)
+  depthTex, surface  the depth buffer and how to read it (depth_surface.glsl);
+                     the pixel grid is that of level surface.lod
+  maxDistance        view-space length of the marched segment
+  thickness          assumed view-space thickness of the surface: a step hits
+                     when the ray's depth interval over the step overlaps
+                     [viewZ - thickness, viewZ]
+  stride             pixels per step along the major axis (>= 1)
+  steps              maximum number of steps (one fetch each)
+options:
+  SNELL_DDA_STEPS         default steps (256)
+  SNELL_DDA_MAX_STEPS     compile-time bound (1024); steps is clamped to [1, max]
+  SNELL_DDA_STRIDE        default stride (1.0f)
+  SNELL_DDA_THICKNESS     default thickness (SNELL_FLT_MAX: a solid height
+                          field, as the other strategies assume; use a finite
+                          value for opaque scenes with objects in front of
+                          others, so rays can pass behind them)
+  SNELL_DDA_MAX_DISTANCE  default maxDistance (10.0f view-space units)
+contract:
+  - segment: origin to end = origin + (min(maxDistance, 1e30)/|dir|) dir, cut
+    at the near plane z = -surface.zNear when dir.z > 0 (beyond 1e30 view
+    units the end's projection no longer moves for any scene-scale origin; the
+    cap keeps 1/w of the end a normal float, so maxDistance = SNELL_FLT_MAX
+    works as "unbounded"). Both ends are projected with surface.clipFromView:
+    uv0, uv1 and k = 1/w; Q = p/w and k are linear in screen space, so the view
+    point at screen parameter s in [0,1] is
+    (Q0 (1 - s) + Q1 s) / (k0 (1 - s) + k1 s) (perspective-correct; this form
+    is exact at both ends and never cancels, as k0, k1 > 0).
+  - step i (i = 0, 1, ...) samples uv0 + s_i (uv1 - uv0), s_i = min(i ds, 1),
+    ds = stride / (length of the segment along its major axis in pixels), or
+    ds = 1 when the whole segment spans at most stride pixels (a ray along the
+    line of sight: two steps, both halves of its depth range at one pixel); it
+    owns s in [(i - 1/2) ds, (i + 1/2) ds] clipped to [0,1], whose ends give the
+    ray's depth interval [zFar, zNear] for that step. The walk ends after the
+    step owning s = 1.
+  - a step hits when its texel is valid and zNear >= viewZ - thickness and
+    zFar <= viewZ. Empty texels do not stop the march.
+  - hit: uv = the uv that was fetched (its texel is the hit texel), position =
+    the point of the ray within the step whose z is clamp(viewZ, zFar, zNear)
+    (the crossing, when it lies in the step), on the ray, finite.
+  - the first step whose uv is off screen ends the walk: valid = false.
+  - valid = false with snellHitMiss numbers (finite) and the fetches spent when
+    no step hits within steps; with 0 fetches when: an input is NaN or Inf
+    (a NaN thickness uses the default, a NaN stride 1), |dir| is 0 or
+    denormal-small, maxDistance <= 0, the origin is in front of the near plane
+    (z > -surface.zNear), an end does not project to a normal 1/w (clip w <= 0,
+    below FLT_MIN or above 1/FLT_MIN) or to a finite Q, or the level has no
+    texels. thickness < 0 counts as 0, stride < 1 as 1.
+source: M. McGuire, M. Mara, "Efficient GPU Screen-Space Ray Tracing", JCGT
+  3(4), 2014 (pixel-space march with homogeneous interpolation of 1/w and a
+  depth interval per step); our own formulation (per-step parameter instead of
+  accumulated increments, exact crossing inside the hit step).
+*/
+#ifndef SNELL_INTERSECT_DDA_MARCH_GLSL
+#define SNELL_INTERSECT_DDA_MARCH_GLSL
+
+
+
+
+
+
+#ifndef SNELL_DDA_STEPS
+#  define SNELL_DDA_STEPS 256
+#endif
+#ifndef SNELL_DDA_MAX_STEPS
+#  define SNELL_DDA_MAX_STEPS 1024
+#endif
+#ifndef SNELL_DDA_STRIDE
+#  define SNELL_DDA_STRIDE 1.0f
+#endif
+#ifndef SNELL_DDA_THICKNESS
+#  define SNELL_DDA_THICKNESS SNELL_FLT_MAX
+#endif
+#ifndef SNELL_DDA_MAX_DISTANCE
+#  define SNELL_DDA_MAX_DISTANCE 10.0f
+#endif
+
+/* McGuire & Mara 2014: pixel-space march, z from homogeneous interpolation of 1/w */
+SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                float maxDistance, float thickness, float stride, int steps) {
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
+      !SNELL_FINITE(maxDistance) || !(maxDistance > 0.0f) || !SNELL_FINITE(surface.zNear)) {
+    return snellHitMiss(0);
+  }
+  float thick = isnan(thickness) ? SNELL_DDA_THICKNESS : clamp(thickness, 0.0f, SNELL_FLT_MAX);
+  float px = isnan(stride) ? 1.0f : clamp(stride, 1.0f, SNELL_FLT_MAX);
+  float len = length(dir);
+  if (!SNELL_FINITE(len) || !(len >= SNELL_FLT_MIN) || !(origin.z <= -surface.zNear)) {
+    return snellHitMiss(0);
+  }
+  float tMax = min(maxDistance, 1e30f) / len;
+  if (dir.z > 0.0f) {
+    float tNear = (-surface.zNear - origin.z) / dir.z;
+    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+  }
+  if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
+    return snellHitMiss(0);
+  }
+  vec3 end = origin + tMax * dir;
+  vec4 h0 = snellViewToClip(surface.clipFromView, origin);
+  vec4 h1 = snellViewToClip(surface.clipFromView, end);
+  ivec2 size = SNELL_TEXTURE_SIZE(depthTex, surface.lod);
+  if (!SNELL_FINITE(end.x) || !SNELL_FINITE(end.y) || !SNELL_FINITE(end.z) ||
+      !SNELL_FINITE(h0.x) || !SNELL_FINITE(h0.y) || !SNELL_FINITE(h0.w) ||
+      !SNELL_FINITE(h1.x) || !SNELL_FINITE(h1.y) || !SNELL_FINITE(h1.w) ||
+      !(h0.w >= SNELL_FLT_MIN) || !(h1.w >= SNELL_FLT_MIN) ||
+      !(h0.w <= 1.0f / SNELL_FLT_MIN) || !(h1.w <= 1.0f / SNELL_FLT_MIN) || size.x <= 0 || size.y <= 0) {
+    return snellHitMiss(0);
+  }
+  // Homogeneous end points: k = 1/w and Q = p k are linear in screen space.
+  // They are interpolated as a (1 - s) + b s, not a + s (b - a): for a far end
+  // (k1 below the ulp of k0) k0 + s (k1 - k0) cancels to 0 at s = 1. Written
+  // out rather than mix(), which drivers may lower to the cancelling form.
+  float k0 = 1.0f / h0.w;
+  float k1 = 1.0f / h1.w;
+  vec3 q0 = origin * k0;
+  vec3 q1 = end * k1;
+  vec2 uv0 = vec2(h0.x * k0, h0.y * k0) * 0.5f + 0.5f;
+  vec2 duv = vec2(h1.x * k1, h1.y * k1) * 0.5f + 0.5f - uv0;
+  float major = max(abs(duv.x * float(size.x)), abs(duv.y * float(size.y)));
+  if (!SNELL_FINITE(major) || !SNELL_FINITE(q0.x) || !SNELL_FINITE(q0.y) ||
+      !SNELL_FINITE(q0.z) || !SNELL_FINITE(q1.x) || !SNELL_FINITE(q1.y) ||
+      !SNELL_FINITE(q1.z)) {
+    return snellHitMiss(0);
+  }
+  float ds = major > px ? px / major : 1.0f;
+  int n = clamp(steps, 1, SNELL_DDA_MAX_STEPS);
+  int fetches = 0;
+  float sA = 0.0f;
+  float zA = origin.z;
+  for (int i = 0; i < SNELL_DDA_MAX_STEPS; ++i) {
+    if (i >= n || sA >= 1.0f) {
+      break;
+    }
+    float sC = min(float(i) * ds, 1.0f);
+    float sB = min((float(i) + 0.5f) * ds, 1.0f);
+    float zB = (q0.z * (1.0f - sB) + q1.z * sB) / (k0 * (1.0f - sB) + k1 * sB);
+    vec2 uv = uv0 + sC * duv;
+    if (!(uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) {
+      return snellHitMiss(fetches);
+    }
+    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
+    fetches = fetches + 1;
+    float zNearRay = max(zA, zB);
+    float zFarRay = min(zA, zB);
+    if (x.valid && zNearRay >= x.viewZ - thick && zFarRay <= x.viewZ) {
+      // The point of the ray inside this step at depth clamp(viewZ, zFar, zNear).
+      float zHit = clamp(x.viewZ, zFarRay, zNearRay);
+      vec3 pA = (q0 * (1.0f - sA) + q1 * sA) / (k0 * (1.0f - sA) + k1 * sA);
+      vec3 pB = (q0 * (1.0f - sB) + q1 * sB) / (k0 * (1.0f - sB) + k1 * sB);
+      float f = pB.z != pA.z ? clamp((zHit - pA.z) / (pB.z - pA.z), 0.0f, 1.0f) : 0.5f;
+      SnellHit h;
+      h.uv = uv;
+      h.position = pA + f * (pB - pA);
+      h.valid = true;
+      h.fetches = fetches;
+      return h;
+    }
+    sA = sB;
+    zA = zB;
+  }
+  return snellHitMiss(fetches);
+}
+
+SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface) {
+  return snellDdaMarch(origin, dir, depthTex, surface, SNELL_DDA_MAX_DISTANCE, SNELL_DDA_THICKNESS, SNELL_DDA_STRIDE,
+                       SNELL_DDA_STEPS);
+}
+
+#endif
+#endif
+/* shade/ family aggregator: the composed refraction techniques. */
+#ifndef SNELL_SHADE_GLSL
+#define SNELL_SHADE_GLSL
+/*
+description: Sousa's screen-space refraction, basic form: perturb the projected
+  uv of the refracting pixel by a normal map's xy scaled by a small value, then
+  read the scene colour (rendered without the refractive meshes) there.
+use: vec3 bump = snellUnpackBump(vec3(t.x, t.y, t.z));      // t: normal-map texel
+     vec2 uvP = snellPerturbUv(uv, vec2(bump.x, bump.y), 0.05f);
+     vec2 uvP = snellPerturbUv(uv, vec2(bump.x, bump.y));   // scale SNELL_PERTURB_SCALE
+     vec4 c = snellPerturbSample(sceneColor, uv, vec2(bump.x, bump.y), 0.05f);
+  uv          projected viewport uv of the fragment (screenPos.xy / screenPos.w of
+              the listing; e.g. snellPixelToUv(gl_FragCoord) or snellViewToUv)
+  bump        the normal map's xy, unpacked to [-1, 1]
+  scale       displacement per unit of bump, in uv units
+  sceneColor  texture S: the scene without the refractive meshes (SNELL_TEX2D),
+              read at mip level 0 with its own filter
+options:
+  SNELL_PERTURB_SCALE  default scale (0.05f, the value the chapter suggests)
+contract:
+  - snellUnpackBump(t) = 2 t - 1 (the listing's 2.0 * tex2D(..) - 1.0), nothing
+    else: NaN propagates.
+  - snellPerturbUv(uv, bump, scale) = uv + scale * bump (component-wise), with:
+    a NaN or infinite uv component replaced by 0.5 (screen centre); a NaN or
+    infinite displacement component scale * bump replaced by 0 (no
+    perturbation); the sum clamped to [-SNELL_FLT_MAX, SNELL_FLT_MAX]. Off-screen
+    results (outside [0,1]) are returned as they are: finite, never NaN.
+  - snellPerturbSample reads sceneColor at snellPerturbUv(..) clamped to [0,1]^2
+    (explicit clamp-to-edge, so the result does not depend on the sampler's
+    wrap mode), lod 0.
+source: T. Sousa, "Generic Refraction Simulation", GPU Gems 2, ch. 19 (2005),
+  sec. 19.1 and Example 19-1 (newUV = screenPos.xy / screenPos.w + bumpTex.xy *
+  vScale.xy).
+*/
+#ifndef SNELL_SHADE_PERTURB_GLSL
+#define SNELL_SHADE_PERTURB_GLSL
+
+
+
+#ifndef SNELL_PERTURB_SCALE
+#  define SNELL_PERTURB_SCALE 0.05f
+#endif
+
+SNELL_FN vec3 snellUnpackBump(vec3 texel) {
+  return texel * 2.0f - 1.0f;
+}
+
+SNELL_FN vec2 snellPerturbUv(vec2 uv, vec2 bump, float scale) {
+  float u = SNELL_FINITE(uv.x) ? uv.x : 0.5f;
+  float v = SNELL_FINITE(uv.y) ? uv.y : 0.5f;
+  float du = scale * bump.x;
+  float dv = scale * bump.y;
+  du = SNELL_FINITE(du) ? du : 0.0f;
+  dv = SNELL_FINITE(dv) ? dv : 0.0f;
+  return clamp(vec2(u + du, v + dv), vec2(-SNELL_FLT_MAX, -SNELL_FLT_MAX), vec2(SNELL_FLT_MAX, SNELL_FLT_MAX));
+}
+
+SNELL_FN vec2 snellPerturbUv(vec2 uv, vec2 bump) {
+  return snellPerturbUv(uv, bump, SNELL_PERTURB_SCALE);
+}
+
+SNELL_FN vec4 snellPerturbSample(SNELL_TEX2D sceneColor, vec2 uv, vec2 bump, float scale) {
+  vec2 p = clamp(snellPerturbUv(uv, bump, scale), vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  return SNELL_SAMPLE_LOD(sceneColor, p, 0.0f);
+}
+
+#endif
+/*
+description: screen-edge fade for perturbed (or reflected) screen-space lookups:
+  1 well inside the viewport, falling linearly to 0 at its border, 0 off
+  screen. Blend the perturbed sample towards the unperturbed one with it, so
+  refraction does not smear the clamped edge texels.
+use: float w = snellScreenEdgeFade(uvPerturbed, 0.05f);
+     float w = snellScreenEdgeFade(uvPerturbed);   // width SNELL_SCREEN_EDGE_FADE
+     vec4 c = mix(unperturbedColor, perturbedColor, w);
+  uv     viewport uv, origin bottom-left, [0,1]^2 on screen
+  width  width of the fade band, in uv units, measured inwards from each edge
+options:
+  SNELL_SCREEN_EDGE_FADE  default width (0.05f)
+contract:
+  - with e = min(u, 1 - u, v, 1 - v) (the uv distance to the nearest edge,
+    negative off screen): result = clamp(e / width, 0, 1); in [0, 1], never
+    NaN;
+  - width is clamped to at most 0.5f; width <= 0, denormal (below the smallest
+    normal float) or NaN: a hard cut, 1 on [0,1]^2 (borders included), else 0;
+  - a NaN or infinite uv component: 0.
+source: common screen-space reflection practice (edge attenuation of
+  screen-space hits), e.g. McGuire & Mara, "Efficient GPU Screen-Space Ray
+  Tracing", JCGT 3(4), 2014; applied here to Sousa's perturbed uv (GPU Gems 2,
+  ch. 19, sec. 19.2, on perturbations that leave the refractive object's area).
+*/
+#ifndef SNELL_SHADE_PERTURB_EDGE_FADE_GLSL
+#define SNELL_SHADE_PERTURB_EDGE_FADE_GLSL
+
+
+
+#ifndef SNELL_SCREEN_EDGE_FADE
+#  define SNELL_SCREEN_EDGE_FADE 0.05f
+#endif
+
+SNELL_FN float snellScreenEdgeFade(vec2 uv, float width) {
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y)) {
+    return 0.0f;
+  }
+  float e = min(min(uv.x, 1.0f - uv.x), min(uv.y, 1.0f - uv.y));
+  if (isnan(width) || !(width >= SNELL_FLT_MIN)) {
+    return e >= 0.0f ? 1.0f : 0.0f;
+  }
+  float w = min(width, 0.5f);
+  return clamp(e / w, 0.0f, 1.0f);
+}
+
+SNELL_FN float snellScreenEdgeFade(vec2 uv) {
+  return snellScreenEdgeFade(uv, SNELL_SCREEN_EDGE_FADE);
+}
+
+#endif
+/*
+description: Sousa's refraction mask: S's alpha is cleared to white (1) and the
+  refractive meshes are written black (0) into it, so a perturbed read that
+  leaves the refractive object's screen area (for example onto an occluder in
+  front of it) is replaced by the unperturbed read.
+use: vec4 c = snellRefractionMaskBlend(refrA, refrB);
+     vec4 c = snellRefractionMasked(sceneColor, uv, vec2(bump.x, bump.y), 0.05f);
+  refrA       S read at the perturbed uv (its alpha is the mask there)
+  refrB       S read at the unperturbed uv
+  sceneColor, uv, bump, scale  as in snellPerturbSample (perturb.glsl)
+options: -
+contract:
+  - snellRefractionMaskBlend = refrB * w + (refrA.rgb, w) * (1 - w) with w =
+    refrA.w clamped to [0, 1] (Example 19-2's vRefrB * vRefrA.w + vRefrA * (1 -
+    vRefrA.w), identical for a mask in [0, 1], the result's alpha included);
+    alpha 1 (outside every refractive mesh) gives refrB, alpha 0 (inside)
+    gives refrA. A NaN alpha counts as 1 (unperturbed). Colours are blended
+    as given (NaN colours propagate).
+  - snellRefractionMasked reads S at snellPerturbUv(uv, bump, scale) and at uv,
+    both clamped to [0,1]^2 (a NaN or infinite uv component reads the screen
+    centre, as in snellPerturbUv), lod 0, and blends them as above.
+source: T. Sousa, "Generic Refraction Simulation", GPU Gems 2, ch. 19 (2005),
+  sec. 19.2 and Example 19-2.
+*/
+#ifndef SNELL_SHADE_REFRACTION_MASK_GLSL
+#define SNELL_SHADE_REFRACTION_MASK_GLSL
+
+
+
+SNELL_FN vec4 snellRefractionMaskBlend(vec4 refrA, vec4 refrB) {
+  // isnan first: min/max/clamp of a NaN differ between GPUs and GLM.
+  float w = isnan(refrA.w) ? 1.0f : clamp(refrA.w, 0.0f, 1.0f);
+  return refrB * w + vec4(refrA.x, refrA.y, refrA.z, w) * (1.0f - w);
+}
+
+SNELL_FN vec4 snellRefractionMasked(SNELL_TEX2D sceneColor, vec2 uv, vec2 bump, float scale) {
+  vec2 uvA = clamp(snellPerturbUv(uv, bump, scale), vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  vec2 uvB = clamp(snellPerturbUv(uv, vec2(0.0f, 0.0f), 0.0f), vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  vec4 refrA = SNELL_SAMPLE_LOD(sceneColor, uvA, 0.0f);
+  vec4 refrB = SNELL_SAMPLE_LOD(sceneColor, uvB, 0.0f);
+  return snellRefractionMaskBlend(refrA, refrB);
+}
+
+#endif
+/*
+description: a depth-aware refraction mask (a modern variant of Sousa's alpha
+  mask): the perturbed read is rejected when the opaque scene there lies in
+  front of the refracting surface (an occluder would leak into the
+  refraction); otherwise it is kept even outside the refractive object's
+  screen area, so no mask has to be written into S's alpha.
+use: bool ok = snellRefractionDepthAccept(sceneDepth, surfaceDepth, SNELL_DEPTH_GL);
+     vec4 c = snellRefractionMaskedDepth(sceneColor, sceneDepthTex, uv,
+                                         vec2(bump.x, bump.y), 0.05f,
+                                         gl_FragCoord.z, SNELL_DEPTH_GL);
+  sceneDepth     depth-buffer value of the opaque scene at the perturbed uv
+  surfaceDepth   depth-buffer value of the refracting surface at this fragment
+                 (gl_FragCoord.z)
+  convention     depth convention of both values (camera/conventions.glsl):
+                 GL, ZERO_ONE, INFINITE_GL store near -> 0; REVERSED,
+                 INFINITE_REVERSED near -> 1
+  sceneDepthTex  the opaque scene's depth buffer as a texture (depth in .x),
+                 read with SNELL_SAMPLE_LOD at lod 0: use NEAREST filtering
+                 (a filtered depth blends silhouettes)
+  sceneColor, uv, bump, scale  as in snellPerturbSample (perturb.glsl)
+options: -
+contract:
+  - snellRefractionDepthAccept is true exactly when sceneDepth is not in front
+    of surfaceDepth: sceneDepth >= surfaceDepth (near -> 0 conventions) or
+    sceneDepth <= surfaceDepth (reversed conventions); equal depths accept. It
+    is false when either depth is NaN or the convention is unknown. Depths are
+    compared as given (no range check: both come from the same buffer format).
+  - snellRefractionMaskedDepth returns S at the perturbed uv when the scene
+    depth read at that same uv is accepted, else S at the unperturbed uv; uvs
+    as in snellRefractionMasked (clamped to [0,1]^2, NaN -> screen centre),
+    lod 0. Colours are returned as read (alpha untouched).
+source: T. Sousa, "Generic Refraction Simulation", GPU Gems 2, ch. 19 (2005),
+  sec. 19.2 (the leakage problem and the alpha mask, Example 19-2), with the
+  mask replaced by a depth comparison (snell's variant; the chapter notes
+  that the alpha mask is inaccurate where refraction would show objects not
+  directly behind the refractive one: those reads are kept here).
+*/
+#ifndef SNELL_SHADE_REFRACTION_MASK_DEPTH_GLSL
+#define SNELL_SHADE_REFRACTION_MASK_DEPTH_GLSL
+
+
+
+
+SNELL_FN bool snellRefractionDepthAccept(float sceneDepth, float surfaceDepth, int convention) {
+  if (isnan(sceneDepth) || isnan(surfaceDepth)) {
+    return false;
+  }
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_ZERO_ONE || convention == SNELL_DEPTH_INFINITE_GL) {
+    return sceneDepth >= surfaceDepth;
+  }
+  if (convention == SNELL_DEPTH_REVERSED || convention == SNELL_DEPTH_INFINITE_REVERSED) {
+    return sceneDepth <= surfaceDepth;
+  }
+  return false;
+}
+
+SNELL_FN vec4 snellRefractionMaskedDepth(SNELL_TEX2D sceneColor, SNELL_TEX2D sceneDepthTex, vec2 uv, vec2 bump,
+                                         float scale, float surfaceDepth, int convention) {
+  vec2 uvA = clamp(snellPerturbUv(uv, bump, scale), vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  vec2 uvB = clamp(snellPerturbUv(uv, vec2(0.0f, 0.0f), 0.0f), vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  float sceneDepth = SNELL_SAMPLE_LOD(sceneDepthTex, uvA, 0.0f).x;
+  if (snellRefractionDepthAccept(sceneDepth, surfaceDepth, convention)) {
+    return SNELL_SAMPLE_LOD(sceneColor, uvA, 0.0f);
+  }
+  return SNELL_SAMPLE_LOD(sceneColor, uvB, 0.0f);
+}
+
+#endif
+/*
+description: Sousa's refractive/reflective water in one pass: four animated
+  bump layers averaged into one normal, the masked screen-space refraction of
+  S, a planar reflection map read at a (less) perturbed uv, a per-pixel
+  bias/power Fresnel term, and the deep-water colour blended in by distance.
+use: SnellWaterParams p = snellWaterParams();   // the chapter's constants
+     vec3 n = snellWaterBumpAverage(t0, t1, t2, t3);   // four bump texels, [0,1]
+     vec4 c = snellWater(sceneColor, reflectionMap, uv, n, eyeTs, viewDistance, p);
+  t0..t3         the bump map read at the four wave coordinates (rgb, [0,1])
+  sceneColor     texture S: the scene without the water, refraction mask in
+                 alpha (water written as 0, the rest 1; see refraction_mask.glsl)
+  reflectionMap  the scene mirrored through the water plane
+  uv             projected viewport uv of the fragment (ScreenPos.xy / ScreenPos.w)
+  bumpNormal     the averaged bump normal, tangent space (z up); need not be unit
+  eye            fragment-to-eye vector in the same tangent space (the
+                 listing's Eye); need not be unit
+  viewDistance   the listing's Wave0.w: the fragment's distance from the eye
+options: -
+contract:
+  SnellWaterParams fields (snellWaterParams() defaults, Example 19-4):
+    refractionBumpScale (0.075, 0.075, 1)  bump scale for the refraction read
+    reflectionBumpScale (0.02, 0.02, 1)    bump scale for the reflection read and
+                                           the Fresnel term
+    fresnelBias 0.2, fresnelPower 5        snellFresnelBiasPower (Example 19-3)
+    deepDistance 10                        fDistScale = saturate(10 / Wave0.w)
+    waterColor (0, 0.15, 0.115)            colour blended in by facing
+    deepColor (0, 0.15, 0.115)             colour blended in by distance
+  - snellWaterBumpAverage = normalize(2 (t0 + t1 + t2 + t3) - 4) (the average of
+    the four unpacked normals, normalized); (0,0,1) when that vanishes or is not
+    finite.
+  - snellWater computes, with n = normalize(bumpNormal) ((0,0,1) when bumpNormal
+    is zero, NaN or infinite), e = normalize(eye) ((0,0,0) likewise):
+      refrBump = n * refractionBumpScale, reflBump = n * reflectionBumpScale
+      reflection = reflectionMap(uv + reflBump.xy)
+      refraction = snellRefractionMaskBlend(S(uv + refrBump.xy), S(uv))
+      NdotL = saturate(dot(e, reflBump)) (0 when NaN), facing = 1 - NdotL
+      fresnel = snellFresnelBiasPower(NdotL, fresnelBias, fresnelPower)
+      fDist = saturate(deepDistance / viewDistance); 1 when viewDistance is
+              NaN, <= 0 or denormal, or the quotient is NaN
+      deep = refraction.rgb fDist + (1 - fDist) deepColor
+      water = waterColor facing + deep (1 - facing)
+      result = vec4(fresnel reflection.rgb + water, 1)
+    Reads use snellPerturbUv (NaN uv -> screen centre, NaN displacement -> 0),
+    clamped to [0,1]^2, lod 0. reflBump is not renormalized, as in the listing.
+    Colours (parameters and texels) are used as given.
+source: T. Sousa, "Generic Refraction Simulation", GPU Gems 2, ch. 19 (2005),
+  sec. 19.3.1, Examples 19-3 and 19-4.
+*/
+#ifndef SNELL_SHADE_WATER_GLSL
+#define SNELL_SHADE_WATER_GLSL
+
+
+
+
+
+
+
+struct SnellWaterParams {
+  vec3 refractionBumpScale;
+  vec3 reflectionBumpScale;
+  float fresnelBias;
+  float fresnelPower;
+  float deepDistance;
+  vec3 waterColor;
+  vec3 deepColor;
+};
+
+SNELL_FN SnellWaterParams snellWaterParams() {
+  SnellWaterParams p;
+  p.refractionBumpScale = vec3(0.075f, 0.075f, 1.0f);
+  p.reflectionBumpScale = vec3(0.02f, 0.02f, 1.0f);
+  p.fresnelBias = 0.2f;
+  p.fresnelPower = 5.0f;
+  p.deepDistance = 10.0f;
+  p.waterColor = vec3(0.0f, 0.15f, 0.115f);
+  p.deepColor = vec3(0.0f, 0.15f, 0.115f);
+  return p;
+}
+
+SNELL_FN vec3 snellWaterBumpAverage(vec3 t0, vec3 t1, vec3 t2, vec3 t3) {
+  vec3 n = snellSafeNormalize((t0 + t1 + t2 + t3) * 2.0f - 4.0f);
+  if (dot(n, n) == 0.0f) {
+    return vec3(0.0f, 0.0f, 1.0f);
+  }
+  return n;
+}
+
+SNELL_FN vec4 snellWater(SNELL_TEX2D sceneColor, SNELL_TEX2D reflectionMap, vec2 uv, vec3 bumpNormal, vec3 eye,
+                         float viewDistance, SnellWaterParams p) {
+  vec3 n = snellSafeNormalize(bumpNormal);
+  if (dot(n, n) == 0.0f) {
+    n = vec3(0.0f, 0.0f, 1.0f);
+  }
+  vec3 e = snellSafeNormalize(eye);
+  vec3 refrBump = n * p.refractionBumpScale;
+  vec3 reflBump = n * p.reflectionBumpScale;
+  vec2 one = vec2(1.0f, 1.0f);
+  vec2 zero = vec2(0.0f, 0.0f);
+  vec2 uvRefl = clamp(snellPerturbUv(uv, vec2(reflBump.x, reflBump.y), 1.0f), zero, one);
+  vec2 uvRefr = clamp(snellPerturbUv(uv, vec2(refrBump.x, refrBump.y), 1.0f), zero, one);
+  vec2 uvProj = clamp(snellPerturbUv(uv, zero, 0.0f), zero, one);
+  vec4 reflection = SNELL_SAMPLE_LOD(reflectionMap, uvRefl, 0.0f);
+  vec4 refrA = SNELL_SAMPLE_LOD(sceneColor, uvRefr, 0.0f);
+  vec4 refrB = SNELL_SAMPLE_LOD(sceneColor, uvProj, 0.0f);
+  vec4 refraction = snellRefractionMaskBlend(refrA, refrB);
+  // isnan first: min/max/clamp of a NaN differ between GPUs and GLM.
+  float nDotL = dot(e, reflBump);
+  nDotL = isnan(nDotL) ? 0.0f : clamp(nDotL, 0.0f, 1.0f);
+  float facing = 1.0f - nDotL;
+  float fresnel = snellFresnelBiasPower(nDotL, p.fresnelBias, p.fresnelPower);
+  float distScale = 1.0f;
+  if (!isnan(viewDistance) && viewDistance >= SNELL_FLT_MIN) {
+    float q = p.deepDistance / viewDistance;
+    distScale = isnan(q) ? 1.0f : clamp(q, 0.0f, 1.0f);
+  }
+  vec3 refr = vec3(refraction.x, refraction.y, refraction.z);
+  vec3 deep = refr * distScale + p.deepColor * (1.0f - distScale);
+  vec3 water = p.waterColor * facing + deep * (1.0f - facing);
+  vec3 c = vec3(reflection.x, reflection.y, reflection.z) * fresnel + water;
+  return vec4(c.x, c.y, c.z, 1.0f);
+}
+
+#endif
+/*
+description: Sousa's stained glass: environment bump mapping with a 2D
+  reflection map, the masked screen-space refraction of S modulated by the
+  diffuse (stain) colour, blended by a bias/power Fresnel term.
+use: vec4 c = snellGlass(sceneColor, reflectionMap, uv, bumpTexel, diffuse, eyeTs);
+  sceneColor     texture S: the scene without the glass, refraction mask in
+                 alpha (glass written as 0, the rest 1; see refraction_mask.glsl)
+  reflectionMap  2D environment map indexed by the reflection vector's xy
+  uv             projected viewport uv of the fragment (ScreenPos.xy / ScreenPos.w)
+  bumpTexel      the bump map's texel at the base uv (rgb in [0,1], unpacked here)
+  diffuse        the diffuse (stain) texture's texel at the base uv
+  eye            fragment-to-eye vector in the bump map's tangent space (z up);
+                 need not be unit
+options:
+  SNELL_GLASS_BUMP_SCALE     xy scale of the unpacked bump before normalizing (0.2f)
+  SNELL_GLASS_FRESNEL_BIAS   snellFresnelBiasPower bias (0.4f)
+  SNELL_GLASS_FRESNEL_POWER  snellFresnelBiasPower power (5.0f)
+contract (Example 19-5, s = SNELL_GLASS_BUMP_SCALE):
+  - b = normalize((2 bumpTexel - 1) * (s, s, 1)), (0,0,1) when that vanishes or
+    is not finite; e = normalize(eye), (0,0,0) when eye is zero, NaN or infinite;
+  - LdotN = dot(b, e) (0 when NaN); r = 2 LdotN b - e;
+    env = reflectionMap((r.xy + 1) * 0.5);
+  - refraction = snellRefractionMaskBlend(S(uv + b.xy), S(uv));
+  - F = snellFresnelBiasPower(LdotN, bias, power) (LdotN saturated there);
+  - tint = (saturate(0.1 + 0.9 diffuse.rgb), diffuse.a), a NaN diffuse.rgb
+    channel counting as 1 (clear);
+  - result = tint * refraction * (1 - F) + env * F (all four channels).
+  Reads use snellPerturbUv (NaN uv -> screen centre) clamped to [0,1]^2, lod 0;
+  an invalid eye gives F = 1 and the reflection map's centre. Other colours
+  (texels, diffuse.a) are used as given.
+source: T. Sousa, "Generic Refraction Simulation", GPU Gems 2, ch. 19 (2005),
+  sec. 19.3.2, Example 19-5 (Fresnel(LdotN, 0.4, 5.0) of Example 19-3).
+*/
+#ifndef SNELL_SHADE_GLASS_GLSL
+#define SNELL_SHADE_GLASS_GLSL
+
+
+
+
+
+
+#ifndef SNELL_GLASS_BUMP_SCALE
+#  define SNELL_GLASS_BUMP_SCALE 0.2f
+#endif
+#ifndef SNELL_GLASS_FRESNEL_BIAS
+#  define SNELL_GLASS_FRESNEL_BIAS 0.4f
+#endif
+#ifndef SNELL_GLASS_FRESNEL_POWER
+#  define SNELL_GLASS_FRESNEL_POWER 5.0f
+#endif
+
+SNELL_FN vec4 snellGlass(SNELL_TEX2D sceneColor, SNELL_TEX2D reflectionMap, vec2 uv, vec3 bumpTexel, vec4 diffuse,
+                         vec3 eye) {
+  vec3 b = snellSafeNormalize(snellUnpackBump(bumpTexel) *
+                              vec3(SNELL_GLASS_BUMP_SCALE, SNELL_GLASS_BUMP_SCALE, 1.0f));
+  if (dot(b, b) == 0.0f) {
+    b = vec3(0.0f, 0.0f, 1.0f);
+  }
+  vec3 e = snellSafeNormalize(eye);
+  float lDotN = dot(b, e);
+  lDotN = isnan(lDotN) ? 0.0f : lDotN;
+  vec3 r = b * (2.0f * lDotN) - e;
+  vec2 one = vec2(1.0f, 1.0f);
+  vec2 zero = vec2(0.0f, 0.0f);
+  vec2 uvEnv = clamp((vec2(r.x, r.y) + 1.0f) * 0.5f, zero, one);
+  vec4 env = SNELL_SAMPLE_LOD(reflectionMap, uvEnv, 0.0f);
+  vec2 uvRefr = clamp(snellPerturbUv(uv, vec2(b.x, b.y), 1.0f), zero, one);
+  vec2 uvProj = clamp(snellPerturbUv(uv, zero, 0.0f), zero, one);
+  vec4 refraction =
+      snellRefractionMaskBlend(SNELL_SAMPLE_LOD(sceneColor, uvRefr, 0.0f), SNELL_SAMPLE_LOD(sceneColor, uvProj, 0.0f));
+  float f = snellFresnelBiasPower(lDotN, SNELL_GLASS_FRESNEL_BIAS, SNELL_GLASS_FRESNEL_POWER);
+  // isnan first: clamp of a NaN differs between GPUs and GLM.
+  vec3 d = vec3(isnan(diffuse.x) ? 1.0f : diffuse.x, isnan(diffuse.y) ? 1.0f : diffuse.y,
+                isnan(diffuse.z) ? 1.0f : diffuse.z);
+  vec3 t = clamp(d * 0.9f + 0.1f, vec3(0.0f, 0.0f, 0.0f), vec3(1.0f, 1.0f, 1.0f));
+  vec4 tint = vec4(t.x, t.y, t.z, diffuse.w);
+  return tint * refraction * (1.0f - f) + env * f;
+}
+
+#endif
+/*
+description: the ice shader's reflection and two-sided refraction: refract the
+  eye vector once about the blend of the front normal and the negated
+  back-face normal (eqs. 1-2), reflect it about the front normal (eq. 3), and
+  mix the two environment colours with the cubic Fresnel term (eq. 4).
+use: SnellIce s = snellIce(eyeWs, frontNormalWs, backNormalWs, 0.33f, SNELL_ICE_ETA);
+     SnellIce s = snellIce(eyeWs, frontNormalWs, backNormalWs);  // a, eta defaults
+     vec4 refl = texture(envCube, s.reflected), refr = texture(envCube, s.refracted);
+     vec4 c = snellIceCompose(refl, refr, s.fresnel);
+  eye          the paper's e: from the viewer to the surface point (need not be
+               unit)
+  frontNormal  outward normal of the front face (need not be unit)
+  backNormal   outward normal of the back face from the back-face normal buffer
+               (points away from the viewer; eq. 1 negates it)
+  a            share of the back-face normal in [0, 1] (snellIceNormalBlend)
+  eta          n_air / n_ice
+options:
+  SNELL_ICE_ETA         default eta, 1.0003f / 1.3091f (about 0.7641: the paper's
+                        air/ice ratio)
+  SNELL_ICE_TIR_POLICY  snellRefract's TIR policy (SNELL_TIR_REFLECT); with
+                        eta < 1 TIR cannot occur
+  (SNELL_ICE_NORMAL_BLEND, the default a, comes from optics/ice_normal_blend.glsl)
+contract:
+  - blended = snellIceNormalBlend(frontNormal, backNormal, a);
+    refracted = snellRefract(eye, blended, eta, SNELL_ICE_TIR_POLICY).direction;
+    reflected = e - 2 (nf . e) nf with e, nf the normalized eye and front normal;
+    fresnel = snellFresnelCubic(eye, frontNormal) = (1 - |e . nf|)^3.
+  - eta NaN, <= 0, denormal or infinite: 1 (no bending, refracted = e).
+  - valid is false when eye or frontNormal is zero, denormal-small, NaN or
+    infinite: refracted = reflected = (0,0,0), fresnel = 1. An invalid
+    backNormal gives one-sided refraction about nf (snellIceNormalBlend).
+  - with SNELL_TIR_ZERO as the policy a TIR gives refracted = (0,0,0) and
+    fresnel 1 (everything reflected); valid stays true.
+  - snellIceCompose = refraction (1 - f) + reflection f with f = fresnel clamped
+    to [0, 1]; a NaN fresnel counts as 1.
+source: "Real-Time Ice Rendering" (ice shader report), sec. 3.2: eq. 1 (normal
+  blend, a = 0.33), eq. 2 (refraction with eta = 1.0003/1.3091), eq. 3
+  (r_refl = e - 2 (e.n_f) n_f), eq. 4 (f = (1 - e.n)^3) and the mix of the two
+  environment samples by f.
+*/
+#ifndef SNELL_SHADE_ICE_GLSL
+#define SNELL_SHADE_ICE_GLSL
+
+
+
+
+
+
+
+#ifndef SNELL_ICE_ETA
+#  define SNELL_ICE_ETA (1.0003f / 1.3091f)
+#endif
+#ifndef SNELL_ICE_TIR_POLICY
+#  define SNELL_ICE_TIR_POLICY SNELL_TIR_REFLECT
+#endif
+
+struct SnellIce {
+  vec3 refracted;
+  vec3 reflected;
+  float fresnel;
+  bool valid;
+};
+
+SNELL_FN SnellIce snellIce(vec3 eye, vec3 frontNormal, vec3 backNormal, float a, float eta) {
+  SnellIce s;
+  s.refracted = vec3(0.0f, 0.0f, 0.0f);
+  s.reflected = vec3(0.0f, 0.0f, 0.0f);
+  s.fresnel = 1.0f;
+  s.valid = false;
+  vec3 e = snellSafeNormalize(eye);
+  vec3 nf = snellSafeNormalize(frontNormal);
+  if (dot(e, e) == 0.0f || dot(nf, nf) == 0.0f) {
+    return s;
+  }
+  s.valid = true;
+  float k = (!isnan(eta) && eta >= SNELL_FLT_MIN && eta < SNELL_FLT_MAX) ? eta : 1.0f;
+  vec3 nr = snellIceNormalBlend(nf, backNormal, a);
+  SnellRefraction r = snellRefract(e, nr, k, SNELL_ICE_TIR_POLICY);
+  s.refracted = r.direction;
+  s.reflected = e - nf * (2.0f * dot(nf, e));
+  s.fresnel = dot(r.direction, r.direction) == 0.0f ? 1.0f : snellFresnelCubic(e, nf);
+  return s;
+}
+
+SNELL_FN SnellIce snellIce(vec3 eye, vec3 frontNormal, vec3 backNormal) {
+  return snellIce(eye, frontNormal, backNormal, SNELL_ICE_NORMAL_BLEND, SNELL_ICE_ETA);
+}
+
+SNELL_FN vec4 snellIceCompose(vec4 reflection, vec4 refraction, float fresnel) {
+  // isnan first: clamp of a NaN differs between GPUs and GLM.
+  float f = isnan(fresnel) ? 1.0f : clamp(fresnel, 0.0f, 1.0f);
+  return refraction * (1.0f - f) + reflection * f;
+}
+
+#endif
+/*
+description: the ice shader's crack clipping, a screen-space Boolean
+  intersection: a fragment of a generic crack surface is kept only when its
+  depth lies inside the [front, back] depth interval of the (convex) ice
+  object at that pixel, read from the object's front- and back-face depth
+  textures.
+use: if (!snellIceCrackKeep(gl_FragCoord.z, frontDepth, backDepth, SNELL_DEPTH_GL)) discard;
+  crackDepth  depth-buffer value of the crack fragment
+  frontDepth  the ice object's front-face depth at the pixel (nearest surface)
+  backDepth   the ice object's back-face depth at the pixel (farthest surface)
+  convention  depth convention of all three (camera/conventions.glsl): GL,
+              ZERO_ONE, INFINITE_GL store near -> 0, REVERSED and
+              INFINITE_REVERSED near -> 1
+options: -
+contract:
+  - near -> 0 conventions: keep iff frontDepth <= crackDepth <= backDepth;
+    reversed conventions: keep iff frontDepth >= crackDepth >= backDepth; the
+    interval includes both ends.
+  - false (the fragment is clipped) when any depth is NaN or outside [0, 1]
+    (not a depth-buffer value), the convention is unknown, or the interval is
+    empty (front behind back: no ice at the pixel when the front texture is
+    cleared to the far value and the back texture to the near value).
+source: "Real-Time Ice Rendering" (ice shader report), sec. 3.3 ("If the
+  value is not contained within the interval of the two sampled values
+  nothing is drawn"), Figure 5.
+*/
+#ifndef SNELL_SHADE_ICE_CRACK_CLIP_GLSL
+#define SNELL_SHADE_ICE_CRACK_CLIP_GLSL
+
+
+
+SNELL_FN bool snellIceCrackKeep(float crackDepth, float frontDepth, float backDepth, int convention) {
+  if (isnan(crackDepth) || isnan(frontDepth) || isnan(backDepth)) {
+    return false;
+  }
+  bool inRange = (crackDepth >= 0.0f && crackDepth <= 1.0f) && (frontDepth >= 0.0f && frontDepth <= 1.0f) &&
+                 (backDepth >= 0.0f && backDepth <= 1.0f);
+  if (!inRange) {
+    return false;
+  }
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_ZERO_ONE || convention == SNELL_DEPTH_INFINITE_GL) {
+    return frontDepth <= crackDepth && crackDepth <= backDepth;
+  }
+  if (convention == SNELL_DEPTH_REVERSED || convention == SNELL_DEPTH_INFINITE_REVERSED) {
+    return frontDepth >= crackDepth && crackDepth >= backDepth;
+  }
+  return false;
+}
+
+#endif
+/*
+description: G. Oliveira's refractive texture mapping, per vertex of a
+  perturbed water mesh: the approximate refracted eye ray (incident direction
+  plus the inverted normal times a refraction factor) is followed down to a
+  planar map lying a given depth below the mesh's rest plane, and the hit's x
+  and z are mapped linearly over the mesh extent to the map's uv.
+use: SnellRefractiveTextureMapParams p =
+         snellRefractiveTextureMapParams(vec2(x0, z0), vec2(x1, z1), restY, depth, factor);
+     p.policy = SNELL_RTM_SHRINK; p.uvMin = 0.1f; p.uvMax = 0.9f;   // optional
+     SnellRefractiveTextureMapHit h = snellRefractiveTextureMap(vertexPos, vertexNormal, eyePos, p);
+     uv = h.uv;
+     float u = snellRefractiveTextureMapAxis(x, x_i, x_e);   // eq. 12 alone
+  Space: the paper's, y up; the mesh rests in the plane y = restY spanning
+  [x_i, x_e] x [z_i, z_e] and the map lies in the plane y = restY - depth.
+  vertex, normal  the (perturbed) vertex position and its normal (need not be
+                  unit)
+  eyePosition     camera position in the same space
+  params fields:
+    extentMin, extentMax  (x_i, z_i) and (x_e, z_e); the constructor's
+    restY                 y_i, the unperturbed mesh's height
+    depth                 p_i, the map's depth below restY
+    refractionFactor      snellApproxRefract's factor (>= 0)
+    policy                SNELL_RTM_CLAMP (constructor default) or SNELL_RTM_SHRINK
+    uvMin, uvMax          the policy's interval (constructor: 0, 1)
+options:
+  SNELL_RTM_CLAMP   uv = clamp(uv_eq, uvMin, uvMax): the paper's first fix
+                    (Listing 4 clamps to refraction_uv_min / _max)
+  SNELL_RTM_SHRINK  uv = uvMin + (uvMax - uvMin) uv_eq, then clamped to [0, 1]:
+                    the paper's second fix, the mesh extent mapped to a shrunk
+                    interval such as [0.1, 0.9]. For rays reaching at most m
+                    beyond an edge of an extent of length L, uvMin = m / (L + 2m)
+                    and uvMax = 1 - uvMin keep every hit in [0, 1]
+contract:
+  - dir = snellApproxRefract(vertex - eyePosition, normal, refractionFactor)
+    (eq. 8, Listing 4); the hit is vertex + t dir on y = restY - depth, i.e.
+    t = (depth + (vertex.y - restY)) / (-dir.y) (eqs. 9-11: the final depth p
+    is the initial depth plus the vertex's displacement above the rest plane,
+    as Listing 4 computes it; the text's eq. 11 prints the displacement with
+    the opposite sign, and Listing 4 divides by the signed dir.y, which is
+    negative for a ray going down), found with snellRayPlane.
+  - uv_eq = ((x - x_i) / (x_e - x_i), (z - z_i) / (z_e - z_i)) (eqs. 12-13), each
+    component limited to [-1e6, 1e6]. A reversed extent (x_e < x_i) flips
+    that axis: Listing 4's v, flipped for DirectX 7, is extentMin.y = z_e,
+    extentMax.y = z_i. An extent with |length| below the smallest normal float
+    or a non-finite bound gives 0.5 for that axis.
+  - valid is false when there is no hit: the ray does not go down towards the
+    map (the vertex is below it, the ray is horizontal or goes up), or vertex,
+    normal or eyePosition is zero-length where it matters, NaN or infinite.
+    Then position = (vertex.x, restY - depth, vertex.z) (straight down, each
+    non-finite component replaced by 0: always finite) and uv is computed from
+    it the same way, except that an axis whose vertex coordinate is not finite
+    gives 0.5.
+  - inRange is true when valid and uv_eq lies in [0, 1]^2 (before the policy).
+  - uvMin, uvMax: NaN counts as 0 and 1; both are clamped to [0, 1] and
+    ordered (swapped values are swapped back); an unknown policy is CLAMP.
+    The returned uv is always finite and in [0, 1]^2.
+source: G. Oliveira, "Refractive Texture Mapping, Part Two", Gamasutra 2000,
+  Equations 8-13 and Listing 4 (water_compute_refraction), and the two
+  out-of-range fixes described after Equation 13.
+*/
+#ifndef SNELL_SHADE_REFRACTIVE_TEXTURE_MAP_GLSL
+#define SNELL_SHADE_REFRACTIVE_TEXTURE_MAP_GLSL
+
+
+
+
+
+#define SNELL_RTM_CLAMP 0
+#define SNELL_RTM_SHRINK 1
+
+struct SnellRefractiveTextureMapParams {
+  vec2 extentMin;
+  vec2 extentMax;
+  float restY;
+  float depth;
+  float refractionFactor;
+  int policy;
+  float uvMin;
+  float uvMax;
+};
+
+struct SnellRefractiveTextureMapHit {
+  vec2 uv;
+  vec3 position;
+  bool valid;
+  bool inRange;
+};
+
+SNELL_FN SnellRefractiveTextureMapParams snellRefractiveTextureMapParams(vec2 extentMin, vec2 extentMax, float restY,
+                                                                         float depth, float refractionFactor) {
+  SnellRefractiveTextureMapParams p;
+  p.extentMin = extentMin;
+  p.extentMax = extentMax;
+  p.restY = restY;
+  p.depth = depth;
+  p.refractionFactor = refractionFactor;
+  p.policy = SNELL_RTM_CLAMP;
+  p.uvMin = 0.0f;
+  p.uvMax = 1.0f;
+  return p;
+}
+
+/* Eqs. 12-13 for one axis: (x - lo) / (hi - lo) limited to [-1e6, 1e6]; 0.5
+   when x, lo, hi or hi - lo is not finite or |hi - lo| is below the smallest
+   normal float. */
+SNELL_FN float snellRefractiveTextureMapAxis(float x, float lo, float hi) {
+  float len = hi - lo;
+  if (!SNELL_FINITE(x) || !SNELL_FINITE(lo) || !SNELL_FINITE(hi) || !SNELL_FINITE(len) ||
+      !(abs(len) >= SNELL_FLT_MIN)) {
+    return 0.5f;
+  }
+  // (x - lo) may overflow to +-inf, never NaN; clamp keeps it finite.
+  return clamp((x - lo) / len, -1e6f, 1e6f);
+}
+
+SNELL_FN SnellRefractiveTextureMapHit snellRefractiveTextureMap(vec3 vertex, vec3 normal, vec3 eyePosition,
+                                                                SnellRefractiveTextureMapParams p) {
+  SnellRefractiveTextureMapHit h;
+  float planeY = p.restY - p.depth;
+  vec3 dir = snellApproxRefract(vertex - eyePosition, normal, p.refractionFactor);
+  SnellRayPlaneHit hit = snellRayPlane(vertex, dir, vec3(0.0f, planeY, 0.0f), vec3(0.0f, 1.0f, 0.0f));
+  // A hit must come from a ray going down: a ray going up from below the map
+  // also meets its plane.
+  h.valid = hit.valid && dir.y < 0.0f;
+  if (h.valid) {
+    h.position = hit.position;
+  } else {
+    h.position = vec3(SNELL_FINITE(vertex.x) ? vertex.x : 0.0f, SNELL_FINITE(planeY) ? planeY : 0.0f,
+                      SNELL_FINITE(vertex.z) ? vertex.z : 0.0f);
+  }
+  float px = h.valid || SNELL_FINITE(vertex.x) ? h.position.x : vertex.x;
+  float pz = h.valid || SNELL_FINITE(vertex.z) ? h.position.z : vertex.z;
+  vec2 e = vec2(snellRefractiveTextureMapAxis(px, p.extentMin.x, p.extentMax.x),
+                snellRefractiveTextureMapAxis(pz, p.extentMin.y, p.extentMax.y));
+  h.inRange = h.valid && e.x >= 0.0f && e.x <= 1.0f && e.y >= 0.0f && e.y <= 1.0f;
+  float a = isnan(p.uvMin) ? 0.0f : clamp(p.uvMin, 0.0f, 1.0f);
+  float b = isnan(p.uvMax) ? 1.0f : clamp(p.uvMax, 0.0f, 1.0f);
+  float lo = min(a, b);
+  float hi = max(a, b);
+  if (p.policy == SNELL_RTM_SHRINK) {
+    h.uv = clamp(vec2(lo, lo) + e * (hi - lo), vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  } else {
+    h.uv = clamp(e, vec2(lo, lo), vec2(hi, hi));
+  }
+  return h;
+}
+
+#endif
+/*
+description: chromatic dispersion: per-channel indices of refraction from a
+  base IOR and an Abbe number (or given explicitly), and the refraction of one
+  ray per colour channel. Sample the scene once per channel with the three
+  directions (or their screen-space offsets) for chromatic aberration.
+use: vec3 iors = snellDispersionIors(1.5168f, 64.17f);   // BK7: n_d, V_d
+     SnellDispersion d = snellDispersionRefract(viewDir, n, 1.0f, iors, SNELL_TIR_CRITICAL);
+     SnellDispersion d = snellDispersionRefract(viewDir, n, 1.0f, vec3(1.51f, 1.52f, 1.53f), SNELL_TIR_ZERO);
+  iorD        IOR at the helium d line (587.56 nm), the usual catalogue value
+  abbe        Abbe number V_d = (n_d - 1) / (n_F - n_C) (crown glass ~ 60, flint
+              ~ 30, water ~ 55); larger means less dispersion
+  iorOutside  IOR of the medium the ray comes from (1 for air)
+  iors        IOR per channel (r, g, b) of the medium it enters
+options:
+  SNELL_DISPERSION_LAMBDA_R  wavelength of the red channel in nm (656.27f, the
+                             hydrogen C line)
+  SNELL_DISPERSION_LAMBDA_G  green (587.56f, the helium d line)
+  SNELL_DISPERSION_LAMBDA_B  blue (486.13f, the hydrogen F line)
+contract:
+  - snellDispersionIors uses Cauchy's two-term equation n(l) = A + B / l^2
+    fitted to n(587.56 nm) = iorD and n(486.13) - n(656.27) = (iorD - 1) / V:
+    n(l) = iorD + (iorD - 1) / V * (1/l^2 - 1/l_d^2) / (1/l_F^2 - 1/l_C^2).
+    With the default wavelengths r = n_C, g = n_d = iorD, b = n_F, so
+    b - r = (iorD - 1) / V and b > g > r for iorD > 1 (blue bends most).
+  - iorD NaN, below the smallest normal float or infinite: (1, 1, 1). abbe NaN,
+    <= 0 or +inf: no dispersion, (iorD, iorD, iorD). abbe below 1 counts as 1.
+    Each channel is clamped to [1e-6, 1e6].
+  - snellDispersionRefract refracts incident about normal once per channel with
+    eta_c = snellIorToEta(iorOutside, iors.c) and snellRefract(.., policy);
+    red/green/blue are the directions; tir is true when any channel totally
+    reflects, valid when every channel is valid (false only for a zero, NaN
+    or infinite incident or normal: then all three are (0,0,0)). Invalid IORs
+    give eta 1 for that channel (snellIorToEta).
+source: E. Abbe's number V_d = (n_d - 1) / (n_F - n_C) (Schott optical glass
+  data sheets; ISO 7944 reference wavelengths) and Cauchy's dispersion formula
+  n = A + B / lambda^2 (two-term form); per-channel refraction for chromatic
+  aberration, cf. Kilgard 2001 "Chromatic Aberration" (NVIDIA), which Sousa
+  (GPU Gems 2 ch. 19, sec. 19.3.2) cites as the wavelength-dependent extension.
+*/
+#ifndef SNELL_SHADE_DISPERSION_GLSL
+#define SNELL_SHADE_DISPERSION_GLSL
+
+
+
+
+
+#ifndef SNELL_DISPERSION_LAMBDA_R
+#  define SNELL_DISPERSION_LAMBDA_R 656.27f
+#endif
+#ifndef SNELL_DISPERSION_LAMBDA_G
+#  define SNELL_DISPERSION_LAMBDA_G 587.56f
+#endif
+#ifndef SNELL_DISPERSION_LAMBDA_B
+#  define SNELL_DISPERSION_LAMBDA_B 486.13f
+#endif
+
+struct SnellDispersion {
+  vec3 red;
+  vec3 green;
+  vec3 blue;
+  bool tir;
+  bool valid;
+};
+
+SNELL_FN vec3 snellDispersionIors(float iorD, float abbe) {
+  if (isnan(iorD) || !(iorD >= SNELL_FLT_MIN) || isinf(iorD)) {
+    return vec3(1.0f, 1.0f, 1.0f);
+  }
+  if (isnan(abbe) || !(abbe > 0.0f) || isinf(abbe)) {
+    return vec3(iorD, iorD, iorD);
+  }
+  float v = max(abbe, 1.0f);
+  // 1 / lambda^2 in 1 / um^2 (lambda in nm).
+  float wC = 1e6f / (656.27f * 656.27f);
+  float wD = 1e6f / (587.56f * 587.56f);
+  float wF = 1e6f / (486.13f * 486.13f);
+  float wR = 1e6f / (SNELL_DISPERSION_LAMBDA_R * SNELL_DISPERSION_LAMBDA_R);
+  float wG = 1e6f / (SNELL_DISPERSION_LAMBDA_G * SNELL_DISPERSION_LAMBDA_G);
+  float wB = 1e6f / (SNELL_DISPERSION_LAMBDA_B * SNELL_DISPERSION_LAMBDA_B);
+  float k = (iorD - 1.0f) / (v * (wF - wC));
+  vec3 n = vec3(iorD + k * (wR - wD), iorD + k * (wG - wD), iorD + k * (wB - wD));
+  return clamp(n, vec3(1e-6f, 1e-6f, 1e-6f), vec3(1e6f, 1e6f, 1e6f));
+}
+
+SNELL_FN SnellDispersion snellDispersionRefract(vec3 incident, vec3 normal, float iorOutside, vec3 iors,
+                                                int policy) {
+  SnellRefraction r = snellRefract(incident, normal, snellIorToEta(iorOutside, iors.x), policy);
+  SnellRefraction g = snellRefract(incident, normal, snellIorToEta(iorOutside, iors.y), policy);
+  SnellRefraction b = snellRefract(incident, normal, snellIorToEta(iorOutside, iors.z), policy);
+  SnellDispersion d;
+  d.red = r.direction;
+  d.green = g.direction;
+  d.blue = b.direction;
+  d.tir = r.tir || g.tir || b.tir;
+  d.valid = r.valid && g.valid && b.valid;
+  return d;
+}
+
+#endif
+/*
+description: surface roughness -> mip level of the scene-colour texture, for
+  blurred (frosted) refraction: read S with SNELL_SAMPLE_LOD at this level of
+  a mipmapped (ideally pre-blurred) chain.
+use: float lod = snellRoughnessToLod(perceptualRoughness, levelCount);
+     vec4 c = SNELL_SAMPLE_LOD(sceneColor, uvRefracted, lod);
+  roughness  perceptual roughness in [0, 1] (0 smooth, 1 fully rough)
+  levels     number of mip levels of the texture (base level included), e.g.
+             floor(log2(max(width, height))) + 1 for a full chain
+options: -
+contract:
+  - lod = (levels - 1) r (2 - r) = (levels - 1) (1 - (1 - r)^2) with r = roughness clamped to [0, 1]: 0 at
+    r = 0, levels - 1 at r = 1, monotone non-decreasing in r, always in
+    [0, levels - 1] (finite);
+  - a NaN roughness counts as 0 (sharp); levels <= 1 gives 0.
+source: the quadratic fit of log2(roughness) + level used for prefiltered
+  environment maps in Google Filament (perceptualRoughnessToLod: lod =
+  iblRoughnessOneLevel * r * (2 - r), with the roughness-one level being the
+  last mip level), applied here to the scene-colour mip chain.
+*/
+#ifndef SNELL_SHADE_ROUGHNESS_GLSL
+#define SNELL_SHADE_ROUGHNESS_GLSL
+
+
+SNELL_FN float snellRoughnessToLod(float roughness, int levels) {
+  if (levels <= 1) {
+    return 0.0f;
+  }
+  // isnan first: clamp of a NaN differs between GPUs and GLM.
+  float r = isnan(roughness) ? 0.0f : clamp(roughness, 0.0f, 1.0f);
+  float top = float(levels - 1);
+  // r (2 - r) written as 1 - (1 - r)^2: the same value, but every step is
+  // monotone, so the rounded result is too (r * (2 - r) is not near r = 1).
+  float m = 1.0f - r;
+  return min(top * (1.0f - m * m), top);
+}
+
+#endif
+/*
+description: cube-map face selection: which face of a cube map a direction
+  reads, and the face coordinates (s, t) there, as the GL specification defines
+  it. The C++ snell::TextureCube (include/snell/texture_cube.hpp) samples
+  through this function, so its face choice and the GPU's cannot drift apart.
+use: SnellCubeFace f = snellCubeFaceUv(dir);  // f.face 0..5 = +X -X +Y -Y +Z -Z
+                                             // (GL_TEXTURE_CUBE_MAP_POSITIVE_X + f.face)
+  dir  direction (any length)
+options: -
+contract:
+  - the major axis is the component of largest magnitude; ties go to x over y
+    over z (|x| >= |y| and |x| >= |z| selects x; else |y| >= |z| selects y);
+    GL leaves ties to the implementation, so a texel exactly on a cube edge may
+    read the neighbouring face on a GPU;
+  - (sc, tc, ma) per face as the table below; s = 0.5 (sc / |ma| + 1),
+    t = 0.5 (tc / |ma| + 1), in [0, 1];
+      +X: (-z, -y, x)  -X: (+z, -y, x)  +Y: (+x, +z, y)
+      -Y: (+x, -z, y)  +Z: (+x, -y, z)  -Z: (-x, -y, z)
+  - valid = false, face 0, uv (0.5, 0.5) when dir is zero, denormal-small (every
+    component below the smallest normal float) or has a NaN/Inf component.
+source: OpenGL 4.5 core specification, sec. 8.13 "Cube Map Texture
+  Selection", table 8.19, equations 8.6-8.7.
+*/
+#ifndef SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
+#define SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
+
+
+
+struct SnellCubeFace {
+  int face;
+  vec2 uv;
+  bool valid;
+};
+
+/* GL 4.5 core, sec. 8.13, table 8.19 */
+SNELL_FN SnellCubeFace snellCubeFaceUv(vec3 dir) {
+  SnellCubeFace r;
+  r.face = 0;
+  r.uv = vec2(0.5f, 0.5f);
+  r.valid = false;
+  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
+    return r;
+  }
+  float ax = abs(dir.x);
+  float ay = abs(dir.y);
+  float az = abs(dir.z);
+  float sc = 0.0f;
+  float tc = 0.0f;
+  float ma = 0.0f;
+  if (ax >= ay && ax >= az) {
+    ma = ax;
+    r.face = dir.x >= 0.0f ? 0 : 1;
+    sc = dir.x >= 0.0f ? -dir.z : dir.z;
+    tc = -dir.y;
+  } else if (ay >= az) {
+    ma = ay;
+    r.face = dir.y >= 0.0f ? 2 : 3;
+    sc = dir.x;
+    tc = dir.y >= 0.0f ? dir.z : -dir.z;
+  } else {
+    ma = az;
+    r.face = dir.z >= 0.0f ? 4 : 5;
+    sc = dir.z >= 0.0f ? dir.x : -dir.x;
+    tc = -dir.y;
+  }
+  if (!(ma >= SNELL_FLT_MIN)) {
+    r.face = 0;
+    return r;
+  }
+  r.uv = vec2(0.5f * (sc / ma + 1.0f), 0.5f * (tc / ma + 1.0f));
+  r.valid = true;
+  return r;
+}
+
+#endif
+/*
+description: distant-environment lookups for the exit ray of a refraction
+  technique: equirectangular (latitude-longitude) maps in a plain 2D texture,
+  fully supported in every language, and cube maps through a hook. The
+  techniques read the environment only through SNELL_SAMPLE_ENVIRONMENT, so an
+  engine switches them to cube maps with two #defines.
+use: vec2 uv = snellEquirectUv(dirWorld);
+     vec4 c = snellSampleEquirect(envTex, dirWorld, lod);
+     float a = snellAtan2(y, x);
+  Cube maps (define before including snell, in GLSL or C++):
+     #define SNELL_ENVIRONMENT_TEX SNELL_TEXCUBE
+     #define SNELL_SAMPLE_ENVIRONMENT(tex, dir, lod) SNELL_SAMPLE_CUBE_LOD(tex, dir, lod)
+     (C++: include <snell/texture_cube.hpp> first; it defines snell::TextureCube.)
+options (hooks; define before this file to override):
+  SNELL_TEXCUBE                        cube texture parameter type (GLSL samplerCube,
+                                       C++ const snell::TextureCube&, HLSL TextureCube<float4>)
+  SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) vec4 of a cube map along dir at explicit lod
+  SNELL_ENVIRONMENT_TEX                the environment parameter type of the
+                                       techniques (default SNELL_TEX2D: equirectangular)
+  SNELL_SAMPLE_ENVIRONMENT(tex, dir, lod)  the techniques' environment read
+                                       (default snellSampleEquirect(tex, dir, lod))
+contract:
+  - snellAtan2(y, x): the angle of (x, y) in (-pi, pi], from an odd degree-9
+    polynomial of the octant-reduced ratio (max error ~1e-5 rad) using only
+    +, *, /, abs and comparisons, so every language computes the same value up
+    to rounding (the builtin atan(y, x) differs between GLSL and HLSL in
+    argument order and between drivers in precision). atan2(0, 0) = 0; y = 0,
+    x < 0 gives pi (also for y = -0); NaN input gives 0; infinities are
+    treated as the ratio 1 per octant.
+  - snellEquirectUv(d): u = 0.5 + atan2(d.x, -d.z) / (2 pi) (the -Z view
+    direction is the centre column, +X to the right, u increases clockwise seen
+    from above), v = 0.5 + atan2(d.y, |(d.x, d.z)|) / pi (v = 1 straight up,
+    +Y; GL row 0 is the bottom row = straight down). d need not be unit
+    length. Zero, NaN or Inf directions give (0.5, 0.5).
+  - snellSampleEquirect: SNELL_SAMPLE_LOD(env, snellEquirectUv(d), lod). The
+    seam at u = 0/1 is filtered with the texture's own wrap mode (clamp to edge
+    in snell::Texture2D: a one-texel seam; GL_REPEAT in s hides it on a GPU,
+    but then C++ and GL differ at the seam).
+source: equirectangular (plate carree) environment mapping, e.g. Pharr, Jakob
+  & Humphreys, PBRT 3rd ed., sec. 12.6 (InfiniteAreaLight, spherical
+  coordinates); atan polynomial: C. Hastings, "Approximations for Digital
+  Computers" (1955), sheet 11 (odd minimax polynomial on [0, 1]); cube maps:
+  environment_cube_face.glsl.
+*/
+#ifndef SNELL_SHADE_ENVIRONMENT_GLSL
+#define SNELL_SHADE_ENVIRONMENT_GLSL
+
+
+
+
+#if defined(SNELL_LANG_GLSL)
+#  ifndef SNELL_TEXCUBE
+#    define SNELL_TEXCUBE samplerCube
+#  endif
+#  ifndef SNELL_SAMPLE_CUBE_LOD
+#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) textureLod(tex, dir, lod)
+#  endif
+#elif defined(SNELL_LANG_HLSL)
+#  ifndef SNELL_TEXCUBE
+#    define SNELL_TEXCUBE TextureCube<float4>
+#  endif
+#  ifndef SNELL_SAMPLE_CUBE_LOD
+#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) ((tex).SampleLevel(SNELL_HLSL_SAMPLER, dir, lod))
+#  endif
+#else
+#  ifndef SNELL_TEXCUBE
+#    define SNELL_TEXCUBE const ::snell::TextureCube&
+#  endif
+#  ifndef SNELL_SAMPLE_CUBE_LOD
+#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) ((tex).sampleLod(dir, lod))
+#  endif
+#endif
+
+#ifndef SNELL_ENVIRONMENT_TEX
+#  define SNELL_ENVIRONMENT_TEX SNELL_TEX2D
+#endif
+#ifndef SNELL_SAMPLE_ENVIRONMENT
+#  define SNELL_SAMPLE_ENVIRONMENT(tex, dir, lod) snellSampleEquirect(tex, dir, lod)
+#endif
+
+/* Hastings 1955: atan(a) ~ a (c1 + c3 a^2 + c5 a^4 + c7 a^6 + c9 a^8) on [0, 1] */
+SNELL_FN float snellAtan2(float y, float x) {
+  if (isnan(x) || isnan(y)) {
+    return 0.0f;
+  }
+  float ax = abs(x);
+  float ay = abs(y);
+  float hi = max(ax, ay);
+  float lo = min(ax, ay);
+  if (!(hi > 0.0f)) {
+    return 0.0f;
+  }
+  float a = isinf(hi) ? (isinf(lo) ? 1.0f : 0.0f) : lo / hi;
+  float s = a * a;
+  float r = a * (0.9998660f + s * (-0.3302995f + s * (0.1801410f + s * (-0.0851330f + s * 0.0208351f))));
+  if (ay > ax) {
+    r = 1.57079632679f - r;
+  }
+  if (x < 0.0f) {
+    r = 3.14159265359f - r;
+  }
+  if (y < 0.0f) {
+    r = -r;
+  }
+  return r;
+}
+
+SNELL_FN vec2 snellEquirectUv(vec3 dir) {
+  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
+    return vec2(0.5f, 0.5f);
+  }
+  float horizontal = sqrt(dir.x * dir.x + dir.z * dir.z);
+  float u = 0.5f + snellAtan2(dir.x, -dir.z) * (0.5f / SNELL_PI);
+  float v = 0.5f + snellAtan2(dir.y, horizontal) * (1.0f / SNELL_PI);
+  return vec2(u, v);
+}
+
+SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
+  return SNELL_SAMPLE_LOD(env, snellEquirectUv(dir), lod);
+}
+
+#endif
+/*
+description: the knobs of a two-interface refraction technique: which
+  intersection strategy fills each slot (GLSL has no function pointers, so a
+  strategy is an int constant that snellIntersectWith dispatches on), its
+  parameters, and the optics and shading options. Both structs come with a
+  constructor that fills every field with the documented default; presets
+  (technique_presets.glsl) start from these.
+use: SnellIntersectOptions io = snellIntersectOptions(SNELL_STRATEGY_CBS);
+     io.steps = 8;
+     SnellTechniqueOptions o = snellTechniqueOptions();
+     o.back = io; o.exitMode = SNELL_EXIT_SCENE; o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
+options (strategy constants, the values of SnellIntersectOptions.strategy):
+  SNELL_STRATEGY_SINGLE         0  snellIntersectSingleSample (1 fetch)
+  SNELL_STRATEGY_PLANE_NORMAL   1  snellIntersectPlaneNormal, `steps` iterations
+  SNELL_STRATEGY_PLANE_DEPTH    2  snellIntersectPlaneDepth, `steps` iterations,
+                                   reads the pyramid texture as depth mips
+  SNELL_STRATEGY_CBS            3  snellConservativeBinarySearch, `steps` steps
+  SNELL_STRATEGY_BINARY         4  snellBinarySearch, `steps` steps
+  SNELL_STRATEGY_LINEAR_BINARY  5  snellLinearBinarySearch, `steps` linear +
+                                   `refineSteps` binary steps
+  SNELL_STRATEGY_LINEAR_MARCH   6  snellLinearMarch, `steps` steps, `refineSteps`
+                                   bisections, over `maxDistance`
+  SNELL_STRATEGY_DDA            7  snellDdaMarch, `steps`, `stride`, `thickness`,
+                                   `maxDistance`
+  SNELL_STRATEGY_WYMAN          8  Wyman 2005 distance interpolation (first slot
+                                   of snellTwoInterfaceTrace only; it needs the
+                                   per-vertex d_N). snellIntersectWith treats it
+                                   as SINGLE, which is Wyman's estimate with
+                                   d = d_V (ratio 1)
+  range sources (searches): SNELL_RANGE_PYRAMID 0 (top level of the pyramid
+  texture, snellDepthRangeFromPyramid), SNELL_RANGE_EXPLICIT 1 (zNearest and
+  zFarthest fields: a bounding box, snellDepthRangeFromBox)
+  exit modes: SNELL_EXIT_ENVIRONMENT 0 (distant environment along T2),
+  SNELL_EXIT_SCENE 1 (the opaque scene's depth/colour buffers, exit slot)
+  reflection modes (the first surface's reflected ray R, when reflection is
+  on): SNELL_REFLECT_ENVIRONMENT 0 (the environment along R),
+  SNELL_REFLECT_SCENE 1 (R from P1 against the opaque scene's buffers with the
+  `reflect` slot's strategy, the environment where it finds nothing:
+  screen-space reflection, what a ray tracer's F bg(R) computes)
+  fallbacks when the exit-slot hit is invalid: SNELL_FALLBACK_ENVIRONMENT 0
+  (environment along T2), SNELL_FALLBACK_EDGE_FADE 1 (scene colour at the
+  clamped projection of P2 + fallbackDistance T2, faded to the environment
+  over edgeFadeWidth of uv near and beyond the screen edge)
+contract (defaults):
+  SnellIntersectOptions: steps = SNELL_CBS_STEPS (CBS), SNELL_BINARY_SEARCH_STEPS
+  (BINARY), SNELL_LINEAR_SEARCH_STEPS (LINEAR_BINARY), SNELL_PLANE_ITERATIONS
+  (planes), SNELL_LINEAR_MARCH_STEPS, SNELL_DDA_STEPS, 0 (SINGLE, WYMAN);
+  refineSteps = SNELL_BINARY_SEARCH_STEPS (LINEAR_BINARY),
+  SNELL_LINEAR_MARCH_REFINE_STEPS (LINEAR_MARCH), else 0; maxDistance =
+  SNELL_LINEAR_MARCH_MAX_DISTANCE (LINEAR_MARCH) or SNELL_DDA_MAX_DISTANCE;
+  thickness = SNELL_DDA_THICKNESS; stride = SNELL_DDA_STRIDE; normalLod = 0;
+  maxLod = -1 (the pyramid's top level); rangeSource = PYRAMID; zNearest =
+  zFarthest = 0; depthFilter = SNELL_DEPTH_FILTER_NEAREST (how the strategy reads
+  the depth buffer: intersect/depth_surface.glsl; the dispatcher hands it to the
+  strategy in the surface's depthFilter field). An unknown strategy is stored as given (snellIntersectWith
+  answers it with a miss).
+  SnellTechniqueOptions: back = CBS, exit = PLANE_NORMAL, exitMode =
+  ENVIRONMENT, fallback = ENVIRONMENT, fallbackDistance = 1, edgeFadeWidth =
+  0.1, tirPolicy = SNELL_TIR_CRITICAL (Wyman 2005, O&B 2007 sec. 5), ior = 1.5,
+  iorOutside = 1, dispersion = 1 (one trace; 3 = one per channel with iors,
+  e.g. snellDispersionIors(1.5168f, 64.17f) from shade/dispersion.glsl), iors =
+  (1.5, 1.5, 1.5), absorption = 0 (Beer-Lambert sigma per channel, per view
+  unit), reflection = true (Fresnel-weighted reflection at the first
+  interface), reflectionMode = ENVIRONMENT, reflect = LINEAR_MARCH (its
+  defaults; read only in SCENE mode), roughness = 0, sceneColorLevels = environmentLevels = 1
+  (mip levels for snellRoughnessToLod), envX/envY/envZ = the columns of the
+  world-from-view rotation used for environment lookups (identity).
+source: the composition of DESIGN.md sec. 2 (a technique = optics, an
+  intersector against the back faces, optics, an intersector against the scene
+  or an environment lookup); Oliveira & Brauwers 2007 sec. 3; Mayer &
+  Assarsson, "Constant-Time Light Refraction Simulation".
+*/
+#ifndef SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
+#define SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
+
+
+
+
+
+
+
+
+
+
+#define SNELL_STRATEGY_SINGLE 0
+#define SNELL_STRATEGY_PLANE_NORMAL 1
+#define SNELL_STRATEGY_PLANE_DEPTH 2
+#define SNELL_STRATEGY_CBS 3
+#define SNELL_STRATEGY_BINARY 4
+#define SNELL_STRATEGY_LINEAR_BINARY 5
+#define SNELL_STRATEGY_LINEAR_MARCH 6
+#define SNELL_STRATEGY_DDA 7
+#define SNELL_STRATEGY_WYMAN 8
+
+#define SNELL_RANGE_PYRAMID 0
+#define SNELL_RANGE_EXPLICIT 1
+
+#define SNELL_EXIT_ENVIRONMENT 0
+#define SNELL_EXIT_SCENE 1
+
+#define SNELL_FALLBACK_ENVIRONMENT 0
+#define SNELL_FALLBACK_EDGE_FADE 1
+
+#define SNELL_REFLECT_ENVIRONMENT 0
+#define SNELL_REFLECT_SCENE 1
+
+struct SnellIntersectOptions {
+  int strategy;
+  int steps;
+  int refineSteps;
+  float maxDistance;
+  float thickness;
+  float stride;
+  float normalLod;
+  int maxLod;
+  int rangeSource;
+  float zNearest;
+  float zFarthest;
+  int depthFilter;
+};
+
+struct SnellTechniqueOptions {
+  SnellIntersectOptions back;
+  SnellIntersectOptions exit;
+  int exitMode;
+  int fallback;
+  float fallbackDistance;
+  float edgeFadeWidth;
+  int tirPolicy;
+  float ior;
+  float iorOutside;
+  int dispersion;
+  vec3 iors;
+  vec3 absorption;
+  bool reflection;
+  int reflectionMode;
+  SnellIntersectOptions reflect;
+  float roughness;
+  int sceneColorLevels;
+  int environmentLevels;
+  vec3 envX;
+  vec3 envY;
+  vec3 envZ;
+};
+
+SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
+  SnellIntersectOptions o;
+  o.strategy = strategy;
+  o.steps = 0;
+  o.refineSteps = 0;
+  o.maxDistance = SNELL_DDA_MAX_DISTANCE;
+  o.thickness = SNELL_DDA_THICKNESS;
+  o.stride = SNELL_DDA_STRIDE;
+  o.normalLod = 0.0f;
+  o.maxLod = -1;
+  o.rangeSource = SNELL_RANGE_PYRAMID;
+  o.zNearest = 0.0f;
+  o.zFarthest = 0.0f;
+  o.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+  if (strategy == SNELL_STRATEGY_CBS) {
+    o.steps = SNELL_CBS_STEPS;
+  } else if (strategy == SNELL_STRATEGY_BINARY) {
+    o.steps = SNELL_BINARY_SEARCH_STEPS;
+  } else if (strategy == SNELL_STRATEGY_LINEAR_BINARY) {
+    o.steps = SNELL_LINEAR_SEARCH_STEPS;
+    o.refineSteps = SNELL_BINARY_SEARCH_STEPS;
+  } else if (strategy == SNELL_STRATEGY_PLANE_NORMAL || strategy == SNELL_STRATEGY_PLANE_DEPTH) {
+    o.steps = SNELL_PLANE_ITERATIONS;
+  } else if (strategy == SNELL_STRATEGY_LINEAR_MARCH) {
+    o.steps = SNELL_LINEAR_MARCH_STEPS;
+    o.refineSteps = SNELL_LINEAR_MARCH_REFINE_STEPS;
+    o.maxDistance = SNELL_LINEAR_MARCH_MAX_DISTANCE;
+  } else if (strategy == SNELL_STRATEGY_DDA) {
+    o.steps = SNELL_DDA_STEPS;
+  }
+  return o;
+}
+
+SNELL_FN SnellTechniqueOptions snellTechniqueOptions() {
+  SnellTechniqueOptions o;
+  o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
+  o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
+  o.exitMode = SNELL_EXIT_ENVIRONMENT;
+  o.fallback = SNELL_FALLBACK_ENVIRONMENT;
+  o.fallbackDistance = 1.0f;
+  o.edgeFadeWidth = 0.1f;
+  o.tirPolicy = SNELL_TIR_CRITICAL;
+  o.ior = 1.5f;
+  o.iorOutside = 1.0f;
+  o.dispersion = 1;
+  o.iors = vec3(1.5f, 1.5f, 1.5f);
+  o.absorption = vec3(0.0f, 0.0f, 0.0f);
+  o.reflection = true;
+  o.reflectionMode = SNELL_REFLECT_ENVIRONMENT;
+  o.reflect = snellIntersectOptions(SNELL_STRATEGY_LINEAR_MARCH);
+  o.roughness = 0.0f;
+  o.sceneColorLevels = 1;
+  o.environmentLevels = 1;
+  o.envX = vec3(1.0f, 0.0f, 0.0f);
+  o.envY = vec3(0.0f, 1.0f, 0.0f);
+  o.envZ = vec3(0.0f, 0.0f, 1.0f);
+  return o;
+}
+
+#endif
+/*
+description: named presets for the published two-interface refraction methods
+  and the baselines, all through the same technique (snellTwoInterfaceTrace /
+  snellTwoInterfaceRefraction), so the lab compares them fairly. Each returns
+  snellTechniqueOptions() with both intersection slots set.
+use: SnellTechniqueOptions o = snellPresetDir();           // then adjust fields
+     SnellTechniqueOptions o = snellPresetPlaneNormal(2);
+presets (back slot / exit slot):
+  snellPresetDir()                 Oliveira & Brauwers 2007 (DIR): CBS, 5 steps,
+                                   range from the min/max pyramid's top level /
+                                   the same
+  snellPresetDirBounds(zNearest, zFarthest)  DIR with the bounding-box range
+                                   (their suggested speed-up: no reduction
+                                   pass); the numbers from snellDepthRangeFromBox;
+                                   back slot only, the exit slot keeps the pyramid
+  snellPresetIsr()                 Wyman 2005 (ISR): distance interpolation
+                                   between d_V and the per-vertex d_N /
+                                   single sample
+  snellPresetPlaneNormal(n)        Mayer & Assarsson, normal-based plane, n
+                                   refinement iterations / the same
+  snellPresetPlaneDepth(n)         Mayer & Assarsson, depth-based plane (depth
+                                   mips = the pyramid), n iterations / the same
+  snellPresetSingleSample()        the single-sample (GPU Gems) baseline / the same
+  snellPresetLinearMarch()         screen-space ray march, view-space steps +
+                                   bisection / the same
+  snellPresetDdaMarch()            perspective-correct pixel DDA march / the same
+  snellPresetImageSpaceBound()     not a real-time method: the best any
+                                   image-space technique can do with the same
+                                   buffers, for measuring the others against:
+                                   the linear march at its compile-time limits
+                                   (SNELL_LINEAR_MARCH_MAX_STEPS steps of at
+                                   most ~1 px, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS
+                                   bisections) on bilinear depth reads
+                                   (SNELL_DEPTH_FILTER_BILINEAR: exact on
+                                   planes between texel centres) / the same; set back.maxDistance
+                                   and exit.maxDistance to the depths the
+                                   object and the scene span
+the technique table (the one list of named techniques: snell-lab's
+  --technique names, the benchmarks and the tests all draw on it; names and
+  labels for C++ in include/snell/technique_table.hpp):
+  id                              name            preset
+  SNELL_TECHNIQUE_SINGLE          single          snellPresetSingleSample()
+  SNELL_TECHNIQUE_PLANE_NORMAL_0  plane-normal-0  snellPresetPlaneNormal(0)
+  SNELL_TECHNIQUE_PLANE_NORMAL_1  plane-normal-1  snellPresetPlaneNormal(1)
+  SNELL_TECHNIQUE_PLANE_NORMAL_2  plane-normal-2  snellPresetPlaneNormal(2)
+  SNELL_TECHNIQUE_PLANE_DEPTH     plane-depth     snellPresetPlaneDepth(1)
+  SNELL_TECHNIQUE_DIR             dir             snellPresetDir()
+  SNELL_TECHNIQUE_ISR             isr             snellPresetIsr()
+  SNELL_TECHNIQUE_LINEAR_MARCH    linear-march    snellPresetLinearMarch()
+  SNELL_TECHNIQUE_DDA             dda             snellPresetDdaMarch()
+  SNELL_TECHNIQUE_IMAGE_SPACE_BOUND  image-space-bound  snellPresetImageSpaceBound()
+  SNELL_TECHNIQUE_COUNT           the number of ids (ids are 0 .. COUNT - 1)
+  SnellTechniqueOptions o = snellTechniquePreset(SNELL_TECHNIQUE_PLANE_NORMAL_1);
+  Adding a technique: a preset function here, an id, a branch in
+  snellTechniquePreset and a row in include/snell/technique_table.hpp (a
+  compile-time check there keeps the two the same length).
+options: the defaults of technique_options.glsl and of each strategy's file.
+contract: pure constructors, no texture access; iteration counts are stored as
+  given (each strategy clamps them). snellTechniquePreset of an id outside
+  0 .. SNELL_TECHNIQUE_COUNT - 1: snellTechniquePresetSlots(-1, -1), whose
+  slots answer every ray with a miss (snellIntersectWith).
+source: Oliveira & Brauwers 2007 (sec. 3.3, 5 steps; sec. 6, bounding box);
+  Wyman 2005 via O&B 2007 sec. 2.1, eqs. 1-2; Mayer & Assarsson,
+  "Constant-Time Light Refraction Simulation" (methods 1 and 2, step 5);
+  McGuire & Mara 2014 (DDA).
+*/
+#ifndef SNELL_SHADE_TECHNIQUE_PRESETS_GLSL
+#define SNELL_SHADE_TECHNIQUE_PRESETS_GLSL
+
+
+
+SNELL_FN SnellTechniqueOptions snellTechniquePresetSlots(int backStrategy, int exitStrategy) {
+  SnellTechniqueOptions o = snellTechniqueOptions();
+  o.back = snellIntersectOptions(backStrategy);
+  o.exit = snellIntersectOptions(exitStrategy);
+  return o;
+}
+
+/* Oliveira & Brauwers 2007, sec. 3.3: CBS with c = 5 */
+SNELL_FN SnellTechniqueOptions snellPresetDir() {
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_CBS, SNELL_STRATEGY_CBS);
+  o.back.steps = 5;
+  o.exit.steps = 5;
+  return o;
+}
+
+/* Oliveira & Brauwers 2007, sec. 6: bounding-box range instead of the reduction */
+SNELL_FN SnellTechniqueOptions snellPresetDirBounds(float zNearest, float zFarthest) {
+  SnellTechniqueOptions o = snellPresetDir();
+  o.back.rangeSource = SNELL_RANGE_EXPLICIT;
+  o.back.zNearest = zNearest;
+  o.back.zFarthest = zFarthest;
+  return o;
+}
+
+/* Wyman 2005 (O&B 2007 eqs. 1-2) */
+SNELL_FN SnellTechniqueOptions snellPresetIsr() {
+  return snellTechniquePresetSlots(SNELL_STRATEGY_WYMAN, SNELL_STRATEGY_SINGLE);
+}
+
+/* Mayer & Assarsson, method 1 + step 5 */
+SNELL_FN SnellTechniqueOptions snellPresetPlaneNormal(int iterations) {
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_NORMAL, SNELL_STRATEGY_PLANE_NORMAL);
+  o.back.steps = iterations;
+  o.exit.steps = iterations;
+  return o;
+}
+
+/* Mayer & Assarsson, method 2 + step 5 */
+SNELL_FN SnellTechniqueOptions snellPresetPlaneDepth(int iterations) {
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_DEPTH, SNELL_STRATEGY_PLANE_DEPTH);
+  o.back.steps = iterations;
+  o.exit.steps = iterations;
+  return o;
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetSingleSample() {
+  return snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetLinearMarch() {
+  return snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetDdaMarch() {
+  return snellTechniquePresetSlots(SNELL_STRATEGY_DDA, SNELL_STRATEGY_DDA);
+}
+
+/* The image-space bound: the linear march at its limits, both slots. */
+SNELL_FN SnellTechniqueOptions snellPresetImageSpaceBound() {
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
+  o.back.steps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  o.back.refineSteps = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  o.exit.steps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  o.exit.refineSteps = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  o.back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  o.exit.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  return o;
+}
+
+#define SNELL_TECHNIQUE_SINGLE 0
+#define SNELL_TECHNIQUE_PLANE_NORMAL_0 1
+#define SNELL_TECHNIQUE_PLANE_NORMAL_1 2
+#define SNELL_TECHNIQUE_PLANE_NORMAL_2 3
+#define SNELL_TECHNIQUE_PLANE_DEPTH 4
+#define SNELL_TECHNIQUE_DIR 5
+#define SNELL_TECHNIQUE_ISR 6
+#define SNELL_TECHNIQUE_LINEAR_MARCH 7
+#define SNELL_TECHNIQUE_DDA 8
+#define SNELL_TECHNIQUE_IMAGE_SPACE_BOUND 9
+#define SNELL_TECHNIQUE_COUNT 10
+
+/* the technique table's constructor: id -> preset */
+SNELL_FN SnellTechniqueOptions snellTechniquePreset(int technique) {
+  if (technique == SNELL_TECHNIQUE_SINGLE) {
+    return snellPresetSingleSample();
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_0) {
+    return snellPresetPlaneNormal(0);
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_1) {
+    return snellPresetPlaneNormal(1);
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_2) {
+    return snellPresetPlaneNormal(2);
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_DEPTH) {
+    return snellPresetPlaneDepth(1);
+  }
+  if (technique == SNELL_TECHNIQUE_DIR) {
+    return snellPresetDir();
+  }
+  if (technique == SNELL_TECHNIQUE_ISR) {
+    return snellPresetIsr();
+  }
+  if (technique == SNELL_TECHNIQUE_LINEAR_MARCH) {
+    return snellPresetLinearMarch();
+  }
+  if (technique == SNELL_TECHNIQUE_DDA) {
+    return snellPresetDdaMarch();
+  }
+  if (technique == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND) {
+    return snellPresetImageSpaceBound();
+  }
+  return snellTechniquePresetSlots(-1, -1);
+}
+
+#endif
+/*
+description: the strategy dispatcher: one call that runs any intersection
+  strategy of intersect/ against a depth buffer, chosen by an int constant, so
+  the back-face slot and the scene slot of a technique are interchangeable.
+use: SnellHit h = snellIntersectWith(SNELL_STRATEGY_CBS, origin, dir, depthTex, normalTex,
+                                     pyramidTex, surface, snellIntersectOptions(SNELL_STRATEGY_CBS));
+  strategy    SNELL_STRATEGY_* (technique_options.glsl); usually o.strategy
+  origin, dir view-space ray (P1, T1 for the back faces; P2, T2 for the scene)
+  depthTex    the depth buffer `surface` describes
+  normalTex   its view-space normals (PLANE_NORMAL only; any texture otherwise)
+  pyramidTex  its depth min/max pyramid (intersect/depth_pyramid.glsl), full mip
+              chain: the search range for CBS / BINARY / LINEAR_BINARY when
+              o.rangeSource is SNELL_RANGE_PYRAMID, and the depth mips of
+              PLANE_DEPTH (its .x is the mean depth value)
+  o           parameters (snellIntersectOptions(strategy) gives the defaults)
+options:
+  SNELL_TECHNIQUE_STRATEGIES  bit mask of the strategies compiled in (bit k =
+                              strategy k, 0x1FF = all, the default). Every
+                              technique call inlines the dispatcher, and with
+                              it every strategy: a shader that uses one or two
+                              presets compiles much faster (llvmpipe: minutes
+                              -> seconds) with only their bits, e.g.
+                              #define SNELL_TECHNIQUE_STRATEGIES ((1 << SNELL_STRATEGY_CBS) | 1)
+                              A strategy left out answers snellHitMiss(0).
+  the rest: technique_options.glsl
+contract:
+  - SINGLE and WYMAN: snellIntersectSingleSample(origin, dir, depthTex, surface).
+  - PLANE_NORMAL: snellIntersectPlaneNormal(.., normalTex, surface, o.normalLod, o.steps).
+  - PLANE_DEPTH: snellIntersectPlaneDepth(origin, dir, pyramidTex, surface,
+    maxLod, o.steps), maxLod = o.maxLod, or snellTextureTopLod(pyramidTex) when
+    o.maxLod < 0.
+  - CBS / BINARY / LINEAR_BINARY: the range [zNearest, zFarthest] is
+    snellDepthRangeFromPyramid(pyramidTex) (1 fetch, counted in h.fetches) or
+    (o.zNearest, o.zFarthest); an invalid pyramid range is a miss with that
+    fetch; then the strategy with o.steps (and o.refineSteps for LINEAR_BINARY).
+  - LINEAR_MARCH: snellLinearMarch(.., o.maxDistance, o.steps, o.refineSteps);
+    DDA: snellDdaMarch(.., o.maxDistance, o.thickness, o.stride, o.steps).
+  - any other strategy value: snellHitMiss(0).
+  - every result is the strategy's own SnellHit (contracts in intersect/), with
+    the range fetch added.
+  - the strategy reads the surface with o.depthFilter (the surface's
+    depthFilter field is replaced by it).
+source: DESIGN.md sec. 2 ("every intersector is interchangeable in both
+  slots"); the strategies' own sources.
+*/
+#ifndef SNELL_SHADE_TECHNIQUE_INTERSECT_GLSL
+#define SNELL_SHADE_TECHNIQUE_INTERSECT_GLSL
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+#ifndef SNELL_TECHNIQUE_STRATEGIES
+#  define SNELL_TECHNIQUE_STRATEGIES 0x1FF
+#endif
+/* true when strategy k is compiled in (a constant expression: the branch folds away) */
+#define SNELL_TECHNIQUE_HAS(k) ((SNELL_TECHNIQUE_STRATEGIES & (1 << (k))) != 0)
+
+SNELL_FN SnellHit snellIntersectWith(int strategy, vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
+                                     SNELL_TEX2D pyramidTex, SnellDepthSurface readAs, SnellIntersectOptions o) {
+  SnellDepthSurface surface = readAs;
+  surface.depthFilter = o.depthFilter;
+  if ((SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_SINGLE) && strategy == SNELL_STRATEGY_SINGLE) ||
+      (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_WYMAN) && strategy == SNELL_STRATEGY_WYMAN)) {
+    return snellIntersectSingleSample(origin, dir, depthTex, surface);
+  }
+  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_PLANE_NORMAL) && strategy == SNELL_STRATEGY_PLANE_NORMAL) {
+    return snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, surface, o.normalLod, o.steps);
+  }
+  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_PLANE_DEPTH) && strategy == SNELL_STRATEGY_PLANE_DEPTH) {
+    int maxLod = o.maxLod >= 0 ? o.maxLod : snellTextureTopLod(pyramidTex);
+    return snellIntersectPlaneDepth(origin, dir, pyramidTex, surface, maxLod, o.steps);
+  }
+  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_LINEAR_MARCH) && strategy == SNELL_STRATEGY_LINEAR_MARCH) {
+    return snellLinearMarch(origin, dir, depthTex, surface, o.maxDistance, o.steps, o.refineSteps);
+  }
+  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_DDA) && strategy == SNELL_STRATEGY_DDA) {
+    return snellDdaMarch(origin, dir, depthTex, surface, o.maxDistance, o.thickness, o.stride, o.steps);
+  }
+  bool cbs = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_CBS) && strategy == SNELL_STRATEGY_CBS;
+  bool binary = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_BINARY) && strategy == SNELL_STRATEGY_BINARY;
+  bool linearBinary = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_LINEAR_BINARY) && strategy == SNELL_STRATEGY_LINEAR_BINARY;
+  if (!cbs && !binary && !linearBinary) {
+    return snellHitMiss(0);
+  }
+  SnellDepthRange range;
+  int rangeFetches = 0;
+  if (o.rangeSource == SNELL_RANGE_EXPLICIT) {
+    range.zNearest = o.zNearest;
+    range.zFarthest = o.zFarthest;
+    range.valid = true;
+  } else {
+    range = snellDepthRangeFromPyramid(pyramidTex);
+    rangeFetches = 1;
+  }
+  if (!range.valid) {
+    return snellHitMiss(rangeFetches);
+  }
+  SnellHit h;
+  if (cbs) {
+    h = snellConservativeBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps);
+  } else if (binary) {
+    h = snellBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps);
+  } else {
+    h = snellLinearBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps,
+                                o.refineSteps);
+  }
+  h.fetches = h.fetches + rangeFetches;
+  return h;
+}
+
+#endif
+/*
+description: the geometry of two-interface refraction: refract the view ray at
+  the front face, find where the refracted ray T1 leaves the object in the
+  back-face depth buffer with any intersection strategy (or Wyman's distance
+  interpolation), refract again with the back-face normal found there. The
+  exit ray (P2, T2) is then resolved by two_interface_shade.glsl against the
+  opaque scene or the environment.
+use: SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN,
+         backDepth, backNormal, backPyramid, backSurface, o.back, o.tirPolicy);
+  frontPosition  P1: view-space position of the front-face fragment (camera at
+                 the origin, so the view ray V is frontPosition itself)
+  frontNormal    N1: its normal (either orientation, any length)
+  eta            n_outside / n_object (snellIorToEta(1.0f, 1.5f) for glass in air)
+  dN             Wyman's d_N: thickness along -N1, interpolated from the per-vertex
+                 values the host precomputes (include/snell/wyman_dn.hpp); read
+                 only by SNELL_STRATEGY_WYMAN
+  backDepth, backNormal, backPyramid, backSurface
+                 the back-face pass: depth (GL_GREATER after clearing to the near
+                 value), view-space normals, the depth min/max pyramid of that
+                 depth (snellBuildDepthPyramid / examples/glsl/depth_pyramid.frag),
+                 and how to read the depth (emptyDepth = the clear value)
+  o              the back slot's options (strategy and parameters)
+  tirPolicy      SNELL_TIR_ZERO / _CRITICAL / _REFLECT, both interfaces
+options: technique_options.glsl, and
+  SNELL_TWO_INTERFACE_NORMAL_SAMPLE  how N2 is read from backNormal at the hit
+                 uv: 1 (default) SNELL_SAMPLE_LOD at level 0 with the texture's
+                 own filter (bilinear for a LINEAR texture: the normal at the hit
+                 point, not at the centre of its texel; NEAREST gives the texel
+                 containing the uv, as 0 does); 0 SNELL_TEXEL_FETCH of the texel
+                 containing the uv (level 0)
+contract:
+  - T1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy). If it is
+    invalid or zero (NaN/zero inputs, eta not finite positive; TIR under ZERO
+    when eta > 1), the path is invalid: valid = false, every vector 0, fetches 0.
+  - WYMAN: one sample of the back depth at the projection of P1 gives d_V =
+    |P1| (zBack / P1.z - 1) (front-to-back distance along the view ray); d =
+    snellWymanDistanceVec(P1, N1, T1, d_V, dN); P2 = P1 + d T1, accepted when
+    snellHitOnSurface(P2) is valid (the back buffer has a surface there; 2
+    fetches). Every other strategy: snellIntersectWith(o.strategy, P1, T1, ...).
+  - on a hit: N2 = xyz of the back normal read at the hit uv, level 0
+    (SNELL_TWO_INTERFACE_NORMAL_SAMPLE: filtered sample or texel fetch; 1
+    fetch), normalized and flipped to face T1 (dot(N2, T1) <= 0); T2 =
+    snellRefract(T1, N2, 1 / eta, tirPolicy). hit = true, exitPoint = P2,
+    exitUv = the hit uv, exitNormal = N2, pathLength = |P2 - P1|, tir = TIR at
+    the second interface (T2 follows the policy: critical-angle tangent or
+    mirror; the reflected ray is not traced further).
+  - fallback (fellBack = true, the path still valid): no back hit (invalid or
+    off-screen texel, empty range; a hit so far that |P2 - P1| overflows a
+    float, beyond ~1.8e19 view units, counts as none), a zero or NaN stored
+    normal, or TIR under SNELL_TIR_ZERO: the ray leaves as if the second
+    interface did not bend it: exitPoint = P2 when found, else P1,
+    exitDirection = T1, pathLength = |P2 - P1| when P2 was found, else 0.
+  - fetches: the strategy's count plus the normal fetch.
+source: C. Wyman, "An Approximate Image-Space Approach for Interactive
+  Refraction", SIGGRAPH 2005 (two interfaces, back-face normal and depth
+  buffers); M. M. Oliveira & M. Brauwers, "Real-Time Refraction Through
+  Deformable Objects", I3D 2007, sec. 2.1 (eqs. 1-2), sec. 3 (intersecting T1
+  with the back-face depth map, N2 from the normal map at the hit), sec. 5
+  (critical-angle TIR policy).
+*/
+#ifndef SNELL_SHADE_TWO_INTERFACE_GLSL
+#define SNELL_SHADE_TWO_INTERFACE_GLSL
+
+
+
+
+
+
+
+
+
+
+
+
+#ifndef SNELL_TWO_INTERFACE_NORMAL_SAMPLE
+#  define SNELL_TWO_INTERFACE_NORMAL_SAMPLE 1
+#endif
+
+struct SnellTwoInterfacePath {
+  vec3 entryDirection;  // T1
+  vec3 exitPoint;       // P2 (P1 when no back hit)
+  vec3 exitNormal;      // N2, facing T1
+  vec3 exitDirection;   // T2 (T1 on fallback)
+  vec2 exitUv;          // uv of P2 in the back buffers
+  float pathLength;     // |P2 - P1|
+  int fetches;
+  bool hit;
+  bool tir;
+  bool fellBack;
+  bool valid;
+};
+
+/* Wyman 2005 / Oliveira & Brauwers 2007 sec. 3: P1, T1 -> P2 (back-face buffer), N2 -> T2 */
+SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
+                                                      SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
+                                                      SNELL_TEX2D backPyramid, SnellDepthSurface back,
+                                                      SnellIntersectOptions o, int tirPolicy) {
+  SnellTwoInterfacePath p;
+  p.entryDirection = vec3(0.0f, 0.0f, 0.0f);
+  p.exitPoint = vec3(0.0f, 0.0f, 0.0f);
+  p.exitNormal = vec3(0.0f, 0.0f, 0.0f);
+  p.exitDirection = vec3(0.0f, 0.0f, 0.0f);
+  p.exitUv = vec2(0.0f, 0.0f);
+  p.pathLength = 0.0f;
+  p.fetches = 0;
+  p.hit = false;
+  p.tir = false;
+  p.fellBack = true;
+  p.valid = false;
+  SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy);
+  if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_FINITE(frontPosition.x) ||
+      !SNELL_FINITE(frontPosition.y) || !SNELL_FINITE(frontPosition.z)) {
+    return p;
+  }
+  vec3 t1 = r1.direction;
+  p.entryDirection = t1;
+  p.exitPoint = frontPosition;
+  p.exitDirection = t1;
+  p.valid = true;
+  SnellHit h = snellHitMiss(0);
+  if (o.strategy == SNELL_STRATEGY_WYMAN) {
+    SnellScreenPoint sp = snellViewToUv(back.clipFromView, frontPosition);
+    if (sp.valid && frontPosition.z < 0.0f) {
+      SnellSurfaceSample b = snellSampleSurface(backDepth, sp.uv, back);
+      h = snellHitMiss(1);
+      if (b.valid) {
+        float dV = length(frontPosition) * (b.viewZ / frontPosition.z - 1.0f);
+        float d = snellWymanDistanceVec(frontPosition, frontNormal, t1, dV, dN);
+        h = snellHitOnSurface(frontPosition + d * t1, backDepth, back, 1);
+      }
+    }
+  } else {
+    h = snellIntersectWith(o.strategy, frontPosition, t1, backDepth, backNormal, backPyramid, back, o);
+  }
+  p.fetches = h.fetches;
+  // length() squares first: it overflows beyond ~1.8e19 (Wyman's estimate with a huge dN).
+  float pathLength = length(h.position - frontPosition);
+  if (!h.valid || !SNELL_FINITE(pathLength)) {
+    return p;
+  }
+  p.hit = true;
+  p.exitPoint = h.position;
+  p.exitUv = h.uv;
+  p.pathLength = pathLength;
+#if SNELL_TWO_INTERFACE_NORMAL_SAMPLE
+  vec4 n2 = SNELL_SAMPLE_LOD(backNormal, h.uv, 0.0f);
+#else
+  vec4 n2 = SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(h.uv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
+#endif
+  p.fetches = p.fetches + 1;
+  vec3 n = snellSafeNormalize(vec3(n2.x, n2.y, n2.z));
+  if (dot(n, n) == 0.0f) {
+    return p;
+  }
+  if (dot(n, t1) > 0.0f) {
+    n = -n;
+  }
+  p.exitNormal = n;
+  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, tirPolicy);
+  p.tir = r2.tir;
+  if (!r2.valid || dot(r2.direction, r2.direction) == 0.0f) {
+    return p;
+  }
+  p.exitDirection = r2.direction;
+  p.fellBack = false;
+  return p;
+}
+
+#endif
+/*
+description: two-interface refraction, shaded: the full technique a fragment
+  shader calls for a front-face fragment of a refractive object. Trace the
+  path through the object (two_interface.glsl), resolve the exit ray against
+  the opaque scene behind the object (its depth, normal, pyramid and colour
+  buffers, with any strategy: Mayer & Assarsson's painting behind a glass
+  sphere) or against a distant environment, with a documented fallback when
+  the scene hit is not found; absorb along the path inside (Beer-Lambert), add
+  the Fresnel-weighted environment reflection at the first interface;
+  optionally once per colour channel (chromatic dispersion) and with blurred
+  (roughness) lookups.
+use: SnellTechniqueOptions o = snellPresetDir();   // or any preset, then adjust
+     o.exitMode = SNELL_EXIT_SCENE;
+     SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(frontPosition, frontNormal, dN,
+         backDepth, backNormal, backPyramid, backSurface,
+         sceneDepth, sceneNormal, scenePyramid, sceneColor, sceneSurface, environment, o);
+     fragColor = vec4(r.color, 1.0f);
+     SnellTwoInterfaceExit e = snellTwoInterfaceExit(origin, dir, sceneDepth, sceneNormal,
+         scenePyramid, sceneColor, sceneSurface, environment, o);   // the exit slot alone
+  frontPosition, frontNormal, dN, back*: as snellTwoInterfaceTrace
+  sceneDepth, sceneNormal, scenePyramid, sceneSurface: the opaque scene without the
+                 object, read by o.exit (normals for PLANE_NORMAL, the pyramid
+                 for the search range and PLANE_DEPTH); any textures in
+                 environment mode (never read)
+  sceneColor     the opaque scene's colour (mipmapped for roughness > 0)
+  environment    SNELL_ENVIRONMENT_TEX: an equirectangular 2D texture by
+                 default, a cube map through the hook (environment.glsl); looked
+                 up with world directions: envX, envY, envZ = the columns of
+                 the world-from-view rotation
+  o              SnellTechniqueOptions (technique_options.glsl)
+options: technique_options.glsl; environment.glsl hooks.
+contract (snellTwoInterfaceExit(origin, dir, ...)):
+  - lods: envLod = snellRoughnessToLod(o.roughness, o.environmentLevels),
+    sceneLod = snellRoughnessToLod(o.roughness, o.sceneColorLevels)
+    (shade/roughness.glsl); every colour read uses them.
+  - dir zero or not finite, or origin not finite: color 0, fellBack, 0 fetches.
+  - ENVIRONMENT mode: color = SNELL_SAMPLE_ENVIRONMENT(env, world(dir), envLod).xyz,
+    1 fetch, hit = snellHitMiss(0), fellBack false.
+  - SCENE mode: hit = snellIntersectWith(o.exit.strategy, origin, dir, scene...,
+    o.exit); valid: color = SNELL_SAMPLE_LOD(sceneColor, hit.uv, sceneLod).xyz
+    (+1 fetch). Invalid (ray leaves the screen, points towards the camera where a
+    search cannot follow, lands on an empty texel): fellBack = true and
+    FALLBACK_ENVIRONMENT: the environment along dir; FALLBACK_EDGE_FADE: q =
+    origin + fallbackDistance dir/|dir|, w = snellScreenEdgeFade(projection of q,
+    edgeFadeWidth) (0 when q does not project), color = mix(environment,
+    sceneColor at the projection clamped to [0,1]^2, w) (the scene read only
+    when w > 0). Never black unless the environment is.
+  - fetches: the strategy's plus one per colour or environment read.
+contract (snellTwoInterfaceRefraction):
+  - one trace with eta = snellIorToEta(o.iorOutside, o.ior) (o.dispersion != 3),
+    or three (o.dispersion == 3), with o.iors.x/.y/.z for red/green/blue, each
+    channel taken from its own trace; the reported geometry (exit point,
+    direction, hit, path length, tir, backHit) is the single / green trace's;
+    fetches and fellBack (any) cover all traces.
+  - transmitted = exit color * snellBeerLambert(o.absorption, pathLength) per
+    channel, pathLength = |P2 - P1| of that channel's trace (0 on fallback
+    without a back hit; finite: a back hit whose |P2 - P1| overflows a float
+    counts as none, two_interface.glsl).
+  - reflection (o.reflection): F = snellFresnelDielectric(cos(V, N1), eta of
+    the green/single trace); R = reflect(V, N1); color = F bg(R) + (1 - F)
+    transmitted; bg(R) = env(R), +1 fetch (SNELL_REFLECT_ENVIRONMENT), or
+    (SNELL_REFLECT_SCENE) snellTwoInterfaceExit(P1, R, scene..., o with exit =
+    o.reflect, SCENE mode, FALLBACK_ENVIRONMENT): the scene colour where the
+    reflect slot finds the scene, else env(R), its fetches added and its hit
+    in reflectionHit (snellHitMiss(0) otherwise); else F = 0, color =
+    transmitted. The second
+    interface's Fresnel loss and internally reflected light are not modelled.
+  - an invalid path (NaN / zero inputs): color 0, fellBack true, the
+    reflection still added when R is defined.
+source: Wyman 2005 and Oliveira & Brauwers 2007 (two interfaces, distant
+  environment); C. Mayer & U. Assarsson, "Constant-Time Light Refraction
+  Simulation" (nearby geometry: the exit ray against the scene buffers, "a
+  transparent sphere refracts a painting"); Fresnel: optics/fresnel_dielectric.glsl;
+  edge fade: shade/perturb_edge_fade.glsl;
+  absorption: optics/beer_lambert.glsl (Beer-Lambert over the found chord).
+*/
+#ifndef SNELL_SHADE_TWO_INTERFACE_SHADE_GLSL
+#define SNELL_SHADE_TWO_INTERFACE_SHADE_GLSL
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+struct SnellTwoInterfaceExit {
+  vec3 color;
+  SnellHit hit;
+  bool fellBack;
+  int fetches;
+};
+
+struct SnellTwoInterfaceResult {
+  vec3 color;
+  vec3 exitPoint;      // P2 (P1 when the back hit failed)
+  vec3 exitDirection;  // T2 (T1 on fallback)
+  SnellHit exitHit;    // the exit slot's hit in the scene buffers (SCENE mode)
+  SnellHit reflectionHit;  // the reflection slot's hit in the scene buffers (SNELL_REFLECT_SCENE)
+  float pathLength;    // |P2 - P1| inside the object
+  float fresnel;       // F at the first interface (0 without reflection)
+  int fetches;
+  bool backHit;        // P2 found in the back-face buffers
+  bool fellBack;       // any fallback: back hit, TIR under ZERO, exit slot
+  bool tir;            // TIR at the second interface
+};
+
+SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_TEX2D sceneDepth,
+                                                     SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid,
+                                                     SNELL_TEX2D sceneColor, SnellDepthSurface scene,
+                                                     SNELL_ENVIRONMENT_TEX environment, SnellTechniqueOptions o) {
+  SnellTwoInterfaceExit e;
+  e.color = vec3(0.0f, 0.0f, 0.0f);
+  e.hit = snellHitMiss(0);
+  e.fellBack = true;
+  e.fetches = 0;
+  vec3 d = snellSafeNormalize(dir);
+  if (dot(d, d) == 0.0f || !SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) ||
+      !SNELL_FINITE(origin.z)) {
+    return e;
+  }
+  float envLod = snellRoughnessToLod(o.roughness, o.environmentLevels);
+  float sceneLod = snellRoughnessToLod(o.roughness, o.sceneColorLevels);
+  vec3 world = d.x * o.envX + d.y * o.envY + d.z * o.envZ;
+  if (o.exitMode == SNELL_EXIT_SCENE) {
+    e.hit = snellIntersectWith(o.exit.strategy, origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, o.exit);
+    e.fetches = e.hit.fetches;
+    if (e.hit.valid) {
+      vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);
+      e.color = vec3(c.x, c.y, c.z);
+      e.fetches = e.fetches + 1;
+      e.fellBack = false;
+      return e;
+    }
+    vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, envLod);
+    e.fetches = e.fetches + 1;
+    e.color = vec3(env.x, env.y, env.z);
+    if (o.fallback == SNELL_FALLBACK_EDGE_FADE) {
+      SnellScreenPoint sp = snellViewToUv(scene.clipFromView, origin + o.fallbackDistance * d);
+      float w = sp.valid ? snellScreenEdgeFade(sp.uv, o.edgeFadeWidth) : 0.0f;
+      if (w > 0.0f) {
+        vec2 uv = clamp(sp.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+        vec4 c = SNELL_SAMPLE_LOD(sceneColor, uv, sceneLod);
+        e.fetches = e.fetches + 1;
+        e.color = mix(e.color, vec3(c.x, c.y, c.z), w);
+      }
+    }
+    return e;
+  }
+  vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, envLod);
+  e.color = vec3(env.x, env.y, env.z);
+  e.fetches = 1;
+  e.fellBack = false;
+  return e;
+}
+
+/* Wyman 2005; Oliveira & Brauwers 2007; Mayer & Assarsson: the composed technique */
+SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition, vec3 frontNormal, float dN,
+                                                             SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
+                                                             SNELL_TEX2D backPyramid, SnellDepthSurface back,
+                                                             SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal,
+                                                             SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor,
+                                                             SnellDepthSurface scene, SNELL_ENVIRONMENT_TEX environment,
+                                                             SnellTechniqueOptions o) {
+  bool three = o.dispersion == 3;
+  float eta = snellIorToEta(o.iorOutside, three ? o.iors.y : o.ior);
+  SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, backDepth, backNormal,
+                                                   backPyramid, back, o.back, o.tirPolicy);
+  SnellTwoInterfaceExit e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, sceneDepth, sceneNormal,
+                                                  scenePyramid, sceneColor, scene, environment, o);
+  vec3 transmitted = e.color * snellBeerLambert(o.absorption, p.pathLength);
+  SnellTwoInterfaceResult r;
+  r.exitPoint = p.exitPoint;
+  r.exitDirection = p.exitDirection;
+  r.exitHit = e.hit;
+  r.reflectionHit = snellHitMiss(0);
+  r.pathLength = p.pathLength;
+  r.fresnel = 0.0f;
+  r.fetches = p.fetches + e.fetches;
+  r.backHit = p.hit;
+  r.fellBack = p.fellBack || e.fellBack || !p.valid;
+  r.tir = p.tir;
+  if (three) {
+    SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal,
+                                                      snellIorToEta(o.iorOutside, o.iors.x), dN, backDepth,
+                                                      backNormal, backPyramid, back, o.back, o.tirPolicy);
+    SnellTwoInterfaceExit er = snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, sceneDepth, sceneNormal,
+                                                     scenePyramid, sceneColor, scene, environment, o);
+    SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal,
+                                                      snellIorToEta(o.iorOutside, o.iors.z), dN, backDepth,
+                                                      backNormal, backPyramid, back, o.back, o.tirPolicy);
+    SnellTwoInterfaceExit eb = snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, sceneDepth, sceneNormal,
+                                                     scenePyramid, sceneColor, scene, environment, o);
+    transmitted.x = er.color.x * snellBeerLambert(o.absorption, pr.pathLength).x;
+    transmitted.z = eb.color.z * snellBeerLambert(o.absorption, pb.pathLength).z;
+    r.fetches = r.fetches + pr.fetches + er.fetches + pb.fetches + eb.fetches;
+    r.fellBack = r.fellBack || pr.fellBack || er.fellBack || pb.fellBack || eb.fellBack;
+  }
+  r.color = transmitted;
+  vec3 v = snellSafeNormalize(frontPosition);
+  vec3 n1 = snellSafeNormalize(frontNormal);
+  if (o.reflection && dot(v, v) > 0.0f && dot(n1, n1) > 0.0f) {
+    float f = snellFresnelDielectric(dot(v, n1), eta);
+    vec3 rv = reflect(v, n1);
+    vec3 reflected = vec3(0.0f, 0.0f, 0.0f);
+    if (o.reflectionMode == SNELL_REFLECT_SCENE) {
+      // The reflection slot: the exit machinery with the reflect slot's strategy, from P1 along R.
+      SnellTechniqueOptions ro = o;
+      ro.exit = o.reflect;
+      ro.exitMode = SNELL_EXIT_SCENE;
+      ro.fallback = SNELL_FALLBACK_ENVIRONMENT;
+      SnellTwoInterfaceExit re = snellTwoInterfaceExit(frontPosition, rv, sceneDepth, sceneNormal, scenePyramid,
+                                                       sceneColor, scene, environment, ro);
+      reflected = re.color;
+      r.reflectionHit = re.hit;
+      r.fetches = r.fetches + re.fetches;
+    } else {
+      vec3 world = rv.x * o.envX + rv.y * o.envY + rv.z * o.envZ;
+      vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, snellRoughnessToLod(o.roughness, o.environmentLevels));
+      reflected = vec3(env.x, env.y, env.z);
+      r.fetches = r.fetches + 1;
+    }
+    r.fresnel = f;
+    r.color = f * reflected + (1.0f - f) * transmitted;
+  }
+  return r;
+}
+
+#endif
+#endif
+#endif

@@ -1,0 +1,2952 @@
+// snell 0.2.0, single-file GLSL: glsl/snell/snell.glsl with every #include spliced in
+// (snell-flatten --no-line --strip-comments). Generated: do not edit; regenerate with
+// `cmake --build build --target single_file`. No #version line: put it, and on
+// ES the precision statements, before this text.
+#ifndef SNELL_SNELL_GLSL
+#define SNELL_SNELL_GLSL
+#ifndef SNELL_OPTICS_GLSL
+#define SNELL_OPTICS_GLSL
+
+#ifndef SNELL_OPTICS_SAFE_NORMALIZE_GLSL
+#define SNELL_OPTICS_SAFE_NORMALIZE_GLSL
+
+#ifndef SNELL_PRELUDE_GLSL
+#define SNELL_PRELUDE_GLSL
+
+#ifndef SNELL_VERSION_GLSL
+#define SNELL_VERSION_GLSL
+#define SNELL_VERSION_MAJOR 0
+#define SNELL_VERSION_MINOR 2
+#define SNELL_VERSION_PATCH 0
+#define SNELL_VERSION (SNELL_VERSION_MAJOR * 10000 + SNELL_VERSION_MINOR * 100 + SNELL_VERSION_PATCH)
+#endif
+
+#if defined(__cplusplus)
+#  ifndef SNELL_CXX_BRIDGE
+#    error "C++: include <snell/snell.hpp> (or a family header), not a .glsl file"
+#  endif
+#  define SNELL_LANG_CXX 1
+#elif defined(SNELL_HLSL)
+#  define SNELL_LANG_HLSL 1
+#else
+#  define SNELL_LANG_GLSL 1
+#endif
+
+#ifndef SNELL_FN
+#  if defined(SNELL_LANG_CXX)
+#    define SNELL_FN inline
+#  else
+#    define SNELL_FN
+#  endif
+#endif
+
+#ifndef SNELL_PRECISE
+#  if defined(SNELL_LANG_HLSL)
+#    define SNELL_PRECISE precise
+#  elif defined(SNELL_LANG_GLSL)
+#    if __VERSION__ >= 400 && !defined(GL_ES)
+#      define SNELL_PRECISE precise
+#    endif
+#  endif
+#endif
+#ifndef SNELL_PRECISE
+#  define SNELL_PRECISE
+#endif
+
+#if defined(SNELL_LANG_GLSL)
+#  ifndef SNELL_TEX2D
+#    define SNELL_TEX2D sampler2D
+#  endif
+#  ifndef SNELL_TEXEL_FETCH
+#    define SNELL_TEXEL_FETCH(tex, px, lod) texelFetch(tex, px, lod)
+#  endif
+#  ifndef SNELL_SAMPLE_LOD
+#    define SNELL_SAMPLE_LOD(tex, uv, lod) textureLod(tex, uv, lod)
+#  endif
+#  ifndef SNELL_TEXTURE_SIZE
+
+#    define SNELL_TEXTURE_SIZE(tex, lod) max(textureSize(tex, 0) >> (lod), ivec2(1, 1))
+#  endif
+#endif
+
+#if defined(SNELL_LANG_HLSL)
+#  define SNELL_MUL(m, v) mul(m, v)
+#else
+#  define SNELL_MUL(m, v) ((m) * (v))
+#endif
+
+#define SNELL_PI 3.14159265358979f
+#define SNELL_EPS 1e-6f
+#define SNELL_FLT_MAX 3.402823466e38f
+
+#define SNELL_FLT_MIN 1.175494351e-38f
+#define SNELL_FINITE(x) (!isnan(x) && !isinf(x))
+
+#endif
+
+SNELL_FN vec3 snellSafeNormalize(vec3 v) {
+  float len2 = dot(v, v);
+  if (!(len2 > 1e-30f) || !(len2 < SNELL_FLT_MAX)) {
+    return vec3(0.0f, 0.0f, 0.0f);
+  }
+  return v * inversesqrt(len2);
+}
+
+#endif
+
+#ifndef SNELL_OPTICS_REFRACT_GLSL
+#define SNELL_OPTICS_REFRACT_GLSL
+
+#define SNELL_TIR_ZERO 0
+#define SNELL_TIR_CRITICAL 1
+#define SNELL_TIR_REFLECT 2
+
+struct SnellRefraction {
+  vec3 direction;
+  bool tir;
+  bool valid;
+};
+
+SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int policy) {
+  SnellRefraction r;
+  r.direction = vec3(0.0f, 0.0f, 0.0f);
+  r.tir = false;
+  r.valid = false;
+  vec3 i = snellSafeNormalize(incident);
+  vec3 n = snellSafeNormalize(normal);
+  if (dot(i, i) == 0.0f || dot(n, n) == 0.0f || !(eta > 0.0f) || !(eta < SNELL_FLT_MAX)) {
+    return r;
+  }
+  r.valid = true;
+  float cosI = -dot(n, i);
+  if (cosI < 0.0f) {
+    n = -n;
+    cosI = -cosI;
+  }
+  cosI = min(cosI, 1.0f);
+  float eta2 = eta * eta;
+  float cos2T = (1.0f - eta2) + eta2 * (cosI * cosI);
+  if (cos2T < 0.0f) {
+    r.tir = true;
+    if (policy == SNELL_TIR_REFLECT) {
+      r.direction = snellSafeNormalize(i + (2.0f * cosI) * n);
+    } else if (policy == SNELL_TIR_CRITICAL) {
+      r.direction = snellSafeNormalize(i + cosI * n);
+    }
+    return r;
+  }
+  float cosT = sqrt(cos2T);
+  r.direction = snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
+  return r;
+}
+
+#endif
+
+#ifndef SNELL_OPTICS_APPROX_REFRACT_GLSL
+#define SNELL_OPTICS_APPROX_REFRACT_GLSL
+
+SNELL_FN vec3 snellApproxRefract(vec3 incident, vec3 normal, float factor) {
+  vec3 i = snellSafeNormalize(incident);
+  vec3 n = snellSafeNormalize(normal);
+  if (dot(i, i) == 0.0f || dot(n, n) == 0.0f) {
+    return vec3(0.0f, 0.0f, 0.0f);
+  }
+  if (dot(i, n) > 0.0f) {
+    n = -n;
+  }
+  float k = factor > 0.0f ? factor : 0.0f;
+  if (k > 1.0f) {
+    return snellSafeNormalize(i * (1.0f / k) - n);
+  }
+  return snellSafeNormalize(i - k * n);
+}
+
+#endif
+
+#ifndef SNELL_OPTICS_FRESNEL_DIELECTRIC_GLSL
+#define SNELL_OPTICS_FRESNEL_DIELECTRIC_GLSL
+
+SNELL_FN float snellFresnelDielectric(float cosI, float eta) {
+  if (!(eta >= 1e-30f) || !(eta < SNELL_FLT_MAX)) {
+    return 1.0f;
+  }
+  float e = min(max(eta, 1e-6f), 1e6f);
+  float c = abs(cosI);
+  if (!(c >= 0.0f)) {
+    return 1.0f;
+  }
+  c = min(c, 1.0f);
+  float e2 = e * e;
+  float cos2T = (1.0f - e2) + e2 * (c * c);
+  if (cos2T <= 0.0f) {
+    return 1.0f;
+  }
+  float cosT = sqrt(cos2T);
+  float rs = (e * c - cosT) / (e * c + cosT);
+  float rp = (c - e * cosT) / (c + e * cosT);
+  return 0.5f * (rs * rs + rp * rp);
+}
+
+#endif
+
+#ifndef SNELL_OPTICS_FRESNEL_SCHLICK_GLSL
+#define SNELL_OPTICS_FRESNEL_SCHLICK_GLSL
+
+SNELL_FN float snellFresnelSchlick(float cosI, float f0) {
+  float c = abs(cosI);
+  if (!(c >= 0.0f)) {
+    return 1.0f;
+  }
+  c = min(c, 1.0f);
+  float f = f0 > 0.0f ? min(f0, 1.0f) : (f0 <= 0.0f ? 0.0f : 1.0f);
+  float m = 1.0f - c;
+  float m2 = m * m;
+  return f + (1.0f - f) * (m2 * m2 * m);
+}
+
+#endif
+
+#ifndef SNELL_OPTICS_FRESNEL_BIAS_POWER_GLSL
+#define SNELL_OPTICS_FRESNEL_BIAS_POWER_GLSL
+
+SNELL_FN float snellFresnelBiasPower(float nDotL, float bias, float power) {
+  float c = nDotL > 0.0f ? min(nDotL, 1.0f) : 0.0f;
+  float facing = 1.0f - c;
+  float p = power >= 1e-30f ? min(power, 1e6f) : 0.0f;
+  float b = bias >= -1e6f ? min(bias, 1e6f) : (bias < 0.0f ? -1e6f : 1.0f);
+  float t = 1.0f;
+  if (p > 0.0f) {
+    t = facing > 0.0f ? pow(facing, p) : 0.0f;
+  }
+  return max(b + (1.0f - b) * t, 0.0f);
+}
+
+#endif
+
+#ifndef SNELL_OPTICS_FRESNEL_CUBIC_GLSL
+#define SNELL_OPTICS_FRESNEL_CUBIC_GLSL
+
+SNELL_FN float snellFresnelCubic(vec3 eye, vec3 normal) {
+  vec3 e = snellSafeNormalize(eye);
+  vec3 n = snellSafeNormalize(normal);
+  if (dot(e, e) == 0.0f || dot(n, n) == 0.0f) {
+    return 1.0f;
+  }
+  float c = min(abs(dot(e, n)), 1.0f);
+  float m = 1.0f - c;
+  return m * m * m;
+}
+
+#endif
+
+#ifndef SNELL_OPTICS_IOR_TO_ETA_GLSL
+#define SNELL_OPTICS_IOR_TO_ETA_GLSL
+
+SNELL_FN float snellIorToEta(float iorIncident, float iorTransmitted) {
+  if (!(iorIncident >= 1e-30f) || !(iorIncident < SNELL_FLT_MAX) || !(iorTransmitted >= 1e-30f) ||
+      !(iorTransmitted < SNELL_FLT_MAX)) {
+    return 1.0f;
+  }
+  return min(max(iorIncident / iorTransmitted, 1e-6f), 1e6f);
+}
+
+#endif
+
+#ifndef SNELL_OPTICS_IOR_TO_F0_GLSL
+#define SNELL_OPTICS_IOR_TO_F0_GLSL
+
+SNELL_FN float snellIorToF0(float iorIncident, float iorTransmitted) {
+  if (!(iorIncident >= 1e-30f) || !(iorIncident < SNELL_FLT_MAX) || !(iorTransmitted >= 1e-30f) ||
+      !(iorTransmitted < SNELL_FLT_MAX)) {
+    return 0.0f;
+  }
+  float a = 0.5f * iorIncident;
+  float b = 0.5f * iorTransmitted;
+  float r = (a - b) / (a + b);
+  return r * r;
+}
+
+#endif
+
+#ifndef SNELL_OPTICS_ICE_NORMAL_BLEND_GLSL
+#define SNELL_OPTICS_ICE_NORMAL_BLEND_GLSL
+
+#ifndef SNELL_ICE_NORMAL_BLEND
+#  define SNELL_ICE_NORMAL_BLEND 0.33f
+#endif
+
+SNELL_FN vec3 snellIceNormalBlend(vec3 frontNormal, vec3 backNormal, float a) {
+  vec3 nf = snellSafeNormalize(frontNormal);
+  if (dot(nf, nf) == 0.0f) {
+    return vec3(0.0f, 0.0f, 0.0f);
+  }
+  vec3 nb = snellSafeNormalize(backNormal);
+  if (dot(nb, nb) == 0.0f) {
+    return nf;
+  }
+  float w = a >= 0.0f ? min(a, 1.0f) : (a < 0.0f ? 0.0f : SNELL_ICE_NORMAL_BLEND);
+  vec3 r = snellSafeNormalize((1.0f - w) * nf - w * nb);
+  if (dot(r, r) == 0.0f) {
+    return nf;
+  }
+  return r;
+}
+
+SNELL_FN vec3 snellIceNormalBlend(vec3 frontNormal, vec3 backNormal) {
+  return snellIceNormalBlend(frontNormal, backNormal, SNELL_ICE_NORMAL_BLEND);
+}
+
+#endif
+
+#ifndef SNELL_OPTICS_BEER_LAMBERT_GLSL
+#define SNELL_OPTICS_BEER_LAMBERT_GLSL
+
+SNELL_FN vec3 snellBeerLambert(vec3 absorption, float dist) {
+  float d = dist > 0.0f ? min(dist, SNELL_FLT_MAX) : 0.0f;
+  vec3 s = vec3(absorption.x > 0.0f ? min(absorption.x, SNELL_FLT_MAX) : 0.0f,
+                absorption.y > 0.0f ? min(absorption.y, SNELL_FLT_MAX) : 0.0f,
+                absorption.z > 0.0f ? min(absorption.z, SNELL_FLT_MAX) : 0.0f);
+  return exp(-min(s * d, vec3(1e30f)));
+}
+
+#endif
+
+#ifndef SNELL_OPTICS_ANGLE_BETWEEN_GLSL
+#define SNELL_OPTICS_ANGLE_BETWEEN_GLSL
+
+SNELL_FN float snellAngleBetween(vec3 a, vec3 b) {
+  vec3 u = snellSafeNormalize(a);
+  vec3 v = snellSafeNormalize(b);
+  if (dot(u, u) == 0.0f || dot(v, v) == 0.0f) {
+    return 0.0f;
+  }
+  float chordMinus = length(u - v);
+  float chordPlus = length(u + v);
+  float x = min(0.5f * min(chordMinus, chordPlus), 1.0f);
+  bool reduced = x > 0.5f;
+  float y = reduced ? sqrt(0.5f * (1.0f - x)) : x;
+  float y2 = y * y;
+  float p = 0.0115518009f;
+  p = p * y2 + 0.0139648438f;
+  p = p * y2 + 0.0173527644f;
+  p = p * y2 + 0.0223721591f;
+  p = p * y2 + 0.0303819444f;
+  p = p * y2 + 0.0446428571f;
+  p = p * y2 + 0.075f;
+  p = p * y2 + 0.166666667f;
+  float asinY = y + y * y2 * p;
+  float asinX = reduced ? 0.5f * SNELL_PI - 2.0f * asinY : asinY;
+  return chordMinus <= chordPlus ? 2.0f * asinX : SNELL_PI - 2.0f * asinX;
+}
+
+#endif
+
+#ifndef SNELL_OPTICS_WYMAN_DISTANCE_GLSL
+#define SNELL_OPTICS_WYMAN_DISTANCE_GLSL
+
+SNELL_FN float snellWymanDistance(float thetaT, float thetaI, float dV, float dN) {
+  float ti = abs(thetaI);
+  float tt = abs(thetaT);
+  float r = 1.0f;
+  if (ti >= 1e-30f) {
+    float q = tt / ti;
+    r = q >= 0.0f ? min(q, 1.0f) : 1.0f;
+  }
+  float v = dV > 0.0f ? min(dV, SNELL_FLT_MAX) : 0.0f;
+  float n = dN > 0.0f ? min(dN, SNELL_FLT_MAX) : 0.0f;
+  return n + r * (v - n);
+}
+
+SNELL_FN float snellWymanDistanceVec(vec3 incident, vec3 normal, vec3 refracted, float dV, float dN) {
+  vec3 i = snellSafeNormalize(incident);
+  vec3 n = snellSafeNormalize(normal);
+  vec3 t = snellSafeNormalize(refracted);
+  if (dot(i, i) == 0.0f || dot(n, n) == 0.0f || dot(t, t) == 0.0f) {
+    return snellWymanDistance(0.0f, 0.0f, dV, dN);
+  }
+  if (dot(i, n) > 0.0f) {
+    n = -n;
+  }
+  return snellWymanDistance(snellAngleBetween(t, -n), snellAngleBetween(i, -n), dV, dN);
+}
+
+#endif
+
+#ifndef SNELL_OPTICS_RAY_PLANE_GLSL
+#define SNELL_OPTICS_RAY_PLANE_GLSL
+
+#ifndef SNELL_RAY_PLANE_PARALLEL_EPS
+#  define SNELL_RAY_PLANE_PARALLEL_EPS 1e-6f
+#endif
+
+struct SnellRayPlaneHit {
+  float t;
+  vec3 position;
+  bool valid;
+};
+
+SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, vec3 planeNormal) {
+  SnellRayPlaneHit h;
+  h.t = 0.0f;
+  h.position = vec3(0.0f, 0.0f, 0.0f);
+  h.valid = false;
+  vec3 n = snellSafeNormalize(planeNormal);
+  float dirLen2 = dot(dir, dir);
+  if (dot(n, n) == 0.0f || !(dirLen2 > 1e-30f) || !(dirLen2 < SNELL_FLT_MAX)) {
+    return h;
+  }
+  if (!(abs(origin.x) <= SNELL_FLT_MAX) || !(abs(origin.y) <= SNELL_FLT_MAX) ||
+      !(abs(origin.z) <= SNELL_FLT_MAX) || !(abs(planePoint.x) <= SNELL_FLT_MAX) ||
+      !(abs(planePoint.y) <= SNELL_FLT_MAX) || !(abs(planePoint.z) <= SNELL_FLT_MAX)) {
+    return h;
+  }
+  float denom = dot(dir, n);
+  if (!(abs(denom) > SNELL_RAY_PLANE_PARALLEL_EPS * sqrt(dirLen2))) {
+    return h;
+  }
+  float t = dot(planePoint - origin, n) / denom;
+  if (!(t >= 0.0f) || !(t <= SNELL_FLT_MAX)) {
+    return h;
+  }
+  vec3 p = origin + t * dir;
+  if (!(abs(p.x) <= SNELL_FLT_MAX) || !(abs(p.y) <= SNELL_FLT_MAX) || !(abs(p.z) <= SNELL_FLT_MAX)) {
+    return h;
+  }
+  h.t = t;
+  h.position = p;
+  h.valid = true;
+  return h;
+}
+
+#endif
+#endif
+#ifndef SNELL_CAMERA_GLSL
+#define SNELL_CAMERA_GLSL
+
+#ifndef SNELL_CAMERA_CONVENTIONS_GLSL
+#define SNELL_CAMERA_CONVENTIONS_GLSL
+
+#define SNELL_DEPTH_GL 0
+#define SNELL_DEPTH_ZERO_ONE 1
+#define SNELL_DEPTH_REVERSED 2
+#define SNELL_DEPTH_INFINITE_GL 3
+#define SNELL_DEPTH_INFINITE_REVERSED 4
+#define SNELL_DEPTH_CONVENTION_COUNT 5
+
+#if defined(SNELL_LANG_HLSL)
+#  define SNELL_CAMERA_MAT4_COLUMNS(c0, c1, c2, c3) transpose(float4x4(c0, c1, c2, c3))
+#else
+#  define SNELL_CAMERA_MAT4_COLUMNS(c0, c1, c2, c3) mat4(c0, c1, c2, c3)
+#endif
+
+#endif
+
+#ifndef SNELL_CAMERA_LINEARIZE_DEPTH_GLSL
+#define SNELL_CAMERA_LINEARIZE_DEPTH_GLSL
+
+SNELL_FN float snellLinearizeDepth(float depthValue, float zNear, float zFar, int convention) {
+  bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
+  if (isnan(depthValue) || !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
+    return 0.0f;
+  }
+  if (!infinite && (!SNELL_FINITE(zFar) || !(zFar > zNear))) {
+    return 0.0f;
+  }
+  float d = clamp(depthValue, 0.0f, 1.0f);
+  float v = 0.0f;
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_ZERO_ONE) {
+    v = zNear / ((1.0f - d) + d * (zNear / zFar));
+  } else if (convention == SNELL_DEPTH_REVERSED) {
+    v = zNear / (d + (1.0f - d) * (zNear / zFar));
+  } else if (convention == SNELL_DEPTH_INFINITE_GL) {
+    v = d < 1.0f ? zNear / (1.0f - d) : SNELL_FLT_MAX;
+  } else if (convention == SNELL_DEPTH_INFINITE_REVERSED) {
+    v = d > 0.0f ? zNear / d : SNELL_FLT_MAX;
+  } else {
+    return 0.0f;
+  }
+  return clamp(v, zNear, infinite ? SNELL_FLT_MAX : zFar);
+}
+
+SNELL_FN float snellDelinearizeDepth(float viewDistance, float zNear, float zFar, int convention) {
+  bool reversed = convention == SNELL_DEPTH_REVERSED || convention == SNELL_DEPTH_INFINITE_REVERSED;
+  bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
+  float farValue = reversed ? 0.0f : 1.0f;
+  if (convention < 0 || convention >= SNELL_DEPTH_CONVENTION_COUNT || isnan(viewDistance) ||
+      !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
+    return farValue;
+  }
+  if (!infinite && (!SNELL_FINITE(zFar) || !(zFar > zNear))) {
+    return farValue;
+  }
+  if (!(viewDistance > zNear)) {
+    return reversed ? 1.0f : 0.0f;
+  }
+  float v = viewDistance;
+  if (infinite) {
+    if (isinf(v)) {
+      return farValue;
+    }
+  } else if (v >= zFar) {
+    return farValue;
+  }
+  float d = 0.0f;
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_ZERO_ONE) {
+    d = ((v - zNear) / v) * (zFar / (zFar - zNear));
+  } else if (convention == SNELL_DEPTH_REVERSED) {
+    d = (zNear / v) * ((zFar - v) / (zFar - zNear));
+  } else if (convention == SNELL_DEPTH_INFINITE_GL) {
+    d = (v - zNear) / v;
+  } else {
+    d = zNear / v;
+  }
+  return clamp(d, 0.0f, 1.0f);
+}
+
+#endif
+
+#ifndef SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
+#define SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
+
+SNELL_FN float snellDepthToNdcZ(float depthValue, int convention) {
+  float d = isnan(depthValue) ? 0.0f : clamp(depthValue, 0.0f, 1.0f);
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
+    return 2.0f * d - 1.0f;
+  }
+  return d;
+}
+
+SNELL_FN float snellNdcZToDepth(float ndcZ, int convention) {
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
+    float z = isnan(ndcZ) ? -1.0f : clamp(ndcZ, -1.0f, 1.0f);
+    return 0.5f * z + 0.5f;
+  }
+  return isnan(ndcZ) ? 0.0f : clamp(ndcZ, 0.0f, 1.0f);
+}
+
+#endif
+
+#ifndef SNELL_CAMERA_PERSPECTIVE_GLSL
+#define SNELL_CAMERA_PERSPECTIVE_GLSL
+
+SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, float zFar, int convention) {
+  vec4 zero4 = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  mat4 zero = SNELL_CAMERA_MAT4_COLUMNS(zero4, zero4, zero4, zero4);
+  bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
+  if (convention < 0 || convention >= SNELL_DEPTH_CONVENTION_COUNT || !SNELL_FINITE(fovy) ||
+      !(fovy > 0.0f) || !(fovy < SNELL_PI) || !SNELL_FINITE(aspect) || !(aspect > 0.0f) ||
+      !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
+    return zero;
+  }
+  if (!infinite && (!SNELL_FINITE(zFar) || !(zFar > zNear))) {
+    return zero;
+  }
+  float tanHalfFovy = tan(fovy / 2.0f);
+  if (!SNELL_FINITE(tanHalfFovy) || !(tanHalfFovy > 0.0f)) {
+    return zero;
+  }
+  float a = 1.0f / (aspect * tanHalfFovy);
+  float b = 1.0f / tanHalfFovy;
+  float c = 0.0f;
+  float d = 0.0f;
+  if (convention == SNELL_DEPTH_GL) {
+    c = -(zFar + zNear) / (zFar - zNear);
+    d = -(2.0f * zFar * zNear) / (zFar - zNear);
+  } else if (convention == SNELL_DEPTH_ZERO_ONE) {
+    c = zFar / (zNear - zFar);
+    d = -(zFar * zNear) / (zFar - zNear);
+  } else if (convention == SNELL_DEPTH_REVERSED) {
+    c = zNear / (zFar - zNear);
+    d = (zFar * zNear) / (zFar - zNear);
+  } else if (convention == SNELL_DEPTH_INFINITE_GL) {
+    c = -1.0f;
+    d = -2.0f * zNear;
+  } else {
+    c = 0.0f;
+    d = zNear;
+  }
+  if (!SNELL_FINITE(a) || !SNELL_FINITE(b) || !SNELL_FINITE(c) ||
+      !SNELL_FINITE(d) || !(a >= SNELL_FLT_MIN) || !(b >= SNELL_FLT_MIN) ||
+      !(abs(d) >= SNELL_FLT_MIN)) {
+    return zero;
+  }
+  return SNELL_CAMERA_MAT4_COLUMNS(vec4(a, 0.0f, 0.0f, 0.0f), vec4(0.0f, b, 0.0f, 0.0f),
+                                   vec4(0.0f, 0.0f, c, -1.0f), vec4(0.0f, 0.0f, d, 0.0f));
+}
+
+SNELL_FN mat4 snellPerspective(float fovy, float aspect, float zNear, float zFar) {
+  return snellPerspectiveWithDepth(fovy, aspect, zNear, zFar, SNELL_DEPTH_GL);
+}
+
+SNELL_FN mat4 snellPerspectiveInverse(float fovy, float aspect, float zNear, float zFar, int convention) {
+  mat4 m = snellPerspectiveWithDepth(fovy, aspect, zNear, zFar, convention);
+  float a = SNELL_MUL(m, vec4(1.0f, 0.0f, 0.0f, 0.0f)).x;
+  float b = SNELL_MUL(m, vec4(0.0f, 1.0f, 0.0f, 0.0f)).y;
+  float c = SNELL_MUL(m, vec4(0.0f, 0.0f, 1.0f, 0.0f)).z;
+  float d = SNELL_MUL(m, vec4(0.0f, 0.0f, 0.0f, 1.0f)).z;
+  vec4 zero4 = vec4(0.0f, 0.0f, 0.0f, 0.0f);
+  if (a == 0.0f) {
+    return SNELL_CAMERA_MAT4_COLUMNS(zero4, zero4, zero4, zero4);
+  }
+  float ia = 1.0f / a;
+  float ib = 1.0f / b;
+  float id = 1.0f / d;
+  float cd = c / d;
+  if (!SNELL_FINITE(ia) || !SNELL_FINITE(ib) || !SNELL_FINITE(id) ||
+      !SNELL_FINITE(cd)) {
+    return SNELL_CAMERA_MAT4_COLUMNS(zero4, zero4, zero4, zero4);
+  }
+  return SNELL_CAMERA_MAT4_COLUMNS(vec4(ia, 0.0f, 0.0f, 0.0f), vec4(0.0f, ib, 0.0f, 0.0f),
+                                   vec4(0.0f, 0.0f, 0.0f, id), vec4(0.0f, 0.0f, -1.0f, cd));
+}
+
+#endif
+
+#ifndef SNELL_CAMERA_VIEW_TO_CLIP_GLSL
+#define SNELL_CAMERA_VIEW_TO_CLIP_GLSL
+
+struct SnellNdc {
+  vec3 ndc;
+  bool valid;
+};
+
+SNELL_FN vec4 snellViewToClip(mat4 clipFromView, vec3 pView) {
+  return SNELL_MUL(clipFromView, vec4(pView.x, pView.y, pView.z, 1.0f));
+}
+
+SNELL_FN SnellNdc snellClipToNdc(vec4 clip) {
+  SnellNdc r;
+  r.ndc = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(clip.x) || !SNELL_FINITE(clip.y) || !SNELL_FINITE(clip.z) ||
+      !SNELL_FINITE(clip.w) || !(clip.w >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 q = vec3(clip.x, clip.y, clip.z) / clip.w;
+  r.ndc = clamp(q, vec3(-SNELL_FLT_MAX, -SNELL_FLT_MAX, -SNELL_FLT_MAX),
+                vec3(SNELL_FLT_MAX, SNELL_FLT_MAX, SNELL_FLT_MAX));
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+#ifndef SNELL_CAMERA_VIEW_TO_UV_GLSL
+#define SNELL_CAMERA_VIEW_TO_UV_GLSL
+
+struct SnellScreenPoint {
+  vec2 uv;
+  float ndcZ;
+  bool valid;
+};
+
+SNELL_FN SnellScreenPoint snellViewToUv(mat4 clipFromView, vec3 pView) {
+  SnellNdc n = snellClipToNdc(snellViewToClip(clipFromView, pView));
+  SnellScreenPoint r;
+  r.uv = vec2(0.0f, 0.0f);
+  r.ndcZ = 0.0f;
+  r.valid = n.valid;
+  if (n.valid) {
+    r.uv = vec2(n.ndc.x, n.ndc.y) * 0.5f + 0.5f;
+    r.ndcZ = n.ndc.z;
+  }
+  return r;
+}
+
+#endif
+
+#ifndef SNELL_CAMERA_PIXEL_TO_UV_GLSL
+#define SNELL_CAMERA_PIXEL_TO_UV_GLSL
+
+SNELL_FN vec2 snellPixelToUv(ivec2 px, ivec2 size) {
+  float u = size.x > 0 ? (float(px.x) + 0.5f) / float(size.x) : 0.0f;
+  float v = size.y > 0 ? (float(px.y) + 0.5f) / float(size.y) : 0.0f;
+  return vec2(u, v);
+}
+
+SNELL_FN ivec2 snellUvToPixel(vec2 uv, ivec2 size) {
+  if (size.x <= 0 || size.y <= 0) {
+    return ivec2(0, 0);
+  }
+  float x = isnan(uv.x) ? 0.0f : clamp(floor(uv.x * float(size.x)), 0.0f, float(size.x - 1));
+  float y = isnan(uv.y) ? 0.0f : clamp(floor(uv.y * float(size.y)), 0.0f, float(size.y - 1));
+  return ivec2(int(x), int(y));
+}
+
+#endif
+
+#ifndef SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
+#define SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
+
+struct SnellViewPoint {
+  vec3 position;
+  bool valid;
+};
+
+SNELL_FN SnellViewPoint snellUvDepthToView(vec2 uv, float depthValue, mat4 viewFromClip, int convention) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || isnan(depthValue) || convention < 0 ||
+      convention >= SNELL_DEPTH_CONVENTION_COUNT) {
+    return r;
+  }
+  float zNdc = snellDepthToNdcZ(depthValue, convention);
+  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, zNdc, 1.0f));
+  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 p = vec3(h.x, h.y, h.z) / h.w;
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z) || !(p.z < 0.0f)) {
+    return r;
+  }
+  r.position = p;
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN SnellViewPoint snellUvDistanceToView(vec2 uv, float viewDistance, mat4 viewFromClip) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewDistance) ||
+      !(viewDistance >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, 0.5f, 1.0f));
+  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 q = vec3(h.x, h.y, h.z) / h.w;
+  if (!SNELL_FINITE(q.x) || !SNELL_FINITE(q.y) || !SNELL_FINITE(q.z) || !(q.z < 0.0f)) {
+    return r;
+  }
+  float s = viewDistance / -q.z;
+  vec3 p = vec3(q.x * s, q.y * s, -viewDistance);
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y)) {
+    return r;
+  }
+  r.position = p;
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+#ifndef SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
+#define SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
+
+#if defined(SNELL_LANG_HLSL)
+#  define SNELL_CAMERA_MAT_COLUMN(m, i) (transpose(m)[i])
+#else
+#  define SNELL_CAMERA_MAT_COLUMN(m, i) ((m)[i])
+#endif
+
+SNELL_FN SnellViewPoint snellUvZToView(mat4 clipFromView, vec2 uv, float viewZ) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
+      !(viewZ <= -SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
+  float nx = 2.0f * uv.x - 1.0f;
+  float ny = 2.0f * uv.y - 1.0f;
+  float a00 = c0.x - nx * c0.w;
+  float a01 = c1.x - nx * c1.w;
+  float a10 = c0.y - ny * c0.w;
+  float a11 = c1.y - ny * c1.w;
+  float b0 = -(viewZ * (c2.x - nx * c2.w) + (c3.x - nx * c3.w));
+  float b1 = -(viewZ * (c2.y - ny * c2.w) + (c3.y - ny * c3.w));
+  float det = a00 * a11 - a01 * a10;
+  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  float x = (b0 * a11 - a01 * b1) / det;
+  float y = (a00 * b1 - b0 * a10) / det;
+  if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
+    return r;
+  }
+  r.position = vec3(x, y, viewZ);
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+#ifndef SNELL_CAMERA_TEX_RAY_GLSL
+#define SNELL_CAMERA_TEX_RAY_GLSL
+
+struct SnellTexRay {
+  vec3 s;
+  vec3 e;
+  float k1;
+  float k2;
+  vec2 ts;
+  vec2 dt;
+  bool valid;
+};
+
+SNELL_FN SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, float zFarthest, mat4 clipFromView) {
+  SnellTexRay r;
+  r.s = vec3(0.0f, 0.0f, 0.0f);
+  r.e = vec3(0.0f, 0.0f, 0.0f);
+  r.k1 = 0.0f;
+  r.k2 = 0.0f;
+  r.ts = vec2(0.0f, 0.0f);
+  r.dt = vec2(0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(p1.x) || !SNELL_FINITE(p1.y) || !SNELL_FINITE(p1.z) ||
+      !SNELL_FINITE(t1.x) || !SNELL_FINITE(t1.y) || !SNELL_FINITE(t1.z) ||
+      !SNELL_FINITE(zNearest) || !SNELL_FINITE(zFarthest)) {
+    return r;
+  }
+  if (!(abs(t1.z) >= SNELL_FLT_MIN) || !(zNearest <= -SNELL_FLT_MIN) ||
+      !(zFarthest <= -SNELL_FLT_MIN)) {
+    return r;
+  }
+  float ls = (zNearest - p1.z) / t1.z;
+  float le = (zFarthest - p1.z) / t1.z;
+  vec3 s = vec3(p1.x + ls * t1.x, p1.y + ls * t1.y, zNearest);
+  vec3 e = vec3(p1.x + le * t1.x, p1.y + le * t1.y, zFarthest);
+  SnellNdc ns = snellClipToNdc(snellViewToClip(clipFromView, s));
+  SnellNdc ne = snellClipToNdc(snellViewToClip(clipFromView, e));
+  if (!SNELL_FINITE(s.x) || !SNELL_FINITE(s.y) || !SNELL_FINITE(e.x) ||
+      !SNELL_FINITE(e.y) || !ns.valid || !ne.valid) {
+    return r;
+  }
+  vec2 ts = vec2(ns.ndc.x, ns.ndc.y) * 0.5f + 0.5f;
+  vec2 te = vec2(ne.ndc.x, ne.ndc.y) * 0.5f + 0.5f;
+  vec2 dt = te - ts;
+  float k1 = 1.0f / zNearest;
+  float k2 = zNearest == zFarthest ? 0.0f : (zNearest * zFarthest) / (zNearest - zFarthest);
+  if (!SNELL_FINITE(ts.x) || !SNELL_FINITE(ts.y) || !SNELL_FINITE(dt.x) ||
+      !SNELL_FINITE(dt.y) || !SNELL_FINITE(k1) || !SNELL_FINITE(k2) ||
+      !SNELL_FINITE(k1 * k2)) {
+    return r;
+  }
+  r.s = s;
+  r.e = e;
+  r.k1 = k1;
+  r.k2 = k2;
+  r.ts = ts;
+  r.dt = dt;
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN float snellTexRayAlpha(SnellTexRay r, float pz) {
+  if (!r.valid || r.k2 == 0.0f || !SNELL_FINITE(pz) || !(pz <= -SNELL_FLT_MIN)) {
+    return 0.0f;
+  }
+  float alpha = ((r.s.z - pz) / pz) * (r.k1 * r.k2);
+  return isnan(alpha) ? 0.0f : clamp(alpha, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+}
+
+SNELL_FN vec2 snellTexRayUv(SnellTexRay r, float pz) {
+  float alpha = snellTexRayAlpha(r, pz);
+  vec2 uv = r.ts + alpha * r.dt;
+  return clamp(uv, vec2(-SNELL_FLT_MAX, -SNELL_FLT_MAX), vec2(SNELL_FLT_MAX, SNELL_FLT_MAX));
+}
+
+#endif
+#endif
+#ifndef SNELL_INTERSECT_GLSL
+#define SNELL_INTERSECT_GLSL
+
+#ifndef SNELL_INTERSECT_HIT_GLSL
+#define SNELL_INTERSECT_HIT_GLSL
+
+struct SnellHit {
+  vec2 uv;
+  vec3 position;
+  bool valid;
+  int fetches;
+};
+
+SNELL_FN SnellHit snellHitMiss(int fetches) {
+  SnellHit h;
+  h.uv = vec2(0.0f, 0.0f);
+  h.position = vec3(0.0f, 0.0f, 0.0f);
+  h.valid = false;
+  h.fetches = fetches;
+  return h;
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_DEPTH_SURFACE_GLSL
+#define SNELL_INTERSECT_DEPTH_SURFACE_GLSL
+
+#define SNELL_DEPTH_FILTER_NEAREST 0
+#define SNELL_DEPTH_FILTER_BILINEAR 1
+
+struct SnellDepthSurface {
+  mat4 clipFromView;
+  float zNear;
+  float zFar;
+  int convention;
+  float emptyDepth;
+  int lod;
+  int depthFilter;
+  bool closed;
+};
+
+struct SnellSurfaceSample {
+  float viewZ;
+  bool valid;
+  bool interpolated;
+};
+
+SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, float zFar, int convention,
+                                             float emptyDepth) {
+  SnellDepthSurface s;
+  s.clipFromView = clipFromView;
+  s.zNear = zNear;
+  s.zFar = zFar;
+  s.convention = convention;
+  s.emptyDepth = emptyDepth;
+  s.lod = 0;
+  s.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+  s.closed = true;
+  return s;
+}
+
+SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
+  SnellSurfaceSample r;
+  r.viewZ = 0.0f;
+  r.valid = false;
+  r.interpolated = false;
+  if (!(uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) {
+    return r;
+  }
+  ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
+  if (size.x <= 0 || size.y <= 0) {
+    return r;
+  }
+  float d = SNELL_TEXEL_FETCH(depthTex, snellUvToPixel(uv, size), s.lod).x;
+  if (d == s.emptyDepth) {
+    return r;
+  }
+  if (s.depthFilter == SNELL_DEPTH_FILTER_BILINEAR) {
+    SNELL_PRECISE float tx = uv.x * float(size.x) - 0.5f;
+    SNELL_PRECISE float ty = uv.y * float(size.y) - 0.5f;
+    float fx = floor(tx);
+    float fy = floor(ty);
+    int x0 = clamp(int(fx), 0, size.x - 1);
+    int y0 = clamp(int(fy), 0, size.y - 1);
+    int x1 = clamp(int(fx) + 1, 0, size.x - 1);
+    int y1 = clamp(int(fy) + 1, 0, size.y - 1);
+    float d00 = SNELL_TEXEL_FETCH(depthTex, ivec2(x0, y0), s.lod).x;
+    float d10 = SNELL_TEXEL_FETCH(depthTex, ivec2(x1, y0), s.lod).x;
+    float d01 = SNELL_TEXEL_FETCH(depthTex, ivec2(x0, y1), s.lod).x;
+    float d11 = SNELL_TEXEL_FETCH(depthTex, ivec2(x1, y1), s.lod).x;
+    if (d00 != s.emptyDepth && d10 != s.emptyDepth && d01 != s.emptyDepth && d11 != s.emptyDepth) {
+      float wx = tx - fx;
+      float wy = ty - fy;
+      SNELL_PRECISE float d0 = d00 + wx * (d10 - d00);
+      SNELL_PRECISE float d1 = d01 + wx * (d11 - d01);
+      SNELL_PRECISE float dm = d0 + wy * (d1 - d0);
+      d = dm;
+      r.interpolated = true;
+    }
+  }
+  float v = snellLinearizeDepth(d, s.zNear, s.zFar, s.convention);
+  if (!(v > 0.0f)) {
+    r.interpolated = false;
+    return r;
+  }
+  r.viewZ = -v;
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_SURFACE_POINT_GLSL
+#define SNELL_INTERSECT_SURFACE_POINT_GLSL
+
+struct SnellSurfacePoint {
+  vec3 position;
+  vec2 uv;
+  bool valid;
+};
+
+SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
+  SnellSurfacePoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.uv = vec2(0.0f, 0.0f);
+  r.valid = false;
+  SnellSurfaceSample x = snellSampleSurface(depthTex, uv, s);
+  if (!x.valid) {
+    return r;
+  }
+  ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
+  vec2 centre = x.interpolated ? uv : snellPixelToUv(snellUvToPixel(uv, size), size);
+  SnellViewPoint p = snellUvZToView(s.clipFromView, centre, x.viewZ);
+  if (!p.valid) {
+    return r;
+  }
+  r.position = p.position;
+  r.uv = centre;
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
+#define SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
+
+SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface s) {
+  float len2 = dot(dir, dir);
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
+    return snellHitMiss(0);
+  }
+  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  if (!w.valid) {
+    return snellHitMiss(0);
+  }
+  SnellSurfacePoint b = snellSurfacePoint(depthTex, w.uv, s);
+  if (!b.valid) {
+    return snellHitMiss(1);
+  }
+  vec3 toB = b.position - origin;
+  float d = sqrt(dot(toB, toB));
+  vec3 p = origin + (d / sqrt(len2)) * dir;
+  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
+    return snellHitMiss(1);
+  }
+  SnellHit h;
+  h.uv = sp.uv;
+  h.position = p;
+  h.valid = true;
+  h.fetches = 1;
+  return h;
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_HIT_ON_SURFACE_GLSL
+#define SNELL_INTERSECT_HIT_ON_SURFACE_GLSL
+
+SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  if (!sp.valid) {
+    return snellHitMiss(fetchesSoFar);
+  }
+  SnellSurfaceSample x = snellSampleSurface(depthTex, sp.uv, s);
+  if (!x.valid) {
+    return snellHitMiss(fetchesSoFar + 1);
+  }
+  SnellHit h;
+  h.uv = sp.uv;
+  h.position = p;
+  h.valid = true;
+  h.fetches = fetchesSoFar + 1;
+  return h;
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_PLANE_REFINE_GLSL
+#define SNELL_INTERSECT_PLANE_REFINE_GLSL
+
+#ifndef SNELL_PLANE_ITERATIONS
+#  define SNELL_PLANE_ITERATIONS 1
+#endif
+#ifndef SNELL_PLANE_MAX_ITERATIONS
+#  define SNELL_PLANE_MAX_ITERATIONS 8
+#endif
+
+#ifndef SNELL_PLANE_FACING_FALLBACK
+#  define SNELL_PLANE_FACING_FALLBACK 1
+#endif
+
+#ifndef SNELL_PLANE_HOLD
+#  define SNELL_PLANE_HOLD 1
+#endif
+
+SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+  SnellHit h = snellHitOnSurface(p, depthTex, s, fetchesSoFar);
+  if (h.valid || SNELL_PLANE_HOLD == 0 || !s.closed) {
+    return h;
+  }
+  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f) ||
+      !SNELL_FINITE(planeUv.x) || !SNELL_FINITE(planeUv.y)) {
+    return h;
+  }
+  h.uv = planeUv;
+  h.position = p;
+  h.valid = true;
+  return h;
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_PLANE_NORMAL_GLSL
+#define SNELL_INTERSECT_PLANE_NORMAL_GLSL
+
+SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
+                                            SnellDepthSurface s, float normalLod, int iterations) {
+  float len2 = dot(dir, dir);
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
+    return snellHitMiss(0);
+  }
+  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  if (!w.valid) {
+    return snellHitMiss(0);
+  }
+  int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
+  int fetches = 0;
+  vec2 uv = w.uv;
+  vec2 planeUv = w.uv;
+  vec3 p = origin;
+  for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
+    if (k > n) {
+      break;
+    }
+    if (k > 0) {
+      SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+      if (!sp.valid) {
+        break;
+      }
+      uv = sp.uv;
+    }
+    SnellSurfacePoint b = snellSurfacePoint(depthTex, uv, s);
+    fetches += 1;
+    if (!b.valid) {
+      if (k == 0) {
+        return snellHitMiss(fetches);
+      }
+      break;
+    }
+    vec4 nt = SNELL_SAMPLE_LOD(normalTex, b.uv, normalLod);
+    fetches += 1;
+    SnellRayPlaneHit ph = snellRayPlane(origin, dir, b.position, vec3(nt.x, nt.y, nt.z));
+#if SNELL_PLANE_FACING_FALLBACK
+    if (!ph.valid) {
+      ph = snellRayPlane(origin, dir, b.position, b.position);
+    }
+#endif
+    if (!ph.valid) {
+      if (k == 0) {
+        return snellHitMiss(fetches);
+      }
+      break;
+    }
+    p = ph.position;
+    planeUv = b.uv;
+  }
+  return snellPlaneHit(p, planeUv, depthTex, s, fetches);
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_PLANE_DEPTH_GLSL
+#define SNELL_INTERSECT_PLANE_DEPTH_GLSL
+
+#ifndef SNELL_PLANE_DEPTH_MAX_SPAN_LOD
+#  define SNELL_PLANE_DEPTH_MAX_SPAN_LOD 6
+#endif
+
+struct SnellDepthPlane {
+  vec2 uv;
+  vec3 position;
+  vec3 normal;
+  bool valid;
+  int fetches;
+};
+
+SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthMips, SnellDepthSurface s, int maxLod) {
+  SnellDepthPlane r;
+  r.uv = vec2(0.0f, 0.0f);
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.normal = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  r.fetches = 0;
+  SnellScreenPoint sq = snellViewToUv(s.clipFromView, q);
+  if (!sq.valid) {
+    return r;
+  }
+  SnellSurfacePoint b0 = snellSurfacePoint(depthMips, sq.uv, s);
+  r.fetches = 1;
+  if (!b0.valid) {
+    return r;
+  }
+  r.uv = b0.uv;
+  vec3 toB = b0.position - q;
+  float d = sqrt(dot(toB, toB));
+  vec3 q2 = q.z < b0.position.z ? q - d * dirN : q + d * dirN;
+  SnellScreenPoint s2 = snellViewToUv(s.clipFromView, q2);
+  vec2 uv2 = s2.valid ? s2.uv : sq.uv;
+  ivec2 size0 = SNELL_TEXTURE_SIZE(depthMips, s.lod);
+  float span = max(abs(uv2.x - sq.uv.x) * float(size0.x), abs(uv2.y - sq.uv.y) * float(size0.y));
+  int top = min(maxLod, s.lod + SNELL_PLANE_DEPTH_MAX_SPAN_LOD);
+  int level = s.lod;
+  if (span > 1.0f && SNELL_FINITE(span)) {
+    level = s.lod + int(ceil(log2(span)));
+  }
+  level = max(s.lod, min(level, top));
+  SnellDepthSurface sl = s;
+  sl.lod = level;
+  ivec2 size = SNELL_TEXTURE_SIZE(depthMips, level);
+  ivec2 pb = snellUvToPixel(sq.uv, size);
+  ivec2 pc = snellUvToPixel(uv2, size);
+  ivec2 a = ivec2(1, 0);
+  ivec2 dpc = pc - pb;
+  if (abs(dpc.y) > abs(dpc.x)) {
+    a = ivec2(0, dpc.y > 0 ? 1 : -1);
+  } else if (dpc.x != 0) {
+    a = ivec2(dpc.x > 0 ? 1 : -1, 0);
+  }
+  if (dpc.x == 0 && dpc.y == 0) {
+    pc = pb + a;
+  }
+  ivec2 b = a.x != 0 ? ivec2(0, 1) : ivec2(1, 0);
+  vec3 pB = b0.position;
+  if (level != s.lod) {
+    SnellSurfacePoint bl = snellSurfacePoint(depthMips, snellPixelToUv(pb, size), sl);
+    r.fetches += 1;
+    if (!bl.valid) {
+      return r;
+    }
+    pB = bl.position;
+  }
+  r.position = pB;
+  SnellSurfacePoint c = snellSurfacePoint(depthMips, snellPixelToUv(pc, size), sl);
+  r.fetches += 1;
+  if (!c.valid) {
+    c = snellSurfacePoint(depthMips, snellPixelToUv(pb - a, size), sl);
+    r.fetches += 1;
+    if (!c.valid) {
+      return r;
+    }
+  }
+  SnellSurfacePoint e = snellSurfacePoint(depthMips, snellPixelToUv(pb + b, size), sl);
+  r.fetches += 1;
+  if (!e.valid) {
+    e = snellSurfacePoint(depthMips, snellPixelToUv(pb - b, size), sl);
+    r.fetches += 1;
+    if (!e.valid) {
+      return r;
+    }
+  }
+  r.normal = cross(c.position - pB, e.position - pB);
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D depthMips, SnellDepthSurface s,
+                                           int maxLod, int iterations) {
+  float len2 = dot(dir, dir);
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
+    return snellHitMiss(0);
+  }
+  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  if (!w.valid) {
+    return snellHitMiss(0);
+  }
+  vec3 dirN = dir / sqrt(len2);
+  int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
+  int fetches = 0;
+  vec3 p = origin;
+  vec2 planeUv = w.uv;
+  for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
+    if (k > n) {
+      break;
+    }
+    SnellDepthPlane pl = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
+    fetches += pl.fetches;
+    SnellRayPlaneHit ph = snellRayPlane(origin, dir, pl.position, pl.normal);
+#if SNELL_PLANE_FACING_FALLBACK
+    if (!ph.valid) {
+      ph = snellRayPlane(origin, dir, pl.position, pl.position);
+    }
+#endif
+    if (!ph.valid) {
+      if (k == 0) {
+        return snellHitMiss(fetches);
+      }
+      break;
+    }
+    p = ph.position;
+    planeUv = pl.uv;
+  }
+  return snellPlaneHit(p, planeUv, depthMips, s, fetches);
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_DEPTH_PYRAMID_GLSL
+#define SNELL_INTERSECT_DEPTH_PYRAMID_GLSL
+
+SNELL_FN vec4 snellDepthPyramidBase(float depthValue, SnellDepthSurface s) {
+  vec4 empty = vec4(s.emptyDepth, 0.0f, 0.0f, 0.0f);
+  if (!SNELL_FINITE(depthValue) || depthValue == s.emptyDepth) {
+    return empty;
+  }
+  float v = snellLinearizeDepth(depthValue, s.zNear, s.zFar, s.convention);
+  if (!(v > 0.0f)) {
+    return empty;
+  }
+  return vec4(depthValue, v, v, 1.0f);
+}
+
+SNELL_FN vec4 snellDepthMinMaxReduce(SNELL_TEX2D pyramidTex, int lod, ivec2 px, float emptyDepth) {
+  ivec2 size = SNELL_TEXTURE_SIZE(pyramidTex, lod);
+  int lastX = max(1, size.x / 2) - 1;
+  int lastY = max(1, size.y / 2) - 1;
+  int countX = size.x == 1 ? 1 : (px.x == lastX ? size.x - 2 * px.x : 2);
+  int countY = size.y == 1 ? 1 : (px.y == lastY ? size.y - 2 * px.y : 2);
+  float sum = 0.0f;
+  float coverage = 0.0f;
+  float nearest = 0.0f;
+  float farthest = 0.0f;
+  int valid = 0;
+  int children = 0;
+  for (int dy = 0; dy < 3; ++dy) {
+    for (int dx = 0; dx < 3; ++dx) {
+      if (dx < countX && dy < countY) {
+        vec4 t = SNELL_TEXEL_FETCH(pyramidTex, ivec2(2 * px.x + dx, 2 * px.y + dy), lod);
+        children += 1;
+        coverage += t.w;
+        if (t.w > 0.0f) {
+          sum += t.x;
+          nearest = valid == 0 ? t.y : min(nearest, t.y);
+          farthest = valid == 0 ? t.z : max(farthest, t.z);
+          valid += 1;
+        }
+      }
+    }
+  }
+  if (valid == 0) {
+    return vec4(emptyDepth, 0.0f, 0.0f, 0.0f);
+  }
+  return vec4(sum / float(valid), nearest, farthest, coverage / float(max(children, 1)));
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_DEPTH_RANGE_GLSL
+#define SNELL_INTERSECT_DEPTH_RANGE_GLSL
+
+#ifndef SNELL_DEPTH_RANGE_MARGIN
+#  define SNELL_DEPTH_RANGE_MARGIN 1e-3f
+#endif
+
+struct SnellDepthRange {
+  float zNearest;
+  float zFarthest;
+  bool valid;
+};
+
+SNELL_FN SnellDepthRange snellDepthRangeInvalid() {
+  SnellDepthRange r;
+  r.zNearest = 0.0f;
+  r.zFarthest = 0.0f;
+  r.valid = false;
+  return r;
+}
+
+SNELL_FN int snellTextureTopLod(SNELL_TEX2D tex) {
+  ivec2 size = SNELL_TEXTURE_SIZE(tex, 0);
+  int m = max(size.x, size.y);
+  int lod = 0;
+  for (int i = 0; i < 31; ++i) {
+    if (m <= 1) {
+      break;
+    }
+    m = m / 2;
+    lod = lod + 1;
+  }
+  return lod;
+}
+
+SNELL_FN SnellDepthRange snellDepthRangeFromPyramid(SNELL_TEX2D pyramidTex) {
+  int top = snellTextureTopLod(pyramidTex);
+  vec4 t = SNELL_TEXEL_FETCH(pyramidTex, ivec2(0, 0), top);
+  if (!(t.w > 0.0f) || !(t.y > 0.0f) || !(t.z >= t.y) || !SNELL_FINITE(t.z)) {
+    return snellDepthRangeInvalid();
+  }
+  SnellDepthRange r;
+  r.zNearest = -t.y * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
+  r.zFarthest = -t.z * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN SnellDepthRange snellDepthRangeFromBox(mat4 viewFromObject, vec3 boxMin, vec3 boxMax) {
+  float zNearest = -SNELL_FLT_MAX;
+  float zFarthest = SNELL_FLT_MAX;
+  for (int i = 0; i < 8; ++i) {
+    float x = (i == 1 || i == 3 || i == 5 || i == 7) ? boxMax.x : boxMin.x;
+    float y = (i == 2 || i == 3 || i == 6 || i == 7) ? boxMax.y : boxMin.y;
+    float z = i >= 4 ? boxMax.z : boxMin.z;
+    vec4 p = SNELL_MUL(viewFromObject, vec4(x, y, z, 1.0f));
+    if (!SNELL_FINITE(p.z)) {
+      return snellDepthRangeInvalid();
+    }
+    zNearest = max(zNearest, p.z);
+    zFarthest = min(zFarthest, p.z);
+  }
+  if (!(zFarthest < 0.0f)) {
+    return snellDepthRangeInvalid();
+  }
+  SnellDepthRange r;
+  r.zNearest = min(zNearest, -SNELL_FLT_MIN);
+  r.zFarthest = zFarthest;
+  if (!(r.zFarthest < r.zNearest)) {
+    r.zNearest = r.zNearest * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
+    r.zFarthest = r.zFarthest * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
+  }
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_SEARCH_SEGMENT_GLSL
+#define SNELL_INTERSECT_SEARCH_SEGMENT_GLSL
+
+SNELL_FN SnellTexRay snellSearchSegment(vec3 origin, vec3 dir, float zNearest, float zFarthest, mat4 clipFromView) {
+  SnellTexRay bad;
+  bad.s = vec3(0.0f, 0.0f, 0.0f);
+  bad.e = vec3(0.0f, 0.0f, 0.0f);
+  bad.k1 = 0.0f;
+  bad.k2 = 0.0f;
+  bad.ts = vec2(0.0f, 0.0f);
+  bad.dt = vec2(0.0f, 0.0f);
+  bad.valid = false;
+  if (!SNELL_FINITE(origin.z) || !SNELL_FINITE(dir.z) || !SNELL_FINITE(zNearest) ||
+      !SNELL_FINITE(zFarthest)) {
+    return bad;
+  }
+  if (!(dir.z <= -SNELL_FLT_MIN) || !(zNearest > zFarthest) || !(origin.z > zFarthest)) {
+    return bad;
+  }
+  float zStart = origin.z < zNearest ? origin.z : zNearest;
+  return snellTexRaySetup(origin, dir, zStart, zFarthest, clipFromView);
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_CONSERVATIVE_BINARY_SEARCH_GLSL
+#define SNELL_INTERSECT_CONSERVATIVE_BINARY_SEARCH_GLSL
+
+#ifndef SNELL_CBS_STEPS
+#  define SNELL_CBS_STEPS 5
+#endif
+#ifndef SNELL_CBS_MAX_STEPS
+#  define SNELL_CBS_MAX_STEPS 24
+#endif
+
+SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                                float zNearest, float zFarthest, int steps) {
+  SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
+  if (!r.valid) {
+    return snellHitMiss(0);
+  }
+  int n = clamp(steps, 0, SNELL_CBS_MAX_STEPS);
+  float dz = r.e.z - r.s.z;
+  float beta = 0.0f;
+  float dBeta = 1.0f;
+  float zHit = r.s.z;
+  vec2 uvHit = r.ts;
+  bool advanced = false;
+  int fetches = 0;
+  for (int i = 0; i < SNELL_CBS_MAX_STEPS; ++i) {
+    if (i >= n) {
+      break;
+    }
+    dBeta = dBeta * 0.5f;
+    float b = beta + dBeta;
+    float z = r.s.z + b * dz;
+    vec2 uv = snellTexRayUv(r, z);
+    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
+    fetches = fetches + 1;
+    if (x.valid && z > x.viewZ) {
+      beta = b;
+      zHit = z;
+      uvHit = uv;
+      advanced = true;
+    }
+  }
+  if (!advanced) {
+    SnellSurfaceSample x0 = snellSampleSurface(depthTex, uvHit, surface);
+    fetches = fetches + 1;
+    if (!x0.valid) {
+      return snellHitMiss(fetches);
+    }
+  }
+  SnellHit h;
+  h.uv = uvHit;
+  h.position = vec3(r.s.x + beta * (r.e.x - r.s.x), r.s.y + beta * (r.e.y - r.s.y), zHit);
+  h.valid = true;
+  h.fetches = fetches;
+  return h;
+}
+
+SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                                float zNearest, float zFarthest) {
+  return snellConservativeBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_CBS_STEPS);
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_BINARY_SEARCH_GLSL
+#define SNELL_INTERSECT_BINARY_SEARCH_GLSL
+
+#ifndef SNELL_BINARY_SEARCH_STEPS
+#  define SNELL_BINARY_SEARCH_STEPS 5
+#endif
+#ifndef SNELL_BINARY_SEARCH_MAX_STEPS
+#  define SNELL_BINARY_SEARCH_MAX_STEPS 24
+#endif
+
+SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SnellDepthSurface surface, float lo,
+                                    float hi, int steps, SnellHit h) {
+  if (isnan(lo) || isnan(hi)) {
+    return h;
+  }
+  lo = clamp(lo, 0.0f, 1.0f);
+  hi = clamp(hi, 0.0f, 1.0f);
+  int n = clamp(steps, 0, SNELL_BINARY_SEARCH_MAX_STEPS);
+  float dz = r.e.z - r.s.z;
+  for (int i = 0; i < SNELL_BINARY_SEARCH_MAX_STEPS; ++i) {
+    if (i >= n) {
+      break;
+    }
+    float beta = 0.5f * (lo + hi);
+    float z = r.s.z + beta * dz;
+    vec2 uv = snellTexRayUv(r, z);
+    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
+    h.uv = uv;
+    h.position = vec3(r.s.x + beta * (r.e.x - r.s.x), r.s.y + beta * (r.e.y - r.s.y), z);
+    h.valid = x.valid;
+    h.fetches = h.fetches + 1;
+    if (x.valid && z > x.viewZ) {
+      lo = beta;
+    } else {
+      hi = beta;
+    }
+  }
+  return h;
+}
+
+SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                    float zNearest, float zFarthest, int steps) {
+  SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
+  if (!r.valid) {
+    return snellHitMiss(0);
+  }
+  SnellHit h;
+  h.uv = r.ts;
+  h.position = r.s;
+  h.valid = false;
+  h.fetches = 0;
+  if (steps <= 0) {
+    h.valid = snellSampleSurface(depthTex, r.ts, surface).valid;
+    h.fetches = 1;
+    return h;
+  }
+  return snellBisectTexRay(r, depthTex, surface, 0.0f, 1.0f, steps, h);
+}
+
+SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                    float zNearest, float zFarthest) {
+  return snellBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_BINARY_SEARCH_STEPS);
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_LINEAR_BINARY_SEARCH_GLSL
+#define SNELL_INTERSECT_LINEAR_BINARY_SEARCH_GLSL
+
+#ifndef SNELL_LINEAR_SEARCH_STEPS
+#  define SNELL_LINEAR_SEARCH_STEPS 10
+#endif
+#ifndef SNELL_LINEAR_SEARCH_MAX_STEPS
+#  define SNELL_LINEAR_SEARCH_MAX_STEPS 256
+#endif
+
+SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                          float zNearest, float zFarthest, int linearSteps, int binarySteps) {
+  SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
+  if (!r.valid) {
+    return snellHitMiss(0);
+  }
+  int nl = clamp(linearSteps, 1, SNELL_LINEAR_SEARCH_MAX_STEPS);
+  int nb = clamp(binarySteps, 0, SNELL_BINARY_SEARCH_MAX_STEPS);
+  float dz = r.e.z - r.s.z;
+  float stepBeta = 1.0f / float(nl);
+  int fetches = 0;
+  int found = -1;
+  float beta = 0.0f;
+  float z = r.s.z;
+  vec2 uv = r.ts;
+  bool lastValid = false;
+  for (int i = 1; i <= SNELL_LINEAR_SEARCH_MAX_STEPS; ++i) {
+    if (i > nl) {
+      break;
+    }
+    beta = float(i) * stepBeta;
+    z = r.s.z + beta * dz;
+    uv = snellTexRayUv(r, z);
+    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
+    fetches = fetches + 1;
+    if (!(x.valid && z > x.viewZ)) {
+      found = i;
+      lastValid = x.valid;
+      break;
+    }
+  }
+  if (found < 0) {
+    return snellHitMiss(fetches);
+  }
+  SnellHit h;
+  h.uv = uv;
+  h.position = vec3(r.s.x + beta * (r.e.x - r.s.x), r.s.y + beta * (r.e.y - r.s.y), z);
+  h.valid = lastValid;
+  h.fetches = fetches;
+  return snellBisectTexRay(r, depthTex, surface, float(found - 1) * stepBeta, beta, nb, h);
+}
+
+SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                          float zNearest, float zFarthest) {
+  return snellLinearBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_LINEAR_SEARCH_STEPS,
+                                 SNELL_BINARY_SEARCH_STEPS);
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_LINEAR_MARCH_GLSL
+#define SNELL_INTERSECT_LINEAR_MARCH_GLSL
+
+#ifndef SNELL_LINEAR_MARCH_STEPS
+#  define SNELL_LINEAR_MARCH_STEPS 32
+#endif
+#ifndef SNELL_LINEAR_MARCH_MAX_STEPS
+#  define SNELL_LINEAR_MARCH_MAX_STEPS 512
+#endif
+#ifndef SNELL_LINEAR_MARCH_REFINE_STEPS
+#  define SNELL_LINEAR_MARCH_REFINE_STEPS 4
+#endif
+#ifndef SNELL_LINEAR_MARCH_MAX_REFINE_STEPS
+#  define SNELL_LINEAR_MARCH_MAX_REFINE_STEPS 24
+#endif
+#ifndef SNELL_LINEAR_MARCH_MAX_DISTANCE
+#  define SNELL_LINEAR_MARCH_MAX_DISTANCE 10.0f
+#endif
+
+SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                   float maxDistance, int steps, int refineSteps) {
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
+      !SNELL_FINITE(maxDistance) || !(maxDistance > 0.0f)) {
+    return snellHitMiss(0);
+  }
+  float len = length(dir);
+  if (!SNELL_FINITE(len) || !(len >= SNELL_FLT_MIN)) {
+    return snellHitMiss(0);
+  }
+  float tMax = maxDistance / len;
+  if (dir.z > 0.0f) {
+    float tNear = (-surface.zNear - origin.z) / dir.z;
+    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+  }
+  if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
+    return snellHitMiss(0);
+  }
+  int n = clamp(steps, 1, SNELL_LINEAR_MARCH_MAX_STEPS);
+  int nr = clamp(refineSteps, 0, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS);
+  float dt = tMax / float(n);
+  int fetches = 0;
+  bool found = false;
+  float tHit = 0.0f;
+  vec2 uvHit = vec2(0.0f, 0.0f);
+  for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
+    if (i > n) {
+      break;
+    }
+    float t = float(i) * dt;
+    vec3 p = origin + t * dir;
+    SnellScreenPoint sp = snellViewToUv(surface.clipFromView, p);
+    if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
+      return snellHitMiss(fetches);
+    }
+    SnellSurfaceSample x = snellSampleSurface(depthTex, sp.uv, surface);
+    fetches = fetches + 1;
+    if (x.valid && p.z <= x.viewZ) {
+      found = true;
+      tHit = t;
+      uvHit = sp.uv;
+      break;
+    }
+  }
+  if (!found) {
+    return snellHitMiss(fetches);
+  }
+  float lo = tHit - dt;
+  for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
+    if (j >= nr) {
+      break;
+    }
+    float mid = 0.5f * (lo + tHit);
+    vec3 q = origin + mid * dir;
+    SnellScreenPoint sq = snellViewToUv(surface.clipFromView, q);
+    bool crosses = false;
+    if (sq.valid && sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f) {
+      SnellSurfaceSample y = snellSampleSurface(depthTex, sq.uv, surface);
+      fetches = fetches + 1;
+      crosses = y.valid && q.z <= y.viewZ;
+    }
+    if (crosses) {
+      tHit = mid;
+      uvHit = sq.uv;
+    } else {
+      lo = mid;
+    }
+  }
+  SnellHit h;
+  h.uv = uvHit;
+  h.position = origin + tHit * dir;
+  h.valid = true;
+  h.fetches = fetches;
+  return h;
+}
+
+SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface) {
+  return snellLinearMarch(origin, dir, depthTex, surface, SNELL_LINEAR_MARCH_MAX_DISTANCE, SNELL_LINEAR_MARCH_STEPS,
+                          SNELL_LINEAR_MARCH_REFINE_STEPS);
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_DDA_MARCH_GLSL
+#define SNELL_INTERSECT_DDA_MARCH_GLSL
+
+#ifndef SNELL_DDA_STEPS
+#  define SNELL_DDA_STEPS 256
+#endif
+#ifndef SNELL_DDA_MAX_STEPS
+#  define SNELL_DDA_MAX_STEPS 1024
+#endif
+#ifndef SNELL_DDA_STRIDE
+#  define SNELL_DDA_STRIDE 1.0f
+#endif
+#ifndef SNELL_DDA_THICKNESS
+#  define SNELL_DDA_THICKNESS SNELL_FLT_MAX
+#endif
+#ifndef SNELL_DDA_MAX_DISTANCE
+#  define SNELL_DDA_MAX_DISTANCE 10.0f
+#endif
+
+SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                float maxDistance, float thickness, float stride, int steps) {
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
+      !SNELL_FINITE(maxDistance) || !(maxDistance > 0.0f) || !SNELL_FINITE(surface.zNear)) {
+    return snellHitMiss(0);
+  }
+  float thick = isnan(thickness) ? SNELL_DDA_THICKNESS : clamp(thickness, 0.0f, SNELL_FLT_MAX);
+  float px = isnan(stride) ? 1.0f : clamp(stride, 1.0f, SNELL_FLT_MAX);
+  float len = length(dir);
+  if (!SNELL_FINITE(len) || !(len >= SNELL_FLT_MIN) || !(origin.z <= -surface.zNear)) {
+    return snellHitMiss(0);
+  }
+  float tMax = min(maxDistance, 1e30f) / len;
+  if (dir.z > 0.0f) {
+    float tNear = (-surface.zNear - origin.z) / dir.z;
+    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+  }
+  if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
+    return snellHitMiss(0);
+  }
+  vec3 end = origin + tMax * dir;
+  vec4 h0 = snellViewToClip(surface.clipFromView, origin);
+  vec4 h1 = snellViewToClip(surface.clipFromView, end);
+  ivec2 size = SNELL_TEXTURE_SIZE(depthTex, surface.lod);
+  if (!SNELL_FINITE(end.x) || !SNELL_FINITE(end.y) || !SNELL_FINITE(end.z) ||
+      !SNELL_FINITE(h0.x) || !SNELL_FINITE(h0.y) || !SNELL_FINITE(h0.w) ||
+      !SNELL_FINITE(h1.x) || !SNELL_FINITE(h1.y) || !SNELL_FINITE(h1.w) ||
+      !(h0.w >= SNELL_FLT_MIN) || !(h1.w >= SNELL_FLT_MIN) ||
+      !(h0.w <= 1.0f / SNELL_FLT_MIN) || !(h1.w <= 1.0f / SNELL_FLT_MIN) || size.x <= 0 || size.y <= 0) {
+    return snellHitMiss(0);
+  }
+  float k0 = 1.0f / h0.w;
+  float k1 = 1.0f / h1.w;
+  vec3 q0 = origin * k0;
+  vec3 q1 = end * k1;
+  vec2 uv0 = vec2(h0.x * k0, h0.y * k0) * 0.5f + 0.5f;
+  vec2 duv = vec2(h1.x * k1, h1.y * k1) * 0.5f + 0.5f - uv0;
+  float major = max(abs(duv.x * float(size.x)), abs(duv.y * float(size.y)));
+  if (!SNELL_FINITE(major) || !SNELL_FINITE(q0.x) || !SNELL_FINITE(q0.y) ||
+      !SNELL_FINITE(q0.z) || !SNELL_FINITE(q1.x) || !SNELL_FINITE(q1.y) ||
+      !SNELL_FINITE(q1.z)) {
+    return snellHitMiss(0);
+  }
+  float ds = major > px ? px / major : 1.0f;
+  int n = clamp(steps, 1, SNELL_DDA_MAX_STEPS);
+  int fetches = 0;
+  float sA = 0.0f;
+  float zA = origin.z;
+  for (int i = 0; i < SNELL_DDA_MAX_STEPS; ++i) {
+    if (i >= n || sA >= 1.0f) {
+      break;
+    }
+    float sC = min(float(i) * ds, 1.0f);
+    float sB = min((float(i) + 0.5f) * ds, 1.0f);
+    float zB = (q0.z * (1.0f - sB) + q1.z * sB) / (k0 * (1.0f - sB) + k1 * sB);
+    vec2 uv = uv0 + sC * duv;
+    if (!(uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) {
+      return snellHitMiss(fetches);
+    }
+    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
+    fetches = fetches + 1;
+    float zNearRay = max(zA, zB);
+    float zFarRay = min(zA, zB);
+    if (x.valid && zNearRay >= x.viewZ - thick && zFarRay <= x.viewZ) {
+      float zHit = clamp(x.viewZ, zFarRay, zNearRay);
+      vec3 pA = (q0 * (1.0f - sA) + q1 * sA) / (k0 * (1.0f - sA) + k1 * sA);
+      vec3 pB = (q0 * (1.0f - sB) + q1 * sB) / (k0 * (1.0f - sB) + k1 * sB);
+      float f = pB.z != pA.z ? clamp((zHit - pA.z) / (pB.z - pA.z), 0.0f, 1.0f) : 0.5f;
+      SnellHit h;
+      h.uv = uv;
+      h.position = pA + f * (pB - pA);
+      h.valid = true;
+      h.fetches = fetches;
+      return h;
+    }
+    sA = sB;
+    zA = zB;
+  }
+  return snellHitMiss(fetches);
+}
+
+SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface) {
+  return snellDdaMarch(origin, dir, depthTex, surface, SNELL_DDA_MAX_DISTANCE, SNELL_DDA_THICKNESS, SNELL_DDA_STRIDE,
+                       SNELL_DDA_STEPS);
+}
+
+#endif
+#endif
+#ifndef SNELL_SHADE_GLSL
+#define SNELL_SHADE_GLSL
+
+#ifndef SNELL_SHADE_PERTURB_GLSL
+#define SNELL_SHADE_PERTURB_GLSL
+
+#ifndef SNELL_PERTURB_SCALE
+#  define SNELL_PERTURB_SCALE 0.05f
+#endif
+
+SNELL_FN vec3 snellUnpackBump(vec3 texel) {
+  return texel * 2.0f - 1.0f;
+}
+
+SNELL_FN vec2 snellPerturbUv(vec2 uv, vec2 bump, float scale) {
+  float u = SNELL_FINITE(uv.x) ? uv.x : 0.5f;
+  float v = SNELL_FINITE(uv.y) ? uv.y : 0.5f;
+  float du = scale * bump.x;
+  float dv = scale * bump.y;
+  du = SNELL_FINITE(du) ? du : 0.0f;
+  dv = SNELL_FINITE(dv) ? dv : 0.0f;
+  return clamp(vec2(u + du, v + dv), vec2(-SNELL_FLT_MAX, -SNELL_FLT_MAX), vec2(SNELL_FLT_MAX, SNELL_FLT_MAX));
+}
+
+SNELL_FN vec2 snellPerturbUv(vec2 uv, vec2 bump) {
+  return snellPerturbUv(uv, bump, SNELL_PERTURB_SCALE);
+}
+
+SNELL_FN vec4 snellPerturbSample(SNELL_TEX2D sceneColor, vec2 uv, vec2 bump, float scale) {
+  vec2 p = clamp(snellPerturbUv(uv, bump, scale), vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  return SNELL_SAMPLE_LOD(sceneColor, p, 0.0f);
+}
+
+#endif
+
+#ifndef SNELL_SHADE_PERTURB_EDGE_FADE_GLSL
+#define SNELL_SHADE_PERTURB_EDGE_FADE_GLSL
+
+#ifndef SNELL_SCREEN_EDGE_FADE
+#  define SNELL_SCREEN_EDGE_FADE 0.05f
+#endif
+
+SNELL_FN float snellScreenEdgeFade(vec2 uv, float width) {
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y)) {
+    return 0.0f;
+  }
+  float e = min(min(uv.x, 1.0f - uv.x), min(uv.y, 1.0f - uv.y));
+  if (isnan(width) || !(width >= SNELL_FLT_MIN)) {
+    return e >= 0.0f ? 1.0f : 0.0f;
+  }
+  float w = min(width, 0.5f);
+  return clamp(e / w, 0.0f, 1.0f);
+}
+
+SNELL_FN float snellScreenEdgeFade(vec2 uv) {
+  return snellScreenEdgeFade(uv, SNELL_SCREEN_EDGE_FADE);
+}
+
+#endif
+
+#ifndef SNELL_SHADE_REFRACTION_MASK_GLSL
+#define SNELL_SHADE_REFRACTION_MASK_GLSL
+
+SNELL_FN vec4 snellRefractionMaskBlend(vec4 refrA, vec4 refrB) {
+  float w = isnan(refrA.w) ? 1.0f : clamp(refrA.w, 0.0f, 1.0f);
+  return refrB * w + vec4(refrA.x, refrA.y, refrA.z, w) * (1.0f - w);
+}
+
+SNELL_FN vec4 snellRefractionMasked(SNELL_TEX2D sceneColor, vec2 uv, vec2 bump, float scale) {
+  vec2 uvA = clamp(snellPerturbUv(uv, bump, scale), vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  vec2 uvB = clamp(snellPerturbUv(uv, vec2(0.0f, 0.0f), 0.0f), vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  vec4 refrA = SNELL_SAMPLE_LOD(sceneColor, uvA, 0.0f);
+  vec4 refrB = SNELL_SAMPLE_LOD(sceneColor, uvB, 0.0f);
+  return snellRefractionMaskBlend(refrA, refrB);
+}
+
+#endif
+
+#ifndef SNELL_SHADE_REFRACTION_MASK_DEPTH_GLSL
+#define SNELL_SHADE_REFRACTION_MASK_DEPTH_GLSL
+
+SNELL_FN bool snellRefractionDepthAccept(float sceneDepth, float surfaceDepth, int convention) {
+  if (isnan(sceneDepth) || isnan(surfaceDepth)) {
+    return false;
+  }
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_ZERO_ONE || convention == SNELL_DEPTH_INFINITE_GL) {
+    return sceneDepth >= surfaceDepth;
+  }
+  if (convention == SNELL_DEPTH_REVERSED || convention == SNELL_DEPTH_INFINITE_REVERSED) {
+    return sceneDepth <= surfaceDepth;
+  }
+  return false;
+}
+
+SNELL_FN vec4 snellRefractionMaskedDepth(SNELL_TEX2D sceneColor, SNELL_TEX2D sceneDepthTex, vec2 uv, vec2 bump,
+                                         float scale, float surfaceDepth, int convention) {
+  vec2 uvA = clamp(snellPerturbUv(uv, bump, scale), vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  vec2 uvB = clamp(snellPerturbUv(uv, vec2(0.0f, 0.0f), 0.0f), vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  float sceneDepth = SNELL_SAMPLE_LOD(sceneDepthTex, uvA, 0.0f).x;
+  if (snellRefractionDepthAccept(sceneDepth, surfaceDepth, convention)) {
+    return SNELL_SAMPLE_LOD(sceneColor, uvA, 0.0f);
+  }
+  return SNELL_SAMPLE_LOD(sceneColor, uvB, 0.0f);
+}
+
+#endif
+
+#ifndef SNELL_SHADE_WATER_GLSL
+#define SNELL_SHADE_WATER_GLSL
+
+struct SnellWaterParams {
+  vec3 refractionBumpScale;
+  vec3 reflectionBumpScale;
+  float fresnelBias;
+  float fresnelPower;
+  float deepDistance;
+  vec3 waterColor;
+  vec3 deepColor;
+};
+
+SNELL_FN SnellWaterParams snellWaterParams() {
+  SnellWaterParams p;
+  p.refractionBumpScale = vec3(0.075f, 0.075f, 1.0f);
+  p.reflectionBumpScale = vec3(0.02f, 0.02f, 1.0f);
+  p.fresnelBias = 0.2f;
+  p.fresnelPower = 5.0f;
+  p.deepDistance = 10.0f;
+  p.waterColor = vec3(0.0f, 0.15f, 0.115f);
+  p.deepColor = vec3(0.0f, 0.15f, 0.115f);
+  return p;
+}
+
+SNELL_FN vec3 snellWaterBumpAverage(vec3 t0, vec3 t1, vec3 t2, vec3 t3) {
+  vec3 n = snellSafeNormalize((t0 + t1 + t2 + t3) * 2.0f - 4.0f);
+  if (dot(n, n) == 0.0f) {
+    return vec3(0.0f, 0.0f, 1.0f);
+  }
+  return n;
+}
+
+SNELL_FN vec4 snellWater(SNELL_TEX2D sceneColor, SNELL_TEX2D reflectionMap, vec2 uv, vec3 bumpNormal, vec3 eye,
+                         float viewDistance, SnellWaterParams p) {
+  vec3 n = snellSafeNormalize(bumpNormal);
+  if (dot(n, n) == 0.0f) {
+    n = vec3(0.0f, 0.0f, 1.0f);
+  }
+  vec3 e = snellSafeNormalize(eye);
+  vec3 refrBump = n * p.refractionBumpScale;
+  vec3 reflBump = n * p.reflectionBumpScale;
+  vec2 one = vec2(1.0f, 1.0f);
+  vec2 zero = vec2(0.0f, 0.0f);
+  vec2 uvRefl = clamp(snellPerturbUv(uv, vec2(reflBump.x, reflBump.y), 1.0f), zero, one);
+  vec2 uvRefr = clamp(snellPerturbUv(uv, vec2(refrBump.x, refrBump.y), 1.0f), zero, one);
+  vec2 uvProj = clamp(snellPerturbUv(uv, zero, 0.0f), zero, one);
+  vec4 reflection = SNELL_SAMPLE_LOD(reflectionMap, uvRefl, 0.0f);
+  vec4 refrA = SNELL_SAMPLE_LOD(sceneColor, uvRefr, 0.0f);
+  vec4 refrB = SNELL_SAMPLE_LOD(sceneColor, uvProj, 0.0f);
+  vec4 refraction = snellRefractionMaskBlend(refrA, refrB);
+  float nDotL = dot(e, reflBump);
+  nDotL = isnan(nDotL) ? 0.0f : clamp(nDotL, 0.0f, 1.0f);
+  float facing = 1.0f - nDotL;
+  float fresnel = snellFresnelBiasPower(nDotL, p.fresnelBias, p.fresnelPower);
+  float distScale = 1.0f;
+  if (!isnan(viewDistance) && viewDistance >= SNELL_FLT_MIN) {
+    float q = p.deepDistance / viewDistance;
+    distScale = isnan(q) ? 1.0f : clamp(q, 0.0f, 1.0f);
+  }
+  vec3 refr = vec3(refraction.x, refraction.y, refraction.z);
+  vec3 deep = refr * distScale + p.deepColor * (1.0f - distScale);
+  vec3 water = p.waterColor * facing + deep * (1.0f - facing);
+  vec3 c = vec3(reflection.x, reflection.y, reflection.z) * fresnel + water;
+  return vec4(c.x, c.y, c.z, 1.0f);
+}
+
+#endif
+
+#ifndef SNELL_SHADE_GLASS_GLSL
+#define SNELL_SHADE_GLASS_GLSL
+
+#ifndef SNELL_GLASS_BUMP_SCALE
+#  define SNELL_GLASS_BUMP_SCALE 0.2f
+#endif
+#ifndef SNELL_GLASS_FRESNEL_BIAS
+#  define SNELL_GLASS_FRESNEL_BIAS 0.4f
+#endif
+#ifndef SNELL_GLASS_FRESNEL_POWER
+#  define SNELL_GLASS_FRESNEL_POWER 5.0f
+#endif
+
+SNELL_FN vec4 snellGlass(SNELL_TEX2D sceneColor, SNELL_TEX2D reflectionMap, vec2 uv, vec3 bumpTexel, vec4 diffuse,
+                         vec3 eye) {
+  vec3 b = snellSafeNormalize(snellUnpackBump(bumpTexel) *
+                              vec3(SNELL_GLASS_BUMP_SCALE, SNELL_GLASS_BUMP_SCALE, 1.0f));
+  if (dot(b, b) == 0.0f) {
+    b = vec3(0.0f, 0.0f, 1.0f);
+  }
+  vec3 e = snellSafeNormalize(eye);
+  float lDotN = dot(b, e);
+  lDotN = isnan(lDotN) ? 0.0f : lDotN;
+  vec3 r = b * (2.0f * lDotN) - e;
+  vec2 one = vec2(1.0f, 1.0f);
+  vec2 zero = vec2(0.0f, 0.0f);
+  vec2 uvEnv = clamp((vec2(r.x, r.y) + 1.0f) * 0.5f, zero, one);
+  vec4 env = SNELL_SAMPLE_LOD(reflectionMap, uvEnv, 0.0f);
+  vec2 uvRefr = clamp(snellPerturbUv(uv, vec2(b.x, b.y), 1.0f), zero, one);
+  vec2 uvProj = clamp(snellPerturbUv(uv, zero, 0.0f), zero, one);
+  vec4 refraction =
+      snellRefractionMaskBlend(SNELL_SAMPLE_LOD(sceneColor, uvRefr, 0.0f), SNELL_SAMPLE_LOD(sceneColor, uvProj, 0.0f));
+  float f = snellFresnelBiasPower(lDotN, SNELL_GLASS_FRESNEL_BIAS, SNELL_GLASS_FRESNEL_POWER);
+  vec3 d = vec3(isnan(diffuse.x) ? 1.0f : diffuse.x, isnan(diffuse.y) ? 1.0f : diffuse.y,
+                isnan(diffuse.z) ? 1.0f : diffuse.z);
+  vec3 t = clamp(d * 0.9f + 0.1f, vec3(0.0f, 0.0f, 0.0f), vec3(1.0f, 1.0f, 1.0f));
+  vec4 tint = vec4(t.x, t.y, t.z, diffuse.w);
+  return tint * refraction * (1.0f - f) + env * f;
+}
+
+#endif
+
+#ifndef SNELL_SHADE_ICE_GLSL
+#define SNELL_SHADE_ICE_GLSL
+
+#ifndef SNELL_ICE_ETA
+#  define SNELL_ICE_ETA (1.0003f / 1.3091f)
+#endif
+#ifndef SNELL_ICE_TIR_POLICY
+#  define SNELL_ICE_TIR_POLICY SNELL_TIR_REFLECT
+#endif
+
+struct SnellIce {
+  vec3 refracted;
+  vec3 reflected;
+  float fresnel;
+  bool valid;
+};
+
+SNELL_FN SnellIce snellIce(vec3 eye, vec3 frontNormal, vec3 backNormal, float a, float eta) {
+  SnellIce s;
+  s.refracted = vec3(0.0f, 0.0f, 0.0f);
+  s.reflected = vec3(0.0f, 0.0f, 0.0f);
+  s.fresnel = 1.0f;
+  s.valid = false;
+  vec3 e = snellSafeNormalize(eye);
+  vec3 nf = snellSafeNormalize(frontNormal);
+  if (dot(e, e) == 0.0f || dot(nf, nf) == 0.0f) {
+    return s;
+  }
+  s.valid = true;
+  float k = (!isnan(eta) && eta >= SNELL_FLT_MIN && eta < SNELL_FLT_MAX) ? eta : 1.0f;
+  vec3 nr = snellIceNormalBlend(nf, backNormal, a);
+  SnellRefraction r = snellRefract(e, nr, k, SNELL_ICE_TIR_POLICY);
+  s.refracted = r.direction;
+  s.reflected = e - nf * (2.0f * dot(nf, e));
+  s.fresnel = dot(r.direction, r.direction) == 0.0f ? 1.0f : snellFresnelCubic(e, nf);
+  return s;
+}
+
+SNELL_FN SnellIce snellIce(vec3 eye, vec3 frontNormal, vec3 backNormal) {
+  return snellIce(eye, frontNormal, backNormal, SNELL_ICE_NORMAL_BLEND, SNELL_ICE_ETA);
+}
+
+SNELL_FN vec4 snellIceCompose(vec4 reflection, vec4 refraction, float fresnel) {
+  float f = isnan(fresnel) ? 1.0f : clamp(fresnel, 0.0f, 1.0f);
+  return refraction * (1.0f - f) + reflection * f;
+}
+
+#endif
+
+#ifndef SNELL_SHADE_ICE_CRACK_CLIP_GLSL
+#define SNELL_SHADE_ICE_CRACK_CLIP_GLSL
+
+SNELL_FN bool snellIceCrackKeep(float crackDepth, float frontDepth, float backDepth, int convention) {
+  if (isnan(crackDepth) || isnan(frontDepth) || isnan(backDepth)) {
+    return false;
+  }
+  bool inRange = (crackDepth >= 0.0f && crackDepth <= 1.0f) && (frontDepth >= 0.0f && frontDepth <= 1.0f) &&
+                 (backDepth >= 0.0f && backDepth <= 1.0f);
+  if (!inRange) {
+    return false;
+  }
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_ZERO_ONE || convention == SNELL_DEPTH_INFINITE_GL) {
+    return frontDepth <= crackDepth && crackDepth <= backDepth;
+  }
+  if (convention == SNELL_DEPTH_REVERSED || convention == SNELL_DEPTH_INFINITE_REVERSED) {
+    return frontDepth >= crackDepth && crackDepth >= backDepth;
+  }
+  return false;
+}
+
+#endif
+
+#ifndef SNELL_SHADE_REFRACTIVE_TEXTURE_MAP_GLSL
+#define SNELL_SHADE_REFRACTIVE_TEXTURE_MAP_GLSL
+
+#define SNELL_RTM_CLAMP 0
+#define SNELL_RTM_SHRINK 1
+
+struct SnellRefractiveTextureMapParams {
+  vec2 extentMin;
+  vec2 extentMax;
+  float restY;
+  float depth;
+  float refractionFactor;
+  int policy;
+  float uvMin;
+  float uvMax;
+};
+
+struct SnellRefractiveTextureMapHit {
+  vec2 uv;
+  vec3 position;
+  bool valid;
+  bool inRange;
+};
+
+SNELL_FN SnellRefractiveTextureMapParams snellRefractiveTextureMapParams(vec2 extentMin, vec2 extentMax, float restY,
+                                                                         float depth, float refractionFactor) {
+  SnellRefractiveTextureMapParams p;
+  p.extentMin = extentMin;
+  p.extentMax = extentMax;
+  p.restY = restY;
+  p.depth = depth;
+  p.refractionFactor = refractionFactor;
+  p.policy = SNELL_RTM_CLAMP;
+  p.uvMin = 0.0f;
+  p.uvMax = 1.0f;
+  return p;
+}
+
+SNELL_FN float snellRefractiveTextureMapAxis(float x, float lo, float hi) {
+  float len = hi - lo;
+  if (!SNELL_FINITE(x) || !SNELL_FINITE(lo) || !SNELL_FINITE(hi) || !SNELL_FINITE(len) ||
+      !(abs(len) >= SNELL_FLT_MIN)) {
+    return 0.5f;
+  }
+  return clamp((x - lo) / len, -1e6f, 1e6f);
+}
+
+SNELL_FN SnellRefractiveTextureMapHit snellRefractiveTextureMap(vec3 vertex, vec3 normal, vec3 eyePosition,
+                                                                SnellRefractiveTextureMapParams p) {
+  SnellRefractiveTextureMapHit h;
+  float planeY = p.restY - p.depth;
+  vec3 dir = snellApproxRefract(vertex - eyePosition, normal, p.refractionFactor);
+  SnellRayPlaneHit hit = snellRayPlane(vertex, dir, vec3(0.0f, planeY, 0.0f), vec3(0.0f, 1.0f, 0.0f));
+  h.valid = hit.valid && dir.y < 0.0f;
+  if (h.valid) {
+    h.position = hit.position;
+  } else {
+    h.position = vec3(SNELL_FINITE(vertex.x) ? vertex.x : 0.0f, SNELL_FINITE(planeY) ? planeY : 0.0f,
+                      SNELL_FINITE(vertex.z) ? vertex.z : 0.0f);
+  }
+  float px = h.valid || SNELL_FINITE(vertex.x) ? h.position.x : vertex.x;
+  float pz = h.valid || SNELL_FINITE(vertex.z) ? h.position.z : vertex.z;
+  vec2 e = vec2(snellRefractiveTextureMapAxis(px, p.extentMin.x, p.extentMax.x),
+                snellRefractiveTextureMapAxis(pz, p.extentMin.y, p.extentMax.y));
+  h.inRange = h.valid && e.x >= 0.0f && e.x <= 1.0f && e.y >= 0.0f && e.y <= 1.0f;
+  float a = isnan(p.uvMin) ? 0.0f : clamp(p.uvMin, 0.0f, 1.0f);
+  float b = isnan(p.uvMax) ? 1.0f : clamp(p.uvMax, 0.0f, 1.0f);
+  float lo = min(a, b);
+  float hi = max(a, b);
+  if (p.policy == SNELL_RTM_SHRINK) {
+    h.uv = clamp(vec2(lo, lo) + e * (hi - lo), vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  } else {
+    h.uv = clamp(e, vec2(lo, lo), vec2(hi, hi));
+  }
+  return h;
+}
+
+#endif
+
+#ifndef SNELL_SHADE_DISPERSION_GLSL
+#define SNELL_SHADE_DISPERSION_GLSL
+
+#ifndef SNELL_DISPERSION_LAMBDA_R
+#  define SNELL_DISPERSION_LAMBDA_R 656.27f
+#endif
+#ifndef SNELL_DISPERSION_LAMBDA_G
+#  define SNELL_DISPERSION_LAMBDA_G 587.56f
+#endif
+#ifndef SNELL_DISPERSION_LAMBDA_B
+#  define SNELL_DISPERSION_LAMBDA_B 486.13f
+#endif
+
+struct SnellDispersion {
+  vec3 red;
+  vec3 green;
+  vec3 blue;
+  bool tir;
+  bool valid;
+};
+
+SNELL_FN vec3 snellDispersionIors(float iorD, float abbe) {
+  if (isnan(iorD) || !(iorD >= SNELL_FLT_MIN) || isinf(iorD)) {
+    return vec3(1.0f, 1.0f, 1.0f);
+  }
+  if (isnan(abbe) || !(abbe > 0.0f) || isinf(abbe)) {
+    return vec3(iorD, iorD, iorD);
+  }
+  float v = max(abbe, 1.0f);
+  float wC = 1e6f / (656.27f * 656.27f);
+  float wD = 1e6f / (587.56f * 587.56f);
+  float wF = 1e6f / (486.13f * 486.13f);
+  float wR = 1e6f / (SNELL_DISPERSION_LAMBDA_R * SNELL_DISPERSION_LAMBDA_R);
+  float wG = 1e6f / (SNELL_DISPERSION_LAMBDA_G * SNELL_DISPERSION_LAMBDA_G);
+  float wB = 1e6f / (SNELL_DISPERSION_LAMBDA_B * SNELL_DISPERSION_LAMBDA_B);
+  float k = (iorD - 1.0f) / (v * (wF - wC));
+  vec3 n = vec3(iorD + k * (wR - wD), iorD + k * (wG - wD), iorD + k * (wB - wD));
+  return clamp(n, vec3(1e-6f, 1e-6f, 1e-6f), vec3(1e6f, 1e6f, 1e6f));
+}
+
+SNELL_FN SnellDispersion snellDispersionRefract(vec3 incident, vec3 normal, float iorOutside, vec3 iors,
+                                                int policy) {
+  SnellRefraction r = snellRefract(incident, normal, snellIorToEta(iorOutside, iors.x), policy);
+  SnellRefraction g = snellRefract(incident, normal, snellIorToEta(iorOutside, iors.y), policy);
+  SnellRefraction b = snellRefract(incident, normal, snellIorToEta(iorOutside, iors.z), policy);
+  SnellDispersion d;
+  d.red = r.direction;
+  d.green = g.direction;
+  d.blue = b.direction;
+  d.tir = r.tir || g.tir || b.tir;
+  d.valid = r.valid && g.valid && b.valid;
+  return d;
+}
+
+#endif
+
+#ifndef SNELL_SHADE_ROUGHNESS_GLSL
+#define SNELL_SHADE_ROUGHNESS_GLSL
+
+SNELL_FN float snellRoughnessToLod(float roughness, int levels) {
+  if (levels <= 1) {
+    return 0.0f;
+  }
+  float r = isnan(roughness) ? 0.0f : clamp(roughness, 0.0f, 1.0f);
+  float top = float(levels - 1);
+  float m = 1.0f - r;
+  return min(top * (1.0f - m * m), top);
+}
+
+#endif
+
+#ifndef SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
+#define SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
+
+struct SnellCubeFace {
+  int face;
+  vec2 uv;
+  bool valid;
+};
+
+SNELL_FN SnellCubeFace snellCubeFaceUv(vec3 dir) {
+  SnellCubeFace r;
+  r.face = 0;
+  r.uv = vec2(0.5f, 0.5f);
+  r.valid = false;
+  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
+    return r;
+  }
+  float ax = abs(dir.x);
+  float ay = abs(dir.y);
+  float az = abs(dir.z);
+  float sc = 0.0f;
+  float tc = 0.0f;
+  float ma = 0.0f;
+  if (ax >= ay && ax >= az) {
+    ma = ax;
+    r.face = dir.x >= 0.0f ? 0 : 1;
+    sc = dir.x >= 0.0f ? -dir.z : dir.z;
+    tc = -dir.y;
+  } else if (ay >= az) {
+    ma = ay;
+    r.face = dir.y >= 0.0f ? 2 : 3;
+    sc = dir.x;
+    tc = dir.y >= 0.0f ? dir.z : -dir.z;
+  } else {
+    ma = az;
+    r.face = dir.z >= 0.0f ? 4 : 5;
+    sc = dir.z >= 0.0f ? dir.x : -dir.x;
+    tc = -dir.y;
+  }
+  if (!(ma >= SNELL_FLT_MIN)) {
+    r.face = 0;
+    return r;
+  }
+  r.uv = vec2(0.5f * (sc / ma + 1.0f), 0.5f * (tc / ma + 1.0f));
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+#ifndef SNELL_SHADE_ENVIRONMENT_GLSL
+#define SNELL_SHADE_ENVIRONMENT_GLSL
+
+#if defined(SNELL_LANG_GLSL)
+#  ifndef SNELL_TEXCUBE
+#    define SNELL_TEXCUBE samplerCube
+#  endif
+#  ifndef SNELL_SAMPLE_CUBE_LOD
+#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) textureLod(tex, dir, lod)
+#  endif
+#elif defined(SNELL_LANG_HLSL)
+#  ifndef SNELL_TEXCUBE
+#    define SNELL_TEXCUBE TextureCube<float4>
+#  endif
+#  ifndef SNELL_SAMPLE_CUBE_LOD
+#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) ((tex).SampleLevel(SNELL_HLSL_SAMPLER, dir, lod))
+#  endif
+#else
+#  ifndef SNELL_TEXCUBE
+#    define SNELL_TEXCUBE const ::snell::TextureCube&
+#  endif
+#  ifndef SNELL_SAMPLE_CUBE_LOD
+#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) ((tex).sampleLod(dir, lod))
+#  endif
+#endif
+
+#ifndef SNELL_ENVIRONMENT_TEX
+#  define SNELL_ENVIRONMENT_TEX SNELL_TEX2D
+#endif
+#ifndef SNELL_SAMPLE_ENVIRONMENT
+#  define SNELL_SAMPLE_ENVIRONMENT(tex, dir, lod) snellSampleEquirect(tex, dir, lod)
+#endif
+
+SNELL_FN float snellAtan2(float y, float x) {
+  if (isnan(x) || isnan(y)) {
+    return 0.0f;
+  }
+  float ax = abs(x);
+  float ay = abs(y);
+  float hi = max(ax, ay);
+  float lo = min(ax, ay);
+  if (!(hi > 0.0f)) {
+    return 0.0f;
+  }
+  float a = isinf(hi) ? (isinf(lo) ? 1.0f : 0.0f) : lo / hi;
+  float s = a * a;
+  float r = a * (0.9998660f + s * (-0.3302995f + s * (0.1801410f + s * (-0.0851330f + s * 0.0208351f))));
+  if (ay > ax) {
+    r = 1.57079632679f - r;
+  }
+  if (x < 0.0f) {
+    r = 3.14159265359f - r;
+  }
+  if (y < 0.0f) {
+    r = -r;
+  }
+  return r;
+}
+
+SNELL_FN vec2 snellEquirectUv(vec3 dir) {
+  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
+    return vec2(0.5f, 0.5f);
+  }
+  float horizontal = sqrt(dir.x * dir.x + dir.z * dir.z);
+  float u = 0.5f + snellAtan2(dir.x, -dir.z) * (0.5f / SNELL_PI);
+  float v = 0.5f + snellAtan2(dir.y, horizontal) * (1.0f / SNELL_PI);
+  return vec2(u, v);
+}
+
+SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
+  return SNELL_SAMPLE_LOD(env, snellEquirectUv(dir), lod);
+}
+
+#endif
+
+#ifndef SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
+#define SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
+
+#define SNELL_STRATEGY_SINGLE 0
+#define SNELL_STRATEGY_PLANE_NORMAL 1
+#define SNELL_STRATEGY_PLANE_DEPTH 2
+#define SNELL_STRATEGY_CBS 3
+#define SNELL_STRATEGY_BINARY 4
+#define SNELL_STRATEGY_LINEAR_BINARY 5
+#define SNELL_STRATEGY_LINEAR_MARCH 6
+#define SNELL_STRATEGY_DDA 7
+#define SNELL_STRATEGY_WYMAN 8
+
+#define SNELL_RANGE_PYRAMID 0
+#define SNELL_RANGE_EXPLICIT 1
+
+#define SNELL_EXIT_ENVIRONMENT 0
+#define SNELL_EXIT_SCENE 1
+
+#define SNELL_FALLBACK_ENVIRONMENT 0
+#define SNELL_FALLBACK_EDGE_FADE 1
+
+#define SNELL_REFLECT_ENVIRONMENT 0
+#define SNELL_REFLECT_SCENE 1
+
+struct SnellIntersectOptions {
+  int strategy;
+  int steps;
+  int refineSteps;
+  float maxDistance;
+  float thickness;
+  float stride;
+  float normalLod;
+  int maxLod;
+  int rangeSource;
+  float zNearest;
+  float zFarthest;
+  int depthFilter;
+};
+
+struct SnellTechniqueOptions {
+  SnellIntersectOptions back;
+  SnellIntersectOptions exit;
+  int exitMode;
+  int fallback;
+  float fallbackDistance;
+  float edgeFadeWidth;
+  int tirPolicy;
+  float ior;
+  float iorOutside;
+  int dispersion;
+  vec3 iors;
+  vec3 absorption;
+  bool reflection;
+  int reflectionMode;
+  SnellIntersectOptions reflect;
+  float roughness;
+  int sceneColorLevels;
+  int environmentLevels;
+  vec3 envX;
+  vec3 envY;
+  vec3 envZ;
+};
+
+SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
+  SnellIntersectOptions o;
+  o.strategy = strategy;
+  o.steps = 0;
+  o.refineSteps = 0;
+  o.maxDistance = SNELL_DDA_MAX_DISTANCE;
+  o.thickness = SNELL_DDA_THICKNESS;
+  o.stride = SNELL_DDA_STRIDE;
+  o.normalLod = 0.0f;
+  o.maxLod = -1;
+  o.rangeSource = SNELL_RANGE_PYRAMID;
+  o.zNearest = 0.0f;
+  o.zFarthest = 0.0f;
+  o.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+  if (strategy == SNELL_STRATEGY_CBS) {
+    o.steps = SNELL_CBS_STEPS;
+  } else if (strategy == SNELL_STRATEGY_BINARY) {
+    o.steps = SNELL_BINARY_SEARCH_STEPS;
+  } else if (strategy == SNELL_STRATEGY_LINEAR_BINARY) {
+    o.steps = SNELL_LINEAR_SEARCH_STEPS;
+    o.refineSteps = SNELL_BINARY_SEARCH_STEPS;
+  } else if (strategy == SNELL_STRATEGY_PLANE_NORMAL || strategy == SNELL_STRATEGY_PLANE_DEPTH) {
+    o.steps = SNELL_PLANE_ITERATIONS;
+  } else if (strategy == SNELL_STRATEGY_LINEAR_MARCH) {
+    o.steps = SNELL_LINEAR_MARCH_STEPS;
+    o.refineSteps = SNELL_LINEAR_MARCH_REFINE_STEPS;
+    o.maxDistance = SNELL_LINEAR_MARCH_MAX_DISTANCE;
+  } else if (strategy == SNELL_STRATEGY_DDA) {
+    o.steps = SNELL_DDA_STEPS;
+  }
+  return o;
+}
+
+SNELL_FN SnellTechniqueOptions snellTechniqueOptions() {
+  SnellTechniqueOptions o;
+  o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
+  o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
+  o.exitMode = SNELL_EXIT_ENVIRONMENT;
+  o.fallback = SNELL_FALLBACK_ENVIRONMENT;
+  o.fallbackDistance = 1.0f;
+  o.edgeFadeWidth = 0.1f;
+  o.tirPolicy = SNELL_TIR_CRITICAL;
+  o.ior = 1.5f;
+  o.iorOutside = 1.0f;
+  o.dispersion = 1;
+  o.iors = vec3(1.5f, 1.5f, 1.5f);
+  o.absorption = vec3(0.0f, 0.0f, 0.0f);
+  o.reflection = true;
+  o.reflectionMode = SNELL_REFLECT_ENVIRONMENT;
+  o.reflect = snellIntersectOptions(SNELL_STRATEGY_LINEAR_MARCH);
+  o.roughness = 0.0f;
+  o.sceneColorLevels = 1;
+  o.environmentLevels = 1;
+  o.envX = vec3(1.0f, 0.0f, 0.0f);
+  o.envY = vec3(0.0f, 1.0f, 0.0f);
+  o.envZ = vec3(0.0f, 0.0f, 1.0f);
+  return o;
+}
+
+#endif
+
+#ifndef SNELL_SHADE_TECHNIQUE_PRESETS_GLSL
+#define SNELL_SHADE_TECHNIQUE_PRESETS_GLSL
+
+SNELL_FN SnellTechniqueOptions snellTechniquePresetSlots(int backStrategy, int exitStrategy) {
+  SnellTechniqueOptions o = snellTechniqueOptions();
+  o.back = snellIntersectOptions(backStrategy);
+  o.exit = snellIntersectOptions(exitStrategy);
+  return o;
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetDir() {
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_CBS, SNELL_STRATEGY_CBS);
+  o.back.steps = 5;
+  o.exit.steps = 5;
+  return o;
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetDirBounds(float zNearest, float zFarthest) {
+  SnellTechniqueOptions o = snellPresetDir();
+  o.back.rangeSource = SNELL_RANGE_EXPLICIT;
+  o.back.zNearest = zNearest;
+  o.back.zFarthest = zFarthest;
+  return o;
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetIsr() {
+  return snellTechniquePresetSlots(SNELL_STRATEGY_WYMAN, SNELL_STRATEGY_SINGLE);
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetPlaneNormal(int iterations) {
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_NORMAL, SNELL_STRATEGY_PLANE_NORMAL);
+  o.back.steps = iterations;
+  o.exit.steps = iterations;
+  return o;
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetPlaneDepth(int iterations) {
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_DEPTH, SNELL_STRATEGY_PLANE_DEPTH);
+  o.back.steps = iterations;
+  o.exit.steps = iterations;
+  return o;
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetSingleSample() {
+  return snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetLinearMarch() {
+  return snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetDdaMarch() {
+  return snellTechniquePresetSlots(SNELL_STRATEGY_DDA, SNELL_STRATEGY_DDA);
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetImageSpaceBound() {
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
+  o.back.steps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  o.back.refineSteps = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  o.exit.steps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  o.exit.refineSteps = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  o.back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  o.exit.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  return o;
+}
+
+#define SNELL_TECHNIQUE_SINGLE 0
+#define SNELL_TECHNIQUE_PLANE_NORMAL_0 1
+#define SNELL_TECHNIQUE_PLANE_NORMAL_1 2
+#define SNELL_TECHNIQUE_PLANE_NORMAL_2 3
+#define SNELL_TECHNIQUE_PLANE_DEPTH 4
+#define SNELL_TECHNIQUE_DIR 5
+#define SNELL_TECHNIQUE_ISR 6
+#define SNELL_TECHNIQUE_LINEAR_MARCH 7
+#define SNELL_TECHNIQUE_DDA 8
+#define SNELL_TECHNIQUE_IMAGE_SPACE_BOUND 9
+#define SNELL_TECHNIQUE_COUNT 10
+
+SNELL_FN SnellTechniqueOptions snellTechniquePreset(int technique) {
+  if (technique == SNELL_TECHNIQUE_SINGLE) {
+    return snellPresetSingleSample();
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_0) {
+    return snellPresetPlaneNormal(0);
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_1) {
+    return snellPresetPlaneNormal(1);
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_2) {
+    return snellPresetPlaneNormal(2);
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_DEPTH) {
+    return snellPresetPlaneDepth(1);
+  }
+  if (technique == SNELL_TECHNIQUE_DIR) {
+    return snellPresetDir();
+  }
+  if (technique == SNELL_TECHNIQUE_ISR) {
+    return snellPresetIsr();
+  }
+  if (technique == SNELL_TECHNIQUE_LINEAR_MARCH) {
+    return snellPresetLinearMarch();
+  }
+  if (technique == SNELL_TECHNIQUE_DDA) {
+    return snellPresetDdaMarch();
+  }
+  if (technique == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND) {
+    return snellPresetImageSpaceBound();
+  }
+  return snellTechniquePresetSlots(-1, -1);
+}
+
+#endif
+
+#ifndef SNELL_SHADE_TECHNIQUE_INTERSECT_GLSL
+#define SNELL_SHADE_TECHNIQUE_INTERSECT_GLSL
+
+#ifndef SNELL_TECHNIQUE_STRATEGIES
+#  define SNELL_TECHNIQUE_STRATEGIES 0x1FF
+#endif
+#define SNELL_TECHNIQUE_HAS(k) ((SNELL_TECHNIQUE_STRATEGIES & (1 << (k))) != 0)
+
+SNELL_FN SnellHit snellIntersectWith(int strategy, vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
+                                     SNELL_TEX2D pyramidTex, SnellDepthSurface readAs, SnellIntersectOptions o) {
+  SnellDepthSurface surface = readAs;
+  surface.depthFilter = o.depthFilter;
+  if ((SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_SINGLE) && strategy == SNELL_STRATEGY_SINGLE) ||
+      (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_WYMAN) && strategy == SNELL_STRATEGY_WYMAN)) {
+    return snellIntersectSingleSample(origin, dir, depthTex, surface);
+  }
+  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_PLANE_NORMAL) && strategy == SNELL_STRATEGY_PLANE_NORMAL) {
+    return snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, surface, o.normalLod, o.steps);
+  }
+  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_PLANE_DEPTH) && strategy == SNELL_STRATEGY_PLANE_DEPTH) {
+    int maxLod = o.maxLod >= 0 ? o.maxLod : snellTextureTopLod(pyramidTex);
+    return snellIntersectPlaneDepth(origin, dir, pyramidTex, surface, maxLod, o.steps);
+  }
+  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_LINEAR_MARCH) && strategy == SNELL_STRATEGY_LINEAR_MARCH) {
+    return snellLinearMarch(origin, dir, depthTex, surface, o.maxDistance, o.steps, o.refineSteps);
+  }
+  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_DDA) && strategy == SNELL_STRATEGY_DDA) {
+    return snellDdaMarch(origin, dir, depthTex, surface, o.maxDistance, o.thickness, o.stride, o.steps);
+  }
+  bool cbs = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_CBS) && strategy == SNELL_STRATEGY_CBS;
+  bool binary = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_BINARY) && strategy == SNELL_STRATEGY_BINARY;
+  bool linearBinary = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_LINEAR_BINARY) && strategy == SNELL_STRATEGY_LINEAR_BINARY;
+  if (!cbs && !binary && !linearBinary) {
+    return snellHitMiss(0);
+  }
+  SnellDepthRange range;
+  int rangeFetches = 0;
+  if (o.rangeSource == SNELL_RANGE_EXPLICIT) {
+    range.zNearest = o.zNearest;
+    range.zFarthest = o.zFarthest;
+    range.valid = true;
+  } else {
+    range = snellDepthRangeFromPyramid(pyramidTex);
+    rangeFetches = 1;
+  }
+  if (!range.valid) {
+    return snellHitMiss(rangeFetches);
+  }
+  SnellHit h;
+  if (cbs) {
+    h = snellConservativeBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps);
+  } else if (binary) {
+    h = snellBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps);
+  } else {
+    h = snellLinearBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps,
+                                o.refineSteps);
+  }
+  h.fetches = h.fetches + rangeFetches;
+  return h;
+}
+
+#endif
+
+#ifndef SNELL_SHADE_TWO_INTERFACE_GLSL
+#define SNELL_SHADE_TWO_INTERFACE_GLSL
+
+#ifndef SNELL_TWO_INTERFACE_NORMAL_SAMPLE
+#  define SNELL_TWO_INTERFACE_NORMAL_SAMPLE 1
+#endif
+
+struct SnellTwoInterfacePath {
+  vec3 entryDirection;
+  vec3 exitPoint;
+  vec3 exitNormal;
+  vec3 exitDirection;
+  vec2 exitUv;
+  float pathLength;
+  int fetches;
+  bool hit;
+  bool tir;
+  bool fellBack;
+  bool valid;
+};
+
+SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
+                                                      SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
+                                                      SNELL_TEX2D backPyramid, SnellDepthSurface back,
+                                                      SnellIntersectOptions o, int tirPolicy) {
+  SnellTwoInterfacePath p;
+  p.entryDirection = vec3(0.0f, 0.0f, 0.0f);
+  p.exitPoint = vec3(0.0f, 0.0f, 0.0f);
+  p.exitNormal = vec3(0.0f, 0.0f, 0.0f);
+  p.exitDirection = vec3(0.0f, 0.0f, 0.0f);
+  p.exitUv = vec2(0.0f, 0.0f);
+  p.pathLength = 0.0f;
+  p.fetches = 0;
+  p.hit = false;
+  p.tir = false;
+  p.fellBack = true;
+  p.valid = false;
+  SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy);
+  if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_FINITE(frontPosition.x) ||
+      !SNELL_FINITE(frontPosition.y) || !SNELL_FINITE(frontPosition.z)) {
+    return p;
+  }
+  vec3 t1 = r1.direction;
+  p.entryDirection = t1;
+  p.exitPoint = frontPosition;
+  p.exitDirection = t1;
+  p.valid = true;
+  SnellHit h = snellHitMiss(0);
+  if (o.strategy == SNELL_STRATEGY_WYMAN) {
+    SnellScreenPoint sp = snellViewToUv(back.clipFromView, frontPosition);
+    if (sp.valid && frontPosition.z < 0.0f) {
+      SnellSurfaceSample b = snellSampleSurface(backDepth, sp.uv, back);
+      h = snellHitMiss(1);
+      if (b.valid) {
+        float dV = length(frontPosition) * (b.viewZ / frontPosition.z - 1.0f);
+        float d = snellWymanDistanceVec(frontPosition, frontNormal, t1, dV, dN);
+        h = snellHitOnSurface(frontPosition + d * t1, backDepth, back, 1);
+      }
+    }
+  } else {
+    h = snellIntersectWith(o.strategy, frontPosition, t1, backDepth, backNormal, backPyramid, back, o);
+  }
+  p.fetches = h.fetches;
+  float pathLength = length(h.position - frontPosition);
+  if (!h.valid || !SNELL_FINITE(pathLength)) {
+    return p;
+  }
+  p.hit = true;
+  p.exitPoint = h.position;
+  p.exitUv = h.uv;
+  p.pathLength = pathLength;
+#if SNELL_TWO_INTERFACE_NORMAL_SAMPLE
+  vec4 n2 = SNELL_SAMPLE_LOD(backNormal, h.uv, 0.0f);
+#else
+  vec4 n2 = SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(h.uv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
+#endif
+  p.fetches = p.fetches + 1;
+  vec3 n = snellSafeNormalize(vec3(n2.x, n2.y, n2.z));
+  if (dot(n, n) == 0.0f) {
+    return p;
+  }
+  if (dot(n, t1) > 0.0f) {
+    n = -n;
+  }
+  p.exitNormal = n;
+  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, tirPolicy);
+  p.tir = r2.tir;
+  if (!r2.valid || dot(r2.direction, r2.direction) == 0.0f) {
+    return p;
+  }
+  p.exitDirection = r2.direction;
+  p.fellBack = false;
+  return p;
+}
+
+#endif
+
+#ifndef SNELL_SHADE_TWO_INTERFACE_SHADE_GLSL
+#define SNELL_SHADE_TWO_INTERFACE_SHADE_GLSL
+
+struct SnellTwoInterfaceExit {
+  vec3 color;
+  SnellHit hit;
+  bool fellBack;
+  int fetches;
+};
+
+struct SnellTwoInterfaceResult {
+  vec3 color;
+  vec3 exitPoint;
+  vec3 exitDirection;
+  SnellHit exitHit;
+  SnellHit reflectionHit;
+  float pathLength;
+  float fresnel;
+  int fetches;
+  bool backHit;
+  bool fellBack;
+  bool tir;
+};
+
+SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_TEX2D sceneDepth,
+                                                     SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid,
+                                                     SNELL_TEX2D sceneColor, SnellDepthSurface scene,
+                                                     SNELL_ENVIRONMENT_TEX environment, SnellTechniqueOptions o) {
+  SnellTwoInterfaceExit e;
+  e.color = vec3(0.0f, 0.0f, 0.0f);
+  e.hit = snellHitMiss(0);
+  e.fellBack = true;
+  e.fetches = 0;
+  vec3 d = snellSafeNormalize(dir);
+  if (dot(d, d) == 0.0f || !SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) ||
+      !SNELL_FINITE(origin.z)) {
+    return e;
+  }
+  float envLod = snellRoughnessToLod(o.roughness, o.environmentLevels);
+  float sceneLod = snellRoughnessToLod(o.roughness, o.sceneColorLevels);
+  vec3 world = d.x * o.envX + d.y * o.envY + d.z * o.envZ;
+  if (o.exitMode == SNELL_EXIT_SCENE) {
+    e.hit = snellIntersectWith(o.exit.strategy, origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, o.exit);
+    e.fetches = e.hit.fetches;
+    if (e.hit.valid) {
+      vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);
+      e.color = vec3(c.x, c.y, c.z);
+      e.fetches = e.fetches + 1;
+      e.fellBack = false;
+      return e;
+    }
+    vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, envLod);
+    e.fetches = e.fetches + 1;
+    e.color = vec3(env.x, env.y, env.z);
+    if (o.fallback == SNELL_FALLBACK_EDGE_FADE) {
+      SnellScreenPoint sp = snellViewToUv(scene.clipFromView, origin + o.fallbackDistance * d);
+      float w = sp.valid ? snellScreenEdgeFade(sp.uv, o.edgeFadeWidth) : 0.0f;
+      if (w > 0.0f) {
+        vec2 uv = clamp(sp.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+        vec4 c = SNELL_SAMPLE_LOD(sceneColor, uv, sceneLod);
+        e.fetches = e.fetches + 1;
+        e.color = mix(e.color, vec3(c.x, c.y, c.z), w);
+      }
+    }
+    return e;
+  }
+  vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, envLod);
+  e.color = vec3(env.x, env.y, env.z);
+  e.fetches = 1;
+  e.fellBack = false;
+  return e;
+}
+
+SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition, vec3 frontNormal, float dN,
+                                                             SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
+                                                             SNELL_TEX2D backPyramid, SnellDepthSurface back,
+                                                             SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal,
+                                                             SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor,
+                                                             SnellDepthSurface scene, SNELL_ENVIRONMENT_TEX environment,
+                                                             SnellTechniqueOptions o) {
+  bool three = o.dispersion == 3;
+  float eta = snellIorToEta(o.iorOutside, three ? o.iors.y : o.ior);
+  SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, backDepth, backNormal,
+                                                   backPyramid, back, o.back, o.tirPolicy);
+  SnellTwoInterfaceExit e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, sceneDepth, sceneNormal,
+                                                  scenePyramid, sceneColor, scene, environment, o);
+  vec3 transmitted = e.color * snellBeerLambert(o.absorption, p.pathLength);
+  SnellTwoInterfaceResult r;
+  r.exitPoint = p.exitPoint;
+  r.exitDirection = p.exitDirection;
+  r.exitHit = e.hit;
+  r.reflectionHit = snellHitMiss(0);
+  r.pathLength = p.pathLength;
+  r.fresnel = 0.0f;
+  r.fetches = p.fetches + e.fetches;
+  r.backHit = p.hit;
+  r.fellBack = p.fellBack || e.fellBack || !p.valid;
+  r.tir = p.tir;
+  if (three) {
+    SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal,
+                                                      snellIorToEta(o.iorOutside, o.iors.x), dN, backDepth,
+                                                      backNormal, backPyramid, back, o.back, o.tirPolicy);
+    SnellTwoInterfaceExit er = snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, sceneDepth, sceneNormal,
+                                                     scenePyramid, sceneColor, scene, environment, o);
+    SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal,
+                                                      snellIorToEta(o.iorOutside, o.iors.z), dN, backDepth,
+                                                      backNormal, backPyramid, back, o.back, o.tirPolicy);
+    SnellTwoInterfaceExit eb = snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, sceneDepth, sceneNormal,
+                                                     scenePyramid, sceneColor, scene, environment, o);
+    transmitted.x = er.color.x * snellBeerLambert(o.absorption, pr.pathLength).x;
+    transmitted.z = eb.color.z * snellBeerLambert(o.absorption, pb.pathLength).z;
+    r.fetches = r.fetches + pr.fetches + er.fetches + pb.fetches + eb.fetches;
+    r.fellBack = r.fellBack || pr.fellBack || er.fellBack || pb.fellBack || eb.fellBack;
+  }
+  r.color = transmitted;
+  vec3 v = snellSafeNormalize(frontPosition);
+  vec3 n1 = snellSafeNormalize(frontNormal);
+  if (o.reflection && dot(v, v) > 0.0f && dot(n1, n1) > 0.0f) {
+    float f = snellFresnelDielectric(dot(v, n1), eta);
+    vec3 rv = reflect(v, n1);
+    vec3 reflected = vec3(0.0f, 0.0f, 0.0f);
+    if (o.reflectionMode == SNELL_REFLECT_SCENE) {
+      SnellTechniqueOptions ro = o;
+      ro.exit = o.reflect;
+      ro.exitMode = SNELL_EXIT_SCENE;
+      ro.fallback = SNELL_FALLBACK_ENVIRONMENT;
+      SnellTwoInterfaceExit re = snellTwoInterfaceExit(frontPosition, rv, sceneDepth, sceneNormal, scenePyramid,
+                                                       sceneColor, scene, environment, ro);
+      reflected = re.color;
+      r.reflectionHit = re.hit;
+      r.fetches = r.fetches + re.fetches;
+    } else {
+      vec3 world = rv.x * o.envX + rv.y * o.envY + rv.z * o.envZ;
+      vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, snellRoughnessToLod(o.roughness, o.environmentLevels));
+      reflected = vec3(env.x, env.y, env.z);
+      r.fetches = r.fetches + 1;
+    }
+    r.fresnel = f;
+    r.color = f * reflected + (1.0f - f) * transmitted;
+  }
+  return r;
+}
+
+#endif
+#endif
+#endif
