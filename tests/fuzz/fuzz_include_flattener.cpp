@@ -37,10 +37,14 @@ const fs::path& tempDir() {
   return dir;
 }
 
+// Holds its own copy of the path: made after tempDir()'s static, it is
+// destroyed before it (the first version read the destroyed path at exit,
+// which libFuzzer's fork mode reported as a crash of every job).
 struct Cleanup {
+  fs::path dir;
   ~Cleanup() {
     std::error_code ec;
-    fs::remove_all(tempDir(), ec);
+    fs::remove_all(dir, ec);
   }
 };
 
@@ -66,8 +70,8 @@ std::vector<std::string> split(const std::string& data) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static Cleanup cleanup;
   const fs::path& dir = tempDir();
+  static const Cleanup cleanup{dir};
   const std::vector<std::string> parts = split(std::string(reinterpret_cast<const char*>(data), size));
   // Last contents per slot (-1 char: absent): files are rewritten only when they change.
   static std::vector<std::string> last(kSlotCount, std::string(1, '\xff') + "absent");

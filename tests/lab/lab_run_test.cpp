@@ -241,4 +241,30 @@ TEST(LabCli, UsageErrorsAreExitCode2) {
   EXPECT_EQ(help.code, 0);
 }
 
+// The messages a user meets first read clearly (issue 13).
+TEST(LabCli, UsageMessagesSayWhatIsWrongAndWhatWouldBeRight) {
+  labtest::TempDir dir;
+  const ExeRun typo = runLabExe("--techniqe single -q", dir);
+  EXPECT_EQ(typo.code, 2);
+  EXPECT_NE(typo.err.find("snell-lab: unknown option '--techniqe'; did you mean '--technique'?"), std::string::npos)
+      << typo.err;
+  const ExeRun far = runLabExe("--frobnicate -q", dir);
+  EXPECT_EQ(far.code, 2);
+  EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;  // no guess for a word that is not close
+  const ExeRun small = runLabExe("--size 4x4 -q", dir);
+  EXPECT_EQ(small.code, 2);
+  EXPECT_NE(small.err.find("--size: expected WxH with 8 <= W, H <= 8192 (e.g. 512x512), got '4x4'"), std::string::npos)
+      << small.err;
+  const ExeRun technique = runLabExe("--technique plane-normal -q", dir);
+  EXPECT_EQ(technique.code, 2);
+  EXPECT_NE(technique.err.find("unknown technique 'plane-normal'; valid: single, plane-normal-0"), std::string::npos)
+      << technique.err;
+  const std::string tiny = dir.write("tiny.json", R"({"camera": {"position": [0, 0, 5], "resolution": [4, 4]},
+    "object": {"mesh": {"type": "icosphere"}}})");
+  const ExeRun scene = runLabExe("'" + tiny + "' -q --out '" + dir.file("o") + "'", dir);
+  EXPECT_EQ(scene.code, 4) << scene.err;
+  EXPECT_NE(scene.err.find("camera.resolution"), std::string::npos) << scene.err;
+  EXPECT_NE(scene.err.find("[8, 8192]"), std::string::npos) << scene.err;
+}
+
 }  // namespace

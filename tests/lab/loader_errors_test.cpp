@@ -316,6 +316,30 @@ TEST(LabLoaderErrors, ImageFuzzFindingsAreParseErrors) {
   EXPECT_EQ(labtest::errorOf([&] { readImage(dir + "png_idat_length_past_end.png"); }, ErrorKind::Parse),
             dir + "png_idat_length_past_end.png: cannot decode image: PNG chunk 'IDAT' claims 1610612785 bytes, the file "
                   "has 0 left (truncated or corrupt)");
+  // Found by the campaign: fill bytes before the start-of-image marker hid the
+  // Huffman tables from the check; a first IDAT of length 0 made stb_image
+  // memcpy to a null pointer.
+  const std::string fillMsg = labtest::errorOf([&] { readImage(dir + "jpeg_fill_bytes_before_soi.jpg"); }, ErrorKind::Parse);
+  EXPECT_NE(fillMsg.find("a JPEG Huffman table defines "), std::string::npos) << fillMsg;
+  const std::string idatMsg = labtest::errorOf([&] { readImage(dir + "png_empty_first_idat.png"); }, ErrorKind::Parse);
+  EXPECT_EQ(idatMsg.rfind(dir + "png_empty_first_idat.png: cannot decode image: ", 0), 0u) << idatMsg;
+  {
+    // An empty IDAT is legal PNG: a good file with one inserted before its data decodes the same.
+    const labtest::TempDir pngDir;
+    snell::Image ramp(4, 3);
+    for (int y = 0; y < 3; ++y)
+      for (int x = 0; x < 4; ++x) ramp.at(x, y) = snell::vec4(0.25f * static_cast<float>(x), 0.3f * static_cast<float>(y), 0.5f, 1.0f);
+    const std::string goodPath = pngDir.file("ramp.png");
+    writePng(goodPath, ramp);
+    std::string png = readFile(goodPath);
+    const std::size_t idat = png.find("IDAT");
+    ASSERT_NE(idat, std::string::npos);
+    png.insert(idat - 4, std::string("\0\0\0\0IDAT\x35\xaf\x06\x1e", 12));  // length 0, type, CRC-32 of "IDAT"
+    const snell::Image a = readImage(goodPath);
+    const snell::Image b = readImage(pngDir.write("empty_idat.png", png));
+    ASSERT_EQ(b.width, 4);
+    EXPECT_EQ(a.texels, b.texels);
+  }
   // A valid JPEG (every DHT within bounds) still decodes: the check refuses no good file.
   const snell::Image good = readImage(std::string(SNELL_SOURCE_DIR) + "/tests/fuzz/corpus/image/rgb.jpg");
   EXPECT_EQ(good.width, 8);

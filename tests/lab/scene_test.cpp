@@ -124,7 +124,10 @@ TEST(LabScene, EachBadFieldIsNamed) {
       {R"({ "camera": { "position": [0, 0] }, "object": { "mesh": { "type": "icosphere" } } })",
        "camera.position: expected an array of 3 numbers, got [0,0]"},
       {R"({ "camera": { "position": [0, 0, 5], "resolution": [0, 10] }, "object": { "mesh": { "type": "icosphere" } } })",
-       "camera.resolution[0]: expected an array of 2 integers each in [1, 16384]"},
+       "camera.resolution[0]: expected an array of 2 integers each in [8, 8192]"},
+      // --size allows no less than 8 either: one limit for both (issue 13).
+      {R"({ "camera": { "position": [0, 0, 5], "resolution": [4, 4] }, "object": { "mesh": { "type": "icosphere" } } })",
+       "camera.resolution[0]: expected an array of 2 integers each in [8, 8192]"},
       {R"({ "camera": { "position": [0, 0, 5], "resolution": [64.5, 10] }, "object": { "mesh": { "type": "icosphere" } } })",
        "camera.resolution[0]: expected an array of 2 integers"},
       {R"({ "camera": { "position": [0, 0, 5], "near": 0 }, "object": { "mesh": { "type": "icosphere" } } })",

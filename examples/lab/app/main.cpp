@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -41,6 +42,43 @@ snell::lab::ShaderDirs shaderDirs() {
   return d;
 }
 
+// The edit distance of a and b (Levenshtein), for "did you mean".
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// After a usage error: for each --word that is no option of `app`, the
+// closest one, if it is close (a typo, not another word).
+void suggestOptions(const CLI::App& app, int argc, char** argv) {
+  std::vector<std::string> names;
+  for (const CLI::Option* opt : app.get_options())
+    for (const std::string& n : opt->get_lnames()) names.push_back("--" + n);
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    if (arg.rfind("--", 0) != 0 || arg.size() < 3) continue;
+    arg = arg.substr(0, arg.find('='));
+    if (std::find(names.begin(), names.end(), arg) != names.end()) continue;
+    std::string best;
+    std::size_t bestDistance = 3;  // at most 2 edits
+    for (const std::string& n : names) {
+      const std::size_t d = editDistance(arg, n);
+      if (d < bestDistance) bestDistance = d, best = n;
+    }
+    if (!best.empty()) std::fprintf(stderr, "snell-lab: unknown option '%s'; did you mean '%s'?\n", arg.c_str(), best.c_str());
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -58,7 +96,7 @@ int main(int argc, char** argv) {
                "overview, and the error/cost table (Markdown and JSON)."};
   app.footer("In the lab the marches' back-face slot walks the object's bounding-box diagonal.\n"
              "Exit codes: 0 ok, 2 usage, 3 missing file, 4 malformed file, 5 render or GL failure.\n"
-             "Defaults take about a minute on 2 cores (bunny, 512x512, 9 techniques, 15 timed frames).");
+             "Defaults take about a minute on 2 cores (bunny, 512x512, 9 techniques and the image-space bound, 15 timed frames).");
   app.add_option("scene", o.scenePath,
                  "scene file (JSON, see examples/scenes/README.md); default: the bundled bunny, " + o.scenePath +
                      " (the source tree's examples/scenes, compiled in)");
@@ -107,6 +145,7 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);
+    suggestOptions(app, argc, argv);
     return 2;
   }
   for (const std::string& t : techniqueArgs) {
@@ -122,9 +161,10 @@ int main(int argc, char** argv) {
     int w = 0, h = 0;
     char x = 0, extra = 0;
     std::istringstream in(size);
-    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || (in >> extra) || w < 8 || h < 8 || w > 8192 || h > 8192) {
-      std::fprintf(stderr, "snell-lab: --size: expected WxH with 8 <= W, H <= 8192 (e.g. 512x512), got '%s'\n",
-                   size.c_str());
+    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || (in >> extra) || w < kMinRenderSize || h < kMinRenderSize ||
+        w > kMaxRenderSize || h > kMaxRenderSize) {
+      std::fprintf(stderr, "snell-lab: --size: expected WxH with %d <= W, H <= %d (e.g. 512x512), got '%s'\n",
+                   kMinRenderSize, kMaxRenderSize, size.c_str());
       return 2;
     }
     o.width = w;

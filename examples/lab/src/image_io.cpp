@@ -97,8 +97,12 @@ void checkJpegHuffmanTables(const std::string& b, const std::string& name) {
       remaining -= 17 + static_cast<long>(codes);
     }
   };
-  if (byte(0) != 0xFF || byte(1) != 0xD8) return;
-  std::size_t i = 2;
+  // The start-of-image marker, after any fill bytes (FF FF ... FF D8), as stb_image reads it.
+  std::size_t i = 0;
+  if (byte(i) != 0xFF) return;
+  while (i < n && byte(i) == 0xFF) ++i;
+  if (byte(i) != 0xD8) return;
+  ++i;
   while (i + 1 < n) {
     if (byte(i) != 0xFF) { ++i; continue; }  // stb_image skips to the next FF
     const unsigned marker = byte(i + 1);
@@ -159,12 +163,16 @@ void checkHdrRunLengths(const std::string& b, int width, int height, const std::
 
 // stb_image 2.27 grows its buffer to a PNG chunk's declared length before it
 // checks that the file holds that many bytes: 106 bytes asked for 2 GiB
-// (an IDAT claiming 1.5 GB, rounded up to a power of two)
-// (found by fuzz_image, issue 16). Every chunk up to IEND must fit in the file.
-void checkPngChunks(const std::string& b, const std::string& name) {
+// (an IDAT claiming 1.5 GB, rounded up to a power of two): every chunk up to
+// IEND must fit in the file. And it copies a first IDAT of length 0 to a null
+// buffer (undefined behaviour, found by the campaign): empty IDAT chunks, which
+// add nothing to the image data, are left out of what it is given. Returns
+// whether `out` holds such a copy.
+bool checkPngChunks(const std::string& b, const std::string& name, std::string& out) {
   static const char kSignature[] = "\x89PNG\r\n\x1a\n";
-  if (b.compare(0, 8, kSignature, 8) != 0) return;
+  if (b.compare(0, 8, kSignature, 8) != 0) return false;
   const auto byte = [&](std::size_t i) { return static_cast<std::uint32_t>(static_cast<unsigned char>(b[i])); };
+  std::vector<std::size_t> emptyIdat;
   for (std::size_t p = 8; p + 8 <= b.size();) {
     const std::uint64_t length = byte(p) << 24 | byte(p + 1) << 16 | byte(p + 2) << 8 | byte(p + 3);
     const std::string type = b.substr(p + 4, 4);
@@ -173,9 +181,19 @@ void checkPngChunks(const std::string& b, const std::string& name) {
       throw Error(ErrorKind::Parse, name + ": cannot decode image: PNG chunk '" + type + "' claims " +
                                         std::to_string(length) + " bytes, the file has " +
                                         std::to_string(left < 4 ? 0 : left - 4) + " left (truncated or corrupt)");
-    if (type == "IEND") return;
+    if (type == "IEND") break;
+    if (type == "IDAT" && length == 0) emptyIdat.push_back(p);
     p += 8 + static_cast<std::size_t>(length) + 4;
   }
+  if (emptyIdat.empty()) return false;
+  out.clear();
+  std::size_t from = 0;
+  for (const std::size_t p : emptyIdat) {
+    out.append(b, from, p - from);
+    from = p + 12;  // length, type, no data, CRC
+  }
+  out.append(b, from, std::string::npos);
+  return true;
 }
 
 }  // namespace
@@ -184,9 +202,10 @@ Image decodeImage(const std::string& bytes, const std::string& name, bool linear
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     throw Error(ErrorKind::Parse, name + ": cannot decode image: the file is larger than 2 GiB");
   checkJpegHuffmanTables(bytes, name);
-  checkPngChunks(bytes, name);
-  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
-  const int size = static_cast<int>(bytes.size());
+  std::string withoutEmptyIdat;
+  const std::string& input = checkPngChunks(bytes, name, withoutEmptyIdat) ? withoutEmptyIdat : bytes;
+  const auto* data = reinterpret_cast<const stbi_uc*>(input.data());
+  const int size = static_cast<int>(input.size());
   int w = 0, h = 0, n = 0;
   // Checked on the header, before stb_image allocates for it: a few bytes can
   // claim 16384 x 16384 texels, which stb_image accepts (1 GiB of bytes, 4 GiB
@@ -207,7 +226,7 @@ Image decodeImage(const std::string& bytes, const std::string& name, bool linear
   const bool hdr = stbi_is_hdr_from_memory(data, size) != 0;
   Image img;
   if (hdr) {
-    if (w > 0 && h > 0) checkHdrRunLengths(bytes, w, h, name);
+    if (w > 0 && h > 0) checkHdrRunLengths(input, w, h, name);
     float* texels = stbi_loadf_from_memory(data, size, &w, &h, &n, 4);
     if (!texels) throw Error(ErrorKind::Parse, name + ": cannot decode image: " + stbi_failure_reason());
     const std::unique_ptr<float, void (*)(void*)> owner(texels, stbi_image_free);

@@ -32,7 +32,7 @@ Camera readCamera(ObjectReader r) {
   c.target = r.vector3("target", c.target);
   c.up = r.vector3("up", c.up);
   c.fovYDegrees = static_cast<float>(r.number("fov", c.fovYDegrees, Range::open(0.0, 180.0)));
-  const ivec2 res = r.integer2("resolution", ivec2(c.width, c.height), 1, kMaxResolution);
+  const ivec2 res = r.integer2("resolution", ivec2(c.width, c.height), kMinRenderSize, kMaxRenderSize);
   c.width = res.x;
   c.height = res.y;
   c.zNear = static_cast<float>(r.number("near", c.zNear, Range::positive()));

@@ -11,6 +11,11 @@
 
 namespace snell::lab {
 
+// Render sizes the lab accepts, from a scene's camera.resolution or --size:
+// below 8 the depth pyramids and panels have nothing to show.
+inline constexpr int kMinRenderSize = 8;
+inline constexpr int kMaxRenderSize = 8192;
+
 struct Camera {
   vec3 position{0.0f, 0.0f, 5.0f};
   vec3 target{0.0f};
