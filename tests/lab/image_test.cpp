@@ -119,3 +119,28 @@ TEST(LabImage, PanelPutsImagesSideBySideWithLabels) {
   EXPECT_GT(lit, 20);
   EXPECT_GT(textWidth("abc", 2), textWidth("abc", 1));
 }
+
+// issue 13: at 256 px a technique's caption is wider than its panel; it wraps
+// onto more lines instead of running off the edge.
+TEST(LabImage, PanelCaptionWrapsToTheWidth) {
+  const Image a(40, 10, vec4(0, 0, 0, 1));
+  const std::string caption = "sphere_painting, normal plane, 1 it.: MSE 0.0303 (two-interface ref. 0.0343)";
+  ASSERT_GT(textWidth(caption, 1), 40 + 2 * 4);
+  const Image wide = composePanel({{&a, "x"}, {&a, "y"}, {&a, "z"}}, "short", 4, 1);
+  const Image wrapped = composePanel({{&a, "x"}, {&a, "y"}, {&a, "z"}}, caption, 4, 1);
+  EXPECT_GT(wrapped.height, wide.height);
+  // Nothing is drawn in the last column: every line fits.
+  for (int y = 0; y < wrapped.height; ++y) EXPECT_LT(wrapped.at(wrapped.width - 1, y).x, 0.5f) << y;
+  // Every word is there: the caption's lit pixels (the labels x, y, z aside) equal
+  // those of the same caption drawn on one line of a wide panel.
+  const auto caption_lit = [](const Image& img, int fromTop) {
+    int lit = 0;
+    for (int y = 0; y < img.height - fromTop; ++y)
+      for (int x = 0; x < img.width; ++x) lit += img.at(x, y).x > 0.5f ? 1 : 0;
+    return lit;
+  };
+  const Image b(2000, 10, vec4(0, 0, 0, 1));
+  const Image oneLine = composePanel({{&b, ""}}, caption, 4, 1);
+  const int imageBottom = 7 + 8 + 10;  // label strip and image, from the top
+  EXPECT_EQ(caption_lit(wrapped, imageBottom), caption_lit(oneLine, imageBottom));
+}

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <sstream>
 #include <vector>
 
 #if defined(__GNUC__)
@@ -130,7 +131,25 @@ Image composePanel(const std::vector<PanelItem>& items, const std::string& capti
     width += it.image->width + gap;
   }
   const int labelStrip = 7 * scale + 2 * gap;
-  const int captionStrip = caption.empty() ? 0 : 7 * scale + gap;
+  // The caption wrapped at spaces to the panel's width (at 256 px a technique's
+  // caption is wider than the panel); a word wider than the panel stays whole.
+  std::vector<std::string> lines;
+  {
+    std::string line, word;
+    std::istringstream words(caption);
+    while (words >> word) {
+      const std::string longer = line.empty() ? word : line + " " + word;
+      if (!line.empty() && textWidth(longer, scale) > width - 2 * gap) {
+        lines.push_back(line);
+        line = word;
+      } else {
+        line = longer;
+      }
+    }
+    if (!line.empty()) lines.push_back(line);
+  }
+  const int lineHeight = 7 * scale + scale + 1;
+  const int captionStrip = lines.empty() ? 0 : static_cast<int>(lines.size()) * lineHeight + gap;
   const int height = labelStrip + h + gap + captionStrip;
   Image out(width, height, vec4(0.02f, 0.02f, 0.025f, 1.0f));
   int x = gap;
@@ -140,7 +159,8 @@ Image composePanel(const std::vector<PanelItem>& items, const std::string& capti
     blit(out, *it.image, x, labelStrip);
     x += it.image->width + gap;
   }
-  if (!caption.empty()) drawText(out, gap, labelStrip + h + gap / 2, caption, vec3(0.7f), scale);
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    drawText(out, gap, labelStrip + h + gap / 2 + static_cast<int>(i) * lineHeight, lines[i], vec3(0.7f), scale);
   return out;
 }
 

@@ -41,7 +41,7 @@ struct PanelItem {
 
 // Images side by side (all must have the same height), `gap` pixels apart,
 // on a dark background, each with its label in a strip above it; an optional
-// caption line below. Linear output: write with PngEncoding::Srgb.
+// caption below, wrapped to the width. Linear output: write with PngEncoding::Srgb.
 Image composePanel(const std::vector<PanelItem>& items, const std::string& caption = "", int gap = 8,
                    int scale = 2);
 
