@@ -27,6 +27,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -39,7 +41,18 @@ namespace {
 
 using property::Tally;
 
-constexpr std::size_t kGpuInputs = 10000;
+// SNELL_PROPERTY_GPU_INPUTS overrides it for a longer run (not in CI): issue 16.
+std::size_t gpuInputs() {
+  const char* env = std::getenv("SNELL_PROPERTY_GPU_INPUTS");
+  if (!env) return 10000;
+  char* end = nullptr;
+  const unsigned long long n = std::strtoull(env, &end, 10);
+  if (end == env || *end != '\0' || n < 1 || n > 100000000ULL) {
+    std::fprintf(stderr, "SNELL_PROPERTY_GPU_INPUTS: expected a whole number in [1, 1e8], got '%s'\n", env);
+    std::exit(2);
+  }
+  return static_cast<std::size_t>(n);
+}
 constexpr snell::gpu::Backend kBackend = snell::gpu::Backend::OSMesa;
 const std::filesystem::path kRoot = SNELL_SOURCE_DIR;
 
@@ -51,8 +64,9 @@ class PropertyGpuTest : public ::testing::Test {
     const std::vector<ParityIO> base = spec_->inputs();
     ASSERT_GE(base.size(), 1000u);
     std::vector<ParityIO> inputs;
-    inputs.reserve(kGpuInputs);
-    for (std::uint64_t i = base.size(); i < base.size() + kGpuInputs; ++i)
+    const std::size_t count = gpuInputs();
+    inputs.reserve(count);
+    for (std::uint64_t i = base.size(); i < base.size() + count; ++i)
       inputs.push_back(property::propertyInput(base, i));
 
     snell::gpu::Context ctx(kBackend);
