@@ -73,6 +73,11 @@ void writePng(const std::string& path, const Image& image, PngEncoding encoding)
 
 namespace {
 
+// Byte i of a file as stb_image's memory reader returns it: 0 past the end.
+unsigned byteAt(const std::string& b, std::size_t i) {
+  return i < b.size() ? static_cast<unsigned>(static_cast<unsigned char>(b[i])) : 0u;
+}
+
 // stb_image 2.27 (Debian 12's libstb) does not bound the code count of a JPEG
 // Huffman table: a DHT segment whose 16 counts sum past 256 writes past its
 // 257-entry arrays (found by fuzz_image, issue 16). Every DHT segment stb_image
@@ -83,7 +88,7 @@ namespace {
 // by 00 or a marker, so no valid file is refused for it).
 void checkJpegHuffmanTables(const std::string& b, const std::string& name) {
   const std::size_t n = b.size();
-  const auto byte = [&](std::size_t i) { return i < n ? static_cast<unsigned>(static_cast<unsigned char>(b[i])) : 0u; };
+  const auto byte = [&](std::size_t i) { return byteAt(b, i); };
   const auto checkDht = [&](std::size_t at) {  // `at`: the first byte after FF C4
     long remaining = static_cast<long>(byte(at) << 8 | byte(at + 1)) - 2;
     std::size_t t = at + 2;
@@ -126,7 +131,7 @@ void checkHdrRunLengths(const std::string& b, int width, int height, const std::
   if (width < 8 || width >= 32768) return;  // stb_image reads these flat: no runs
   const std::size_t n = b.size();
   std::size_t p = 0;
-  const auto get8 = [&] { return p < n ? static_cast<unsigned>(static_cast<unsigned char>(b[p++])) : (++p, 0u); };
+  const auto get8 = [&] { return byteAt(b, p++); };
   const auto skipLine = [&] {  // returns whether stb_image takes the line for empty
     // stb_image keeps a line in a C string: one that starts with NUL is empty to it.
     const bool empty = p >= n || b[p] == '\n' || b[p] == '\0';
@@ -171,7 +176,7 @@ void checkHdrRunLengths(const std::string& b, int width, int height, const std::
 bool checkPngChunks(const std::string& b, const std::string& name, std::string& out) {
   static const char kSignature[] = "\x89PNG\r\n\x1a\n";
   if (b.compare(0, 8, kSignature, 8) != 0) return false;
-  const auto byte = [&](std::size_t i) { return static_cast<std::uint32_t>(static_cast<unsigned char>(b[i])); };
+  const auto byte = [&](std::size_t i) { return static_cast<std::uint32_t>(byteAt(b, i)); };
   std::vector<std::size_t> emptyIdat;
   for (std::size_t p = 8; p + 8 <= b.size();) {
     const std::uint64_t length = byte(p) << 24 | byte(p + 1) << 16 | byte(p + 2) << 8 | byte(p + 3);

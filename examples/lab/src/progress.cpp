@@ -20,6 +20,8 @@ ProgressBar::ProgressBar(std::string label, long total, bool enabled, std::FILE*
 
 ProgressBar::~ProgressBar() { finish(); }
 
+int ProgressBar::percentDone() const { return static_cast<int>(100 * std::min(done_.load(), total_) / total_); }
+
 void ProgressBar::advance(long n) {
   done_.fetch_add(n);
   if (!active_) return;
@@ -38,8 +40,7 @@ void ProgressBar::finish() {
   } else if (lastPercent_ == 100) {
     std::fprintf(out_, "%s: done in %.1fs\n", label_.c_str(), s);
   } else {
-    const int percent = static_cast<int>(100 * std::min(done_.load(), total_) / total_);
-    std::fprintf(out_, "%s: stopped at %d%% after %.1fs\n", label_.c_str(), percent, s);
+    std::fprintf(out_, "%s: stopped at %d%% after %.1fs\n", label_.c_str(), percentDone(), s);
   }
   std::fflush(out_);
 }
@@ -48,8 +49,7 @@ void ProgressBar::finish() {
 // drew later cannot draw an older count over a newer one.
 void ProgressBar::drawLocked() {
   if (finished_) return;
-  const long done = std::min(done_.load(), total_);
-  const int percent = static_cast<int>(100 * done / total_);
+  const int percent = percentDone();
   const int step = terminal_ ? 1 : 10;
   if (percent <= lastPercent_ || (percent / step == lastPercent_ / step && lastPercent_ >= 0 && percent != 100)) return;
   lastPercent_ = percent;

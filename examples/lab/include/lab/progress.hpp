@@ -37,6 +37,7 @@ class ProgressBar {
   int lastPercent_ = -1;
   std::chrono::steady_clock::time_point start_;
   void drawLocked();
+  int percentDone() const;  // of the work advanced so far, 0..100
 };
 
 }  // namespace snell::lab
