@@ -40,6 +40,9 @@ for s in "${lab_sources[@]}"; do
   objs+=("$o")
 done
 for p in "${pids[@]}"; do wait "$p"; done
+# The targets, $(nproc) at a time; a failed build fails the script.
+pids=()
+build_status=0
 for t in $targets; do
   bin=$out/fuzz_$t
   if [ -f "$bin" ] && [ -z "$(find "$root/tests/fuzz/fuzz_$t.cpp" "$root/include" "$root/glsl" -newer "$bin" -print -quit)" ] &&
@@ -47,8 +50,13 @@ for t in $targets; do
   echo "run_fuzzers: building fuzz_$t"
   extra=()
   [ "$t" = include_flattener ] || extra=("${objs[@]}")
-  "$cxx" "${common[@]}" -fsanitize=fuzzer "$root/tests/fuzz/fuzz_$t.cpp" "${extra[@]}" -o "$out/fuzz_$t" -lpthread
+  "$cxx" "${common[@]}" -fsanitize=fuzzer "$root/tests/fuzz/fuzz_$t.cpp" "${extra[@]}" -o "$bin.tmp" -lpthread &&
+    mv "$bin.tmp" "$bin" &
+  pids+=($!)
+  if [ ${#pids[@]} -ge "$(nproc)" ]; then wait "${pids[0]}" || build_status=1; pids=("${pids[@]:1}"); fi
 done
+for p in "${pids[@]}"; do wait "$p" || build_status=1; done
+[ "$build_status" = 0 ] || { echo "run_fuzzers: a fuzz target failed to build" >&2; exit 1; }
 
 [ "${SNELL_FUZZ_BUILD_ONLY:-0}" = 1 ] && exit 0
 

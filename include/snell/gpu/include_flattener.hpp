@@ -41,7 +41,6 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -342,6 +341,64 @@ inline FlatSource flattenGlslFile(const std::filesystem::path& file,
   return f.run(text, file.string(), file.parent_path(), (ec ? file.lexically_normal() : key).string());
 }
 
+namespace detail {
+// The three log location prefixes, matched by hand: std::regex costs every
+// translation unit that includes this header about ten seconds of compile
+// time, and matches recursively (a long run of blanks or digits overflowed
+// the stack: tests/fuzz/fuzz_include_flattener). Each returns false or sets
+// the parts and `end`, the index just past the prefix.
+struct LogLocation {
+  std::string lead, number, line, column;
+  std::size_t end = 0;
+};
+inline std::size_t skipLogSpace(const std::string& s, std::size_t i) {
+  while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+  return i;
+}
+// One or more digits from i: the index past them, or npos when there is none.
+inline std::size_t logDigits(const std::string& s, std::size_t i) {
+  std::size_t j = i;
+  while (j < s.size() && s[j] >= '0' && s[j] <= '9') ++j;
+  return j > i ? j : std::string::npos;
+}
+inline bool logCharAt(const std::string& s, std::size_t i, char c) { return i < s.size() && s[i] == c; }
+// Mesa: ^(\s*)(\d+):(\d+)\((\d+)\)
+inline bool matchMesa(const std::string& s, LogLocation& m) {
+  const std::size_t ws = skipLogSpace(s, 0), a = logDigits(s, ws);
+  if (a == std::string::npos || !logCharAt(s, a, ':')) return false;
+  const std::size_t b = logDigits(s, a + 1);
+  if (b == std::string::npos || !logCharAt(s, b, '(')) return false;
+  const std::size_t c = logDigits(s, b + 1);
+  if (c == std::string::npos || !logCharAt(s, c, ')')) return false;
+  m = {s.substr(0, ws), s.substr(ws, a - ws), s.substr(a + 1, b - a - 1), s.substr(b + 1, c - b - 1), c + 1};
+  return true;
+}
+// glslang: ^(\s*(?:ERROR|WARNING|INFO|NOTE): )(\d+):(\d+):
+inline bool matchGlslang(const std::string& s, LogLocation& m) {
+  const std::size_t ws = skipLogSpace(s, 0);
+  for (const char* word : {"ERROR: ", "WARNING: ", "INFO: ", "NOTE: "}) {
+    const std::string w(word);
+    if (s.compare(ws, w.size(), w) != 0) continue;
+    const std::size_t n0 = ws + w.size(), a = logDigits(s, n0);
+    if (a == std::string::npos || !logCharAt(s, a, ':')) return false;
+    const std::size_t b = logDigits(s, a + 1);
+    if (b == std::string::npos || !logCharAt(s, b, ':')) return false;
+    m = {s.substr(0, n0), s.substr(n0, a - n0), s.substr(a + 1, b - a - 1), "", b + 1};
+    return true;
+  }
+  return false;
+}
+// NVIDIA: ^(\s*)(\d+)\((\d+)\) :
+inline bool matchNvidia(const std::string& s, LogLocation& m) {
+  const std::size_t ws = skipLogSpace(s, 0), a = logDigits(s, ws);
+  if (a == std::string::npos || !logCharAt(s, a, '(')) return false;
+  const std::size_t b = logDigits(s, a + 1);
+  if (b == std::string::npos || s.compare(b, 3, ") :") != 0) return false;
+  m = {s.substr(0, ws), s.substr(ws, a - ws), s.substr(a + 1, b - a - 1), "", b + 3};
+  return true;
+}
+}  // namespace detail
+
 // Rewrites the file numbers in a compiler log into paths:
 //   Mesa     "0:12(5): error: ..."   -> "a/b.glsl:12(5): error: ..."
 //   glslang  "ERROR: 0:12: '...'"    -> "ERROR: a/b.glsl:12: '...'"
@@ -350,9 +407,6 @@ inline FlatSource flattenGlslFile(const std::filesystem::path& file,
 // source 0 for it); otherwise the source number does. Locations that name no
 // file of `source` are left as they are.
 inline std::string mapInfoLog(const std::string& log, const FlatSource& source) {
-  static const std::regex mesa(R"(^(\s*)(\d+):(\d+)\((\d+)\))");
-  static const std::regex glslang(R"(^(\s*(?:ERROR|WARNING|INFO|NOTE): )(\d+):(\d+):)");
-  static const std::regex nvidia(R"(^(\s*)(\d+)\((\d+)\) :)");
   // (source number, line) -> "path:line" parts; false if it names no known file.
   auto locate = [&](const std::string& number, const std::string& lineText, std::string& path, std::string& line) {
     unsigned long long index = 0, n = 0;
@@ -372,26 +426,23 @@ inline std::string mapInfoLog(const std::string& log, const FlatSource& source) 
     line = std::to_string(n);
     return true;
   };
-  // The location is at the start of a line: the patterns only see its first
-  // kHead characters. std::regex matches recursively (one stack frame per
-  // character of a \s* or \d+ run), so a long line of blanks or digits would
-  // overflow the stack (found by tests/fuzz/fuzz_include_flattener); a line
-  // whose location prefix is longer than kHead is left as it is.
+  // The location is at the start of a line and is looked for in its first
+  // kHead characters only; a line whose location prefix is longer is left as it is.
   constexpr std::size_t kHead = 256;
   std::istringstream in(log);
   std::string text, result, path, line;
   bool first = true;
   while (std::getline(in, text)) {
-    std::smatch m;
+    detail::LogLocation m;
     std::string mapped = text;
     const std::string head = text.substr(0, kHead);
     const std::string tail = text.size() > kHead ? text.substr(kHead) : std::string();
-    if (std::regex_search(head, m, mesa) && locate(m[2].str(), m[3].str(), path, line))
-      mapped = m[1].str() + path + ":" + line + "(" + m[4].str() + ")" + m.suffix().str() + tail;
-    else if (std::regex_search(head, m, glslang) && locate(m[2].str(), m[3].str(), path, line))
-      mapped = m[1].str() + path + ":" + line + ":" + m.suffix().str() + tail;
-    else if (std::regex_search(head, m, nvidia) && locate(m[2].str(), m[3].str(), path, line))
-      mapped = m[1].str() + path + "(" + line + ") :" + m.suffix().str() + tail;
+    if (detail::matchMesa(head, m) && locate(m.number, m.line, path, line))
+      mapped = m.lead + path + ":" + line + "(" + m.column + ")" + head.substr(m.end) + tail;
+    else if (detail::matchGlslang(head, m) && locate(m.number, m.line, path, line))
+      mapped = m.lead + path + ":" + line + ":" + head.substr(m.end) + tail;
+    else if (detail::matchNvidia(head, m) && locate(m.number, m.line, path, line))
+      mapped = m.lead + path + "(" + line + ") :" + head.substr(m.end) + tail;
     result += (first ? "" : "\n") + mapped;
     first = false;
   }
