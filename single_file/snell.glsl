@@ -3491,6 +3491,9 @@ description: Sousa's refractive/reflective water in one pass: four animated
 use: SnellWaterParams p = snellWaterParams();   // the chapter's constants
      vec3 n = snellWaterBumpAverage(t0, t1, t2, t3);   // four bump texels, [0,1]
      vec4 c = snellWater(sceneColor, reflectionMap, uv, n, eyeTs, viewDistance, p);
+  With refraction read your own way (for example the depth-aware mask of
+  refraction_mask_depth.glsl instead of the alpha mask), compose the two reads:
+     vec4 c = snellWaterCompose(reflection, refraction, n, eyeTs, viewDistance, p);
   t0..t3         the bump map read at the four wave coordinates (rgb, [0,1])
   sceneColor     texture S: the scene without the water, refraction mask in
                  alpha (water written as 0, the rest 1; see refraction_mask.glsl)
@@ -3500,6 +3503,8 @@ use: SnellWaterParams p = snellWaterParams();   // the chapter's constants
   eye            fragment-to-eye vector in the same tangent space (the
                  listing's Eye); need not be unit
   viewDistance   the listing's Wave0.w: the fragment's distance from the eye
+  reflection, refraction  (snellWaterCompose) the reflection map and scene
+                 colours as read; snellWater reads them as described below
 options: -
 contract:
   SnellWaterParams fields (snellWaterParams() defaults, Example 19-4):
@@ -3525,6 +3530,10 @@ contract:
       deep = refraction.rgb fDist + (1 - fDist) deepColor
       water = waterColor facing + deep (1 - facing)
       result = vec4(fresnel reflection.rgb + water, 1)
+  - snellWaterCompose(reflection, refraction, bumpNormal, eye, viewDistance, p)
+    is everything above after the two reads (n, e, reflBump, NdotL, fresnel,
+    fDist, deep, water, result), with the given colours; snellWater returns
+    snellWaterCompose of its own reads.
     Reads use snellPerturbUv (NaN uv -> screen centre, NaN displacement -> 0),
     clamped to [0,1]^2, lod 0. reflBump is not renormalized, as in the listing.
     Colours (parameters and texels) are used as given.
@@ -3570,24 +3579,14 @@ SNELL_FN vec3 snellWaterBumpAverage(vec3 t0, vec3 t1, vec3 t2, vec3 t3) {
   return n;
 }
 
-SNELL_FN vec4 snellWater(SNELL_TEX2D sceneColor, SNELL_TEX2D reflectionMap, vec2 uv, vec3 bumpNormal, vec3 eye,
-                         float viewDistance, SnellWaterParams p) {
+SNELL_FN vec4 snellWaterCompose(vec4 reflection, vec4 refraction, vec3 bumpNormal, vec3 eye, float viewDistance,
+                                SnellWaterParams p) {
   vec3 n = snellSafeNormalize(bumpNormal);
   if (dot(n, n) == 0.0f) {
     n = vec3(0.0f, 0.0f, 1.0f);
   }
   vec3 e = snellSafeNormalize(eye);
-  vec3 refrBump = n * p.refractionBumpScale;
   vec3 reflBump = n * p.reflectionBumpScale;
-  vec2 one = vec2(1.0f, 1.0f);
-  vec2 zero = vec2(0.0f, 0.0f);
-  vec2 uvRefl = clamp(snellPerturbUv(uv, vec2(reflBump.x, reflBump.y), 1.0f), zero, one);
-  vec2 uvRefr = clamp(snellPerturbUv(uv, vec2(refrBump.x, refrBump.y), 1.0f), zero, one);
-  vec2 uvProj = clamp(snellPerturbUv(uv, zero, 0.0f), zero, one);
-  vec4 reflection = SNELL_SAMPLE_LOD(reflectionMap, uvRefl, 0.0f);
-  vec4 refrA = SNELL_SAMPLE_LOD(sceneColor, uvRefr, 0.0f);
-  vec4 refrB = SNELL_SAMPLE_LOD(sceneColor, uvProj, 0.0f);
-  vec4 refraction = snellRefractionMaskBlend(refrA, refrB);
   // isnan first: min/max/clamp of a NaN differ between GPUs and GLM.
   float nDotL = dot(e, reflBump);
   nDotL = isnan(nDotL) ? 0.0f : clamp(nDotL, 0.0f, 1.0f);
@@ -3603,6 +3602,25 @@ SNELL_FN vec4 snellWater(SNELL_TEX2D sceneColor, SNELL_TEX2D reflectionMap, vec2
   vec3 water = p.waterColor * facing + deep * (1.0f - facing);
   vec3 c = vec3(reflection.x, reflection.y, reflection.z) * fresnel + water;
   return vec4(c.x, c.y, c.z, 1.0f);
+}
+
+SNELL_FN vec4 snellWater(SNELL_TEX2D sceneColor, SNELL_TEX2D reflectionMap, vec2 uv, vec3 bumpNormal, vec3 eye,
+                         float viewDistance, SnellWaterParams p) {
+  vec3 n = snellSafeNormalize(bumpNormal);
+  if (dot(n, n) == 0.0f) {
+    n = vec3(0.0f, 0.0f, 1.0f);
+  }
+  vec3 refrBump = n * p.refractionBumpScale;
+  vec3 reflBump = n * p.reflectionBumpScale;
+  vec2 one = vec2(1.0f, 1.0f);
+  vec2 zero = vec2(0.0f, 0.0f);
+  vec2 uvRefl = clamp(snellPerturbUv(uv, vec2(reflBump.x, reflBump.y), 1.0f), zero, one);
+  vec2 uvRefr = clamp(snellPerturbUv(uv, vec2(refrBump.x, refrBump.y), 1.0f), zero, one);
+  vec2 uvProj = clamp(snellPerturbUv(uv, zero, 0.0f), zero, one);
+  vec4 reflection = SNELL_SAMPLE_LOD(reflectionMap, uvRefl, 0.0f);
+  vec4 refrA = SNELL_SAMPLE_LOD(sceneColor, uvRefr, 0.0f);
+  vec4 refrB = SNELL_SAMPLE_LOD(sceneColor, uvProj, 0.0f);
+  return snellWaterCompose(reflection, snellRefractionMaskBlend(refrA, refrB), bumpNormal, eye, viewDistance, p);
 }
 
 #endif

@@ -1980,24 +1980,14 @@ SNELL_FN vec3 snellWaterBumpAverage(vec3 t0, vec3 t1, vec3 t2, vec3 t3) {
   return n;
 }
 
-SNELL_FN vec4 snellWater(SNELL_TEX2D sceneColor, SNELL_TEX2D reflectionMap, vec2 uv, vec3 bumpNormal, vec3 eye,
-                         float viewDistance, SnellWaterParams p) {
+SNELL_FN vec4 snellWaterCompose(vec4 reflection, vec4 refraction, vec3 bumpNormal, vec3 eye, float viewDistance,
+                                SnellWaterParams p) {
   vec3 n = snellSafeNormalize(bumpNormal);
   if (dot(n, n) == 0.0f) {
     n = vec3(0.0f, 0.0f, 1.0f);
   }
   vec3 e = snellSafeNormalize(eye);
-  vec3 refrBump = n * p.refractionBumpScale;
   vec3 reflBump = n * p.reflectionBumpScale;
-  vec2 one = vec2(1.0f, 1.0f);
-  vec2 zero = vec2(0.0f, 0.0f);
-  vec2 uvRefl = clamp(snellPerturbUv(uv, vec2(reflBump.x, reflBump.y), 1.0f), zero, one);
-  vec2 uvRefr = clamp(snellPerturbUv(uv, vec2(refrBump.x, refrBump.y), 1.0f), zero, one);
-  vec2 uvProj = clamp(snellPerturbUv(uv, zero, 0.0f), zero, one);
-  vec4 reflection = SNELL_SAMPLE_LOD(reflectionMap, uvRefl, 0.0f);
-  vec4 refrA = SNELL_SAMPLE_LOD(sceneColor, uvRefr, 0.0f);
-  vec4 refrB = SNELL_SAMPLE_LOD(sceneColor, uvProj, 0.0f);
-  vec4 refraction = snellRefractionMaskBlend(refrA, refrB);
   float nDotL = dot(e, reflBump);
   nDotL = isnan(nDotL) ? 0.0f : clamp(nDotL, 0.0f, 1.0f);
   float facing = 1.0f - nDotL;
@@ -2012,6 +2002,25 @@ SNELL_FN vec4 snellWater(SNELL_TEX2D sceneColor, SNELL_TEX2D reflectionMap, vec2
   vec3 water = p.waterColor * facing + deep * (1.0f - facing);
   vec3 c = vec3(reflection.x, reflection.y, reflection.z) * fresnel + water;
   return vec4(c.x, c.y, c.z, 1.0f);
+}
+
+SNELL_FN vec4 snellWater(SNELL_TEX2D sceneColor, SNELL_TEX2D reflectionMap, vec2 uv, vec3 bumpNormal, vec3 eye,
+                         float viewDistance, SnellWaterParams p) {
+  vec3 n = snellSafeNormalize(bumpNormal);
+  if (dot(n, n) == 0.0f) {
+    n = vec3(0.0f, 0.0f, 1.0f);
+  }
+  vec3 refrBump = n * p.refractionBumpScale;
+  vec3 reflBump = n * p.reflectionBumpScale;
+  vec2 one = vec2(1.0f, 1.0f);
+  vec2 zero = vec2(0.0f, 0.0f);
+  vec2 uvRefl = clamp(snellPerturbUv(uv, vec2(reflBump.x, reflBump.y), 1.0f), zero, one);
+  vec2 uvRefr = clamp(snellPerturbUv(uv, vec2(refrBump.x, refrBump.y), 1.0f), zero, one);
+  vec2 uvProj = clamp(snellPerturbUv(uv, zero, 0.0f), zero, one);
+  vec4 reflection = SNELL_SAMPLE_LOD(reflectionMap, uvRefl, 0.0f);
+  vec4 refrA = SNELL_SAMPLE_LOD(sceneColor, uvRefr, 0.0f);
+  vec4 refrB = SNELL_SAMPLE_LOD(sceneColor, uvProj, 0.0f);
+  return snellWaterCompose(reflection, snellRefractionMaskBlend(refrA, refrB), bumpNormal, eye, viewDistance, p);
 }
 
 #endif

@@ -248,6 +248,23 @@ std::vector<ParityIO> waterInputs() {
   return v;
 }
 
+std::vector<ParityIO> waterComposeInputs() {
+  InputGen g(623);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < 10000; ++i) {
+    ParityIO in{};
+    in.v[0] = colour(g);
+    in.v[1] = colour(g);
+    float dist = g.uniform(0.1f, 100.0f);
+    if (g.chance(0.05f)) dist = g.uniform(-5.0f, 0.0f);
+    if (g.chance(0.03f)) dist = hostile(g);
+    in.v[2] = vec4(upVector(g), dist);
+    in.v[3] = vec4(upVector(g), 0.0f);
+    v.push_back(in);
+  }
+  return v;
+}
+
 std::vector<ParityIO> glassInputs() {
   InputGen g(609);
   std::vector<ParityIO> v;
@@ -502,6 +519,8 @@ SNELL_PARITY_CASE({"snellWaterBumpAverage", "shade.glsl", "caseSnellWaterBumpAve
                    SHADE_CPU(caseSnellWaterBumpAverage), 0, 3, {1e-5f, 1e-5f}});
 SNELL_PARITY_CASE({"snellWater", "shade.glsl", "caseSnellWater", waterInputs, SHADE_CPU(caseSnellWater), 0, 4,
                    {1e-4f, 1e-4f}, shadeTextures(), buildTextures});
+SNELL_PARITY_CASE({"snellWaterCompose", "shade.glsl", "caseSnellWaterCompose", waterComposeInputs,
+                   SHADE_CPU(caseSnellWaterCompose), 0, 4, {1e-5f, 1e-5f}});
 SNELL_PARITY_CASE({"snellGlass", "shade.glsl", "caseSnellGlass", glassInputs, SHADE_CPU(caseSnellGlass), 0, 4,
                    {1e-4f, 1e-4f}, shadeTextures(), buildTextures});
 SNELL_PARITY_CASE({"snellIce", "shade.glsl", "caseSnellIce", iceInputs, SHADE_CPU(caseSnellIce), 0x80, 8,

@@ -56,6 +56,10 @@ inline const std::map<std::string, Exception>& exceptions() {
        {0x00FF, 0x000F, false,
         "shade/ice.glsl: a mix of the two given colours (reflection a, refraction b); the fresnel weight is "
         "checked"}},
+      {"snellWaterCompose",
+       {0x00FF, 0x0007, false,
+        "shade/water.glsl: 'Colours (parameters and texels) are used as given'; snellWaterCompose composes the "
+        "given reflection (a) and refraction (b); the normal, eye and distance are checked"}},
       {"snellGlass", {0x8000, 0x0008, false, "shade/glass.glsl: 'Other colours (texels, diffuse.a) are used as given'"}},
       {"snellDepthSurface",
        {0xFF00, 0xFFFF, false,

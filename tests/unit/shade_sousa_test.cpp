@@ -301,6 +301,40 @@ TEST(ShadeWater, MatchesListing19_4) {
   EXPECT_GT(checked, 4000);
 }
 
+// snellWaterCompose is snellWater after its two reads: composing the very
+// texels snellWater reads (at texel centres, so the reads are exact) gives the
+// same colour, and a refraction read some other way goes straight into `deep`.
+TEST(ShadeWater, ComposeIsWaterAfterItsReads) {
+  snell::Texture2D s = randomTexture(16, 16, 5, true);
+  snell::Texture2D refl = randomTexture(16, 16, 6, false);
+  snell::SnellWaterParams p = snell::snellWaterParams();
+  Rng r;
+  for (int k = 0; k < 2000; ++k) {
+    vec3 n = r.unit();
+    n.z = std::fabs(n.z) + 0.2f;
+    vec3 eye = r.unit() * r.uniform(0.5f, 5.0f);
+    eye.z = std::fabs(eye.z);
+    const float dist = r.uniform(0.5f, 100.0f);
+    const vec2 uv(r.uniform(0, 1), r.uniform(0, 1));
+    vec3 nn = glm::normalize(n);
+    vec2 uvRefl = glm::clamp(uv + vec2(nn) * 0.02f, vec2(0.0f), vec2(1.0f));
+    vec2 uvRefr = glm::clamp(uv + vec2(nn) * 0.075f, vec2(0.0f), vec2(1.0f));
+    vec4 a = s.sampleLod(uvRefr, 0.0f), b = s.sampleLod(uv, 0.0f);
+    vec4 refraction = b * a.w + vec4(vec3(a), a.w) * (1.0f - a.w);
+    vec4 got = snell::snellWaterCompose(refl.sampleLod(uvRefl, 0.0f), refraction, n, eye, dist, p);
+    vec4 want = snell::snellWater(s, refl, uv, n, eye, dist, p);
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(got[c], want[c], 1e-5) << k;
+  }
+  // Head-on (NdotL = 1): Fresnel = bias + (1 - bias) (1 - 1)^5 = bias, facing 0, fDist = 1 at distance 1:
+  // result = bias * reflection + refraction.
+  vec4 c = snell::snellWaterCompose(vec4(1.0f, 0.0f, 0.0f, 1.0f), vec4(0.0f, 0.5f, 0.25f, 1.0f), vec3(0, 0, 1),
+                                    vec3(0, 0, 1), 1.0f, p);
+  EXPECT_NEAR(c.x, 0.2f, 1e-6);
+  EXPECT_NEAR(c.y, 0.5f, 1e-6);
+  EXPECT_NEAR(c.z, 0.25f, 1e-6);
+  EXPECT_EQ(c.w, 1.0f);
+}
+
 TEST(ShadeWater, HostileInputsAreFinite) {
   snell::Texture2D s = randomTexture(8, 8, 7, true);
   snell::SnellWaterParams p = snell::snellWaterParams();

@@ -111,6 +111,12 @@ SNELL_FN SnellParityOut caseSnellWater(vec4 a, vec4 b, vec4 c, vec4 d) {
   return shadeParityOut(s, vec4(0.0f), vec4(0.0f), vec4(0.0f));
 }
 
+/* a reflection colour, b refraction colour, c = (bump normal, viewDistance), d.xyz eye */
+SNELL_FN SnellParityOut caseSnellWaterCompose(vec4 a, vec4 b, vec4 c, vec4 d) {
+  vec4 s = snellWaterCompose(a, b, vec3(c.x, c.y, c.z), vec3(d.x, d.y, d.z), c.w, snellWaterParams());
+  return shadeParityOut(s, vec4(0.0f), vec4(0.0f), vec4(0.0f));
+}
+
 /* a.xy uv, b.xyz bump texel, c.xyz eye, d diffuse */
 SNELL_FN SnellParityOut caseSnellGlass(vec4 a, vec4 b, vec4 c, vec4 d) {
   vec4 s = snellGlass(parityShadeScene, parityShadeReflection, vec2(a.x, a.y), vec3(b.x, b.y, b.z), d,
