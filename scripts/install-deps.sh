@@ -10,6 +10,7 @@ packages=(
   libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev  # Mesa llvmpipe, no GPU needed
   libembree-dev nlohmann-json3-dev libtinyobjloader-dev libstb-dev libcli11-dev  # the lab
   clang-14 libclang-rt-14-dev valgrind  # libFuzzer targets (tests/fuzz), the GPU leak check
+  apngasm                         # the gallery's animated PNGs (scripts/gallery.sh)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -7,9 +7,10 @@
 #     SPIR-V (-V), then spirv-val;
 #   HLSL - glslang's HLSL front end to SPIR-V;
 # and lints the subset rules a C++ compiler cannot catch. The portable
-# examples (examples/glsl/*.frag but the lab's own lab_*.frag) compile in all
-# five GLSL dialects with only their #version line changed; the lab's shaders
-# are GL 4.5 programs and compile as written.
+# examples (examples/glsl/*.frag but the lab's and the gallery's own
+# lab_*/gallery_* shaders) compile in all five GLSL dialects with only their
+# #version line changed; the lab's and the gallery's shaders are GL 4.5
+# programs and compile as written.
 # Usage: check_glsl.sh <glslangValidator> <repo root> <snell-flatten> <spirv-val>
 set -u
 validator=$1
@@ -85,15 +86,15 @@ for f in $files; do
   grep -q "^#ifndef $guard\$" "$f" || { echo "FAIL [guard] $f: expected include guard $guard"; fail=1; }
 done
 
-# The examples: portable ones in every GLSL dialect, the lab's as written.
-for f in "$root"/examples/glsl/*.frag "$root"/examples/glsl/*.vert; do
+# The examples: portable ones in every GLSL dialect, the lab's and the gallery's as written.
+for f in "$root"/examples/glsl/*.frag "$root"/examples/glsl/*.vert "$root"/examples/glsl/*.comp; do
   [ -e "$f" ] || continue
   count=$((count + 1))
   name=examples/glsl/$(basename "$f")
   stage=${f##*.}
   head -n 1 "$f" | grep -q '^#version 450 core$' || { echo "FAIL [example] $name: line 1 must be #version 450 core"; fail=1; continue; }
   case $(basename "$f") in
-    lab_*)
+    lab_*|gallery_*)
       gl_check "example as written" "$name" "$f" "$stage" ;;
     *)
       for v in "330 core" "450 core" "300 es" "310 es"; do

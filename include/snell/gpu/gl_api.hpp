@@ -40,6 +40,7 @@ namespace snell::gpu {
   X(PFNGLDISABLEPROC, Disable)                                  \
   X(PFNGLDEPTHFUNCPROC, DepthFunc)                              \
   X(PFNGLDEPTHMASKPROC, DepthMask)                              \
+  X(PFNGLCOLORMASKIPROC, ColorMaski)                             \
   X(PFNGLCULLFACEPROC, CullFace)                                \
   X(PFNGLVIEWPORTPROC, Viewport)                                \
   X(PFNGLPIXELSTOREIPROC, PixelStorei)                          \

@@ -1,0 +1,279 @@
+// G. Oliveira's refractive texture mapping (2000, Part Two): a flat mesh of
+// directional sine waves over a planar map (the pool floor), each vertex's uv
+// from the approximate refracted ray (eq. 8) or from Snell's law, interpolated
+// by the rasterizer. Both are measured against an independent double-precision
+// Snell refraction to the plane, per vertex and per pixel (at the rasterized
+// surface point, about the interpolated normal), as a function of the wave
+// amplitude; the approximate ray's refraction factor is fitted on the flat mesh.
+#include <cmath>
+#include <initializer_list>
+#include <sstream>
+
+#include "effects.hpp"
+#include "lab/figure.hpp"
+#include "lab/image_io.hpp"
+#include "textures.hpp"
+
+namespace snell::gallery {
+
+namespace {
+
+constexpr float kExtent = 2.0f;  // the mesh spans [-2, 2]^2 at y = 0
+constexpr float kDepth = 1.0f;   // the map lies 1 below
+constexpr float kEta = 1.0f / 1.333f;
+constexpr int kCells = 96;
+constexpr int kMapSize = 512;
+
+// The height field: three directional waves (eq. 1 of Part One: sums of sines).
+struct Waves {
+  float amplitude;
+  float time;
+  float height(float x, float z, vec3* normal) const {
+    const float k[3][2] = {{2.1f, 0.7f}, {-0.9f, 2.6f}, {3.7f, -2.2f}};
+    const float w[3] = {1.3f, 1.7f, 2.3f}, a[3] = {1.0f, 0.6f, 0.3f};
+    float h = 0.0f, dx = 0.0f, dz = 0.0f;
+    for (int i = 0; i < 3; ++i) {
+      const float ph = k[i][0] * x + k[i][1] * z + w[i] * time;
+      h += amplitude * a[i] * std::sin(ph);
+      dx += amplitude * a[i] * k[i][0] * std::cos(ph);
+      dz += amplitude * a[i] * k[i][1] * std::cos(ph);
+    }
+    if (normal) *normal = glm::normalize(vec3(-dx, 1.0f, -dz));
+    return h;
+  }
+};
+
+// Vertices as (position, normal) pairs and the triangles as (position, normal) per corner.
+void mesh(const Waves& waves, std::vector<vec4>& vertices, std::vector<vec4>& triangles) {
+  vertices.clear();
+  triangles.clear();
+  auto at = [&](int i, int j) {
+    const float x = -kExtent + 2.0f * kExtent * float(i) / float(kCells);
+    const float z = -kExtent + 2.0f * kExtent * float(j) / float(kCells);
+    vec3 n;
+    const float y = waves.height(x, z, &n);
+    return std::pair<vec4, vec4>(vec4(x, y, z, 1.0f), vec4(n, 0.0f));
+  };
+  for (int j = 0; j <= kCells; ++j)
+    for (int i = 0; i <= kCells; ++i) {
+      const auto v = at(i, j);
+      vertices.push_back(v.first);
+      vertices.push_back(v.second);
+    }
+  for (int j = 0; j < kCells; ++j)
+    for (int i = 0; i < kCells; ++i)
+      for (const std::pair<int, int>& c : std::initializer_list<std::pair<int, int>>{
+               {i, j}, {i, j + 1}, {i + 1, j + 1}, {i, j}, {i + 1, j + 1}, {i + 1, j}}) {
+        const auto v = at(c.first, c.second);
+        triangles.push_back(v.first);
+        triangles.push_back(v.second);
+      }
+}
+
+SnellRefractiveTextureMapParams params(float factor) {
+  // x maps to u; z to v with the far edge (z = -2) at v = 1, so the map is upright in the view.
+  return snellRefractiveTextureMapParams(vec2(-kExtent, kExtent), vec2(kExtent, -kExtent), 0.0f, kDepth, factor);
+}
+
+// Snell's law to the plane in double precision (not the library's function): the uv of the hit.
+glm::dvec2 exactUv(glm::dvec3 vertex, glm::dvec3 normal, glm::dvec3 eye) {
+  const glm::dvec3 i = glm::normalize(vertex - eye);
+  glm::dvec3 n = glm::normalize(normal);
+  if (glm::dot(i, n) > 0.0) n = -n;
+  const double eta = 1.0 / 1.333, c = -glm::dot(i, n);
+  const double k = 1.0 - eta * eta * (1.0 - c * c);
+  const glm::dvec3 t = eta * i + (eta * c - std::sqrt(k)) * n;
+  const double s = (-double(kDepth) - vertex.y) / t.y;
+  const glm::dvec3 p = vertex + s * t;
+  const double e = kExtent, u = (p.x + e) / (2.0 * e), v = (e - p.z) / (2.0 * e);
+  return glm::clamp(glm::dvec2(u, v), 0.0, 1.0);
+}
+
+struct UvError {
+  double mean = 0.0, max = 0.0;
+};
+UvError approxError(const Waves& waves, vec3 eye, float factor) {
+  std::vector<vec4> v, t;
+  mesh(waves, v, t);
+  UvError e;
+  const SnellRefractiveTextureMapParams p = params(factor);
+  for (std::size_t k = 0; k < v.size(); k += 2) {
+    const vec2 a = galleryRtmUv(vec3(v[k]), vec3(v[k + 1]), eye, false, kEta, p);
+    const double d =
+        glm::length(glm::dvec2(a) - exactUv(glm::dvec3(vec3(v[k])), glm::dvec3(vec3(v[k + 1])), glm::dvec3(eye))) *
+        kMapSize;
+    e.mean += d;
+    e.max = std::max(e.max, d);
+  }
+  e.mean /= double(v.size() / 2);
+  return e;
+}
+
+}  // namespace
+
+EffectResult runRtm(const Gl& g, const Options& o) {
+  const gpu::GlApi& gl = g.gl();
+  const int W = o.width, H = o.height;
+  lab::Camera cam;
+  cam.position = vec3(0.0f, 3.0f, 3.2f);
+  cam.target = vec3(0.0f, -0.6f, -0.2f);
+  cam.fovYDegrees = 50.0f;
+  cam.width = W;
+  cam.height = H;
+  const mat4 clip = clipFromWorld(cam);
+
+  // The refraction factor that best matches Snell's law on the flat mesh (golden-section search).
+  float lo = 0.0f, hi = 3.0f;
+  for (int it = 0; it < 40; ++it) {
+    const float a = hi - (hi - lo) * 0.618034f, b = lo + (hi - lo) * 0.618034f;
+    if (approxError({0.0f, 0.0f}, cam.position, a).mean < approxError({0.0f, 0.0f}, cam.position, b).mean)
+      hi = b;
+    else
+      lo = a;
+  }
+  const float factor = 0.5f * (lo + hi);
+  const SnellRefractiveTextureMapParams rp = params(factor);
+  const float amplitude = 0.06f;
+
+  const Texture2D floorTex = texture(floorImage(kMapSize), Filter::Linear);
+  gpu::Texture floorGl(gl, floorTex);
+  gpu::Program draw = g.program("gallery_rtm.vert", "gallery_rtm.frag");
+  gpu::Program perVertex = g.compute("gallery_rtm_uv.comp");
+  gpu::Framebuffer fb(gl, W, H, 4, true), plainFb(gl, W, H, 1, false);
+  for (gpu::Program* p : {&draw, &perVertex}) {
+    p->set("eye", cam.position);
+    p->set("eta", kEta);
+    p->set("extent", vec4(rp.extentMin, rp.extentMax));
+    p->set("planeParams", vec3(rp.restY, rp.depth, rp.refractionFactor));
+  }
+  draw.set("clipFromWorld", clip);
+
+  std::vector<vec4> vertices, triangles;
+  gpu::StorageBuffer vbuf(gl), tbuf(gl), uvbuf(gl);
+  auto upload = [&](float amp, float time) {
+    mesh({amp, time}, vertices, triangles);
+    vbuf.upload(vertices);
+    tbuf.upload(triangles);
+  };
+  auto drawPass = [&](bool exact) {
+    for (int a = 0; a < 4; ++a) fb.clearColor(a, vec4(0.0f));
+    fb.clearDepth(1.0f);
+    fb.bind();
+    gl.Enable(GL_DEPTH_TEST);
+    gl.DepthFunc(GL_LESS);
+    gl.Disable(GL_CULL_FACE);
+    draw.set("exact", exact ? 1 : 0);
+    g.bindTextures({floorGl.id()});
+    tbuf.bindBase(0);
+    draw.use();
+    gl.DrawArrays(GL_TRIANGLES, 0, GLsizei(triangles.size() / 2));
+  };
+  auto plainPass = [&] { g.plainPass(plainFb, floorGl.id()); };
+
+  upload(amplitude, 0.0f);
+
+  EffectResult result;
+  const std::vector<double> ms =
+      g.timeInterleaved({plainPass, [&] { drawPass(false); }, [&] { drawPass(true); }}, o.timingRepeats);
+
+  // Per vertex: the compute pass against C++.
+  const int count = int(vertices.size() / 2);
+  uvbuf.allocate(std::size_t(count) * sizeof(vec4));
+  vbuf.bindBase(0);
+  uvbuf.bindBase(1);
+  perVertex.set("count", count);
+  perVertex.dispatch(GLuint((count + 63) / 64));
+  gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  const std::vector<vec4> gpuUv = uvbuf.downloadVec4();
+  double vertexMax[2] = {0.0, 0.0};
+  for (int k = 0; k < count; ++k) {
+    const vec3 p(vertices[std::size_t(2 * k)]), n(vertices[std::size_t(2 * k + 1)]);
+    const vec2 a = galleryRtmUv(p, n, cam.position, false, kEta, rp),
+               e = galleryRtmUv(p, n, cam.position, true, kEta, rp);
+    vertexMax[0] = std::max(vertexMax[0], double(glm::length(a - vec2(gpuUv[std::size_t(k)]))) * kMapSize);
+    vertexMax[1] = std::max(vertexMax[1],
+                            double(glm::length(e - vec2(gpuUv[std::size_t(k)].z, gpuUv[std::size_t(k)].w))) * kMapSize);
+  }
+
+  std::vector<Image> renders, uvs;
+  for (bool exact : {false, true}) {
+    drawPass(exact);
+    const Image gpuImage = fb.readColor(0), uvImage = fb.readColor(1);
+    Image cpuImage(W, H);
+    std::vector<bool> on(gpuImage.texels.size());
+    for (std::size_t i = 0; i < on.size(); ++i) {
+      on[i] = uvImage.texels[i].w != 0.0f;
+      if (on[i]) cpuImage.texels[i] = vec4(vec3(floorTex.sampleLod(vec2(uvImage.texels[i]), 0.0f)), 1.0f);
+    }
+    const Agreement a = compare(gpuImage, cpuImage, on);
+    Row r = makeRow("refractive texture mapping",
+                    exact ? "Snell's law per vertex" : "approximate ray per vertex (factor " + fixed(factor, 3) + ")",
+                    1, ms[exact ? 2 : 1], ms[0], a);
+    r.check = "per-vertex uv, GPU vs C++: " + fixed(vertexMax[exact ? 1 : 0], 4) + " texels max";
+    r.metrics = {{"vertex_uv_gpu_cpu_max_texels", vertexMax[exact ? 1 : 0]}, {"refraction_factor", factor}};
+    result.rows.push_back(r);
+    renders.push_back(gpuImage);
+    uvs.push_back(uvImage);
+  }
+  // The difference of the two uv images, in texels of the 512 x 512 map.
+  Image diff(W, H);
+  for (std::size_t i = 0; i < diff.texels.size(); ++i)
+    if (uvs[0].texels[i].w != 0.0f && uvs[1].texels[i].w != 0.0f)
+      diff.texels[i] = vec4(
+          lab::heatColor(glm::length(vec2(uvs[0].texels[i]) - vec2(uvs[1].texels[i])) * float(kMapSize) / 16.0f), 1.0f);
+  savePanel(o, "rtm.png", {{&renders[0], "approximate ray"}, {&renders[1], "Snell's law"}, {&diff, "uv difference"}},
+            "A sine-wave water mesh over the pool floor; uv difference black 0 to white 16 texels of the 512 map.",
+            result);
+  std::vector<Image> frames;
+  for (int f = 0; f < o.frames; ++f) {
+    upload(amplitude, 0.4f * float(f));
+    drawPass(false);
+    frames.push_back(fb.readColor(0));
+  }
+  saveAnimation(o, "rtm", frames, result);
+  // Both against Snell's law as the waves grow: per vertex, and per pixel at the rasterized surface point.
+  struct PixelError {
+    double mean = 0.0, max = 0.0;
+  };
+  auto perPixel = [&](bool exact) {
+    drawPass(exact);
+    const Image uv = fb.readColor(1), world = fb.readColor(2), normal = fb.readColor(3);
+    PixelError e;
+    long n = 0;
+    for (std::size_t i = 0; i < uv.texels.size(); ++i) {
+      if (uv.texels[i].w == 0.0f) continue;
+      const double d = glm::length(glm::dvec2(vec2(uv.texels[i])) -
+                                   exactUv(glm::dvec3(vec3(world.texels[i])), glm::dvec3(vec3(normal.texels[i])),
+                                           glm::dvec3(cam.position))) *
+                       kMapSize;
+      e.mean += d;
+      e.max = std::max(e.max, d);
+      ++n;
+    }
+    e.mean /= double(std::max(1L, n));
+    return e;
+  };
+  std::ostringstream t;
+  t << "Refractive texture mapping against Snell's law to the floor plane in double precision (not the library's "
+       "function), uv error in texels of the "
+    << kMapSize << "x" << kMapSize << " map, mean / max; eye at (0, 3, 3.2), floor " << kDepth
+    << " below the rest plane, eta 1/1.333, refraction factor " << fixed(factor, 3)
+    << " (fitted on the flat mesh). Per vertex: the approximate ray at each vertex. Per pixel: the interpolated uv "
+       "against the exact refraction at the rasterized surface point about the interpolated normal.\n\n"
+       "| wave amplitude | approximate, per vertex | approximate, per pixel | Snell per vertex, per pixel |\n"
+       "|---|---|---|---|\n";
+  for (float amp : {0.0f, 0.02f, 0.04f, 0.06f, 0.1f, 0.15f}) {
+    const UvError v = approxError({amp, 0.0f}, cam.position, factor);
+    upload(amp, 0.0f);
+    const PixelError pa = perPixel(false), pe = perPixel(true);
+    t << "| " << fixed(amp, 2) << " | " << fixed(v.mean, 2) << " / " << fixed(v.max, 2) << " | " << fixed(pa.mean, 2)
+      << " / " << fixed(pa.max, 2) << " | " << fixed(pe.mean, 2) << " / " << fixed(pe.max, 2) << " |\n";
+    result.rows.front().metrics["approx_error_mean_texels_a" + fixed(amp, 2)] = v.mean;
+    result.rows.front().metrics["approx_pixel_error_mean_texels_a" + fixed(amp, 2)] = pa.mean;
+    result.rows.back().metrics["snell_vertex_pixel_error_mean_texels_a" + fixed(amp, 2)] = pe.mean;
+  }
+  result.findings.push_back(t.str());
+  return result;
+}
+
+}  // namespace snell::gallery
