@@ -20,7 +20,7 @@ EffectResult runRtm(const Gl& gl, const Options& options);
 
 // A row from its names, cost and CPU-vs-GPU agreement.
 Row makeRow(const std::string& effect, const std::string& variant, int fetches, double passMs, double plainMs,
-            const Agreement& agreement);
+            const gpu::FrameComparison& agreement);
 
 // Shared by the effects' pictures.
 Image downscale(const Image& image, int factor);            // box filter

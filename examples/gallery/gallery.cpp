@@ -30,16 +30,16 @@ std::string fixed(double v, int digits) {
 }
 
 Row makeRow(const std::string& effect, const std::string& variant, int fetches, double passMs, double plainMs,
-            const Agreement& agreement) {
+            const gpu::FrameComparison& agreement) {
   Row r;
   r.effect = effect;
   r.variant = variant;
   r.fetches = fetches;
   r.passMs = passMs;
   r.plainMs = plainMs;
-  r.pixels = agreement.pixels;
-  r.cpuGpuMax = agreement.max;
-  r.within1 = agreement.within1;
+  r.pixels = long(agreement.pixels);
+  r.cpuGpuMax = agreement.maxAbs;
+  r.within1 = agreement.shareWithin1();
   return r;
 }
 

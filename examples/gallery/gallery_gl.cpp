@@ -116,23 +116,9 @@ mat4 clipFromWorld(const lab::Camera& camera) { return camera.clipFromView() * c
 
 Texture2D texture(Image image, Filter filter) { return Texture2D(std::move(image), filter); }
 
-Agreement compare(const Image& gpuImage, const Image& cpuImage, const std::vector<bool>& on) {
-  Agreement a;
-  long ok = 0;
-  for (std::size_t i = 0; i < on.size(); ++i) {
-    if (!on[i]) continue;
-    ++a.pixels;
-    double worst = 0.0;
-    for (int c = 0; c < 3; ++c) {
-      double d = std::fabs(double(gpuImage.texels[i][c]) - double(cpuImage.texels[i][c]));
-      if (!(d <= 1e30)) d = 1e30;  // a NaN on either side is a disagreement, never a match
-      worst = std::max(worst, d);
-    }
-    a.max = std::max(a.max, worst);
-    if (worst <= 1.0 / 255.0) ++ok;
-  }
-  a.within1 = a.pixels ? double(ok) / double(a.pixels) : 0.0;
-  return a;
+gpu::FrameComparison compare(const Image& gpuImage, const Image& cpuImage, const std::vector<bool>& on) {
+  const std::size_t w = std::size_t(gpuImage.width);
+  return gpu::compareFrames(gpuImage, cpuImage, [&](int x, int y) { return on.at(std::size_t(y) * w + std::size_t(x)); });
 }
 
 }  // namespace snell::gallery

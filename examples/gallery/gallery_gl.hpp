@@ -6,6 +6,7 @@
 #include <functional>
 #include <initializer_list>
 #include <snell/gpu/context.hpp>
+#include <snell/gpu/frame_compare.hpp>
 #include <snell/gpu/program.hpp>
 #include <snell/gpu/resources.hpp>
 #include <string>
@@ -64,12 +65,7 @@ mat4 clipFromWorld(const lab::Camera& camera);
 
 // A texture of one Image with the filter both sides read it with.
 Texture2D texture(Image image, Filter filter);
-// |CPU - GPU| over RGB on the pixels where `on` is set.
-struct Agreement {
-  long pixels = 0;
-  double max = 0.0;
-  double within1 = 0.0;  // share with every channel within 1/255
-};
-Agreement compare(const Image& gpuImage, const Image& cpuImage, const std::vector<bool>& on);
+// The whole-frame comparison (snell/gpu/frame_compare.hpp) over the pixels where `on` is set.
+gpu::FrameComparison compare(const Image& gpuImage, const Image& cpuImage, const std::vector<bool>& on);
 
 }  // namespace snell::gallery

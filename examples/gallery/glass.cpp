@@ -166,7 +166,7 @@ EffectResult runGlass(const Gl& g, const Options& o) {
   for (int m : {GALLERY_MASK_OFF, GALLERY_MASK_ALPHA}) {
     panePass(m, 0.0f, false);
     const Image gpuImage = outFb.readColor(0);
-    const Agreement a = compare(gpuImage, cpuPane(m, 0.0f, sTex), on);
+    const gpu::FrameComparison a = compare(gpuImage, cpuPane(m, 0.0f, sTex), on);
     // Leaks on the haze pane (the stained glass always masks; its result mixes in the environment):
     // the probe through the same pass, with S read bilinearly (the pictures) and by nearest texel.
     long leaks[2] = {0, 0}, cpuLeaks = 0;

@@ -172,7 +172,7 @@ EffectResult runIce(const Gl& g, const Options& o) {
     icePass(withCracks);
     const Image gpuImage = outFb.readColor(0), gpuBits = outFb.readColor(1);
     Image cpuBits(W, H);
-    const Agreement a = compare(gpuImage, cpuIce(withCracks, &cpuBits), on);
+    const gpu::FrameComparison a = compare(gpuImage, cpuIce(withCracks, &cpuBits), on);
     // the environment along the reflected and the refracted ray; depths and cracks from G-buffers
     Row r = makeRow("ice", withCracks ? "with cracks" : "no cracks", 2, ms[withCracks ? 2 : 1], ms[0], a);
     if (withCracks) {

@@ -205,7 +205,7 @@ EffectResult runRtm(const Gl& g, const Options& o) {
       on[i] = uvImage.texels[i].w != 0.0f;
       if (on[i]) cpuImage.texels[i] = vec4(vec3(floorTex.sampleLod(vec2(uvImage.texels[i]), 0.0f)), 1.0f);
     }
-    const Agreement a = compare(gpuImage, cpuImage, on);
+    const gpu::FrameComparison a = compare(gpuImage, cpuImage, on);
     Row r = makeRow("refractive texture mapping",
                     exact ? "Snell's law per vertex" : "approximate ray per vertex (factor " + fixed(factor, 3) + ")",
                     1, ms[exact ? 2 : 1], ms[0], a);

@@ -186,7 +186,7 @@ EffectResult runWater(const Gl& g, const Options& o) {
   for (int m = 0; m < 3; ++m) {
     waterPass(m, 0.0f, false);
     const Image gpuImage = outFb.readColor(0);
-    const Agreement a = compare(gpuImage, cpuWater(m, 0.0f, sTex, reflTex, false), on);
+    const gpu::FrameComparison a = compare(gpuImage, cpuWater(m, 0.0f, sTex, reflTex, false), on);
     // Leaks, with S read bilinearly (the pictures) and by nearest texel.
     long leaks[2] = {0, 0};
     Image leakView = gpuImage;

@@ -22,7 +22,7 @@ missing=""
 for name in $(cd "$root/glsl" && perl -0777 -ne 's{/\*.*?\*/}{}gs; s{//[^\n]*}{}g; print "$1\n" while /^SNELL_FN\s+[^{;(]*?\b(snell\w+)\s*\(/mg' $(find snell -name '*.glsl')) \
             Image Texture2D TextureCube snellBuildDepthPyramid snellBuildNormalMips computeWymanDn \
             snellTechniqueTable snellFindTechnique snellDescribeTechnique snellDescribeIntersect \
-            Context flattenGlslFile flattenGlslSource mapInfoLog Program DepthPyramidPass runParityGpu runParityHlsl; do
+            Context flattenGlslFile flattenGlslSource mapInfoLog Program DepthPyramidPass compareFrames runParityGpu runParityHlsl; do
   grep -qw "$name" "$doc" || missing+=" $name"
 done
 if [ -n "$missing" ]; then echo "FAIL docs/api.md does not mention:$missing"; fail=1; fi

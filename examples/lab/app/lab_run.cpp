@@ -11,6 +11,7 @@
 
 #include <snell/depth_pyramid.hpp>
 #include <snell/wyman_dn.hpp>
+#include <snell/gpu/frame_compare.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -391,40 +392,34 @@ void shadeOnCpu(const CpuShader& shade, const TechniqueBuffers& tb, int threads,
 // Stage 4b: the row's shares and the CPU-vs-GPU agreement, over the front pass's covered pixels.
 void compareCpuGpu(const CpuShader& shade, const TechniqueBuffers& tb, const Image& cpuColor, const Image& cpuStats,
                    TechniqueRow& row) {
-  std::size_t covered = 0, invalid = 0, backMiss = 0, exitMiss = 0, beyond1 = 0, beyond4 = 0, fetchDiff = 0;
+  auto covered = [&](int x, int y) { return tb.normal.at(x, y).w > 0.0f; };
+  const gpu::FrameComparison c =
+      gpu::compareFrames(tb.color, cpuColor, covered, gpu::ClampChannels::ToUnit, [&](int x, int y) {
+        row.cpuGpuBeyond4Ties += shade.tieUlps(tb, x, y, kTieUlps, nullptr, nullptr) > 0;
+      });
+  row.cpuGpuMaxAbs = c.maxAbs;
+  row.worstX = c.worstX;
+  row.worstY = c.worstY;
+  row.cpuGpuBeyond4Pixels = static_cast<int>(c.beyond4);
+  std::size_t invalid = 0, backMiss = 0, exitMiss = 0, fetchDiff = 0;
   double fetches = 0.0;
   for (int y = 0; y < tb.normal.height; ++y)
     for (int x = 0; x < tb.normal.width; ++x) {
-      if (!(tb.normal.at(x, y).w > 0.0f)) continue;
-      ++covered;
+      if (!covered(x, y)) continue;
       const vec4 s = tb.stats.at(x, y);
       invalid += s.x > 0.5f;
       backMiss += s.z < 0.5f;
       exitMiss += s.w < 0.5f;
       fetches += static_cast<double>(s.y);
       fetchDiff += s.y != cpuStats.at(x, y).y;
-      float d = 0.0f;
-      for (int c = 0; c < 3; ++c)
-        d = std::max(d, std::abs(clamp01(tb.color.at(x, y)[c]) - clamp01(cpuColor.at(x, y)[c])));
-      if (static_cast<double>(d) > row.cpuGpuMaxAbs) {
-        row.cpuGpuMaxAbs = static_cast<double>(d);
-        row.worstX = x;
-        row.worstY = y;
-      }
-      beyond1 += d > 1.0f / 255.0f;
-      if (d > 4.0f / 255.0f) {
-        ++beyond4;
-        ++row.cpuGpuBeyond4Pixels;
-        row.cpuGpuBeyond4Ties += shade.tieUlps(tb, x, y, kTieUlps, nullptr, nullptr) > 0;
-      }
     }
-  const double n = covered ? static_cast<double>(covered) : 1.0;
+  const double n = c.pixels ? static_cast<double>(c.pixels) : 1.0;
   row.invalidShare = static_cast<double>(invalid) / n;
   row.backMissShare = static_cast<double>(backMiss) / n;
   row.exitMissShare = static_cast<double>(exitMiss) / n;
   row.fetchesPerPixel = fetches / n;
-  row.cpuGpuBeyond1 = static_cast<double>(beyond1) / n;
-  row.cpuGpuBeyond4 = static_cast<double>(beyond4) / n;
+  row.cpuGpuBeyond1 = static_cast<double>(c.pixels - c.within1) / n;
+  row.cpuGpuBeyond4 = static_cast<double>(c.beyond4) / n;
   row.fetchMismatch = static_cast<double>(fetchDiff) / n;
 }
 
