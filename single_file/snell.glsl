@@ -128,8 +128,14 @@ contract: macros only.
    GPUs may flush denormals to zero, so a denormal input is treated as 0 in
    every language (same flags on CPU and GPU). */
 #define SNELL_FLT_MIN 1.175494351e-38f
-/* True when the float x is neither NaN nor +-Inf. */
-#define SNELL_FINITE(x) (!isnan(x) && !isinf(x))
+/* True when the float x is neither NaN nor +-Inf. C++: std::isfinite, the
+   same answer in one test instead of two (7 % of a plane ray's instructions,
+   issue 14). */
+#if defined(SNELL_LANG_CXX)
+#  define SNELL_FINITE(x) (std::isfinite(x))
+#else
+#  define SNELL_FINITE(x) (!isnan(x) && !isinf(x))
+#endif
 
 #endif
 

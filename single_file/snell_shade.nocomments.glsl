@@ -78,7 +78,12 @@
 #define SNELL_FLT_MAX 3.402823466e38f
 
 #define SNELL_FLT_MIN 1.175494351e-38f
-#define SNELL_FINITE(x) (!isnan(x) && !isinf(x))
+
+#if defined(SNELL_LANG_CXX)
+#  define SNELL_FINITE(x) (std::isfinite(x))
+#else
+#  define SNELL_FINITE(x) (!isnan(x) && !isinf(x))
+#endif
 
 #endif
 

@@ -148,11 +148,20 @@ class Texture2D {
   std::vector<Image> levels_;
 
   static int clampi(int v, int hi) { return std::max(0, std::min(v, hi)); }
-  // Float to int without UB for NaN/huge values (clamp-to-edge makes them edges).
-  static int toIndex(float v) {
+  // std::floor, exactly (the sign of zero included), without the library call
+  // that x86-64 needs before SSE4.1 (309 of a plane ray's 2,316 instructions,
+  // issue 14): for |v| < 2^31 the integer part converts exactly.
+  static float floorExact(float v) {
+    if (!(std::fabs(v) < 2147483648.0f)) return std::floor(v);  // NaN, +-inf, huge
+    const float t = static_cast<float>(static_cast<int>(v));
+    return t > v ? t - 1.0f : (v == 0.0f ? v : t);
+  }
+  // Float to int without UB for NaN/huge values (clamp-to-edge makes them
+  // edges); `floored` is floorExact(v).
+  static int toIndex(float v, float floored) {
     if (!(v > -1e9f)) return -1000000000;
     if (v > 1e9f) return 1000000000;
-    return static_cast<int>(std::floor(v));
+    return static_cast<int>(floored);
   }
 
   vec4 filterLevel(int lod, vec2 uv, Filter f) const {
@@ -160,11 +169,13 @@ class Texture2D {
     const float u = uv.x * static_cast<float>(l.width);
     const float v = uv.y * static_cast<float>(l.height);
     if (f == Filter::Nearest)
-      return l.at(clampi(toIndex(u), l.width - 1), clampi(toIndex(v), l.height - 1));
+      return l.at(clampi(toIndex(u, floorExact(u)), l.width - 1), clampi(toIndex(v, floorExact(v)), l.height - 1));
+    // One floor per axis serves both the texel index and the weight.
     const float us = u - 0.5f, vs = v - 0.5f;
-    const int i0 = toIndex(us), j0 = toIndex(vs);
-    const float a = std::isfinite(us) ? us - std::floor(us) : 0.0f;
-    const float b = std::isfinite(vs) ? vs - std::floor(vs) : 0.0f;
+    const float fu = floorExact(us), fv = floorExact(vs);
+    const int i0 = toIndex(us, fu), j0 = toIndex(vs, fv);
+    const float a = std::isfinite(us) ? us - fu : 0.0f;
+    const float b = std::isfinite(vs) ? vs - fv : 0.0f;
     const int x0 = clampi(i0, l.width - 1), x1 = clampi(i0 + 1, l.width - 1);
     const int y0 = clampi(j0, l.height - 1), y1 = clampi(j0 + 1, l.height - 1);
     return (1.0f - a) * (1.0f - b) * l.at(x0, y0) + a * (1.0f - b) * l.at(x1, y0) +
