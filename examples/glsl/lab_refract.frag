@@ -22,18 +22,8 @@ layout(binding = 4) uniform sampler2D sceneNormal;
 layout(binding = 5) uniform sampler2D scenePyramid;
 layout(binding = 6) uniform sampler2D sceneColor;
 layout(binding = 7) uniform sampler2D environment;
-layout(location = 2) uniform mat4 projection;  // clipFromView
-layout(location = 3) uniform float zNear;
-layout(location = 4) uniform float zFar;
-layout(location = 5) uniform float ior;
-layout(location = 6) uniform vec3 absorption;
-layout(location = 7) uniform vec3 envX;
-layout(location = 8) uniform vec3 envY;
-layout(location = 9) uniform vec3 envZ;
-layout(location = 10) uniform float backRange;
-layout(location = 11) uniform float exitRange;
-layout(location = 12) uniform int depthFilter;
-layout(location = 13) uniform int reflectionMode;
+// The frame's constants, the host's LabParams bytes as they are (std140).
+layout(std140, binding = 0) uniform LabUniforms { LabParams params; };
 
 layout(location = 0) out vec4 color;
 layout(location = 1) out vec4 stats;     // x fell back, y texel fetches, z back hit, w exit hit
@@ -41,10 +31,9 @@ layout(location = 2) out vec4 position;  // xyz view-space front position, w d_N
 layout(location = 3) out vec4 normal;    // xyz interpolated front normal, w 1 (coverage)
 
 void main() {
-  LabParams p = labParams(projection, zNear, zFar, ior, absorption, envX, envY, envZ, backRange, exitRange, depthFilter, reflectionMode);
   SnellTwoInterfaceResult r = labShade(LAB_TECHNIQUE, vsPosition, vsNormal, vsDn, backDepth, backNormal,
                                        backPyramid, sceneDepth, sceneNormal, scenePyramid, sceneColor,
-                                       environment, p);
+                                       environment, params);
   color = vec4(r.color, 1.0f);
   stats = vec4(r.fellBack ? 1.0f : 0.0f, float(r.fetches), r.backHit ? 1.0f : 0.0f, r.exitHit.valid ? 1.0f : 0.0f);
   position = vec4(vsPosition, vsDn);

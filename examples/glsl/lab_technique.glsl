@@ -6,8 +6,7 @@ description: the lab's per-pixel technique call (snell-lab, examples/lab): one
   shade/technique_presets.glsl by number, points the exit slot at the opaque
   scene's buffers (the paintings; the environment where the exit ray finds
   none) and runs snellTwoInterfaceRefraction.
-use: LabParams p = labParams(clipFromView, zNear, zFar, ior, absorption, envX, envY, envZ, backRange, exitRange,
-                             SNELL_DEPTH_FILTER_NEAREST, SNELL_REFLECT_SCENE);
+use: LabParams p;  // the host fills every field (C++), or the uniform block LabUniforms holds it (GLSL)
      SnellTwoInterfaceResult r = labShade(SNELL_TECHNIQUE_PLANE_NORMAL_1, frontPosition, frontNormal,
          dN, backDepth, backNormal, backPyramid, sceneDepth, sceneNormal, scenePyramid,
          sceneColor, environment, p);
@@ -43,39 +42,24 @@ source: the composition of DESIGN.md sec. 2; the presets' own sources.
 #include "snell/shade/technique_presets.glsl"
 #include "snell/shade/two_interface_shade.glsl"
 
+/* The per-frame constants of every technique pass. The fields come in
+   (vec3, float) pairs after the matrix, so the C++ struct's bytes are the
+   std140 layout of the uniform block LabUniforms (lab_refract.frag): the host
+   uploads it as it is (examples/lab/app/gpu_lab.cpp checks the offsets). */
 struct LabParams {
-  mat4 clipFromView;
+  mat4 clipFromView;  // how the techniques read the buffers (the guard band's projection)
+  vec3 absorption;    // Beer-Lambert coefficients per unit length
   float zNear;
+  vec3 envX;          // world-from-view with the environment's rotation folded in, by column
   float zFar;
-  float ior;
-  vec3 absorption;
-  vec3 envX;
   vec3 envY;
+  float ior;
   vec3 envZ;
-  float backRange;
-  float exitRange;
-  int depthFilter;
-  int reflectionMode;
+  float backRange;    // the object's bounding-box diagonal: the back slot's march range
+  float exitRange;    // the box around object and scene: the image-space bound's exit range
+  int depthFilter;    // SNELL_DEPTH_FILTER_*: how every slot reads both depth buffers
+  int reflectionMode; // SNELL_REFLECT_*
 };
-
-SNELL_FN LabParams labParams(mat4 clipFromView, float zNear, float zFar, float ior, vec3 absorption, vec3 envX,
-                             vec3 envY, vec3 envZ, float backRange, float exitRange, int depthFilter,
-                             int reflectionMode) {
-  LabParams p;
-  p.clipFromView = clipFromView;
-  p.zNear = zNear;
-  p.zFar = zFar;
-  p.ior = ior;
-  p.absorption = absorption;
-  p.envX = envX;
-  p.envY = envY;
-  p.envZ = envZ;
-  p.backRange = backRange;
-  p.exitRange = exitRange;
-  p.depthFilter = depthFilter;
-  p.reflectionMode = reflectionMode;
-  return p;
-}
 
 SNELL_FN SnellTechniqueOptions labTechniqueOptions(int technique, LabParams p) {
   SnellTechniqueOptions o = snellTechniquePreset(technique);

@@ -179,7 +179,7 @@ TEST(LabRun, EnvironmentBasisMatchesTheLabMapping) {
   const snell::mat3 worldFromView = snell::mat3(f.camera.worldFromView());
   for (const snell::vec3 v : {snell::vec3(0.1f, 0.2f, -1.0f), snell::vec3(-0.7f, -0.3f, -0.5f), snell::vec3(0.4f, 0.9f, 0.2f)}) {
     const snell::vec2 want = snell::lab::directionToEquirectUv(worldFromView * v, 30.0f);
-    const snell::vec2 got = snell::snellEquirectUv(v.x * k.envX + v.y * k.envY + v.z * k.envZ);
+    const snell::vec2 got = snell::snellEquirectUv(v.x * k.params.envX + v.y * k.params.envY + v.z * k.params.envZ);
     const float du = std::abs(want.x - got.x);
     EXPECT_LT(std::min(du, 1.0f - du), 1e-4f);
     EXPECT_NEAR(want.y, got.y, 1e-4f);

@@ -657,7 +657,7 @@ TEST(TechniqueReflection, FindsTheMirroredPaintingAtTheAnalyticPosition) {
 }
 
 // The guard band: buffers rendered with a wider field of view than the viewport (snell-lab's
-// bufferClipFromView) hold the surface beyond the viewport's edge, and every strategy reads them through
+// ShadeConstants::params.clipFromView) hold the surface beyond the viewport's edge, and every strategy reads them through
 // the surface's own projection, so an exit ray that leaves the viewport is still resolved, at the analytic
 // point. Here the viewport is the central 80% of the buffer's field of view in each direction.
 TEST(TechniqueGuardBand, FindsExitsBeyondTheViewportAtTheAnalyticPoint) {

@@ -11,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <chrono>
+#include <cstddef>
 #include <fstream>
 #include <sstream>
 
@@ -27,22 +28,22 @@ ShadeConstants shadeConstants(const SceneFrame& frame, int margin) {
   shrink[1][1] = H / (H + 2.0f * static_cast<float>(k.margin));
   k.viewFromWorld = frame.camera.viewFromWorld();
   k.clipFromView = frame.camera.clipFromView();
-  k.bufferClipFromView = shrink * k.clipFromView;
-  k.zNear = frame.camera.zNear;
-  k.zFar = frame.camera.zFar;
-  k.ior = frame.ior;
-  k.absorption = frame.absorption;
+  k.params.clipFromView = shrink * k.clipFromView;
+  k.params.zNear = frame.camera.zNear;
+  k.params.zFar = frame.camera.zFar;
+  k.params.ior = frame.ior;
+  k.params.absorption = frame.absorption;
   // Environment lookups take world directions: world-from-view, then the
   // environment's rotation about +Y (environment.hpp: phi = atan2(x, -z) - rotation,
   // i.e. the direction turned by +rotation about Y).
   const mat3 worldFromView = mat3(frame.camera.worldFromView());
   const mat3 rotate = mat3(glm::rotate(mat4(1.0f), glm::radians(frame.environment.rotationDegrees()), vec3(0, 1, 0)));
   const mat3 m = rotate * worldFromView;
-  k.envX = m[0];
-  k.envY = m[1];
-  k.envZ = m[2];
+  k.params.envX = m[0];
+  k.params.envY = m[1];
+  k.params.envZ = m[2];
   const Bounds box = meshBounds(frame.object);
-  k.backRange = box.diagonal();
+  k.params.backRange = box.diagonal();
   // Every exit ray starts inside the object and ends on the object or the opaque scene (else it leaves
   // the scene): the diagonal of the box around both bounds how far it can travel to a hit.
   vec3 lo = box.lo, hi = box.hi;
@@ -51,7 +52,7 @@ ShadeConstants shadeConstants(const SceneFrame& frame, int margin) {
       lo = glm::min(lo, c);
       hi = glm::max(hi, c);
     }
-  k.exitRange = glm::length(hi - lo);
+  k.params.exitRange = glm::length(hi - lo);
   return k;
 }
 
@@ -63,6 +64,17 @@ Texture2D environmentTexture(const SceneFrame& frame) {
 }
 
 namespace {
+
+// lab_refract.frag's layout(std140, binding = 0) uniform LabUniforms { LabParams params; }: the C++ struct's
+// bytes are its std140 layout, field by field (a vec3 starts on 16 bytes, a float after it fills the slot).
+constexpr GLuint kLabUniformsBinding = 0;
+static_assert(offsetof(LabParams, clipFromView) == 0 && offsetof(LabParams, absorption) == 64 &&
+                  offsetof(LabParams, zNear) == 76 && offsetof(LabParams, envX) == 80 &&
+                  offsetof(LabParams, zFar) == 92 && offsetof(LabParams, envY) == 96 && offsetof(LabParams, ior) == 108 &&
+                  offsetof(LabParams, envZ) == 112 && offsetof(LabParams, backRange) == 124 &&
+                  offsetof(LabParams, exitRange) == 128 && offsetof(LabParams, depthFilter) == 132 &&
+                  offsetof(LabParams, reflectionMode) == 136 && sizeof(LabParams) == 140,
+              "LabParams must keep the std140 layout of the uniform block LabUniforms");
 
 std::string readFile(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -95,11 +107,6 @@ gpu::FlatSource flatten(const fs::path& file, const ShaderDirs& dirs) {
   return gpu::flattenGlslFile(file, {dirs.snellGlsl, dirs.labGlsl});
 }
 
-template <class T>
-void setIf(const gpu::Program& p, const std::string& name, const T& value) {
-  if (p.hasUniform(name)) p.set(name, value);
-}
-
 }  // namespace
 
 struct GpuLab::Impl {
@@ -120,6 +127,7 @@ struct GpuLab::Impl {
   gpu::Framebuffer sceneFb, backFb, frontFb;
   gpu::DepthPyramid scenePyramid, backPyramid;
   gpu::VertexArray vao;
+  gpu::UniformBuffer labUniforms;
 
   Impl(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
        const std::vector<int>& ids, const ShaderDirs& dirs, const ShadeConstants& constants)
@@ -147,7 +155,8 @@ struct GpuLab::Impl {
         frontFb(gl, width, height, 4, true),
         scenePyramid(gl, bufferWidth, bufferHeight),
         backPyramid(gl, bufferWidth, bufferHeight),
-        vao(gl) {
+        vao(gl),
+        labUniforms(gl, &k.params, sizeof(LabParams)) {
     // The mesh: positions (w = d_N), normals, indices, pulled by gl_VertexID.
     const Mesh& m = frame.object;
     std::vector<glm::vec4> p(m.vertexCount()), n(m.vertexCount());
@@ -175,40 +184,23 @@ struct GpuLab::Impl {
     }
     gl.BindTexture(GL_TEXTURE_2D, 0);
 
-    const mat4 viewFromClip = glm::inverse(k.bufferClipFromView);
-    setIf(background, "viewFromClip", viewFromClip);
-    setIf(background, "envX", k.envX);
-    setIf(background, "envY", k.envY);
-    setIf(background, "envZ", k.envZ);
-    setIf(background, "viewport", vec2(static_cast<float>(bufferWidth), static_cast<float>(bufferHeight)));
-    setIf(background, "environment", 0);
-    setIf(scene, "viewFromWorld", k.viewFromWorld);
-    setIf(scene, "clipFromView", k.bufferClipFromView);
-    setIf(scene, "painting", 0);
-    setIf(back, "viewFromWorld", k.viewFromWorld);
-    setIf(back, "clipFromView", k.bufferClipFromView);
+    background.set("viewFromClip", glm::inverse(k.params.clipFromView));
+    background.set("envX", k.params.envX);
+    background.set("envY", k.params.envY);
+    background.set("envZ", k.params.envZ);
+    background.set("viewport", vec2(static_cast<float>(bufferWidth), static_cast<float>(bufferHeight)));
+    scene.set("viewFromWorld", k.viewFromWorld);
+    scene.set("clipFromView", k.params.clipFromView);
+    back.set("viewFromWorld", k.viewFromWorld);
+    back.set("clipFromView", k.params.clipFromView);
 
     for (int id : techniques) {
       const std::string defines = "#define LAB_TECHNIQUE " + std::to_string(id) + "\n";
       gpu::Program prog = gpu::Program::graphics(gl, flatten(dirs.labGlsl / "lab_mesh.vert", dirs),
                                                  flattenWithDefines(dirs.labGlsl / "lab_refract.frag", defines, dirs));
-      setIf(prog, "viewFromWorld", k.viewFromWorld);
-      setIf(prog, "clipFromView", k.clipFromView);
-      setIf(prog, "projection", k.bufferClipFromView);  // how the techniques read the buffers
-      setIf(prog, "zNear", k.zNear);
-      setIf(prog, "zFar", k.zFar);
-      setIf(prog, "ior", k.ior);
-      setIf(prog, "absorption", k.absorption);
-      setIf(prog, "envX", k.envX);
-      setIf(prog, "envY", k.envY);
-      setIf(prog, "envZ", k.envZ);
-      setIf(prog, "backRange", k.backRange);
-      setIf(prog, "exitRange", k.exitRange);
-      setIf(prog, "depthFilter", k.depthFilter);
-      setIf(prog, "reflectionMode", k.reflectionMode);
-      const char* samplers[] = {"backDepth",  "backNormal",   "backPyramid", "sceneDepth",
-                                "sceneNormal", "scenePyramid", "sceneColor",  "environment"};
-      for (int u = 0; u < 8; ++u) setIf(prog, samplers[u], u);
+      prog.set("viewFromWorld", k.viewFromWorld);
+      prog.set("clipFromView", k.clipFromView);
+      prog.requireUniformBlock("LabUniforms", kLabUniformsBinding, sizeof(LabParams));
       refract.push_back(std::move(prog));
     }
     gpu::checkGl(gl, "lab setup");
@@ -258,8 +250,8 @@ struct GpuLab::Impl {
     gl.DepthFunc(GL_LESS);
     gpu::checkGl(gl, "back-face pass");
     // (3) Both depth pyramids.
-    pyramidPass.build(backPyramid, backFb.depthTexture(), k.zNear, k.zFar, SNELL_DEPTH_GL, 0.0f);
-    pyramidPass.build(scenePyramid, sceneFb.depthTexture(), k.zNear, k.zFar, SNELL_DEPTH_GL, 1.0f);
+    pyramidPass.build(backPyramid, backFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 0.0f);
+    pyramidPass.build(scenePyramid, sceneFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 1.0f);
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 
@@ -283,6 +275,7 @@ struct GpuLab::Impl {
     gl.ActiveTexture(GL_TEXTURE0);
     vao.bind();
     bindMesh();
+    labUniforms.bindBase(kLabUniformsBinding);
     refract.at(index).use();
     gl.DrawArrays(GL_TRIANGLES, 0, vertexCount);
   }

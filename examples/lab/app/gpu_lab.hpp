@@ -11,6 +11,8 @@
 #include <snell/bridge.hpp>
 #include <snell/shade.hpp>
 
+#include "technique.hpp"  // LabParams (lab_technique.glsl)
+
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -26,7 +28,7 @@ struct ShaderDirs {
 };
 
 // Read back after passes 1-3: the viewport plus the guard band on every side
-// (ShadeConstants::margin texels), rendered with bufferClipFromView.
+// (ShadeConstants::margin texels), rendered with ShadeConstants::params.clipFromView.
 struct StaticBuffers {
   Image sceneColor, sceneDepth, sceneNormal;  // depth in .x (window depth, GL convention, 1 = empty)
   Image backDepth, backNormal;                // depth in .x (0 = empty)
@@ -45,24 +47,37 @@ struct TechniqueBuffers {
 // blends only the surface's own normals, also at the silhouette) or GL_NEAREST.
 enum class NormalFilter { Linear, Nearest };
 
-// The per-frame constants both the GPU and the CPU pass to labShade.
+// The frame's constants: what labShade takes on both sides (params: the GPU
+// gets these bytes as the uniform block LabUniforms), and what only the host
+// passes need.
 struct ShadeConstants {
+  // params.clipFromView is the buffers' projection (the guard band, below); depthFilter and reflectionMode
+  // keep their defaults (SNELL_DEPTH_FILTER_NEAREST, SNELL_REFLECT_SCENE) until the caller sets them.
+  LabParams params = defaultLabParams();
   mat4 viewFromWorld{1.0f};
   mat4 clipFromView{1.0f};        // the viewport's projection (the front-face pass, the pictures)
   // The guard band: the scene and back-face buffers cover `margin` more texels on every side, at the same
-  // texel density, through bufferClipFromView (clipFromView with x and y scaled by W / (W + 2 margin),
+  // texel density, through params.clipFromView (clipFromView with x and y scaled by W / (W + 2 margin),
   // H / (H + 2 margin)); the techniques read the buffers through it, so exits just off the viewport are found.
   int margin = 0;
-  mat4 bufferClipFromView{1.0f};
-  float zNear = 0.1f, zFar = 100.0f;
-  float ior = 1.5f;
-  vec3 absorption{0.0f};
-  vec3 envX{1, 0, 0}, envY{0, 1, 0}, envZ{0, 0, 1};  // world-from-view, environment rotation folded in
-  float backRange = 10.0f;                            // object bounding-box diagonal
-  float exitRange = 10.0f;                            // diagonal of the box around object and opaque scene
   NormalFilter normalFilter = NormalFilter::Linear;   // how both sides read the normal buffers
-  int depthFilter = SNELL_DEPTH_FILTER_NEAREST;       // how every technique reads both depth buffers
-  int reflectionMode = SNELL_REFLECT_SCENE;           // the first surface reflects the scene (else the environment)
+
+  static LabParams defaultLabParams() {
+    LabParams p{};
+    p.clipFromView = mat4(1.0f);
+    p.zNear = 0.1f;
+    p.zFar = 100.0f;
+    p.ior = 1.5f;
+    p.absorption = vec3(0.0f);
+    p.envX = vec3(1, 0, 0);
+    p.envY = vec3(0, 1, 0);
+    p.envZ = vec3(0, 0, 1);
+    p.backRange = 10.0f;  // object bounding-box diagonal
+    p.exitRange = 10.0f;  // diagonal of the box around object and opaque scene
+    p.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+    p.reflectionMode = SNELL_REFLECT_SCENE;
+    return p;
+  }
 };
 // The frame's constants with a guard band of `margin` texels per side; the read
 // modes keep their defaults (set the fields).

@@ -69,9 +69,9 @@ CpuBuffers cpuBuffers(const StaticBuffers& b, const ShadeConstants& k, const Sce
   c.sceneNormal = Texture2D(b.sceneNormal, normalFilter);
   c.sceneColor = Texture2D(b.sceneColor, Filter::Linear);
   c.backPyramid =
-      snellBuildDepthPyramid(c.backDepth, snellDepthSurface(k.bufferClipFromView, k.zNear, k.zFar, SNELL_DEPTH_GL, 0.0f));
+      snellBuildDepthPyramid(c.backDepth, snellDepthSurface(k.params.clipFromView, k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 0.0f));
   c.scenePyramid =
-      snellBuildDepthPyramid(c.sceneDepth, snellDepthSurface(k.bufferClipFromView, k.zNear, k.zFar, SNELL_DEPTH_GL, 1.0f));
+      snellBuildDepthPyramid(c.sceneDepth, snellDepthSurface(k.params.clipFromView, k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 1.0f));
   c.environment = environmentTexture(frame);
   return c;
 }
@@ -279,7 +279,7 @@ Mask missingInformation(const References& refs, const SceneFrame& frame, const S
   Mask missing(object.width, object.height);
   // What the buffers hold: the viewport and the guard band around it.
   const int W = sb.backDepth.width, H = sb.backDepth.height;
-  const glm::dmat4 clipFromWorld = glm::dmat4(k.bufferClipFromView) * glm::dmat4(k.viewFromWorld);
+  const glm::dmat4 clipFromWorld = glm::dmat4(k.params.clipFromView) * glm::dmat4(k.viewFromWorld);
   // The buffer texel a world point projects to, or false when it is off screen / behind the camera.
   const auto texel = [&](const glm::dvec3& p, int* px, int* py) {
     const glm::dvec4 c = clipFromWorld * glm::dvec4(p, 1.0);
@@ -292,9 +292,9 @@ Mask missingInformation(const References& refs, const SceneFrame& frame, const S
   };
   const auto viewDistance = [&](const glm::dvec3& p) { return -(glm::dmat4(k.viewFromWorld) * glm::dvec4(p, 1.0)).z; };
   const auto bufferDistance = [&](const Image& depth, int x, int y) {
-    return static_cast<double>(snellLinearizeDepth(depth.at(x, y).x, k.zNear, k.zFar, SNELL_DEPTH_GL));
+    return static_cast<double>(snellLinearizeDepth(depth.at(x, y).x, k.params.zNear, k.params.zFar, SNELL_DEPTH_GL));
   };
-  const double backTolerance = 0.02 * static_cast<double>(k.backRange);
+  const double backTolerance = 0.02 * static_cast<double>(k.params.backRange);
   for (int y = 0; y < object.height; ++y)
     for (int x = 0; x < object.width; ++x) {
       if (!object.at(x, y)) continue;
@@ -629,15 +629,14 @@ LabResult runLab(const LabOptions& options) {
   result.guardBand = margin;
   ShadeConstants k = shadeConstants(frame, margin);
   k.normalFilter = options.normalFilter;
-  k.depthFilter = options.depthFilter;
-  k.reflectionMode = options.reflectionMode;
+  k.params.depthFilter = options.depthFilter;
+  k.params.reflectionMode = options.reflectionMode;
   GpuLab gpu(options.backend, frame, wymanDnIfNeeded(frame, techniques), ids, options.dirs, k);
   result.gpu = gpu.description();
   result.staticPassMs = gpu.renderStatic();
   const StaticBuffers sb = gpu.readStatic();
   const CpuBuffers cb = cpuBuffers(sb, k, frame);
-  const LabParams params = labParams(k.bufferClipFromView, k.zNear, k.zFar, k.ior, k.absorption, k.envX, k.envY, k.envZ, k.backRange, k.exitRange, k.depthFilter,
-                                     k.reflectionMode);
+  const LabParams& params = k.params;
 
   std::vector<Image> images(techniques.size());
   for (std::size_t i = 0; i < techniques.size(); ++i)

@@ -71,6 +71,8 @@ namespace snell::gpu {
   X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)              \
   X(PFNGLUSEPROGRAMPROC, UseProgram)                            \
   X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)            \
+  X(PFNGLGETUNIFORMBLOCKINDEXPROC, GetUniformBlockIndex)        \
+  X(PFNGLGETACTIVEUNIFORMBLOCKIVPROC, GetActiveUniformBlockiv)  \
   X(PFNGLPROGRAMUNIFORM1IPROC, ProgramUniform1i)                \
   X(PFNGLPROGRAMUNIFORM1FPROC, ProgramUniform1f)                \
   X(PFNGLPROGRAMUNIFORM2FVPROC, ProgramUniform2fv)              \

@@ -166,6 +166,26 @@ class Program {
   // is removed by the compiler, so test hasUniform() first when it may be.
   bool hasUniform(const std::string& name) const { return gl_->GetUniformLocation(id_, name.c_str()) >= 0; }
 
+  // Checks that the program has the uniform block `name` (std140) at `binding`
+  // (its layout(binding = N)) and that the block holds `bytes` bytes (rounded
+  // up to 16, as std140 rounds a block): the host struct is its layout. A block
+  // the program lacks, or of another size, is an Error naming both.
+  void requireUniformBlock(const std::string& name, GLuint binding, std::size_t bytes) const {
+    const GLuint index = gl_->GetUniformBlockIndex(id_, name.c_str());
+    if (index == GL_INVALID_INDEX) throw Error("program has no uniform block " + name);
+    GLint size = 0, bound = -1;
+    gl_->GetActiveUniformBlockiv(id_, index, GL_UNIFORM_BLOCK_DATA_SIZE, &size);
+    gl_->GetActiveUniformBlockiv(id_, index, GL_UNIFORM_BLOCK_BINDING, &bound);
+    checkGl(*gl_, "glGetActiveUniformBlockiv(" + name + ")");
+    const std::size_t rounded = (bytes + 15u) / 16u * 16u;
+    if (static_cast<std::size_t>(size) != rounded)
+      throw Error("uniform block " + name + " holds " + std::to_string(size) + " bytes, the host struct " +
+                  std::to_string(bytes) + " (" + std::to_string(rounded) + " as std140 rounds it)");
+    if (bound != static_cast<GLint>(binding))
+      throw Error("uniform block " + name + " is at binding " + std::to_string(bound) + ", expected " +
+                  std::to_string(binding));
+  }
+
   // A value of the wrong type for the uniform (a float for an int) is
   // GL_INVALID_OPERATION: checked here, so it is not blamed on a later call.
   void set(const std::string& name, int v) const {

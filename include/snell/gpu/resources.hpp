@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -139,6 +140,39 @@ class StorageBuffer {
   GlHandle<detail::DeleteBuffer> handle_;
   std::size_t size_ = 0;
 
+  static GLuint create(const GlApi& gl) {
+    GLuint id = 0;
+    gl.GenBuffers(1, &id);
+    if (id == 0) throw Error("glGenBuffers failed; is a context current?");
+    return id;
+  }
+};
+
+// A uniform buffer (std140) holding one host struct's bytes as they are; the
+// struct must be laid out as std140 (Program::requireUniformBlock checks the
+// size on the program's side).
+class UniformBuffer {
+ public:
+  UniformBuffer(const GlApi& gl, const void* data, std::size_t bytes) : handle_(gl, create(gl)) { upload(data, bytes); }
+  void upload(const void* data, std::size_t bytes) {
+    const GlApi& gl = handle_.gl();
+    // std140 rounds a block up to 16 bytes; the tail is zeros.
+    std::vector<unsigned char> padded((bytes + 15u) / 16u * 16u, 0);
+    if (data && bytes) std::copy_n(static_cast<const unsigned char*>(data), bytes, padded.begin());
+    gl.BindBuffer(GL_UNIFORM_BUFFER, handle_.id());
+    gl.BufferData(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(padded.size()), padded.data(), GL_DYNAMIC_DRAW);
+    gl.BindBuffer(GL_UNIFORM_BUFFER, 0);
+    checkGl(gl, "UniformBuffer upload (glBufferData)");
+  }
+  // Binds to `layout(std140, binding = N) uniform`.
+  void bindBase(GLuint binding) const {
+    handle_.gl().BindBufferBase(GL_UNIFORM_BUFFER, binding, handle_.id());
+    checkGl(handle_.gl(), "glBindBufferBase(GL_UNIFORM_BUFFER, " + std::to_string(binding) + ")");
+  }
+  GLuint id() const { return handle_.id(); }
+
+ private:
+  GlHandle<detail::DeleteBuffer> handle_;
   static GLuint create(const GlApi& gl) {
     GLuint id = 0;
     gl.GenBuffers(1, &id);
