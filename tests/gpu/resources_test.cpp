@@ -74,6 +74,55 @@ void main() { uint i = gl_GlobalInvocationID.x; if (i < uint(a.length())) b[i] =
   EXPECT_THROW(dst.download(nullptr, 4, out.size() * sizeof(float)), Error);  // past the end
 }
 
+// A host struct laid out as std140 (vec3 + float pairs) reaches the shader
+// field by field through UniformBuffer, and requireUniformBlock rejects a
+// missing block, another size and another binding.
+TEST(Resources, UniformBufferCarriesAStd140HostStruct) {
+  Context ctx;
+  struct Host {
+    glm::mat4 m;
+    glm::vec3 a;
+    float b;
+    glm::vec3 c;
+    int d;
+  };
+  static_assert(sizeof(Host) == 96, "std140: mat4 64, vec3 at 64, float at 76, vec3 at 80, int at 92");
+  Host h{};
+  h.m = glm::mat4(2.0f);
+  h.m[3] = glm::vec4(1.0f, 2.0f, 3.0f, 1.0f);
+  h.a = glm::vec3(0.5f, -1.5f, 8.0f);
+  h.b = 7.25f;
+  h.c = glm::vec3(-3.0f, 4.0f, 1e-3f);
+  h.d = -42;
+  snell::gpu::UniformBuffer ubo(ctx.gl(), &h, sizeof h);
+  snell::gpu::StorageBuffer out(ctx.gl());
+  out.allocate(4 * sizeof(glm::vec4));
+  const Program p = Program::compute(ctx.gl(), flattenGlslSource(R"(#version 450 core
+layout(local_size_x = 1) in;
+struct Host { mat4 m; vec3 a; float b; vec3 c; int d; };
+layout(std140, binding = 2) uniform HostBlock { Host h; };
+layout(std430, binding = 1) writeonly buffer Out { vec4 o[]; };
+void main() {
+  o[0] = h.m * vec4(1.0, 1.0, 1.0, 1.0);
+  o[1] = vec4(h.a, h.b);
+  o[2] = vec4(h.c, float(h.d));
+  o[3] = vec4(0.0);
+}
+)", "ubo.comp", {}));
+  p.requireUniformBlock("HostBlock", 2, sizeof h);
+  EXPECT_THROW(p.requireUniformBlock("Missing", 2, sizeof h), Error);
+  EXPECT_THROW(p.requireUniformBlock("HostBlock", 2, sizeof h + 16), Error);
+  EXPECT_THROW(p.requireUniformBlock("HostBlock", 1, sizeof h), Error);
+  ubo.bindBase(2);
+  out.bindBase(1);
+  p.dispatch(1);
+  ctx.gl().MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  const std::vector<glm::vec4> o = out.downloadVec4();
+  EXPECT_EQ(o[0], glm::vec4(3.0f, 4.0f, 5.0f, 1.0f));  // 2 I with column 3 = (1, 2, 3, 1), times (1, 1, 1, 1)
+  EXPECT_EQ(o[1], glm::vec4(0.5f, -1.5f, 8.0f, 7.25f));
+  EXPECT_EQ(o[2], glm::vec4(-3.0f, 4.0f, 1e-3f, -42.0f));
+}
+
 TEST(Resources, TextureRoundTripAllMipLevels) {
   Context ctx;
   const snell::Texture2D tex = taggedTexture(8, 4);  // 8x4, 4x2, 2x1, 1x1
