@@ -171,7 +171,13 @@ std::string machine(const Results& bench, const Results& functions, const Run& r
        " logical CPUs at " + fmt("%.0f MHz", c.value("mhz_per_cpu", 0.0)) + "; caches " + caches + "; memory " +
        firstLineWith("/proc/meminfo", "MemTotal") + ".\n";
   s += "- **System**: " + firstLineWith("/etc/os-release", "PRETTY_NAME") + ", " SNELL_BENCH_COMPILER ", snell built " +
-       std::string(SNELL_BENCH_BUILD_TYPE) + " with `-ffp-contract=off` (as the tests). Google Benchmark's library " +
+       std::string(SNELL_BENCH_BUILD_TYPE) + " with `-ffp-contract=off` (as the tests)" +
+       (std::string(SNELL_BENCH_ARCH_FLAGS).empty()
+            ? std::string(", no -march")
+            : ", snell_bench's sources with `" + std::string(SNELL_BENCH_ARCH_FLAGS) +
+                  "` (docs/api.md, compile flags for tools; the function benchmarks run the parity cases' objects, "
+                  "built with the tests' flags)") +
+       ". Google Benchmark's library " +
        "reports itself as a " + c.value("library_build_type", std::string("?")) +
        " build (Debian's libbenchmark; that is the harness, not the code measured).\n";
   s += "- **Run**: " + run.value("date") + ", `--benchmark_min_time=" + run.value("min_time") + "`, " +

@@ -152,9 +152,13 @@ class Texture2D {
   // that x86-64 needs before SSE4.1 (309 of a plane ray's 2,316 instructions,
   // issue 14): for |v| < 2^31 the integer part converts exactly.
   static float floorExact(float v) {
+#if defined(__SSE4_1__)
+    return std::floor(v);  // one roundss
+#else
     if (!(std::fabs(v) < 2147483648.0f)) return std::floor(v);  // NaN, +-inf, huge
     const float t = static_cast<float>(static_cast<int>(v));
     return t > v ? t - 1.0f : (v == 0.0f ? v : t);
+#endif
   }
   // Float to int without UB for NaN/huge values (clamp-to-edge makes them
   // edges); `floored` is floorExact(v).
