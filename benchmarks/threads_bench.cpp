@@ -4,12 +4,12 @@
 // items_per_second(T threads) / items_per_second(1 thread).
 //
 //   BM_BakeWymanDn/<mesh>/threads:T   Wyman's d_N for every vertex of a mesh
-//     (include/snell/wyman_dn.hpp): the BVH is built once (serial, counted in
-//     the time, as a tool pays it), then vertex chunks of 256 go to the
-//     threads through an atomic counter. Meshes: the bundled Stanford bunny
+//     (include/snell/wyman_dn.hpp): the BVH is built once (its top levels on
+//     the T threads, counted in the time, as a tool pays it), then vertex
+//     chunks of 256 go to the threads through an atomic counter. Meshes: the bundled Stanford bunny
 //     (examples/scenes/bunny.obj) and a bumpy icosphere of 7 subdivisions
 //     (the lab's blob, 164k vertices). Items: vertices; counter bvh_share:
-//     the serial BVH build's share of the calling thread's CPU time (with 1
+//     the BVH build's share of the calling thread's CPU time (with 1
 //     thread: of the whole bake; CPU time, so other processes' load does not
 //     move it).
 //   BM_RefractFrame/<technique>/threads:T   snellTwoInterfaceRefraction for every
@@ -80,7 +80,7 @@ void bakeWymanDn(benchmark::State& state, const MeshInput* input) {
   double buildSeconds = 0.0, totalSeconds = 0.0;
   for (auto _ : state) {
     const double t0 = threadCpuSeconds();
-    const snell::wyman_detail::Baker baker(m.positions, m.normals, m.indices, 1e-7);
+    const snell::wyman_detail::Baker baker(m.positions, m.normals, m.indices, 1e-7, threads);
     const double t1 = threadCpuSeconds();
     std::atomic<std::size_t> next{0};
     onThreads(threads, [&] {

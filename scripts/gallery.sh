@@ -30,9 +30,9 @@ for ((i = 0; i < ${#args[@]}; ++i)); do
 done
 # Animated PNGs of the frame strips, 4 frames per second, looping.
 for effect in water glass rtm; do
-  frames=$(ls "$out"/frames/"$effect"_*.png 2>/dev/null | sort -V || true)
-  [ -n "$frames" ] || continue
-  # shellcheck disable=SC2086  # one argument per frame file
-  apngasm "$out/$effect.apng.png" $frames 1 4 >/dev/null
+  frames=()
+  [ -e "$out/frames/${effect}_0.png" ] && mapfile -t frames < <(printf '%s\n' "$out/frames/${effect}"_*.png | sort -V)
+  [ ${#frames[@]} -gt 0 ] || continue
+  apngasm "$out/$effect.apng.png" "${frames[@]}" 1 4 >/dev/null
   echo "snell-gallery: $out/$effect.apng.png"
 done

@@ -76,6 +76,12 @@ void savePanel(const Options& o, const std::string& name,
 
 void saveAnimation(const Options& o, const std::string& effect, const std::vector<Image>& frames,
                    EffectResult& result) {
+  // Frames of an earlier run (more frames, another size) must not end up in this run's animation.
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(o.out / "frames", ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(effect + "_", 0) == 0 && entry.path().extension() == ".png") fs::remove(entry.path(), ec);
+  }
   if (frames.empty()) return;
   const std::string stripName = effect + "_strip.png";
   lab::writePng((o.out / stripName).string(), strip(frames, 2));

@@ -49,21 +49,18 @@ gpu::Program Gl::program(const std::string& vs, const std::string& fs) const {
                                 gpu::flattenGlslFile(labGlsl_ / fs, {snellGlsl_, labGlsl_}));
 }
 
-gpu::Program Gl::compute(const std::string& cs) const {
-  return gpu::Program::compute(gl(), gpu::flattenGlslFile(labGlsl_ / cs, {snellGlsl_, labGlsl_}));
-}
-
 gpu::StorageBuffer Gl::upload(const Soup& soup) const { return gpu::StorageBuffer(gl(), soup.data); }
 
 void Gl::drawSoup(const gpu::StorageBuffer& buffer, int vertexCount) const {
-  vao_.bind();
   buffer.bindBase(0);
-  gl().DrawArrays(GL_TRIANGLES, 0, vertexCount);
+  drawArrays(vertexCount);
 }
 
-void Gl::fullscreen() const {
+void Gl::fullscreen() const { drawArrays(3); }
+
+void Gl::drawArrays(GLsizei count) const {
   vao_.bind();
-  gl().DrawArrays(GL_TRIANGLES, 0, 3);
+  gl().DrawArrays(GL_TRIANGLES, 0, count);
 }
 
 void Gl::plainPass(const gpu::Framebuffer& target, GLuint texture) const {

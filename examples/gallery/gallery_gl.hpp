@@ -37,12 +37,13 @@ class Gl {
 
   // vs/fs: file names under examples/glsl (the library's glsl/ is on the include path too).
   gpu::Program program(const std::string& vs, const std::string& fs) const;
-  gpu::Program compute(const std::string& cs) const;
 
   // A soup's storage buffer (binding 0 for gallery_mesh.vert).
   gpu::StorageBuffer upload(const Soup& soup) const;
   void drawSoup(const gpu::StorageBuffer& buffer, int vertexCount) const;
   void fullscreen() const;
+  // glDrawArrays(GL_TRIANGLES, 0, count) with the gallery's vertex array bound (vertex pulling).
+  void drawArrays(GLsizei count) const;
   // The cost yardstick: one bilinear read of `texture` per pixel of `target` (gallery_plain.frag).
   void plainPass(const gpu::Framebuffer& target, GLuint texture) const;
   // Binds texture names to units 0, 1, ...

@@ -3,7 +3,8 @@
 // (snellGlass: bump-mapped reflection, refraction tinted by the stain) and
 // heat haze on the right (the basic perturbation, drifting upwards), and a
 // box in front of both: without the mask its colour leaks into the panes'
-// refraction. The leak probe flags S's texels in front of the panes' plane.
+// refraction. The leak probe flags S's texels in front of the panes' plane
+// (the box and the floor before the panes).
 #include "effects.hpp"
 #include "lab/image_io.hpp"
 #include "textures.hpp"
@@ -81,25 +82,10 @@ EffectResult runGlass(const Gl& g, const Options& o) {
   gl.DepthFunc(GL_LESS);
   shade.set("clipFromWorld", clip);
   shade.set("clipPlane", vec4(0.0f, 0.0f, 0.0f, 1.0f));
-  // gallery_scene.frag flags world.y above probeLevel; here "in front of z = 0" is asked, so the
-  // probe is written by a second draw of the occluder alone below.
-  shade.set("probeLevel", 1e30f);
+  shade.set("probePlane", vec4(0.0f, 0.0f, 1.0f, -0.001f));  // in front of the panes' plane z = 0
   shade.use();
   g.drawSoup(roomBuf, roomSoup.vertexCount());
   gpu::checkGl(gl, "glass scene pass");
-  // The probe: the boxes in front of the panes, by the same depth-tested draw with the flag forced.
-  {
-    Soup front;
-    front.box({-0.35f, -1.5f, 0.9f}, {0.35f, 0.1f, 1.5f}, vec3(0.0f));
-    gpu::StorageBuffer frontBuf = g.upload(front);
-    gl.ColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    gl.DepthFunc(GL_LEQUAL);
-    shade.set("probeLevel", -1e30f);
-    shade.use();
-    g.drawSoup(frontBuf, front.vertexCount());
-    gl.DepthFunc(GL_LESS);
-    gl.ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  }
   // (2) Sousa's mask.
   gl.ColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
   gl.ColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);

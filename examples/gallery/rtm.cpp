@@ -138,24 +138,20 @@ EffectResult runRtm(const Gl& g, const Options& o) {
   const Texture2D floorTex = texture(floorImage(kMapSize), Filter::Linear);
   gpu::Texture floorGl(gl, floorTex);
   gpu::Program draw = g.program("gallery_rtm.vert", "gallery_rtm.frag");
-  gpu::Program perVertex = g.compute("gallery_rtm_uv.comp");
   gpu::Framebuffer fb(gl, W, H, 4, true), plainFb(gl, W, H, 1, false);
-  for (gpu::Program* p : {&draw, &perVertex}) {
-    p->set("eye", cam.position);
-    p->set("eta", kEta);
-    p->set("extent", vec4(rp.extentMin, rp.extentMax));
-    p->set("planeParams", vec3(rp.restY, rp.depth, rp.refractionFactor));
-  }
+  draw.set("eye", cam.position);
+  draw.set("eta", kEta);
+  draw.set("extent", vec4(rp.extentMin, rp.extentMax));
+  draw.set("planeParams", vec3(rp.restY, rp.depth, rp.refractionFactor));
   draw.set("clipFromWorld", clip);
 
   std::vector<vec4> vertices, triangles;
-  gpu::StorageBuffer vbuf(gl), tbuf(gl), uvbuf(gl);
+  gpu::StorageBuffer tbuf(gl), uvbuf(gl);  // the triangles' corners, the drawn vertices' uvs
   auto upload = [&](float amp, float time) {
     mesh({amp, time}, vertices, triangles);
-    vbuf.upload(vertices);
     tbuf.upload(triangles);
   };
-  auto drawPass = [&](bool exact) {
+  auto drawPass = [&](bool exact, bool storeUvs = false) {
     for (int a = 0; a < 4; ++a) fb.clearColor(a, vec4(0.0f));
     fb.clearDepth(1.0f);
     fb.bind();
@@ -163,10 +159,13 @@ EffectResult runRtm(const Gl& g, const Options& o) {
     gl.DepthFunc(GL_LESS);
     gl.Disable(GL_CULL_FACE);
     draw.set("exact", exact ? 1 : 0);
+    draw.set("storeUvs", storeUvs ? 1 : 0);
     g.bindTextures({floorGl.id()});
     tbuf.bindBase(0);
+    if (uvbuf.size() < triangles.size() / 2 * sizeof(vec4)) uvbuf.allocate(triangles.size() / 2 * sizeof(vec4));
+    uvbuf.bindBase(1);
     draw.use();
-    gl.DrawArrays(GL_TRIANGLES, 0, GLsizei(triangles.size() / 2));
+    g.drawArrays(GLsizei(triangles.size() / 2));
   };
   auto plainPass = [&] { g.plainPass(plainFb, floorGl.id()); };
 
@@ -176,23 +175,18 @@ EffectResult runRtm(const Gl& g, const Options& o) {
   const std::vector<double> ms =
       g.timeInterleaved({plainPass, [&] { drawPass(false); }, [&] { drawPass(true); }}, o.timingRepeats);
 
-  // Per vertex: the compute pass against C++.
-  const int count = int(vertices.size() / 2);
-  uvbuf.allocate(std::size_t(count) * sizeof(vec4));
-  vbuf.bindBase(0);
-  uvbuf.bindBase(1);
-  perVertex.set("count", count);
-  perVertex.dispatch(GLuint((count + 63) / 64));
-  gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  const std::vector<vec4> gpuUv = uvbuf.downloadVec4();
+  // Per vertex: the uvs the drawing vertex shader computed (it stores them by gl_VertexID) against C++.
+  const std::size_t corners = triangles.size() / 2;
   double vertexMax[2] = {0.0, 0.0};
-  for (int k = 0; k < count; ++k) {
-    const vec3 p(vertices[std::size_t(2 * k)]), n(vertices[std::size_t(2 * k + 1)]);
-    const vec2 a = galleryRtmUv(p, n, cam.position, false, kEta, rp),
-               e = galleryRtmUv(p, n, cam.position, true, kEta, rp);
-    vertexMax[0] = std::max(vertexMax[0], double(glm::length(a - vec2(gpuUv[std::size_t(k)]))) * kMapSize);
-    vertexMax[1] = std::max(vertexMax[1],
-                            double(glm::length(e - vec2(gpuUv[std::size_t(k)].z, gpuUv[std::size_t(k)].w))) * kMapSize);
+  for (bool exact : {false, true}) {
+    uvbuf.allocate(corners * sizeof(vec4));
+    drawPass(exact, true);
+    gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    const std::vector<vec4> gpuUv = uvbuf.downloadVec4();
+    for (std::size_t k = 0; k < corners; ++k) {
+      const vec2 c = galleryRtmUv(vec3(triangles[2 * k]), vec3(triangles[2 * k + 1]), cam.position, exact, kEta, rp);
+      vertexMax[exact] = std::max(vertexMax[exact], double(glm::length(c - vec2(gpuUv[k]))) * kMapSize);
+    }
   }
 
   std::vector<Image> renders, uvs;

@@ -95,7 +95,7 @@ EffectResult runWater(const Gl& g, const Options& o) {
     gl.DepthFunc(GL_LESS);
     shade.set("clipFromWorld", clipM);
     shade.set("clipPlane", clipBelow ? vec4(0.0f, 1.0f, 0.0f, 0.0f) : vec4(0.0f, 0.0f, 0.0f, 1.0f));
-    shade.set("probeLevel", 0.001f);
+    shade.set("probePlane", vec4(0.0f, 1.0f, 0.0f, -0.001f));  // above the water plane y = 0
     if (clipBelow) gl.Enable(GL_CLIP_DISTANCE0);
     shade.use();
     g.drawSoup(scene, sceneCount);

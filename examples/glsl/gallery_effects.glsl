@@ -48,7 +48,8 @@ source: see each library function.
 
 /* Bump layer k's texture coordinate at a world point: Sousa animates four
    copies of one bump map at different scales and speeds (sec. 19.3.1). The
-   bump map tiles, so the coordinate wraps. */
+   bump map's content is periodic, so the coordinate wraps; the textures clamp
+   to edge on both sides, which leaves a one-texel seam where it does. */
 SNELL_FN vec2 galleryWaveCoord(vec3 world, float time, int layer) {
   vec2 xz = vec2(world.x, world.z);
   vec2 c = xz * 0.09f + vec2(0.011f, 0.017f) * time;

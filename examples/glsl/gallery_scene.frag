@@ -1,14 +1,15 @@
 #version 450 core
 // snell-gallery: the opaque scene S, lit by one sun and a sky term. Material 0
 // is plain colour, 1 the pool's tiles, 2 the room's striped wall. Output 1 is
-// the leak probe: rgb 1 where the surface lies above probeLevel (what water
-// must never refract), alpha the refraction mask like S's.
+// the leak probe: rgb 1 where the surface lies on the positive side of
+// probePlane (in front of the refracting surface: what it must never
+// refract), alpha the refraction mask like S's.
 layout(location = 0) in vec3 world;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 albedo;
 layout(location = 3) in vec2 uv;
 layout(location = 4) flat in float material;
-uniform float probeLevel;
+uniform vec4 probePlane;  // dot(xyz, world) + w > 0: in front
 layout(location = 0) out vec4 color;
 layout(location = 1) out vec4 probe;
 
@@ -29,5 +30,5 @@ void main() {
   vec3 n = normalize(normal);
   float sun = max(dot(n, normalize(vec3(0.4f, 0.8f, 0.45f))), 0.0f);
   color = vec4(base * (0.35f + 0.65f * sun), 1.0f);
-  probe = vec4(vec3(world.y > probeLevel ? 1.0f : 0.0f), 1.0f);
+  probe = vec4(vec3(dot(probePlane.xyz, world) + probePlane.w > 0.0f ? 1.0f : 0.0f), 1.0f);
 }

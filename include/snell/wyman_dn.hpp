@@ -22,8 +22,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <limits>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 namespace snell {
@@ -70,30 +72,78 @@ struct Bvh {
   std::vector<int> order;  // triangle indices
 };
 
-inline int build(Bvh& bvh, const std::vector<Box>& triBoxes, const std::vector<glm::dvec3>& centroids, int first,
-                 int count) {
-  Node n;
-  for (int i = first; i < first + count; ++i) n.box.grow(triBoxes[static_cast<std::size_t>(bvh.order[static_cast<std::size_t>(i)])]);
-  const int index = static_cast<int>(bvh.nodes.size());
-  bvh.nodes.push_back(n);
+// The node over order[first, first + count): a leaf's box, or, for an inner
+// node, the median split on the longest centroid axis, which reorders that
+// range (its box is its children's, set by build(): the same min/max of the
+// same triangle boxes, in O(n) instead of O(n log n) over the tree). Returns the
+// split (the right child's first index), or -1 for a leaf.
+inline int makeNode(Node& n, std::vector<int>& order, const std::vector<Box>& triBoxes,
+                    const std::vector<glm::dvec3>& centroids, int first, int count) {
   if (count <= 4) {
-    bvh.nodes[static_cast<std::size_t>(index)].first = first;
-    bvh.nodes[static_cast<std::size_t>(index)].count = count;
-    return index;
+    for (int i = first; i < first + count; ++i) n.box.grow(triBoxes[static_cast<std::size_t>(order[static_cast<std::size_t>(i)])]);
+    n.first = first;
+    n.count = count;
+    return -1;
   }
   Box cb;
-  for (int i = first; i < first + count; ++i) cb.grow(centroids[static_cast<std::size_t>(bvh.order[static_cast<std::size_t>(i)])]);
+  for (int i = first; i < first + count; ++i) cb.grow(centroids[static_cast<std::size_t>(order[static_cast<std::size_t>(i)])]);
   const glm::dvec3 ext = cb.hi - cb.lo;
   const int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : (ext.y >= ext.z ? 1 : 2);
   const int mid = first + count / 2;
-  std::nth_element(bvh.order.begin() + first, bvh.order.begin() + mid, bvh.order.begin() + first + count,
-                   [&](int a, int b) {
-                     return centroids[static_cast<std::size_t>(a)][axis] < centroids[static_cast<std::size_t>(b)][axis];
-                   });
-  const int l = build(bvh, triBoxes, centroids, first, mid - first);
-  const int r = build(bvh, triBoxes, centroids, mid, first + count - mid);
-  bvh.nodes[static_cast<std::size_t>(index)].left = l;
-  bvh.nodes[static_cast<std::size_t>(index)].right = r;
+  std::nth_element(order.begin() + first, order.begin() + mid, order.begin() + first + count, [&](int a, int b) {
+    return centroids[static_cast<std::size_t>(a)][axis] < centroids[static_cast<std::size_t>(b)][axis];
+  });
+  return mid;
+}
+
+// Builds the subtree over order[first, first + count) into `nodes`; returns its
+// root's index. The top `parallelDepth` levels build their right half on a
+// second thread (its own node array, appended with the child indices moved):
+// the ranges are disjoint, so the tree is the one a single thread builds.
+inline int build(std::vector<Node>& nodes, std::vector<int>& order, const std::vector<Box>& triBoxes,
+                 const std::vector<glm::dvec3>& centroids, int first, int count, int parallelDepth = 0) {
+  Node n;
+  const int mid = makeNode(n, order, triBoxes, centroids, first, count);
+  const int index = static_cast<int>(nodes.size());
+  nodes.push_back(n);
+  if (mid < 0) return index;
+  int l = -1, r = -1;
+  if (parallelDepth > 0) {
+    std::vector<Node> right;
+    std::exception_ptr failure;
+    std::thread worker([&] {
+      try {
+        r = build(right, order, triBoxes, centroids, mid, first + count - mid, parallelDepth - 1);
+      } catch (...) {
+        failure = std::current_exception();
+      }
+    });
+    try {
+      l = build(nodes, order, triBoxes, centroids, first, mid - first, parallelDepth - 1);
+    } catch (...) {
+      worker.join();
+      throw;
+    }
+    worker.join();
+    if (failure) std::rethrow_exception(failure);
+    const int offset = static_cast<int>(nodes.size());
+    for (Node m : right) {
+      if (m.left >= 0) {
+        m.left += offset;
+        m.right += offset;
+      }
+      nodes.push_back(m);
+    }
+    r += offset;
+  } else {
+    l = build(nodes, order, triBoxes, centroids, first, mid - first);
+    r = build(nodes, order, triBoxes, centroids, mid, first + count - mid);
+  }
+  Node& inner = nodes[static_cast<std::size_t>(index)];
+  inner.left = l;
+  inner.right = r;
+  inner.box = nodes[static_cast<std::size_t>(l)].box;
+  inner.box.grow(nodes[static_cast<std::size_t>(r)].box);
   return index;
 }
 
@@ -116,12 +166,14 @@ inline double rayTriangle(const glm::dvec3& o, const glm::dvec3& d, const glm::d
 // The validated mesh and its BVH, built once; bake() casts the d_N rays of a
 // vertex range. Split from computeWymanDn so a tool can run disjoint ranges on
 // several threads over one BVH (bake() only reads the baker and writes
-// out[first..last); benchmarks/threads_bench.cpp does so). Keeps references to
-// the three vectors: they must outlive the baker.
+// out[first..last); benchmarks/threads_bench.cpp does so). buildThreads > 1
+// builds the BVH's top levels on that many threads (the same tree, so the same
+// d_N bit for bit). Keeps references to the three vectors: they must outlive
+// the baker.
 class Baker {
  public:
   Baker(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
-        const std::vector<std::uint32_t>& indices, double epsilon)
+        const std::vector<std::uint32_t>& indices, double epsilon, int buildThreads = 1)
       : positions_(positions), normals_(normals), indices_(indices) {
     if (positions.size() != normals.size()) throw std::invalid_argument("computeWymanDn: one normal per vertex");
     if (indices.size() % 3 != 0) throw std::invalid_argument("computeWymanDn: indices must form triangles");
@@ -140,7 +192,9 @@ class Baker {
     tMin_ = epsilon * glm::length(all.hi - all.lo);
     bvh_.order.resize(triCount);
     for (std::size_t t = 0; t < triCount; ++t) bvh_.order[t] = static_cast<int>(t);
-    build(bvh_, boxes, centroids, 0, static_cast<int>(triCount));
+    int depth = 0;  // levels split over threads: 2^depth >= buildThreads
+    while (depth < 16 && (1 << depth) < buildThreads) ++depth;
+    build(bvh_.nodes, bvh_.order, boxes, centroids, 0, static_cast<int>(triCount), depth);
   }
 
   std::size_t vertexCount() const { return positions_.size(); }

@@ -50,11 +50,14 @@ TEST(FrameCompare, ANaNNeverAgrees) {
   Image a = filled(2, 1, glm::vec4(0.5f)), b = a;
   b.at(1, 0).y = std::numeric_limits<float>::quiet_NaN();
   for (ClampChannels k : {ClampChannels::No, ClampChannels::ToUnit}) {
-    const auto c = compareFrames(a, b, all, k);
+    int called = 0;
+    const auto c = compareFrames(a, b, all, k, [&](int x, int) { called += x == 1; });
     EXPECT_EQ(c.within1, 1u);
     EXPECT_EQ(c.beyond4, 1u);
-    EXPECT_TRUE(std::isinf(c.maxAbs));
-    EXPECT_EQ(c.worstX, 1);
+    EXPECT_EQ(c.nanPixels, 1u);
+    EXPECT_EQ(called, 1);
+    EXPECT_EQ(c.maxAbs, 0.0);  // the largest finite difference: reports stay numbers
+    EXPECT_EQ(c.worstX, -1);
   }
 }
 

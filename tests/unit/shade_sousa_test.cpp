@@ -301,9 +301,10 @@ TEST(ShadeWater, MatchesListing19_4) {
   EXPECT_GT(checked, 4000);
 }
 
-// snellWaterCompose is snellWater after its two reads: composing the very
-// texels snellWater reads (at texel centres, so the reads are exact) gives the
-// same colour, and a refraction read some other way goes straight into `deep`.
+// snellWaterCompose is snellWater after its two reads: composing the reads
+// rebuilt by hand (the same uvs and mask blend) gives snellWater's colour, and
+// the head-on case, worked out on paper, shows a refraction read some other
+// way going straight into `deep`.
 TEST(ShadeWater, ComposeIsWaterAfterItsReads) {
   snell::Texture2D s = randomTexture(16, 16, 5, true);
   snell::Texture2D refl = randomTexture(16, 16, 6, false);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace {
@@ -66,6 +67,23 @@ TEST(TechniqueWymanDn, BruteForceAgreesOnACoarseSphereAndOpenMeshesMiss) {
   const std::vector<float> open = snell::computeWymanDn(p, n, {0, 1, 2}, -1.0f);
   for (float d : open) EXPECT_EQ(d, -1.0f);
   EXPECT_THROW(snell::computeWymanDn(p, n, {0, 1, 7}), std::invalid_argument);
+}
+
+// The BVH's top levels built on several threads make the same tree: every
+// d_N bit for bit what one thread gives, and the sphere chord still holds.
+TEST(TechniqueWymanDn, ParallelBvhBuildGivesTheSameDn) {
+  const Mesh m = uvSphere(glm::vec3(0.1f, 0.4f, -1.0f), 1.3f, 40, 80);
+  std::vector<float> one(m.positions.size()), many(m.positions.size());
+  const snell::wyman_detail::Baker serial(m.positions, m.normals, m.indices, 1e-7, 1);
+  serial.bake(0, one.size(), -1.0f, one.data());
+  for (int threads : {2, 3, 8}) {
+    const snell::wyman_detail::Baker parallel(m.positions, m.normals, m.indices, 1e-7, threads);
+    parallel.bake(0, many.size(), -1.0f, many.data());
+    for (std::size_t v = 0; v < one.size(); ++v) {
+      ASSERT_EQ(std::memcmp(&one[v], &many[v], sizeof(float)), 0) << threads << " threads, vertex " << v;
+      EXPECT_NEAR(many[v], 2.6f, 2.0 * 1.3 * (1.0 - std::cos(M_PI / 40.0)) + 1e-4);
+    }
+  }
 }
 
 }  // namespace

@@ -8,9 +8,10 @@
 //
 // A pixel's difference is the largest |gpu - cpu| of its three channels,
 // computed in float (with ClampChannels::ToUnit both sides are first clamped
-// to [0, 1], the displayable values); a NaN on either side makes it infinite,
-// so it is never counted as agreeing. Within 1/255: difference <= 1/255;
-// beyond 4/255: difference > 4/255 (float thresholds).
+// to [0, 1], the displayable values). A NaN on either side never agrees: the
+// pixel counts in nanPixels and beyond 4/255 (onBeyond4 is called), and maxAbs
+// stays the largest finite difference, so reports stay numbers. Within 1/255:
+// difference <= 1/255; beyond 4/255: difference > 4/255 (float thresholds).
 #pragma once
 
 #include <snell/bridge.hpp>
@@ -18,7 +19,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -29,8 +29,9 @@ enum class ClampChannels { No, ToUnit };
 struct FrameComparison {
   std::size_t pixels = 0;   // pixels compared
   std::size_t within1 = 0;  // every channel within 1/255
-  std::size_t beyond4 = 0;  // some channel beyond 4/255
-  double maxAbs = 0.0;      // the largest difference (infinity when a NaN was met)
+  std::size_t beyond4 = 0;  // some channel beyond 4/255, or a NaN
+  std::size_t nanPixels = 0;  // a NaN on either side
+  double maxAbs = 0.0;      // the largest finite difference
   int worstX = -1, worstY = -1;  // where maxAbs was first reached (-1: no pixel differs)
 
   double shareWithin1() const { return pixels ? double(within1) / double(pixels) : 0.0; }
@@ -63,10 +64,18 @@ FrameComparison compareFrames(const snell::Image& gpu, const snell::Image& cpu, 
       if (!compared(x, y)) continue;
       ++r.pixels;
       float d = 0.0f;
+      bool nan = false;
       for (int c = 0; c < 3; ++c) {
         const float e =
             std::abs(detail::frameChannel(gpu.at(x, y)[c], clamp) - detail::frameChannel(cpu.at(x, y)[c], clamp));
-        d = std::isnan(e) ? std::numeric_limits<float>::infinity() : std::max(d, e);
+        if (std::isnan(e)) nan = true;
+        else d = std::max(d, e);
+      }
+      if (nan) {
+        ++r.nanPixels;
+        ++r.beyond4;
+        onBeyond4(x, y);
+        continue;
       }
       if (static_cast<double>(d) > r.maxAbs) {
         r.maxAbs = static_cast<double>(d);

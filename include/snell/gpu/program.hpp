@@ -166,10 +166,12 @@ class Program {
   // is removed by the compiler, so test hasUniform() first when it may be.
   bool hasUniform(const std::string& name) const { return gl_->GetUniformLocation(id_, name.c_str()) >= 0; }
 
-  // Checks that the program has the uniform block `name` (std140) at `binding`
-  // (its layout(binding = N)) and that the block holds `bytes` bytes (rounded
-  // up to 16, as std140 rounds a block): the host struct is its layout. A block
-  // the program lacks, or of another size, is an Error naming both.
+  // Checks that the program has the uniform block `name` at `binding` (its
+  // layout(binding = N)) and that the block holds `bytes` bytes rounded up to
+  // 16 (as std140 rounds a block). A block the program lacks, at another
+  // binding or of another size is an Error naming both. It checks sizes, not
+  // member offsets: the host keeps its struct std140 (static_assert its
+  // offsets, as examples/lab/app/gpu_lab.cpp does).
   void requireUniformBlock(const std::string& name, GLuint binding, std::size_t bytes) const {
     const GLuint index = gl_->GetUniformBlockIndex(id_, name.c_str());
     if (index == GL_INVALID_INDEX) throw Error("program has no uniform block " + name);
