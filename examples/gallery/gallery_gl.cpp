@@ -38,7 +38,10 @@ Gl::Gl(const std::string& backend, const Options& options)
       vao_(ctx_.gl()),
       labGlsl_(options.labGlsl),
       snellGlsl_(options.snellGlsl),
-      plain_(program("lab_fullscreen.vert", "gallery_plain.frag")) {}
+      plain_(program("lab_fullscreen.vert", "gallery_plain.frag")),
+      sky_(program("lab_fullscreen.vert", "gallery_sky.frag")),
+      mask_(program("gallery_mesh.vert", "gallery_mask.frag")),
+      gbuffer_(program("gallery_mesh.vert", "gallery_gbuffer.frag")) {}
 
 std::string Gl::description() const {
   return std::string(gpu::backendName(ctx_.backend())) + ", " + ctx_.renderer() + ", OpenGL " + ctx_.version();
@@ -61,6 +64,46 @@ void Gl::fullscreen() const { drawArrays(3); }
 void Gl::drawArrays(GLsizei count) const {
   vao_.bind();
   gl().DrawArrays(GL_TRIANGLES, 0, count);
+}
+
+void Gl::skyPass(const gpu::Framebuffer& target, const mat4& clip, vec3 eye, GLuint environment) const {
+  for (int a = 0; a < 2; ++a) target.clearColor(a, vec4(0.0f));
+  target.clearDepth(1.0f);
+  target.bind();
+  gl().Disable(GL_CULL_FACE);
+  gl().Disable(GL_DEPTH_TEST);
+  gl().DepthMask(GL_FALSE);
+  sky_.set("worldFromClip", glm::inverse(clip));
+  sky_.set("eye", eye);
+  sky_.set("viewport", vec2(float(target.width()), float(target.height())));
+  bindTextures({environment});
+  sky_.use();
+  fullscreen();
+}
+
+void Gl::maskPass(const gpu::StorageBuffer& soup, int vertexCount, const mat4& clip) const {
+  gl().ColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+  gl().ColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+  gl().DepthMask(GL_FALSE);
+  mask_.set("clipFromWorld", clip);
+  mask_.set("clipPlane", vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  mask_.use();
+  drawSoup(soup, vertexCount);
+  gl().ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  gl().ColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  gl().DepthMask(GL_TRUE);
+}
+
+void Gl::gbufferPass(const gpu::Framebuffer& target, float clearDepth, const gpu::StorageBuffer& soup, int vertexCount,
+                     const mat4& clip, GLuint occluderDepth) const {
+  for (int a = 0; a < 3; ++a) target.clearColor(a, vec4(0.0f));
+  target.clearDepth(clearDepth);
+  target.bind();
+  gbuffer_.set("clipFromWorld", clip);
+  gbuffer_.set("clipPlane", vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  bindTextures({occluderDepth});
+  gbuffer_.use();
+  drawSoup(soup, vertexCount);
 }
 
 void Gl::plainPass(const gpu::Framebuffer& target, GLuint texture) const {
@@ -109,13 +152,24 @@ std::vector<double> Gl::timeInterleaved(const std::vector<std::function<void()>>
   return median;
 }
 
+lab::Camera camera(vec3 eye, vec3 target, float fovYDegrees, const Options& options) {
+  lab::Camera c;
+  c.position = eye;
+  c.target = target;
+  c.fovYDegrees = fovYDegrees;
+  c.width = options.width;
+  c.height = options.height;
+  return c;
+}
+
 mat4 clipFromWorld(const lab::Camera& camera) { return camera.clipFromView() * camera.viewFromWorld(); }
 
 Texture2D texture(Image image, Filter filter) { return Texture2D(std::move(image), filter); }
 
 gpu::FrameComparison compare(const Image& gpuImage, const Image& cpuImage, const std::vector<bool>& on) {
   const std::size_t w = std::size_t(gpuImage.width);
-  return gpu::compareFrames(gpuImage, cpuImage, [&](int x, int y) { return on.at(std::size_t(y) * w + std::size_t(x)); });
+  return gpu::compareFrames(gpuImage, cpuImage,
+                            [&](int x, int y) { return on.at(std::size_t(y) * w + std::size_t(x)); });
 }
 
 }  // namespace snell::gallery

@@ -44,6 +44,16 @@ class Gl {
   void fullscreen() const;
   // glDrawArrays(GL_TRIANGLES, 0, count) with the gallery's vertex array bound (vertex pulling).
   void drawArrays(GLsizei count) const;
+  // Clears `target` (colours 0, depth 1) and draws the environment behind everything along each pixel's
+  // world ray (gallery_sky.frag), depth untouched; leaves depth testing, depth writes and culling off.
+  void skyPass(const gpu::Framebuffer& target, const mat4& clipFromWorld, vec3 eye, GLuint environment) const;
+  // Sousa's refraction mask: the soup (a refracting surface) writes alpha 0 into attachments 0 and 1 of the
+  // bound scene framebuffer where it is visible (depth-tested, no depth writes, colours masked off).
+  void maskPass(const gpu::StorageBuffer& soup, int vertexCount, const mat4& clipFromWorld) const;
+  // A refracting surface's G-buffer (gallery_gbuffer.frag) into `target`: cleared to 0 and to `clearDepth`,
+  // hidden where `occluderDepth` lies in front. Depth test and culling are the caller's.
+  void gbufferPass(const gpu::Framebuffer& target, float clearDepth, const gpu::StorageBuffer& soup, int vertexCount,
+                   const mat4& clipFromWorld, GLuint occluderDepth) const;
   // The cost yardstick: one bilinear read of `texture` per pixel of `target` (gallery_plain.frag).
   void plainPass(const gpu::Framebuffer& target, GLuint texture) const;
   // Binds texture names to units 0, 1, ...
@@ -58,10 +68,11 @@ class Gl {
   gpu::Context ctx_;
   gpu::VertexArray vao_;
   std::filesystem::path labGlsl_, snellGlsl_;
-  gpu::Program plain_;
+  gpu::Program plain_, sky_, mask_, gbuffer_;
 };
 
-// clipFromWorld of a lab camera, and its inverse for the sky pass.
+// A camera at `eye` looking at `target` with a vertical field of view in degrees, at the options' size.
+lab::Camera camera(vec3 eye, vec3 target, float fovYDegrees, const Options& options);
 mat4 clipFromWorld(const lab::Camera& camera);
 
 // A texture of one Image with the filter both sides read it with.

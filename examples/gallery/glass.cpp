@@ -39,12 +39,7 @@ Soup panes() {
 EffectResult runGlass(const Gl& g, const Options& o) {
   const gpu::GlApi& gl = g.gl();
   const int W = o.width, H = o.height;
-  lab::Camera cam;
-  cam.position = vec3(0.0f, 0.55f, 4.6f);
-  cam.target = vec3(0.0f, 0.35f, 0.0f);
-  cam.fovYDegrees = 45.0f;
-  cam.width = W;
-  cam.height = H;
+  const lab::Camera cam = camera(vec3(0.0f, 0.55f, 4.6f), vec3(0.0f, 0.35f, 0.0f), 45.0f, o);
   const mat4 clip = clipFromWorld(cam);
 
   const Texture2D envTex = texture(environmentImage(256), Filter::Linear);
@@ -54,29 +49,14 @@ EffectResult runGlass(const Gl& g, const Options& o) {
   const Soup roomSoup = room(), paneSoup = panes();
   gpu::StorageBuffer roomBuf = g.upload(roomSoup), paneBuf = g.upload(paneSoup);
 
-  gpu::Program sky = g.program("lab_fullscreen.vert", "gallery_sky.frag");
   gpu::Program shade = g.program("gallery_mesh.vert", "gallery_scene.frag");
-  gpu::Program mask = g.program("gallery_mesh.vert", "gallery_mask.frag");
-  gpu::Program gbuffer = g.program("gallery_mesh.vert", "gallery_gbuffer.frag");
   gpu::Program pane = g.program("lab_fullscreen.vert", "gallery_pane.frag");
   gpu::Framebuffer sceneFb(gl, W, H, 2, true), gFb(gl, W, H, 3, true), outFb(gl, W, H, 1, false);
   g.setFilter(sceneFb.colorTexture(0), GL_LINEAR);
   g.setFilter(sceneFb.colorTexture(1), GL_LINEAR);
 
   // (1) S and the probe (in front of the panes' plane z = 0 is what must not leak).
-  sceneFb.clearColor(0, vec4(0.0f));
-  sceneFb.clearColor(1, vec4(0.0f));
-  sceneFb.clearDepth(1.0f);
-  sceneFb.bind();
-  gl.Disable(GL_CULL_FACE);
-  gl.Disable(GL_DEPTH_TEST);
-  gl.DepthMask(GL_FALSE);
-  sky.set("worldFromClip", glm::inverse(clip));
-  sky.set("eye", cam.position);
-  sky.set("viewport", vec2(float(W), float(H)));
-  g.bindTextures({envGl.id()});
-  sky.use();
-  g.fullscreen();
+  g.skyPass(sceneFb, clip, cam.position, envGl.id());
   gl.DepthMask(GL_TRUE);
   gl.Enable(GL_DEPTH_TEST);
   gl.DepthFunc(GL_LESS);
@@ -87,25 +67,9 @@ EffectResult runGlass(const Gl& g, const Options& o) {
   g.drawSoup(roomBuf, roomSoup.vertexCount());
   gpu::checkGl(gl, "glass scene pass");
   // (2) Sousa's mask.
-  gl.ColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
-  gl.ColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
-  gl.DepthMask(GL_FALSE);
-  mask.set("clipFromWorld", clip);
-  mask.set("clipPlane", vec4(0.0f, 0.0f, 0.0f, 1.0f));
-  mask.use();
-  g.drawSoup(paneBuf, paneSoup.vertexCount());
-  gl.ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  gl.ColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  gl.DepthMask(GL_TRUE);
+  g.maskPass(paneBuf, paneSoup.vertexCount(), clip);
   // (3) The panes' G-buffer.
-  for (int a = 0; a < 3; ++a) gFb.clearColor(a, vec4(0.0f));
-  gFb.clearDepth(1.0f);
-  gFb.bind();
-  gbuffer.set("clipFromWorld", clip);
-  gbuffer.set("clipPlane", vec4(0.0f, 0.0f, 0.0f, 1.0f));
-  g.bindTextures({sceneFb.depthTexture()});
-  gbuffer.use();
-  g.drawSoup(paneBuf, paneSoup.vertexCount());
+  g.gbufferPass(gFb, 1.0f, paneBuf, paneSoup.vertexCount(), clip, sceneFb.depthTexture());
   gpu::checkGl(gl, "glass G-buffer");
 
   auto panePass = [&](int maskMode, float time, bool probe) {

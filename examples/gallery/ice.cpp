@@ -44,12 +44,7 @@ std::array<Crack, GALLERY_CRACKS> cracks() {
 EffectResult runIce(const Gl& g, const Options& o) {
   const gpu::GlApi& gl = g.gl();
   const int W = o.width, H = o.height;
-  lab::Camera cam;
-  cam.position = vec3(0.0f, 0.7f, 4.3f);
-  cam.target = vec3(0.0f, 0.0f, 0.0f);
-  cam.fovYDegrees = 45.0f;
-  cam.width = W;
-  cam.height = H;
+  const lab::Camera cam = camera(vec3(0.0f, 0.7f, 4.3f), vec3(0.0f, 0.0f, 0.0f), 45.0f, o);
   const mat4 clip = clipFromWorld(cam);
   const mat4 worldFromBox = blockTransform();
 
@@ -71,8 +66,6 @@ EffectResult runIce(const Gl& g, const Options& o) {
     crackSoups.push_back(s);
   }
 
-  gpu::Program sky = g.program("lab_fullscreen.vert", "gallery_sky.frag");
-  gpu::Program gbuffer = g.program("gallery_mesh.vert", "gallery_gbuffer.frag");
   gpu::Program crack = g.program("gallery_mesh.vert", "gallery_crack.frag");
   gpu::Program ice = g.program("lab_fullscreen.vert", "gallery_ice.frag");
   gpu::Framebuffer sceneFb(gl, W, H, 2, true), frontFb(gl, W, H, 3, true), backFb(gl, W, H, 3, true),
@@ -80,33 +73,16 @@ EffectResult runIce(const Gl& g, const Options& o) {
   g.setFilter(sceneFb.colorTexture(0), GL_LINEAR);
 
   // (1) The environment behind the block.
-  sceneFb.clearColor(0, vec4(0.0f));
-  sceneFb.clearColor(1, vec4(0.0f));
-  sceneFb.clearDepth(1.0f);
-  sceneFb.bind();
-  gl.Disable(GL_DEPTH_TEST);
-  gl.Disable(GL_CULL_FACE);
-  sky.set("worldFromClip", glm::inverse(clip));
-  sky.set("eye", cam.position);
-  sky.set("viewport", vec2(float(W), float(H)));
-  g.bindTextures({envGl.id()});
-  sky.use();
-  g.fullscreen();
+  g.skyPass(sceneFb, clip, cam.position, envGl.id());
+  gl.DepthMask(GL_TRUE);
   // (2) Front faces (depth LESS) and back faces (front culled, depth GREATER from 0).
-  gbuffer.set("clipFromWorld", clip);
-  gbuffer.set("clipPlane", vec4(0.0f, 0.0f, 0.0f, 1.0f));
   for (int side = 0; side < 2; ++side) {
-    const gpu::Framebuffer& fb = side == 0 ? frontFb : backFb;
-    for (int a = 0; a < 3; ++a) fb.clearColor(a, vec4(0.0f));
-    fb.clearDepth(side == 0 ? 1.0f : 0.0f);
-    fb.bind();
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthFunc(side == 0 ? GL_LESS : GL_GREATER);
     gl.Enable(GL_CULL_FACE);
     gl.CullFace(side == 0 ? GL_BACK : GL_FRONT);
-    g.bindTextures({sceneFb.depthTexture()});
-    gbuffer.use();
-    g.drawSoup(blockBuf, block.vertexCount());
+    g.gbufferPass(side == 0 ? frontFb : backFb, side == 0 ? 1.0f : 0.0f, blockBuf, block.vertexCount(), clip,
+                  sceneFb.depthTexture());
   }
   gl.CullFace(GL_BACK);
   gl.Disable(GL_CULL_FACE);

@@ -114,12 +114,7 @@ UvError approxError(const Waves& waves, vec3 eye, float factor) {
 EffectResult runRtm(const Gl& g, const Options& o) {
   const gpu::GlApi& gl = g.gl();
   const int W = o.width, H = o.height;
-  lab::Camera cam;
-  cam.position = vec3(0.0f, 3.0f, 3.2f);
-  cam.target = vec3(0.0f, -0.6f, -0.2f);
-  cam.fovYDegrees = 50.0f;
-  cam.width = W;
-  cam.height = H;
+  const lab::Camera cam = camera(vec3(0.0f, 3.0f, 3.2f), vec3(0.0f, -0.6f, -0.2f), 50.0f, o);
   const mat4 clip = clipFromWorld(cam);
 
   // The refraction factor that best matches Snell's law on the flat mesh (golden-section search).
@@ -236,9 +231,9 @@ EffectResult runRtm(const Gl& g, const Options& o) {
     long n = 0;
     for (std::size_t i = 0; i < uv.texels.size(); ++i) {
       if (uv.texels[i].w == 0.0f) continue;
-      const double d = glm::length(glm::dvec2(vec2(uv.texels[i])) -
-                                   exactUv(glm::dvec3(vec3(world.texels[i])), glm::dvec3(vec3(normal.texels[i])),
-                                           glm::dvec3(cam.position))) *
+      const double d = glm::length(glm::dvec2(vec2(uv.texels[i])) - exactUv(glm::dvec3(vec3(world.texels[i])),
+                                                                            glm::dvec3(vec3(normal.texels[i])),
+                                                                            glm::dvec3(cam.position))) *
                        kMapSize;
       e.mean += d;
       e.max = std::max(e.max, d);

@@ -47,12 +47,7 @@ const char* kMaskNames[3] = {"mask off", "alpha mask", "depth mask"};
 EffectResult runWater(const Gl& g, const Options& o) {
   const gpu::GlApi& gl = g.gl();
   const int W = o.width, H = o.height;
-  lab::Camera cam;
-  cam.position = vec3(0.0f, 2.4f, 7.5f);
-  cam.target = vec3(0.0f, -0.4f, 0.0f);
-  cam.fovYDegrees = 50.0f;
-  cam.width = W;
-  cam.height = H;
+  const lab::Camera cam = camera(vec3(0.0f, 2.4f, 7.5f), vec3(0.0f, -0.4f, 0.0f), 50.0f, o);
   const mat4 clip = clipFromWorld(cam);
   const mat4 mirror = glm::scale(mat4(1.0f), vec3(1.0f, -1.0f, 1.0f));  // through the water plane y = 0
   const mat4 clipMirror = clip * mirror;
@@ -64,10 +59,7 @@ EffectResult runWater(const Gl& g, const Options& o) {
   gpu::StorageBuffer scene = g.upload(waterScene()), surface = g.upload(waterSurface());
   const int sceneCount = waterScene().vertexCount(), surfaceCount = waterSurface().vertexCount();
 
-  gpu::Program sky = g.program("lab_fullscreen.vert", "gallery_sky.frag");
   gpu::Program shade = g.program("gallery_mesh.vert", "gallery_scene.frag");
-  gpu::Program mask = g.program("gallery_mesh.vert", "gallery_mask.frag");
-  gpu::Program gbuffer = g.program("gallery_mesh.vert", "gallery_gbuffer.frag");
   gpu::Program water = g.program("lab_fullscreen.vert", "gallery_water.frag");
 
   gpu::Framebuffer sceneFb(gl, W, H, 2, true), reflFb(gl, W, H, 2, true), gFb(gl, W, H, 3, true),
@@ -77,19 +69,7 @@ EffectResult runWater(const Gl& g, const Options& o) {
   g.setFilter(reflFb.colorTexture(0), GL_LINEAR);
 
   auto drawScene = [&](const gpu::Framebuffer& fb, const mat4& clipM, vec3 eye, bool clipBelow) {
-    fb.clearColor(0, vec4(0.0f));
-    fb.clearColor(1, vec4(0.0f));
-    fb.clearDepth(1.0f);
-    fb.bind();
-    gl.Disable(GL_CULL_FACE);
-    gl.Disable(GL_DEPTH_TEST);
-    gl.DepthMask(GL_FALSE);
-    sky.set("worldFromClip", glm::inverse(clipM));
-    sky.set("eye", eye);
-    sky.set("viewport", vec2(float(W), float(H)));
-    g.bindTextures({envGl.id()});
-    sky.use();
-    g.fullscreen();
+    g.skyPass(fb, clipM, eye, envGl.id());
     gl.DepthMask(GL_TRUE);
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthFunc(GL_LESS);
@@ -103,27 +83,11 @@ EffectResult runWater(const Gl& g, const Options& o) {
   };
   // (1) S and the probe; (2) Sousa's mask into both alphas.
   drawScene(sceneFb, clip, cam.position, false);
-  gl.ColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
-  gl.ColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
-  gl.DepthMask(GL_FALSE);
-  mask.set("clipFromWorld", clip);
-  mask.set("clipPlane", vec4(0.0f, 0.0f, 0.0f, 1.0f));
-  mask.use();
-  g.drawSoup(surface, surfaceCount);
-  gl.ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  gl.ColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  gl.DepthMask(GL_TRUE);
+  g.maskPass(surface, surfaceCount, clip);
   // (3) The planar reflection: the mirrored scene above the plane, from the mirrored eye.
   drawScene(reflFb, clipMirror, vec3(mirror * vec4(cam.position, 1.0f)), true);
   // (4) The water's G-buffer, hidden by the opaque scene.
-  for (int a = 0; a < 3; ++a) gFb.clearColor(a, vec4(0.0f));
-  gFb.clearDepth(1.0f);
-  gFb.bind();
-  gbuffer.set("clipFromWorld", clip);
-  gbuffer.set("clipPlane", vec4(0.0f, 0.0f, 0.0f, 1.0f));
-  g.bindTextures({sceneFb.depthTexture()});
-  gbuffer.use();
-  g.drawSoup(surface, surfaceCount);
+  g.gbufferPass(gFb, 1.0f, surface, surfaceCount, clip, sceneFb.depthTexture());
   gpu::checkGl(gl, "water scene passes");
 
   // (5) The water pass.
