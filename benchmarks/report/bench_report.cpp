@@ -366,11 +366,12 @@ std::string threadsSection(const Results& b) {
   s += "`benchmarks/threads_bench.cpp`: the work split over explicit `std::thread`s (chunks or rows through an "
        "atomic counter), wall-clock time. Scaling: throughput over the 1-thread throughput (ideal: the thread "
        "count, at most the number of idle cores). CPU-time bound: the calling thread's CPU time with 1 thread over "
-       "that with T threads (it does its share of the work, and for d_N the serial BVH build); other processes' "
+       "that with T threads (it does its share of the work, and for d_N the BVH build's serial part); other processes' "
        "load does not move it, so it shows how evenly the work splits and bounds the wall-clock scaling on idle "
        "cores from above.\n\n";
-  s += "Wyman's d_N for every vertex (`include/snell/wyman_dn.hpp`: BVH built once, serially, and counted; the "
-       "vertices' rays in parallel). bvh share: the serial build's share of the 1-thread time.\n\n";
+  s += "Wyman's d_N for every vertex (`include/snell/wyman_dn.hpp`: the BVH built once, its top levels on the T "
+       "threads, and counted; the vertices' rays in parallel). bvh share: the build's share of the calling thread's "
+       "CPU time.\n\n";
   std::string head = "| mesh | vertices | triangles | bvh share | vertices/s, 1 thread", rule = "|---|---:|---:|---:|---:";
   for (int t = 2; t <= maxThreads; t *= 2) {
     head += " | " + std::to_string(t) + " threads | scaling | CPU-time bound";
