@@ -43,30 +43,26 @@ struct Waves {
   }
 };
 
-// Vertices as (position, normal) pairs and the triangles as (position, normal) per corner.
+// Vertices as (position, normal) pairs, each height computed once, and the triangles' corners copied from them.
 void mesh(const Waves& waves, std::vector<vec4>& vertices, std::vector<vec4>& triangles) {
   vertices.clear();
   triangles.clear();
-  auto at = [&](int i, int j) {
-    const float x = -kExtent + 2.0f * kExtent * float(i) / float(kCells);
-    const float z = -kExtent + 2.0f * kExtent * float(j) / float(kCells);
-    vec3 n;
-    const float y = waves.height(x, z, &n);
-    return std::pair<vec4, vec4>(vec4(x, y, z, 1.0f), vec4(n, 0.0f));
-  };
   for (int j = 0; j <= kCells; ++j)
     for (int i = 0; i <= kCells; ++i) {
-      const auto v = at(i, j);
-      vertices.push_back(v.first);
-      vertices.push_back(v.second);
+      const float x = -kExtent + 2.0f * kExtent * float(i) / float(kCells);
+      const float z = -kExtent + 2.0f * kExtent * float(j) / float(kCells);
+      vec3 n;
+      const float y = waves.height(x, z, &n);
+      vertices.push_back(vec4(x, y, z, 1.0f));
+      vertices.push_back(vec4(n, 0.0f));
     }
   for (int j = 0; j < kCells; ++j)
     for (int i = 0; i < kCells; ++i)
       for (const std::pair<int, int>& c : std::initializer_list<std::pair<int, int>>{
                {i, j}, {i, j + 1}, {i + 1, j + 1}, {i, j}, {i + 1, j + 1}, {i + 1, j}}) {
-        const auto v = at(c.first, c.second);
-        triangles.push_back(v.first);
-        triangles.push_back(v.second);
+        const std::size_t v = 2 * (std::size_t(c.second) * std::size_t(kCells + 1) + std::size_t(c.first));
+        triangles.push_back(vertices[v]);
+        triangles.push_back(vertices[v + 1]);
       }
 }
 
@@ -92,9 +88,8 @@ glm::dvec2 exactUv(glm::dvec3 vertex, glm::dvec3 normal, glm::dvec3 eye) {
 struct UvError {
   double mean = 0.0, max = 0.0;
 };
-UvError approxError(const Waves& waves, vec3 eye, float factor) {
-  std::vector<vec4> v, t;
-  mesh(waves, v, t);
+// The approximate ray's uv error per vertex of `v` (mesh()'s vertices).
+UvError approxError(const std::vector<vec4>& v, vec3 eye, float factor) {
   UvError e;
   const SnellRefractiveTextureMapParams p = params(factor);
   for (std::size_t k = 0; k < v.size(); k += 2) {
@@ -118,10 +113,12 @@ EffectResult runRtm(const Gl& g, const Options& o) {
   const mat4 clip = clipFromWorld(cam);
 
   // The refraction factor that best matches Snell's law on the flat mesh (golden-section search).
+  std::vector<vec4> flat, flatTriangles;
+  mesh({0.0f, 0.0f}, flat, flatTriangles);
   float lo = 0.0f, hi = 3.0f;
   for (int it = 0; it < 40; ++it) {
     const float a = hi - (hi - lo) * 0.618034f, b = lo + (hi - lo) * 0.618034f;
-    if (approxError({0.0f, 0.0f}, cam.position, a).mean < approxError({0.0f, 0.0f}, cam.position, b).mean)
+    if (approxError(flat, cam.position, a).mean < approxError(flat, cam.position, b).mean)
       hi = b;
     else
       lo = a;
@@ -252,8 +249,8 @@ EffectResult runRtm(const Gl& g, const Options& o) {
        "| wave amplitude | approximate, per vertex | approximate, per pixel | Snell per vertex, per pixel |\n"
        "|---|---|---|---|\n";
   for (float amp : {0.0f, 0.02f, 0.04f, 0.06f, 0.1f, 0.15f}) {
-    const UvError v = approxError({amp, 0.0f}, cam.position, factor);
     upload(amp, 0.0f);
+    const UvError v = approxError(vertices, cam.position, factor);
     const PixelError pa = perPixel(false), pe = perPixel(true);
     t << "| " << fixed(amp, 2) << " | " << fixed(v.mean, 2) << " / " << fixed(v.max, 2) << " | " << fixed(pa.mean, 2)
       << " / " << fixed(pa.max, 2) << " | " << fixed(pe.mean, 2) << " / " << fixed(pe.max, 2) << " |\n";

@@ -56,8 +56,9 @@ EffectResult runWater(const Gl& g, const Options& o) {
   const Texture2D bumpTex = texture(bumpImage(256), Filter::Linear);
   const Texture2D black = texture(Image(1, 1), Filter::Nearest);
   gpu::Texture envGl(gl, envTex), bumpGl(gl, bumpTex), blackGl(gl, black);
-  gpu::StorageBuffer scene = g.upload(waterScene()), surface = g.upload(waterSurface());
-  const int sceneCount = waterScene().vertexCount(), surfaceCount = waterSurface().vertexCount();
+  const Soup sceneSoup = waterScene(), surfaceSoup = waterSurface();
+  gpu::StorageBuffer scene = g.upload(sceneSoup), surface = g.upload(surfaceSoup);
+  const int sceneCount = sceneSoup.vertexCount(), surfaceCount = surfaceSoup.vertexCount();
 
   gpu::Program shade = g.program("gallery_mesh.vert", "gallery_scene.frag");
   gpu::Program water = g.program("lab_fullscreen.vert", "gallery_water.frag");
