@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -172,15 +173,33 @@ inline std::uint16_t contractViolations(const Exception* e, int outputs, const P
   return bad;
 }
 
+// splitmix64's finalizer over the 16 output floats' bits, seeded by the input's index.
+inline std::uint64_t outputDigest(std::uint64_t index, const ParityIO& out) {
+  std::uint64_t h = index * 0x9E3779B97F4A7C15ull;
+  for (int k = 0; k < 16; ++k) {
+    std::uint32_t bits;
+    const float x = comp(out, k);
+    std::memcpy(&bits, &x, sizeof bits);
+    h = (h ^ bits) * 0xBF58476D1CE4E5B9ull;
+    h ^= h >> 31;
+  }
+  return h;
+}
+
 // Counts over many inputs, with the first violation spelled out.
 struct Tally {
   std::uint64_t inputs = 0, violations = 0, exempt = 0;
+  // The bits of every output, mixed with its input's index and summed (so the
+  // chunks' order does not matter): equal digests before and after a change
+  // that must not change any result is the proof that it did not.
+  std::uint64_t digest = 0;
   std::map<int, std::uint64_t> byOutput;  // output float index -> violations
   std::string first;
 
   // Checks input #index against the contract; returns its violating outputs.
   std::uint16_t add(const Exception* e, int outputs, std::uint64_t index, const ParityIO& in, const ParityIO& out) {
     ++inputs;
+    digest += outputDigest(index, out);
     bool ex = false;
     const std::uint16_t bad = contractViolations(e, outputs, in, out, &ex);
     if (ex) ++exempt;
@@ -194,6 +213,7 @@ struct Tally {
   }
   void merge(const Tally& o) {
     inputs += o.inputs;
+    digest += o.digest;
     violations += o.violations;
     exempt += o.exempt;
     for (const auto& [k, n] : o.byOutput) byOutput[k] += n;

@@ -81,7 +81,8 @@ class PropertyTest : public ::testing::Test {
     Tally sum;
     for (const Tally& r : results) sum.merge(r);
     std::cout << "[property] " << spec_->function << " inputs=" << sum.inputs << " violations=" << sum.violations
-              << " exempt=" << sum.exempt << sum.byOutputText() << "\n";
+              << " exempt=" << sum.exempt << sum.byOutputText() << " digest=" << std::hex << sum.digest << std::dec
+              << "\n";
     EXPECT_GE(sum.inputs, inputCount(*spec_));
     const auto pending = property::pendingTriage().find(spec_->function);
     if (pending != property::pendingTriage().end()) {
