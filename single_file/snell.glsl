@@ -3259,6 +3259,215 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
 }
 
 #endif
+/*
+description: any intersection strategy of intersect/, chosen at run time: the
+  strategy ids, one options struct whose fields are named after the strategy
+  they belong to, and the dispatcher, so a technique's back-face, exit and
+  reflection slots are interchangeable (GLSL has no function pointers: a
+  strategy is an int constant that snellIntersectWith branches on).
+use: SnellIntersectOptions o = snellIntersectOptions(SNELL_STRATEGY_CBS);
+     o.cbsSteps = 8;
+     SnellHit h = snellIntersectWith(origin, dir, depthTex, normalTex, pyramidTex, surface, o);
+  origin, dir view-space ray (P1, T1 for the back faces; P2, T2 for the scene)
+  depthTex    the depth buffer `surface` describes
+  normalTex   its view-space normals (PLANE_NORMAL only; any texture otherwise)
+  pyramidTex  its depth min/max pyramid (intersect/depth_pyramid.glsl), full mip
+              chain: the search range of CBS / BINARY / LINEAR_BINARY when
+              o.rangeSource is SNELL_RANGE_PYRAMID, and the depth mips of
+              PLANE_DEPTH (its .x is the mean depth value)
+  o           the strategy and its parameters
+options (strategy ids, the values of SnellIntersectOptions.strategy):
+  SNELL_STRATEGY_SINGLE         0  snellIntersectSingleSample (1 fetch)
+  SNELL_STRATEGY_PLANE_NORMAL   1  snellIntersectPlaneNormal
+  SNELL_STRATEGY_PLANE_DEPTH    2  snellIntersectPlaneDepth (the pyramid's
+                                   levels as depth mips)
+  SNELL_STRATEGY_CBS            3  snellConservativeBinarySearch
+  SNELL_STRATEGY_BINARY         4  snellBinarySearch
+  SNELL_STRATEGY_LINEAR_BINARY  5  snellLinearBinarySearch
+  SNELL_STRATEGY_LINEAR_MARCH   6  snellLinearMarch
+  SNELL_STRATEGY_DDA            7  snellDdaMarch
+  range sources of the searches: SNELL_RANGE_PYRAMID 0 (the pyramid's top
+  level, snellDepthRangeFromPyramid, 1 fetch), SNELL_RANGE_EXPLICIT 1 (o.range
+  as given, e.g. snellDepthRangeFromBox: Oliveira & Brauwers' bounding box)
+  SNELL_INTERSECT_STRATEGIES  bit mask of the strategies compiled in (bit k =
+                              strategy k, 0xFF = all, the default). Every
+                              technique call inlines the dispatcher, and with
+                              it every strategy: a shader that uses one or two
+                              presets compiles much faster (llvmpipe: minutes
+                              -> seconds) with only their bits, e.g.
+                              #define SNELL_INTERSECT_STRATEGIES ((1 << SNELL_STRATEGY_CBS) | 1)
+                              A strategy left out answers snellHitMiss(0).
+  The fields of SnellIntersectOptions, by the strategy that reads them, with
+  their defaults (each default is the strategy file's own macro):
+  every strategy  depthFilter = SNELL_DEPTH_FILTER_NEAREST (how the strategy
+                  reads depth: intersect/depth_surface.glsl; it replaces the
+                  surface's depthFilter field)
+  PLANE_NORMAL, PLANE_DEPTH  planeIterations = SNELL_PLANE_ITERATIONS
+                  (refinements after the first plane)
+  PLANE_NORMAL    planeNormalLod = 0 (the normal texture's level)
+  PLANE_DEPTH     planeMaxLod = -1 (the coarsest depth mip: the pyramid's top
+                  level, snellTextureTopLod)
+  CBS             cbsSteps = SNELL_CBS_STEPS
+  BINARY, LINEAR_BINARY  binarySteps = SNELL_BINARY_SEARCH_STEPS (bisections)
+  LINEAR_BINARY   linearSteps = SNELL_LINEAR_SEARCH_STEPS
+  CBS, BINARY, LINEAR_BINARY  rangeSource = SNELL_RANGE_PYRAMID, range =
+                  snellDepthRangeInvalid() (read under SNELL_RANGE_EXPLICIT only)
+  LINEAR_MARCH    marchSteps = SNELL_LINEAR_MARCH_STEPS, marchBisections =
+                  SNELL_LINEAR_MARCH_REFINE_STEPS, marchMaxDistance =
+                  SNELL_LINEAR_MARCH_MAX_DISTANCE
+  DDA             ddaSteps = SNELL_DDA_STEPS, ddaMaxDistance =
+                  SNELL_DDA_MAX_DISTANCE, ddaThickness = SNELL_DDA_THICKNESS,
+                  ddaStride = SNELL_DDA_STRIDE
+contract:
+  - snellIntersectOptions(strategy): the strategy as given (an unknown one is
+    stored too, and answered with a miss) and every field's default above.
+  - snellIntersectWith, by o.strategy:
+    SINGLE: snellIntersectSingleSample(origin, dir, depthTex, surface).
+    PLANE_NORMAL: snellIntersectPlaneNormal(.., normalTex, surface,
+    o.planeNormalLod, o.planeIterations).
+    PLANE_DEPTH: snellIntersectPlaneDepth(origin, dir, pyramidTex, surface,
+    maxLod, o.planeIterations), maxLod = o.planeMaxLod, or
+    snellTextureTopLod(pyramidTex) when o.planeMaxLod < 0.
+    CBS / BINARY / LINEAR_BINARY: the range is snellDepthRangeFromPyramid(
+    pyramidTex) (1 fetch, counted in h.fetches) or o.range; an invalid range is
+    a miss (with the pyramid's fetch); then the strategy with o.cbsSteps,
+    o.binarySteps, or o.linearSteps and o.binarySteps.
+    LINEAR_MARCH: snellLinearMarch(.., o.marchMaxDistance, o.marchSteps,
+    o.marchBisections). DDA: snellDdaMarch(.., o.ddaMaxDistance,
+    o.ddaThickness, o.ddaStride, o.ddaSteps).
+    Any other strategy: snellHitMiss(0).
+  - every result is the strategy's own SnellHit (contracts in intersect/), with
+    the range fetch added; each strategy clamps its own counts.
+source: DESIGN.md sec. 2 ("every intersector is interchangeable in both
+  slots"); Oliveira & Brauwers 2007 sec. 3 and sec. 6 (the two range sources);
+  the strategies' own sources.
+*/
+#ifndef SNELL_INTERSECT_INTERSECT_WITH_GLSL
+#define SNELL_INTERSECT_INTERSECT_WITH_GLSL
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+#define SNELL_STRATEGY_SINGLE 0
+#define SNELL_STRATEGY_PLANE_NORMAL 1
+#define SNELL_STRATEGY_PLANE_DEPTH 2
+#define SNELL_STRATEGY_CBS 3
+#define SNELL_STRATEGY_BINARY 4
+#define SNELL_STRATEGY_LINEAR_BINARY 5
+#define SNELL_STRATEGY_LINEAR_MARCH 6
+#define SNELL_STRATEGY_DDA 7
+
+#define SNELL_RANGE_PYRAMID 0
+#define SNELL_RANGE_EXPLICIT 1
+
+#ifndef SNELL_INTERSECT_STRATEGIES
+#  define SNELL_INTERSECT_STRATEGIES 0xFF
+#endif
+/* true when strategy k is compiled in (a constant expression: the branch folds away) */
+#define SNELL_INTERSECT_HAS(k) ((SNELL_INTERSECT_STRATEGIES & (1 << (k))) != 0)
+
+struct SnellIntersectOptions {
+  int strategy;
+  int depthFilter;
+  int planeIterations;
+  float planeNormalLod;
+  int planeMaxLod;
+  int cbsSteps;
+  int binarySteps;
+  int linearSteps;
+  int rangeSource;
+  SnellDepthRange range;
+  int marchSteps;
+  int marchBisections;
+  float marchMaxDistance;
+  int ddaSteps;
+  float ddaMaxDistance;
+  float ddaThickness;
+  float ddaStride;
+};
+
+SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
+  SnellIntersectOptions o;
+  o.strategy = strategy;
+  o.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+  o.planeIterations = SNELL_PLANE_ITERATIONS;
+  o.planeNormalLod = 0.0f;
+  o.planeMaxLod = -1;
+  o.cbsSteps = SNELL_CBS_STEPS;
+  o.binarySteps = SNELL_BINARY_SEARCH_STEPS;
+  o.linearSteps = SNELL_LINEAR_SEARCH_STEPS;
+  o.rangeSource = SNELL_RANGE_PYRAMID;
+  o.range = snellDepthRangeInvalid();
+  o.marchSteps = SNELL_LINEAR_MARCH_STEPS;
+  o.marchBisections = SNELL_LINEAR_MARCH_REFINE_STEPS;
+  o.marchMaxDistance = SNELL_LINEAR_MARCH_MAX_DISTANCE;
+  o.ddaSteps = SNELL_DDA_STEPS;
+  o.ddaMaxDistance = SNELL_DDA_MAX_DISTANCE;
+  o.ddaThickness = SNELL_DDA_THICKNESS;
+  o.ddaStride = SNELL_DDA_STRIDE;
+  return o;
+}
+
+SNELL_FN SnellHit snellIntersectWith(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
+                                     SNELL_TEX2D pyramidTex, SnellDepthSurface readAs, SnellIntersectOptions o) {
+  SnellDepthSurface surface = readAs;
+  surface.depthFilter = o.depthFilter;
+  int strategy = o.strategy;
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_SINGLE) && strategy == SNELL_STRATEGY_SINGLE) {
+    return snellIntersectSingleSample(origin, dir, depthTex, surface);
+  }
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_PLANE_NORMAL) && strategy == SNELL_STRATEGY_PLANE_NORMAL) {
+    return snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, surface, o.planeNormalLod, o.planeIterations);
+  }
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_PLANE_DEPTH) && strategy == SNELL_STRATEGY_PLANE_DEPTH) {
+    int maxLod = o.planeMaxLod >= 0 ? o.planeMaxLod : snellTextureTopLod(pyramidTex);
+    return snellIntersectPlaneDepth(origin, dir, pyramidTex, surface, maxLod, o.planeIterations);
+  }
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_LINEAR_MARCH) && strategy == SNELL_STRATEGY_LINEAR_MARCH) {
+    return snellLinearMarch(origin, dir, depthTex, surface, o.marchMaxDistance, o.marchSteps, o.marchBisections);
+  }
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_DDA) && strategy == SNELL_STRATEGY_DDA) {
+    return snellDdaMarch(origin, dir, depthTex, surface, o.ddaMaxDistance, o.ddaThickness, o.ddaStride, o.ddaSteps);
+  }
+  bool cbs = SNELL_INTERSECT_HAS(SNELL_STRATEGY_CBS) && strategy == SNELL_STRATEGY_CBS;
+  bool binary = SNELL_INTERSECT_HAS(SNELL_STRATEGY_BINARY) && strategy == SNELL_STRATEGY_BINARY;
+  bool linearBinary = SNELL_INTERSECT_HAS(SNELL_STRATEGY_LINEAR_BINARY) && strategy == SNELL_STRATEGY_LINEAR_BINARY;
+  if (!cbs && !binary && !linearBinary) {
+    return snellHitMiss(0);
+  }
+  SnellDepthRange range = o.range;
+  int rangeFetches = 0;
+  if (o.rangeSource != SNELL_RANGE_EXPLICIT) {
+    range = snellDepthRangeFromPyramid(pyramidTex);
+    rangeFetches = 1;
+  }
+  if (!range.valid) {
+    return snellHitMiss(rangeFetches);
+  }
+  SnellHit h;
+  if (cbs) {
+    h = snellConservativeBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.cbsSteps);
+  } else if (binary) {
+    h = snellBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.binarySteps);
+  } else {
+    h = snellLinearBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.linearSteps,
+                                o.binarySteps);
+  }
+  h.fetches = h.fetches + rangeFetches;
+  return h;
+}
+
+#endif
 #endif
 /* shade/ family aggregator: the composed refraction techniques. */
 #ifndef SNELL_SHADE_GLSL
@@ -4338,37 +4547,22 @@ SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
 
 #endif
 /*
-description: the knobs of a two-interface refraction technique: which
-  intersection strategy fills each slot (GLSL has no function pointers, so a
-  strategy is an int constant that snellIntersectWith dispatches on), its
-  parameters, and the optics and shading options. Both structs come with a
-  constructor that fills every field with the documented default; presets
-  (technique_presets.glsl) start from these.
-use: SnellIntersectOptions io = snellIntersectOptions(SNELL_STRATEGY_CBS);
-     io.steps = 8;
-     SnellTechniqueOptions o = snellTechniqueOptions();
-     o.back = io; o.exitMode = SNELL_EXIT_SCENE; o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
-options (strategy constants, the values of SnellIntersectOptions.strategy):
-  SNELL_STRATEGY_SINGLE         0  snellIntersectSingleSample (1 fetch)
-  SNELL_STRATEGY_PLANE_NORMAL   1  snellIntersectPlaneNormal, `steps` iterations
-  SNELL_STRATEGY_PLANE_DEPTH    2  snellIntersectPlaneDepth, `steps` iterations,
-                                   reads the pyramid texture as depth mips
-  SNELL_STRATEGY_CBS            3  snellConservativeBinarySearch, `steps` steps
-  SNELL_STRATEGY_BINARY         4  snellBinarySearch, `steps` steps
-  SNELL_STRATEGY_LINEAR_BINARY  5  snellLinearBinarySearch, `steps` linear +
-                                   `refineSteps` binary steps
-  SNELL_STRATEGY_LINEAR_MARCH   6  snellLinearMarch, `steps` steps, `refineSteps`
-                                   bisections, over `maxDistance`
-  SNELL_STRATEGY_DDA            7  snellDdaMarch, `steps`, `stride`, `thickness`,
-                                   `maxDistance`
-  SNELL_STRATEGY_WYMAN          8  Wyman 2005 distance interpolation (first slot
-                                   of snellTwoInterfaceTrace only; it needs the
-                                   per-vertex d_N). snellIntersectWith treats it
-                                   as SINGLE, which is Wyman's estimate with
-                                   d = d_V (ratio 1)
-  range sources (searches): SNELL_RANGE_PYRAMID 0 (top level of the pyramid
-  texture, snellDepthRangeFromPyramid), SNELL_RANGE_EXPLICIT 1 (zNearest and
-  zFarthest fields: a bounding box, snellDepthRangeFromBox)
+description: the knobs of a two-interface refraction technique: how the back
+  face is found (any intersection strategy in the back slot, or Wyman's
+  distance interpolation), which strategy fills the exit and reflection slots
+  (intersect/intersect_with.glsl: SnellIntersectOptions, one per slot), and
+  the optics and shading options. The constructor fills every field with the
+  documented default; presets (technique_presets.glsl) start from it.
+use: SnellTechniqueOptions o = snellTechniqueOptions();
+     o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
+     o.back.cbsSteps = 8;
+     o.exitMode = SNELL_EXIT_SCENE;
+     o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
+options:
+  back methods (how P2 is found, snellTwoInterfaceTrace): SNELL_BACK_INTERSECT
+  0 (the back slot's strategy against the back-face depth buffer),
+  SNELL_BACK_WYMAN 1 (Wyman 2005 distance interpolation between d_V and the
+  per-vertex d_N; the back slot is not read)
   exit modes: SNELL_EXIT_ENVIRONMENT 0 (distant environment along T2),
   SNELL_EXIT_SCENE 1 (the opaque scene's depth/colour buffers, exit slot)
   reflection modes (the first surface's reflected ray R, when reflection is
@@ -4380,20 +4574,8 @@ options (strategy constants, the values of SnellIntersectOptions.strategy):
   (environment along T2), SNELL_FALLBACK_EDGE_FADE 1 (scene colour at the
   clamped projection of P2 + fallbackDistance T2, faded to the environment
   over edgeFadeWidth of uv near and beyond the screen edge)
-contract (defaults):
-  SnellIntersectOptions: steps = SNELL_CBS_STEPS (CBS), SNELL_BINARY_SEARCH_STEPS
-  (BINARY), SNELL_LINEAR_SEARCH_STEPS (LINEAR_BINARY), SNELL_PLANE_ITERATIONS
-  (planes), SNELL_LINEAR_MARCH_STEPS, SNELL_DDA_STEPS, 0 (SINGLE, WYMAN);
-  refineSteps = SNELL_BINARY_SEARCH_STEPS (LINEAR_BINARY),
-  SNELL_LINEAR_MARCH_REFINE_STEPS (LINEAR_MARCH), else 0; maxDistance =
-  SNELL_LINEAR_MARCH_MAX_DISTANCE (LINEAR_MARCH) or SNELL_DDA_MAX_DISTANCE;
-  thickness = SNELL_DDA_THICKNESS; stride = SNELL_DDA_STRIDE; normalLod = 0;
-  maxLod = -1 (the pyramid's top level); rangeSource = PYRAMID; zNearest =
-  zFarthest = 0; depthFilter = SNELL_DEPTH_FILTER_NEAREST (how the strategy reads
-  the depth buffer: intersect/depth_surface.glsl; the dispatcher hands it to the
-  strategy in the surface's depthFilter field). An unknown strategy is stored as given (snellIntersectWith
-  answers it with a miss).
-  SnellTechniqueOptions: back = CBS, exit = PLANE_NORMAL, exitMode =
+contract (defaults): backMethod = INTERSECT, back = CBS, exit =
+  PLANE_NORMAL (each slot with snellIntersectOptions' defaults), exitMode =
   ENVIRONMENT, fallback = ENVIRONMENT, fallbackDistance = 1, edgeFadeWidth =
   0.1, tirPolicy = SNELL_TIR_CRITICAL (Wyman 2005, O&B 2007 sec. 5), ior = 1.5,
   iorOutside = 1, dispersion = 1 (one trace; 3 = one per channel with iors,
@@ -4401,13 +4583,14 @@ contract (defaults):
   (1.5, 1.5, 1.5), absorption = 0 (Beer-Lambert sigma per channel, per view
   unit), reflection = true (Fresnel-weighted reflection at the first
   interface), reflectionMode = ENVIRONMENT, reflect = LINEAR_MARCH (its
-  defaults; read only in SCENE mode), roughness = 0, sceneColorLevels = environmentLevels = 1
-  (mip levels for snellRoughnessToLod), envX/envY/envZ = the columns of the
-  world-from-view rotation used for environment lookups (identity).
+  defaults; read only in SCENE mode), roughness = 0, sceneColorLevels =
+  environmentLevels = 1 (mip levels for snellRoughnessToLod), envX/envY/envZ
+  = the columns of the world-from-view rotation used for environment lookups
+  (identity).
 source: the composition of DESIGN.md sec. 2 (a technique = optics, an
   intersector against the back faces, optics, an intersector against the scene
-  or an environment lookup); Oliveira & Brauwers 2007 sec. 3; Mayer &
-  Assarsson, "Constant-Time Light Refraction Simulation".
+  or an environment lookup); Oliveira & Brauwers 2007 sec. 3; Wyman 2005;
+  Mayer & Assarsson, "Constant-Time Light Refraction Simulation".
 */
 #ifndef SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
 #define SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
@@ -4415,24 +4598,8 @@ source: the composition of DESIGN.md sec. 2 (a technique = optics, an
 
 
 
-
-
-
-
-
-
-#define SNELL_STRATEGY_SINGLE 0
-#define SNELL_STRATEGY_PLANE_NORMAL 1
-#define SNELL_STRATEGY_PLANE_DEPTH 2
-#define SNELL_STRATEGY_CBS 3
-#define SNELL_STRATEGY_BINARY 4
-#define SNELL_STRATEGY_LINEAR_BINARY 5
-#define SNELL_STRATEGY_LINEAR_MARCH 6
-#define SNELL_STRATEGY_DDA 7
-#define SNELL_STRATEGY_WYMAN 8
-
-#define SNELL_RANGE_PYRAMID 0
-#define SNELL_RANGE_EXPLICIT 1
+#define SNELL_BACK_INTERSECT 0
+#define SNELL_BACK_WYMAN 1
 
 #define SNELL_EXIT_ENVIRONMENT 0
 #define SNELL_EXIT_SCENE 1
@@ -4443,22 +4610,8 @@ source: the composition of DESIGN.md sec. 2 (a technique = optics, an
 #define SNELL_REFLECT_ENVIRONMENT 0
 #define SNELL_REFLECT_SCENE 1
 
-struct SnellIntersectOptions {
-  int strategy;
-  int steps;
-  int refineSteps;
-  float maxDistance;
-  float thickness;
-  float stride;
-  float normalLod;
-  int maxLod;
-  int rangeSource;
-  float zNearest;
-  float zFarthest;
-  int depthFilter;
-};
-
 struct SnellTechniqueOptions {
+  int backMethod;
   SnellIntersectOptions back;
   SnellIntersectOptions exit;
   int exitMode;
@@ -4482,41 +4635,9 @@ struct SnellTechniqueOptions {
   vec3 envZ;
 };
 
-SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
-  SnellIntersectOptions o;
-  o.strategy = strategy;
-  o.steps = 0;
-  o.refineSteps = 0;
-  o.maxDistance = SNELL_DDA_MAX_DISTANCE;
-  o.thickness = SNELL_DDA_THICKNESS;
-  o.stride = SNELL_DDA_STRIDE;
-  o.normalLod = 0.0f;
-  o.maxLod = -1;
-  o.rangeSource = SNELL_RANGE_PYRAMID;
-  o.zNearest = 0.0f;
-  o.zFarthest = 0.0f;
-  o.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
-  if (strategy == SNELL_STRATEGY_CBS) {
-    o.steps = SNELL_CBS_STEPS;
-  } else if (strategy == SNELL_STRATEGY_BINARY) {
-    o.steps = SNELL_BINARY_SEARCH_STEPS;
-  } else if (strategy == SNELL_STRATEGY_LINEAR_BINARY) {
-    o.steps = SNELL_LINEAR_SEARCH_STEPS;
-    o.refineSteps = SNELL_BINARY_SEARCH_STEPS;
-  } else if (strategy == SNELL_STRATEGY_PLANE_NORMAL || strategy == SNELL_STRATEGY_PLANE_DEPTH) {
-    o.steps = SNELL_PLANE_ITERATIONS;
-  } else if (strategy == SNELL_STRATEGY_LINEAR_MARCH) {
-    o.steps = SNELL_LINEAR_MARCH_STEPS;
-    o.refineSteps = SNELL_LINEAR_MARCH_REFINE_STEPS;
-    o.maxDistance = SNELL_LINEAR_MARCH_MAX_DISTANCE;
-  } else if (strategy == SNELL_STRATEGY_DDA) {
-    o.steps = SNELL_DDA_STEPS;
-  }
-  return o;
-}
-
 SNELL_FN SnellTechniqueOptions snellTechniqueOptions() {
   SnellTechniqueOptions o;
+  o.backMethod = SNELL_BACK_INTERSECT;
   o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
   o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
   o.exitMode = SNELL_EXIT_ENVIRONMENT;
@@ -4557,7 +4678,8 @@ presets (back slot / exit slot):
                                    (their suggested speed-up: no reduction
                                    pass); the numbers from snellDepthRangeFromBox;
                                    back slot only, the exit slot keeps the pyramid
-  snellPresetIsr()                 Wyman 2005 (ISR): distance interpolation
+  snellPresetIsr()                 Wyman 2005 (ISR): backMethod
+                                   SNELL_BACK_WYMAN, distance interpolation
                                    between d_V and the per-vertex d_N /
                                    single sample
   snellPresetPlaneNormal(n)        Mayer & Assarsson, normal-based plane, n
@@ -4576,8 +4698,9 @@ presets (back slot / exit slot):
                                    most ~1 px, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS
                                    bisections) on bilinear depth reads
                                    (SNELL_DEPTH_FILTER_BILINEAR: exact on
-                                   planes between texel centres) / the same; set back.maxDistance
-                                   and exit.maxDistance to the depths the
+                                   planes between texel centres) / the same;
+                                   set back.marchMaxDistance and
+                                   exit.marchMaxDistance to the depths the
                                    object and the scene span
 the technique table (the one list of named techniques: snell-lab's
   --technique names, the benchmarks and the tests all draw on it; names and
@@ -4620,41 +4743,41 @@ SNELL_FN SnellTechniqueOptions snellTechniquePresetSlots(int backStrategy, int e
   return o;
 }
 
-/* Oliveira & Brauwers 2007, sec. 3.3: CBS with c = 5 */
+/* Oliveira & Brauwers 2007, sec. 3.3: CBS with c = 5 (SNELL_CBS_STEPS' default) */
 SNELL_FN SnellTechniqueOptions snellPresetDir() {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_CBS, SNELL_STRATEGY_CBS);
-  o.back.steps = 5;
-  o.exit.steps = 5;
-  return o;
+  return snellTechniquePresetSlots(SNELL_STRATEGY_CBS, SNELL_STRATEGY_CBS);
 }
 
 /* Oliveira & Brauwers 2007, sec. 6: bounding-box range instead of the reduction */
 SNELL_FN SnellTechniqueOptions snellPresetDirBounds(float zNearest, float zFarthest) {
   SnellTechniqueOptions o = snellPresetDir();
   o.back.rangeSource = SNELL_RANGE_EXPLICIT;
-  o.back.zNearest = zNearest;
-  o.back.zFarthest = zFarthest;
+  o.back.range.zNearest = zNearest;
+  o.back.range.zFarthest = zFarthest;
+  o.back.range.valid = true;
   return o;
 }
 
-/* Wyman 2005 (O&B 2007 eqs. 1-2) */
+/* Wyman 2005 (O&B 2007 eqs. 1-2): the trace's Wyman variant; the exit slot samples once */
 SNELL_FN SnellTechniqueOptions snellPresetIsr() {
-  return snellTechniquePresetSlots(SNELL_STRATEGY_WYMAN, SNELL_STRATEGY_SINGLE);
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
+  o.backMethod = SNELL_BACK_WYMAN;
+  return o;
 }
 
 /* Mayer & Assarsson, method 1 + step 5 */
 SNELL_FN SnellTechniqueOptions snellPresetPlaneNormal(int iterations) {
   SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_NORMAL, SNELL_STRATEGY_PLANE_NORMAL);
-  o.back.steps = iterations;
-  o.exit.steps = iterations;
+  o.back.planeIterations = iterations;
+  o.exit.planeIterations = iterations;
   return o;
 }
 
 /* Mayer & Assarsson, method 2 + step 5 */
 SNELL_FN SnellTechniqueOptions snellPresetPlaneDepth(int iterations) {
   SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_DEPTH, SNELL_STRATEGY_PLANE_DEPTH);
-  o.back.steps = iterations;
-  o.exit.steps = iterations;
+  o.back.planeIterations = iterations;
+  o.exit.planeIterations = iterations;
   return o;
 }
 
@@ -4673,10 +4796,10 @@ SNELL_FN SnellTechniqueOptions snellPresetDdaMarch() {
 /* The image-space bound: the linear march at its limits, both slots. */
 SNELL_FN SnellTechniqueOptions snellPresetImageSpaceBound() {
   SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
-  o.back.steps = SNELL_LINEAR_MARCH_MAX_STEPS;
-  o.back.refineSteps = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
-  o.exit.steps = SNELL_LINEAR_MARCH_MAX_STEPS;
-  o.exit.refineSteps = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  o.back.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  o.back.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  o.exit.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  o.exit.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
   o.back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
   o.exit.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
   return o;
@@ -4731,149 +4854,31 @@ SNELL_FN SnellTechniqueOptions snellTechniquePreset(int technique) {
 
 #endif
 /*
-description: the strategy dispatcher: one call that runs any intersection
-  strategy of intersect/ against a depth buffer, chosen by an int constant, so
-  the back-face slot and the scene slot of a technique are interchangeable.
-use: SnellHit h = snellIntersectWith(SNELL_STRATEGY_CBS, origin, dir, depthTex, normalTex,
-                                     pyramidTex, surface, snellIntersectOptions(SNELL_STRATEGY_CBS));
-  strategy    SNELL_STRATEGY_* (technique_options.glsl); usually o.strategy
-  origin, dir view-space ray (P1, T1 for the back faces; P2, T2 for the scene)
-  depthTex    the depth buffer `surface` describes
-  normalTex   its view-space normals (PLANE_NORMAL only; any texture otherwise)
-  pyramidTex  its depth min/max pyramid (intersect/depth_pyramid.glsl), full mip
-              chain: the search range for CBS / BINARY / LINEAR_BINARY when
-              o.rangeSource is SNELL_RANGE_PYRAMID, and the depth mips of
-              PLANE_DEPTH (its .x is the mean depth value)
-  o           parameters (snellIntersectOptions(strategy) gives the defaults)
-options:
-  SNELL_TECHNIQUE_STRATEGIES  bit mask of the strategies compiled in (bit k =
-                              strategy k, 0x1FF = all, the default). Every
-                              technique call inlines the dispatcher, and with
-                              it every strategy: a shader that uses one or two
-                              presets compiles much faster (llvmpipe: minutes
-                              -> seconds) with only their bits, e.g.
-                              #define SNELL_TECHNIQUE_STRATEGIES ((1 << SNELL_STRATEGY_CBS) | 1)
-                              A strategy left out answers snellHitMiss(0).
-  the rest: technique_options.glsl
-contract:
-  - SINGLE and WYMAN: snellIntersectSingleSample(origin, dir, depthTex, surface).
-  - PLANE_NORMAL: snellIntersectPlaneNormal(.., normalTex, surface, o.normalLod, o.steps).
-  - PLANE_DEPTH: snellIntersectPlaneDepth(origin, dir, pyramidTex, surface,
-    maxLod, o.steps), maxLod = o.maxLod, or snellTextureTopLod(pyramidTex) when
-    o.maxLod < 0.
-  - CBS / BINARY / LINEAR_BINARY: the range [zNearest, zFarthest] is
-    snellDepthRangeFromPyramid(pyramidTex) (1 fetch, counted in h.fetches) or
-    (o.zNearest, o.zFarthest); an invalid pyramid range is a miss with that
-    fetch; then the strategy with o.steps (and o.refineSteps for LINEAR_BINARY).
-  - LINEAR_MARCH: snellLinearMarch(.., o.maxDistance, o.steps, o.refineSteps);
-    DDA: snellDdaMarch(.., o.maxDistance, o.thickness, o.stride, o.steps).
-  - any other strategy value: snellHitMiss(0).
-  - every result is the strategy's own SnellHit (contracts in intersect/), with
-    the range fetch added.
-  - the strategy reads the surface with o.depthFilter (the surface's
-    depthFilter field is replaced by it).
-source: DESIGN.md sec. 2 ("every intersector is interchangeable in both
-  slots"); the strategies' own sources.
-*/
-#ifndef SNELL_SHADE_TECHNIQUE_INTERSECT_GLSL
-#define SNELL_SHADE_TECHNIQUE_INTERSECT_GLSL
-
-
-
-
-
-
-
-
-
-
-
-
-
-
-#ifndef SNELL_TECHNIQUE_STRATEGIES
-#  define SNELL_TECHNIQUE_STRATEGIES 0x1FF
-#endif
-/* true when strategy k is compiled in (a constant expression: the branch folds away) */
-#define SNELL_TECHNIQUE_HAS(k) ((SNELL_TECHNIQUE_STRATEGIES & (1 << (k))) != 0)
-
-SNELL_FN SnellHit snellIntersectWith(int strategy, vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
-                                     SNELL_TEX2D pyramidTex, SnellDepthSurface readAs, SnellIntersectOptions o) {
-  SnellDepthSurface surface = readAs;
-  surface.depthFilter = o.depthFilter;
-  if ((SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_SINGLE) && strategy == SNELL_STRATEGY_SINGLE) ||
-      (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_WYMAN) && strategy == SNELL_STRATEGY_WYMAN)) {
-    return snellIntersectSingleSample(origin, dir, depthTex, surface);
-  }
-  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_PLANE_NORMAL) && strategy == SNELL_STRATEGY_PLANE_NORMAL) {
-    return snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, surface, o.normalLod, o.steps);
-  }
-  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_PLANE_DEPTH) && strategy == SNELL_STRATEGY_PLANE_DEPTH) {
-    int maxLod = o.maxLod >= 0 ? o.maxLod : snellTextureTopLod(pyramidTex);
-    return snellIntersectPlaneDepth(origin, dir, pyramidTex, surface, maxLod, o.steps);
-  }
-  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_LINEAR_MARCH) && strategy == SNELL_STRATEGY_LINEAR_MARCH) {
-    return snellLinearMarch(origin, dir, depthTex, surface, o.maxDistance, o.steps, o.refineSteps);
-  }
-  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_DDA) && strategy == SNELL_STRATEGY_DDA) {
-    return snellDdaMarch(origin, dir, depthTex, surface, o.maxDistance, o.thickness, o.stride, o.steps);
-  }
-  bool cbs = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_CBS) && strategy == SNELL_STRATEGY_CBS;
-  bool binary = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_BINARY) && strategy == SNELL_STRATEGY_BINARY;
-  bool linearBinary = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_LINEAR_BINARY) && strategy == SNELL_STRATEGY_LINEAR_BINARY;
-  if (!cbs && !binary && !linearBinary) {
-    return snellHitMiss(0);
-  }
-  SnellDepthRange range;
-  int rangeFetches = 0;
-  if (o.rangeSource == SNELL_RANGE_EXPLICIT) {
-    range.zNearest = o.zNearest;
-    range.zFarthest = o.zFarthest;
-    range.valid = true;
-  } else {
-    range = snellDepthRangeFromPyramid(pyramidTex);
-    rangeFetches = 1;
-  }
-  if (!range.valid) {
-    return snellHitMiss(rangeFetches);
-  }
-  SnellHit h;
-  if (cbs) {
-    h = snellConservativeBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps);
-  } else if (binary) {
-    h = snellBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps);
-  } else {
-    h = snellLinearBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps,
-                                o.refineSteps);
-  }
-  h.fetches = h.fetches + rangeFetches;
-  return h;
-}
-
-#endif
-/*
 description: the geometry of two-interface refraction: refract the view ray at
   the front face, find where the refracted ray T1 leaves the object in the
-  back-face depth buffer with any intersection strategy (or Wyman's distance
-  interpolation), refract again with the back-face normal found there. The
+  back-face depth buffer (with the back slot's intersection strategy, or, in
+  Wyman's variant, by his distance interpolation), refract again with the
+  back-face normal found there. The
   exit ray (P2, T2) is then resolved by two_interface_shade.glsl against the
   opaque scene or the environment.
 use: SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN,
-         backDepth, backNormal, backPyramid, backSurface, o.back, o.tirPolicy);
+         backDepth, backNormal, backPyramid, backSurface, o);
   frontPosition  P1: view-space position of the front-face fragment (camera at
                  the origin, so the view ray V is frontPosition itself)
   frontNormal    N1: its normal (either orientation, any length)
   eta            n_outside / n_object (snellIorToEta(1.0f, 1.5f) for glass in air)
   dN             Wyman's d_N: thickness along -N1, interpolated from the per-vertex
                  values the host precomputes (include/snell/wyman_dn.hpp); read
-                 only by SNELL_STRATEGY_WYMAN
+                 only by Wyman's variant (o.backMethod SNELL_BACK_WYMAN)
   backDepth, backNormal, backPyramid, backSurface
                  the back-face pass: depth (GL_GREATER after clearing to the near
                  value), view-space normals, the depth min/max pyramid of that
                  depth (snellBuildDepthPyramid / examples/glsl/depth_pyramid.frag),
                  and how to read the depth (emptyDepth = the clear value)
-  o              the back slot's options (strategy and parameters)
-  tirPolicy      SNELL_TIR_ZERO / _CRITICAL / _REFLECT, both interfaces
+  o              the technique's options: o.backMethod, o.back (the back
+                 slot's strategy and parameters) and o.tirPolicy
+                 (SNELL_TIR_ZERO / _CRITICAL / _REFLECT, both interfaces) are
+                 read
 options: technique_options.glsl, and
   SNELL_TWO_INTERFACE_NORMAL_SAMPLE  how N2 is read from backNormal at the hit
                  uv: 1 (default) SNELL_SAMPLE_LOD at level 0 with the texture's
@@ -4882,18 +4887,19 @@ options: technique_options.glsl, and
                  containing the uv, as 0 does); 0 SNELL_TEXEL_FETCH of the texel
                  containing the uv (level 0)
 contract:
-  - T1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy). If it is
+  - T1 = snellRefract(frontPosition, frontNormal, eta, o.tirPolicy). If it is
     invalid or zero (NaN/zero inputs, eta not finite positive; TIR under ZERO
     when eta > 1), the path is invalid: valid = false, every vector 0, fetches 0.
-  - WYMAN: one sample of the back depth at the projection of P1 gives d_V =
-    |P1| (zBack / P1.z - 1) (front-to-back distance along the view ray); d =
-    snellWymanDistanceVec(P1, N1, T1, d_V, dN); P2 = P1 + d T1, accepted when
-    snellHitOnSurface(P2) is valid (the back buffer has a surface there; 2
-    fetches). Every other strategy: snellIntersectWith(o.strategy, P1, T1, ...).
+  - SNELL_BACK_WYMAN: one sample of the back depth at the projection of P1
+    gives d_V = |P1| (zBack / P1.z - 1) (front-to-back distance along the view
+    ray); d = snellWymanDistanceVec(P1, N1, T1, d_V, dN); P2 = P1 + d T1,
+    accepted when snellHitOnSurface(P2) is valid (the back buffer has a
+    surface there; 2 fetches). SNELL_BACK_INTERSECT (and any other value):
+    snellIntersectWith(P1, T1, back..., o.back).
   - on a hit: N2 = xyz of the back normal read at the hit uv, level 0
     (SNELL_TWO_INTERFACE_NORMAL_SAMPLE: filtered sample or texel fetch; 1
     fetch), normalized and flipped to face T1 (dot(N2, T1) <= 0); T2 =
-    snellRefract(T1, N2, 1 / eta, tirPolicy). hit = true, exitPoint = P2,
+    snellRefract(T1, N2, 1 / eta, o.tirPolicy). hit = true, exitPoint = P2,
     exitUv = the hit uv, exitNormal = N2, pathLength = |P2 - P1|, tir = TIR at
     the second interface (T2 follows the policy: critical-angle tangent or
     mirror; the reflected ray is not traced further).
@@ -4947,7 +4953,7 @@ struct SnellTwoInterfacePath {
 SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
                                                       SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
                                                       SNELL_TEX2D backPyramid, SnellDepthSurface back,
-                                                      SnellIntersectOptions o, int tirPolicy) {
+                                                      SnellTechniqueOptions o) {
   SnellTwoInterfacePath p;
   p.entryDirection = vec3(0.0f, 0.0f, 0.0f);
   p.exitPoint = vec3(0.0f, 0.0f, 0.0f);
@@ -4960,7 +4966,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.tir = false;
   p.fellBack = true;
   p.valid = false;
-  SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy);
+  SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, o.tirPolicy);
   if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_FINITE(frontPosition.x) ||
       !SNELL_FINITE(frontPosition.y) || !SNELL_FINITE(frontPosition.z)) {
     return p;
@@ -4971,7 +4977,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitDirection = t1;
   p.valid = true;
   SnellHit h = snellHitMiss(0);
-  if (o.strategy == SNELL_STRATEGY_WYMAN) {
+  if (o.backMethod == SNELL_BACK_WYMAN) {
     SnellScreenPoint sp = snellViewToUv(back.clipFromView, frontPosition);
     if (sp.valid && frontPosition.z < 0.0f) {
       SnellSurfaceSample b = snellSampleSurface(backDepth, sp.uv, back);
@@ -4983,7 +4989,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
       }
     }
   } else {
-    h = snellIntersectWith(o.strategy, frontPosition, t1, backDepth, backNormal, backPyramid, back, o);
+    h = snellIntersectWith(frontPosition, t1, backDepth, backNormal, backPyramid, back, o.back);
   }
   p.fetches = h.fetches;
   // length() squares first: it overflows beyond ~1.8e19 (Wyman's estimate with a huge dN).
@@ -5009,7 +5015,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     n = -n;
   }
   p.exitNormal = n;
-  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, tirPolicy);
+  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, o.tirPolicy);
   p.tir = r2.tir;
   if (!r2.valid || dot(r2.direction, r2.direction) == 0.0f) {
     return p;
@@ -5058,8 +5064,7 @@ contract (snellTwoInterfaceExit(origin, dir, ...)):
   - dir zero or not finite, or origin not finite: color 0, fellBack, 0 fetches.
   - ENVIRONMENT mode: color = SNELL_SAMPLE_ENVIRONMENT(env, world(dir), envLod).xyz,
     1 fetch, hit = snellHitMiss(0), fellBack false.
-  - SCENE mode: hit = snellIntersectWith(o.exit.strategy, origin, dir, scene...,
-    o.exit); valid: color = SNELL_SAMPLE_LOD(sceneColor, hit.uv, sceneLod).xyz
+  - SCENE mode: hit = snellIntersectWith(origin, dir, scene..., o.exit); valid: color = SNELL_SAMPLE_LOD(sceneColor, hit.uv, sceneLod).xyz
     (+1 fetch). Invalid (ray leaves the screen, points towards the camera where a
     search cannot follow, lands on an empty texel): fellBack = true and
     FALLBACK_ENVIRONMENT: the environment along dir; FALLBACK_EDGE_FADE: q =
@@ -5152,7 +5157,7 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
   float sceneLod = snellRoughnessToLod(o.roughness, o.sceneColorLevels);
   vec3 world = d.x * o.envX + d.y * o.envY + d.z * o.envZ;
   if (o.exitMode == SNELL_EXIT_SCENE) {
-    e.hit = snellIntersectWith(o.exit.strategy, origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, o.exit);
+    e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, o.exit);
     e.fetches = e.hit.fetches;
     if (e.hit.valid) {
       vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);
@@ -5193,8 +5198,8 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
                                                              SnellTechniqueOptions o) {
   bool three = o.dispersion == 3;
   float eta = snellIorToEta(o.iorOutside, three ? o.iors.y : o.ior);
-  SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, backDepth, backNormal,
-                                                   backPyramid, back, o.back, o.tirPolicy);
+  SnellTwoInterfacePath p =
+      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, backDepth, backNormal, backPyramid, back, o);
   SnellTwoInterfaceExit e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, sceneDepth, sceneNormal,
                                                   scenePyramid, sceneColor, scene, environment, o);
   vec3 transmitted = e.color * snellBeerLambert(o.absorption, p.pathLength);
@@ -5212,12 +5217,12 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   if (three) {
     SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal,
                                                       snellIorToEta(o.iorOutside, o.iors.x), dN, backDepth,
-                                                      backNormal, backPyramid, back, o.back, o.tirPolicy);
+                                                      backNormal, backPyramid, back, o);
     SnellTwoInterfaceExit er = snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, sceneDepth, sceneNormal,
                                                      scenePyramid, sceneColor, scene, environment, o);
     SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal,
                                                       snellIorToEta(o.iorOutside, o.iors.z), dN, backDepth,
-                                                      backNormal, backPyramid, back, o.back, o.tirPolicy);
+                                                      backNormal, backPyramid, back, o);
     SnellTwoInterfaceExit eb = snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, sceneDepth, sceneNormal,
                                                      scenePyramid, sceneColor, scene, environment, o);
     transmitted.x = er.color.x * snellBeerLambert(o.absorption, pr.pathLength).x;

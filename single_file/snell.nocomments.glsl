@@ -1844,6 +1844,119 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
 }
 
 #endif
+
+#ifndef SNELL_INTERSECT_INTERSECT_WITH_GLSL
+#define SNELL_INTERSECT_INTERSECT_WITH_GLSL
+
+#define SNELL_STRATEGY_SINGLE 0
+#define SNELL_STRATEGY_PLANE_NORMAL 1
+#define SNELL_STRATEGY_PLANE_DEPTH 2
+#define SNELL_STRATEGY_CBS 3
+#define SNELL_STRATEGY_BINARY 4
+#define SNELL_STRATEGY_LINEAR_BINARY 5
+#define SNELL_STRATEGY_LINEAR_MARCH 6
+#define SNELL_STRATEGY_DDA 7
+
+#define SNELL_RANGE_PYRAMID 0
+#define SNELL_RANGE_EXPLICIT 1
+
+#ifndef SNELL_INTERSECT_STRATEGIES
+#  define SNELL_INTERSECT_STRATEGIES 0xFF
+#endif
+#define SNELL_INTERSECT_HAS(k) ((SNELL_INTERSECT_STRATEGIES & (1 << (k))) != 0)
+
+struct SnellIntersectOptions {
+  int strategy;
+  int depthFilter;
+  int planeIterations;
+  float planeNormalLod;
+  int planeMaxLod;
+  int cbsSteps;
+  int binarySteps;
+  int linearSteps;
+  int rangeSource;
+  SnellDepthRange range;
+  int marchSteps;
+  int marchBisections;
+  float marchMaxDistance;
+  int ddaSteps;
+  float ddaMaxDistance;
+  float ddaThickness;
+  float ddaStride;
+};
+
+SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
+  SnellIntersectOptions o;
+  o.strategy = strategy;
+  o.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+  o.planeIterations = SNELL_PLANE_ITERATIONS;
+  o.planeNormalLod = 0.0f;
+  o.planeMaxLod = -1;
+  o.cbsSteps = SNELL_CBS_STEPS;
+  o.binarySteps = SNELL_BINARY_SEARCH_STEPS;
+  o.linearSteps = SNELL_LINEAR_SEARCH_STEPS;
+  o.rangeSource = SNELL_RANGE_PYRAMID;
+  o.range = snellDepthRangeInvalid();
+  o.marchSteps = SNELL_LINEAR_MARCH_STEPS;
+  o.marchBisections = SNELL_LINEAR_MARCH_REFINE_STEPS;
+  o.marchMaxDistance = SNELL_LINEAR_MARCH_MAX_DISTANCE;
+  o.ddaSteps = SNELL_DDA_STEPS;
+  o.ddaMaxDistance = SNELL_DDA_MAX_DISTANCE;
+  o.ddaThickness = SNELL_DDA_THICKNESS;
+  o.ddaStride = SNELL_DDA_STRIDE;
+  return o;
+}
+
+SNELL_FN SnellHit snellIntersectWith(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
+                                     SNELL_TEX2D pyramidTex, SnellDepthSurface readAs, SnellIntersectOptions o) {
+  SnellDepthSurface surface = readAs;
+  surface.depthFilter = o.depthFilter;
+  int strategy = o.strategy;
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_SINGLE) && strategy == SNELL_STRATEGY_SINGLE) {
+    return snellIntersectSingleSample(origin, dir, depthTex, surface);
+  }
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_PLANE_NORMAL) && strategy == SNELL_STRATEGY_PLANE_NORMAL) {
+    return snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, surface, o.planeNormalLod, o.planeIterations);
+  }
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_PLANE_DEPTH) && strategy == SNELL_STRATEGY_PLANE_DEPTH) {
+    int maxLod = o.planeMaxLod >= 0 ? o.planeMaxLod : snellTextureTopLod(pyramidTex);
+    return snellIntersectPlaneDepth(origin, dir, pyramidTex, surface, maxLod, o.planeIterations);
+  }
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_LINEAR_MARCH) && strategy == SNELL_STRATEGY_LINEAR_MARCH) {
+    return snellLinearMarch(origin, dir, depthTex, surface, o.marchMaxDistance, o.marchSteps, o.marchBisections);
+  }
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_DDA) && strategy == SNELL_STRATEGY_DDA) {
+    return snellDdaMarch(origin, dir, depthTex, surface, o.ddaMaxDistance, o.ddaThickness, o.ddaStride, o.ddaSteps);
+  }
+  bool cbs = SNELL_INTERSECT_HAS(SNELL_STRATEGY_CBS) && strategy == SNELL_STRATEGY_CBS;
+  bool binary = SNELL_INTERSECT_HAS(SNELL_STRATEGY_BINARY) && strategy == SNELL_STRATEGY_BINARY;
+  bool linearBinary = SNELL_INTERSECT_HAS(SNELL_STRATEGY_LINEAR_BINARY) && strategy == SNELL_STRATEGY_LINEAR_BINARY;
+  if (!cbs && !binary && !linearBinary) {
+    return snellHitMiss(0);
+  }
+  SnellDepthRange range = o.range;
+  int rangeFetches = 0;
+  if (o.rangeSource != SNELL_RANGE_EXPLICIT) {
+    range = snellDepthRangeFromPyramid(pyramidTex);
+    rangeFetches = 1;
+  }
+  if (!range.valid) {
+    return snellHitMiss(rangeFetches);
+  }
+  SnellHit h;
+  if (cbs) {
+    h = snellConservativeBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.cbsSteps);
+  } else if (binary) {
+    h = snellBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.binarySteps);
+  } else {
+    h = snellLinearBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.linearSteps,
+                                o.binarySteps);
+  }
+  h.fetches = h.fetches + rangeFetches;
+  return h;
+}
+
+#endif
 #endif
 #ifndef SNELL_SHADE_GLSL
 #define SNELL_SHADE_GLSL
@@ -2422,18 +2535,8 @@ SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
 #ifndef SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
 #define SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
 
-#define SNELL_STRATEGY_SINGLE 0
-#define SNELL_STRATEGY_PLANE_NORMAL 1
-#define SNELL_STRATEGY_PLANE_DEPTH 2
-#define SNELL_STRATEGY_CBS 3
-#define SNELL_STRATEGY_BINARY 4
-#define SNELL_STRATEGY_LINEAR_BINARY 5
-#define SNELL_STRATEGY_LINEAR_MARCH 6
-#define SNELL_STRATEGY_DDA 7
-#define SNELL_STRATEGY_WYMAN 8
-
-#define SNELL_RANGE_PYRAMID 0
-#define SNELL_RANGE_EXPLICIT 1
+#define SNELL_BACK_INTERSECT 0
+#define SNELL_BACK_WYMAN 1
 
 #define SNELL_EXIT_ENVIRONMENT 0
 #define SNELL_EXIT_SCENE 1
@@ -2444,22 +2547,8 @@ SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
 #define SNELL_REFLECT_ENVIRONMENT 0
 #define SNELL_REFLECT_SCENE 1
 
-struct SnellIntersectOptions {
-  int strategy;
-  int steps;
-  int refineSteps;
-  float maxDistance;
-  float thickness;
-  float stride;
-  float normalLod;
-  int maxLod;
-  int rangeSource;
-  float zNearest;
-  float zFarthest;
-  int depthFilter;
-};
-
 struct SnellTechniqueOptions {
+  int backMethod;
   SnellIntersectOptions back;
   SnellIntersectOptions exit;
   int exitMode;
@@ -2483,41 +2572,9 @@ struct SnellTechniqueOptions {
   vec3 envZ;
 };
 
-SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
-  SnellIntersectOptions o;
-  o.strategy = strategy;
-  o.steps = 0;
-  o.refineSteps = 0;
-  o.maxDistance = SNELL_DDA_MAX_DISTANCE;
-  o.thickness = SNELL_DDA_THICKNESS;
-  o.stride = SNELL_DDA_STRIDE;
-  o.normalLod = 0.0f;
-  o.maxLod = -1;
-  o.rangeSource = SNELL_RANGE_PYRAMID;
-  o.zNearest = 0.0f;
-  o.zFarthest = 0.0f;
-  o.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
-  if (strategy == SNELL_STRATEGY_CBS) {
-    o.steps = SNELL_CBS_STEPS;
-  } else if (strategy == SNELL_STRATEGY_BINARY) {
-    o.steps = SNELL_BINARY_SEARCH_STEPS;
-  } else if (strategy == SNELL_STRATEGY_LINEAR_BINARY) {
-    o.steps = SNELL_LINEAR_SEARCH_STEPS;
-    o.refineSteps = SNELL_BINARY_SEARCH_STEPS;
-  } else if (strategy == SNELL_STRATEGY_PLANE_NORMAL || strategy == SNELL_STRATEGY_PLANE_DEPTH) {
-    o.steps = SNELL_PLANE_ITERATIONS;
-  } else if (strategy == SNELL_STRATEGY_LINEAR_MARCH) {
-    o.steps = SNELL_LINEAR_MARCH_STEPS;
-    o.refineSteps = SNELL_LINEAR_MARCH_REFINE_STEPS;
-    o.maxDistance = SNELL_LINEAR_MARCH_MAX_DISTANCE;
-  } else if (strategy == SNELL_STRATEGY_DDA) {
-    o.steps = SNELL_DDA_STEPS;
-  }
-  return o;
-}
-
 SNELL_FN SnellTechniqueOptions snellTechniqueOptions() {
   SnellTechniqueOptions o;
+  o.backMethod = SNELL_BACK_INTERSECT;
   o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
   o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
   o.exitMode = SNELL_EXIT_ENVIRONMENT;
@@ -2555,35 +2612,35 @@ SNELL_FN SnellTechniqueOptions snellTechniquePresetSlots(int backStrategy, int e
 }
 
 SNELL_FN SnellTechniqueOptions snellPresetDir() {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_CBS, SNELL_STRATEGY_CBS);
-  o.back.steps = 5;
-  o.exit.steps = 5;
-  return o;
+  return snellTechniquePresetSlots(SNELL_STRATEGY_CBS, SNELL_STRATEGY_CBS);
 }
 
 SNELL_FN SnellTechniqueOptions snellPresetDirBounds(float zNearest, float zFarthest) {
   SnellTechniqueOptions o = snellPresetDir();
   o.back.rangeSource = SNELL_RANGE_EXPLICIT;
-  o.back.zNearest = zNearest;
-  o.back.zFarthest = zFarthest;
+  o.back.range.zNearest = zNearest;
+  o.back.range.zFarthest = zFarthest;
+  o.back.range.valid = true;
   return o;
 }
 
 SNELL_FN SnellTechniqueOptions snellPresetIsr() {
-  return snellTechniquePresetSlots(SNELL_STRATEGY_WYMAN, SNELL_STRATEGY_SINGLE);
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
+  o.backMethod = SNELL_BACK_WYMAN;
+  return o;
 }
 
 SNELL_FN SnellTechniqueOptions snellPresetPlaneNormal(int iterations) {
   SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_NORMAL, SNELL_STRATEGY_PLANE_NORMAL);
-  o.back.steps = iterations;
-  o.exit.steps = iterations;
+  o.back.planeIterations = iterations;
+  o.exit.planeIterations = iterations;
   return o;
 }
 
 SNELL_FN SnellTechniqueOptions snellPresetPlaneDepth(int iterations) {
   SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_DEPTH, SNELL_STRATEGY_PLANE_DEPTH);
-  o.back.steps = iterations;
-  o.exit.steps = iterations;
+  o.back.planeIterations = iterations;
+  o.exit.planeIterations = iterations;
   return o;
 }
 
@@ -2601,10 +2658,10 @@ SNELL_FN SnellTechniqueOptions snellPresetDdaMarch() {
 
 SNELL_FN SnellTechniqueOptions snellPresetImageSpaceBound() {
   SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
-  o.back.steps = SNELL_LINEAR_MARCH_MAX_STEPS;
-  o.back.refineSteps = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
-  o.exit.steps = SNELL_LINEAR_MARCH_MAX_STEPS;
-  o.exit.refineSteps = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  o.back.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  o.back.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  o.exit.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  o.exit.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
   o.back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
   o.exit.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
   return o;
@@ -2658,69 +2715,6 @@ SNELL_FN SnellTechniqueOptions snellTechniquePreset(int technique) {
 
 #endif
 
-#ifndef SNELL_SHADE_TECHNIQUE_INTERSECT_GLSL
-#define SNELL_SHADE_TECHNIQUE_INTERSECT_GLSL
-
-#ifndef SNELL_TECHNIQUE_STRATEGIES
-#  define SNELL_TECHNIQUE_STRATEGIES 0x1FF
-#endif
-#define SNELL_TECHNIQUE_HAS(k) ((SNELL_TECHNIQUE_STRATEGIES & (1 << (k))) != 0)
-
-SNELL_FN SnellHit snellIntersectWith(int strategy, vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
-                                     SNELL_TEX2D pyramidTex, SnellDepthSurface readAs, SnellIntersectOptions o) {
-  SnellDepthSurface surface = readAs;
-  surface.depthFilter = o.depthFilter;
-  if ((SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_SINGLE) && strategy == SNELL_STRATEGY_SINGLE) ||
-      (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_WYMAN) && strategy == SNELL_STRATEGY_WYMAN)) {
-    return snellIntersectSingleSample(origin, dir, depthTex, surface);
-  }
-  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_PLANE_NORMAL) && strategy == SNELL_STRATEGY_PLANE_NORMAL) {
-    return snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, surface, o.normalLod, o.steps);
-  }
-  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_PLANE_DEPTH) && strategy == SNELL_STRATEGY_PLANE_DEPTH) {
-    int maxLod = o.maxLod >= 0 ? o.maxLod : snellTextureTopLod(pyramidTex);
-    return snellIntersectPlaneDepth(origin, dir, pyramidTex, surface, maxLod, o.steps);
-  }
-  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_LINEAR_MARCH) && strategy == SNELL_STRATEGY_LINEAR_MARCH) {
-    return snellLinearMarch(origin, dir, depthTex, surface, o.maxDistance, o.steps, o.refineSteps);
-  }
-  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_DDA) && strategy == SNELL_STRATEGY_DDA) {
-    return snellDdaMarch(origin, dir, depthTex, surface, o.maxDistance, o.thickness, o.stride, o.steps);
-  }
-  bool cbs = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_CBS) && strategy == SNELL_STRATEGY_CBS;
-  bool binary = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_BINARY) && strategy == SNELL_STRATEGY_BINARY;
-  bool linearBinary = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_LINEAR_BINARY) && strategy == SNELL_STRATEGY_LINEAR_BINARY;
-  if (!cbs && !binary && !linearBinary) {
-    return snellHitMiss(0);
-  }
-  SnellDepthRange range;
-  int rangeFetches = 0;
-  if (o.rangeSource == SNELL_RANGE_EXPLICIT) {
-    range.zNearest = o.zNearest;
-    range.zFarthest = o.zFarthest;
-    range.valid = true;
-  } else {
-    range = snellDepthRangeFromPyramid(pyramidTex);
-    rangeFetches = 1;
-  }
-  if (!range.valid) {
-    return snellHitMiss(rangeFetches);
-  }
-  SnellHit h;
-  if (cbs) {
-    h = snellConservativeBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps);
-  } else if (binary) {
-    h = snellBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps);
-  } else {
-    h = snellLinearBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps,
-                                o.refineSteps);
-  }
-  h.fetches = h.fetches + rangeFetches;
-  return h;
-}
-
-#endif
-
 #ifndef SNELL_SHADE_TWO_INTERFACE_GLSL
 #define SNELL_SHADE_TWO_INTERFACE_GLSL
 
@@ -2745,7 +2739,7 @@ struct SnellTwoInterfacePath {
 SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
                                                       SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
                                                       SNELL_TEX2D backPyramid, SnellDepthSurface back,
-                                                      SnellIntersectOptions o, int tirPolicy) {
+                                                      SnellTechniqueOptions o) {
   SnellTwoInterfacePath p;
   p.entryDirection = vec3(0.0f, 0.0f, 0.0f);
   p.exitPoint = vec3(0.0f, 0.0f, 0.0f);
@@ -2758,7 +2752,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.tir = false;
   p.fellBack = true;
   p.valid = false;
-  SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy);
+  SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, o.tirPolicy);
   if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_FINITE(frontPosition.x) ||
       !SNELL_FINITE(frontPosition.y) || !SNELL_FINITE(frontPosition.z)) {
     return p;
@@ -2769,7 +2763,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitDirection = t1;
   p.valid = true;
   SnellHit h = snellHitMiss(0);
-  if (o.strategy == SNELL_STRATEGY_WYMAN) {
+  if (o.backMethod == SNELL_BACK_WYMAN) {
     SnellScreenPoint sp = snellViewToUv(back.clipFromView, frontPosition);
     if (sp.valid && frontPosition.z < 0.0f) {
       SnellSurfaceSample b = snellSampleSurface(backDepth, sp.uv, back);
@@ -2781,7 +2775,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
       }
     }
   } else {
-    h = snellIntersectWith(o.strategy, frontPosition, t1, backDepth, backNormal, backPyramid, back, o);
+    h = snellIntersectWith(frontPosition, t1, backDepth, backNormal, backPyramid, back, o.back);
   }
   p.fetches = h.fetches;
   float pathLength = length(h.position - frontPosition);
@@ -2806,7 +2800,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     n = -n;
   }
   p.exitNormal = n;
-  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, tirPolicy);
+  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, o.tirPolicy);
   p.tir = r2.tir;
   if (!r2.valid || dot(r2.direction, r2.direction) == 0.0f) {
     return p;
@@ -2860,7 +2854,7 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
   float sceneLod = snellRoughnessToLod(o.roughness, o.sceneColorLevels);
   vec3 world = d.x * o.envX + d.y * o.envY + d.z * o.envZ;
   if (o.exitMode == SNELL_EXIT_SCENE) {
-    e.hit = snellIntersectWith(o.exit.strategy, origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, o.exit);
+    e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, o.exit);
     e.fetches = e.hit.fetches;
     if (e.hit.valid) {
       vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);
@@ -2900,8 +2894,8 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
                                                              SnellTechniqueOptions o) {
   bool three = o.dispersion == 3;
   float eta = snellIorToEta(o.iorOutside, three ? o.iors.y : o.ior);
-  SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, backDepth, backNormal,
-                                                   backPyramid, back, o.back, o.tirPolicy);
+  SnellTwoInterfacePath p =
+      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, backDepth, backNormal, backPyramid, back, o);
   SnellTwoInterfaceExit e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, sceneDepth, sceneNormal,
                                                   scenePyramid, sceneColor, scene, environment, o);
   vec3 transmitted = e.color * snellBeerLambert(o.absorption, p.pathLength);
@@ -2919,12 +2913,12 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   if (three) {
     SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal,
                                                       snellIorToEta(o.iorOutside, o.iors.x), dN, backDepth,
-                                                      backNormal, backPyramid, back, o.back, o.tirPolicy);
+                                                      backNormal, backPyramid, back, o);
     SnellTwoInterfaceExit er = snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, sceneDepth, sceneNormal,
                                                      scenePyramid, sceneColor, scene, environment, o);
     SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal,
                                                       snellIorToEta(o.iorOutside, o.iors.z), dN, backDepth,
-                                                      backNormal, backPyramid, back, o.back, o.tirPolicy);
+                                                      backNormal, backPyramid, back, o);
     SnellTwoInterfaceExit eb = snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, sceneDepth, sceneNormal,
                                                      scenePyramid, sceneColor, scene, environment, o);
     transmitted.x = er.color.x * snellBeerLambert(o.absorption, pr.pathLength).x;

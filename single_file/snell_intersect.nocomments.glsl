@@ -1482,4 +1482,117 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
 }
 
 #endif
+
+#ifndef SNELL_INTERSECT_INTERSECT_WITH_GLSL
+#define SNELL_INTERSECT_INTERSECT_WITH_GLSL
+
+#define SNELL_STRATEGY_SINGLE 0
+#define SNELL_STRATEGY_PLANE_NORMAL 1
+#define SNELL_STRATEGY_PLANE_DEPTH 2
+#define SNELL_STRATEGY_CBS 3
+#define SNELL_STRATEGY_BINARY 4
+#define SNELL_STRATEGY_LINEAR_BINARY 5
+#define SNELL_STRATEGY_LINEAR_MARCH 6
+#define SNELL_STRATEGY_DDA 7
+
+#define SNELL_RANGE_PYRAMID 0
+#define SNELL_RANGE_EXPLICIT 1
+
+#ifndef SNELL_INTERSECT_STRATEGIES
+#  define SNELL_INTERSECT_STRATEGIES 0xFF
+#endif
+#define SNELL_INTERSECT_HAS(k) ((SNELL_INTERSECT_STRATEGIES & (1 << (k))) != 0)
+
+struct SnellIntersectOptions {
+  int strategy;
+  int depthFilter;
+  int planeIterations;
+  float planeNormalLod;
+  int planeMaxLod;
+  int cbsSteps;
+  int binarySteps;
+  int linearSteps;
+  int rangeSource;
+  SnellDepthRange range;
+  int marchSteps;
+  int marchBisections;
+  float marchMaxDistance;
+  int ddaSteps;
+  float ddaMaxDistance;
+  float ddaThickness;
+  float ddaStride;
+};
+
+SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
+  SnellIntersectOptions o;
+  o.strategy = strategy;
+  o.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+  o.planeIterations = SNELL_PLANE_ITERATIONS;
+  o.planeNormalLod = 0.0f;
+  o.planeMaxLod = -1;
+  o.cbsSteps = SNELL_CBS_STEPS;
+  o.binarySteps = SNELL_BINARY_SEARCH_STEPS;
+  o.linearSteps = SNELL_LINEAR_SEARCH_STEPS;
+  o.rangeSource = SNELL_RANGE_PYRAMID;
+  o.range = snellDepthRangeInvalid();
+  o.marchSteps = SNELL_LINEAR_MARCH_STEPS;
+  o.marchBisections = SNELL_LINEAR_MARCH_REFINE_STEPS;
+  o.marchMaxDistance = SNELL_LINEAR_MARCH_MAX_DISTANCE;
+  o.ddaSteps = SNELL_DDA_STEPS;
+  o.ddaMaxDistance = SNELL_DDA_MAX_DISTANCE;
+  o.ddaThickness = SNELL_DDA_THICKNESS;
+  o.ddaStride = SNELL_DDA_STRIDE;
+  return o;
+}
+
+SNELL_FN SnellHit snellIntersectWith(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
+                                     SNELL_TEX2D pyramidTex, SnellDepthSurface readAs, SnellIntersectOptions o) {
+  SnellDepthSurface surface = readAs;
+  surface.depthFilter = o.depthFilter;
+  int strategy = o.strategy;
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_SINGLE) && strategy == SNELL_STRATEGY_SINGLE) {
+    return snellIntersectSingleSample(origin, dir, depthTex, surface);
+  }
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_PLANE_NORMAL) && strategy == SNELL_STRATEGY_PLANE_NORMAL) {
+    return snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, surface, o.planeNormalLod, o.planeIterations);
+  }
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_PLANE_DEPTH) && strategy == SNELL_STRATEGY_PLANE_DEPTH) {
+    int maxLod = o.planeMaxLod >= 0 ? o.planeMaxLod : snellTextureTopLod(pyramidTex);
+    return snellIntersectPlaneDepth(origin, dir, pyramidTex, surface, maxLod, o.planeIterations);
+  }
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_LINEAR_MARCH) && strategy == SNELL_STRATEGY_LINEAR_MARCH) {
+    return snellLinearMarch(origin, dir, depthTex, surface, o.marchMaxDistance, o.marchSteps, o.marchBisections);
+  }
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_DDA) && strategy == SNELL_STRATEGY_DDA) {
+    return snellDdaMarch(origin, dir, depthTex, surface, o.ddaMaxDistance, o.ddaThickness, o.ddaStride, o.ddaSteps);
+  }
+  bool cbs = SNELL_INTERSECT_HAS(SNELL_STRATEGY_CBS) && strategy == SNELL_STRATEGY_CBS;
+  bool binary = SNELL_INTERSECT_HAS(SNELL_STRATEGY_BINARY) && strategy == SNELL_STRATEGY_BINARY;
+  bool linearBinary = SNELL_INTERSECT_HAS(SNELL_STRATEGY_LINEAR_BINARY) && strategy == SNELL_STRATEGY_LINEAR_BINARY;
+  if (!cbs && !binary && !linearBinary) {
+    return snellHitMiss(0);
+  }
+  SnellDepthRange range = o.range;
+  int rangeFetches = 0;
+  if (o.rangeSource != SNELL_RANGE_EXPLICIT) {
+    range = snellDepthRangeFromPyramid(pyramidTex);
+    rangeFetches = 1;
+  }
+  if (!range.valid) {
+    return snellHitMiss(rangeFetches);
+  }
+  SnellHit h;
+  if (cbs) {
+    h = snellConservativeBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.cbsSteps);
+  } else if (binary) {
+    h = snellBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.binarySteps);
+  } else {
+    h = snellLinearBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.linearSteps,
+                                o.binarySteps);
+  }
+  h.fetches = h.fetches + rangeFetches;
+  return h;
+}
+
+#endif
 #endif

@@ -1646,37 +1646,22 @@ SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
 
 #endif
 /*
-description: the knobs of a two-interface refraction technique: which
-  intersection strategy fills each slot (GLSL has no function pointers, so a
-  strategy is an int constant that snellIntersectWith dispatches on), its
-  parameters, and the optics and shading options. Both structs come with a
-  constructor that fills every field with the documented default; presets
-  (technique_presets.glsl) start from these.
-use: SnellIntersectOptions io = snellIntersectOptions(SNELL_STRATEGY_CBS);
-     io.steps = 8;
-     SnellTechniqueOptions o = snellTechniqueOptions();
-     o.back = io; o.exitMode = SNELL_EXIT_SCENE; o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
-options (strategy constants, the values of SnellIntersectOptions.strategy):
-  SNELL_STRATEGY_SINGLE         0  snellIntersectSingleSample (1 fetch)
-  SNELL_STRATEGY_PLANE_NORMAL   1  snellIntersectPlaneNormal, `steps` iterations
-  SNELL_STRATEGY_PLANE_DEPTH    2  snellIntersectPlaneDepth, `steps` iterations,
-                                   reads the pyramid texture as depth mips
-  SNELL_STRATEGY_CBS            3  snellConservativeBinarySearch, `steps` steps
-  SNELL_STRATEGY_BINARY         4  snellBinarySearch, `steps` steps
-  SNELL_STRATEGY_LINEAR_BINARY  5  snellLinearBinarySearch, `steps` linear +
-                                   `refineSteps` binary steps
-  SNELL_STRATEGY_LINEAR_MARCH   6  snellLinearMarch, `steps` steps, `refineSteps`
-                                   bisections, over `maxDistance`
-  SNELL_STRATEGY_DDA            7  snellDdaMarch, `steps`, `stride`, `thickness`,
-                                   `maxDistance`
-  SNELL_STRATEGY_WYMAN          8  Wyman 2005 distance interpolation (first slot
-                                   of snellTwoInterfaceTrace only; it needs the
-                                   per-vertex d_N). snellIntersectWith treats it
-                                   as SINGLE, which is Wyman's estimate with
-                                   d = d_V (ratio 1)
-  range sources (searches): SNELL_RANGE_PYRAMID 0 (top level of the pyramid
-  texture, snellDepthRangeFromPyramid), SNELL_RANGE_EXPLICIT 1 (zNearest and
-  zFarthest fields: a bounding box, snellDepthRangeFromBox)
+description: the knobs of a two-interface refraction technique: how the back
+  face is found (any intersection strategy in the back slot, or Wyman's
+  distance interpolation), which strategy fills the exit and reflection slots
+  (intersect/intersect_with.glsl: SnellIntersectOptions, one per slot), and
+  the optics and shading options. The constructor fills every field with the
+  documented default; presets (technique_presets.glsl) start from it.
+use: SnellTechniqueOptions o = snellTechniqueOptions();
+     o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
+     o.back.cbsSteps = 8;
+     o.exitMode = SNELL_EXIT_SCENE;
+     o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
+options:
+  back methods (how P2 is found, snellTwoInterfaceTrace): SNELL_BACK_INTERSECT
+  0 (the back slot's strategy against the back-face depth buffer),
+  SNELL_BACK_WYMAN 1 (Wyman 2005 distance interpolation between d_V and the
+  per-vertex d_N; the back slot is not read)
   exit modes: SNELL_EXIT_ENVIRONMENT 0 (distant environment along T2),
   SNELL_EXIT_SCENE 1 (the opaque scene's depth/colour buffers, exit slot)
   reflection modes (the first surface's reflected ray R, when reflection is
@@ -1688,20 +1673,8 @@ options (strategy constants, the values of SnellIntersectOptions.strategy):
   (environment along T2), SNELL_FALLBACK_EDGE_FADE 1 (scene colour at the
   clamped projection of P2 + fallbackDistance T2, faded to the environment
   over edgeFadeWidth of uv near and beyond the screen edge)
-contract (defaults):
-  SnellIntersectOptions: steps = SNELL_CBS_STEPS (CBS), SNELL_BINARY_SEARCH_STEPS
-  (BINARY), SNELL_LINEAR_SEARCH_STEPS (LINEAR_BINARY), SNELL_PLANE_ITERATIONS
-  (planes), SNELL_LINEAR_MARCH_STEPS, SNELL_DDA_STEPS, 0 (SINGLE, WYMAN);
-  refineSteps = SNELL_BINARY_SEARCH_STEPS (LINEAR_BINARY),
-  SNELL_LINEAR_MARCH_REFINE_STEPS (LINEAR_MARCH), else 0; maxDistance =
-  SNELL_LINEAR_MARCH_MAX_DISTANCE (LINEAR_MARCH) or SNELL_DDA_MAX_DISTANCE;
-  thickness = SNELL_DDA_THICKNESS; stride = SNELL_DDA_STRIDE; normalLod = 0;
-  maxLod = -1 (the pyramid's top level); rangeSource = PYRAMID; zNearest =
-  zFarthest = 0; depthFilter = SNELL_DEPTH_FILTER_NEAREST (how the strategy reads
-  the depth buffer: intersect/depth_surface.glsl; the dispatcher hands it to the
-  strategy in the surface's depthFilter field). An unknown strategy is stored as given (snellIntersectWith
-  answers it with a miss).
-  SnellTechniqueOptions: back = CBS, exit = PLANE_NORMAL, exitMode =
+contract (defaults): backMethod = INTERSECT, back = CBS, exit =
+  PLANE_NORMAL (each slot with snellIntersectOptions' defaults), exitMode =
   ENVIRONMENT, fallback = ENVIRONMENT, fallbackDistance = 1, edgeFadeWidth =
   0.1, tirPolicy = SNELL_TIR_CRITICAL (Wyman 2005, O&B 2007 sec. 5), ior = 1.5,
   iorOutside = 1, dispersion = 1 (one trace; 3 = one per channel with iors,
@@ -1709,18 +1682,140 @@ contract (defaults):
   (1.5, 1.5, 1.5), absorption = 0 (Beer-Lambert sigma per channel, per view
   unit), reflection = true (Fresnel-weighted reflection at the first
   interface), reflectionMode = ENVIRONMENT, reflect = LINEAR_MARCH (its
-  defaults; read only in SCENE mode), roughness = 0, sceneColorLevels = environmentLevels = 1
-  (mip levels for snellRoughnessToLod), envX/envY/envZ = the columns of the
-  world-from-view rotation used for environment lookups (identity).
+  defaults; read only in SCENE mode), roughness = 0, sceneColorLevels =
+  environmentLevels = 1 (mip levels for snellRoughnessToLod), envX/envY/envZ
+  = the columns of the world-from-view rotation used for environment lookups
+  (identity).
 source: the composition of DESIGN.md sec. 2 (a technique = optics, an
   intersector against the back faces, optics, an intersector against the scene
-  or an environment lookup); Oliveira & Brauwers 2007 sec. 3; Mayer &
-  Assarsson, "Constant-Time Light Refraction Simulation".
+  or an environment lookup); Oliveira & Brauwers 2007 sec. 3; Wyman 2005;
+  Mayer & Assarsson, "Constant-Time Light Refraction Simulation".
 */
 #ifndef SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
 #define SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
 
 
+/*
+description: any intersection strategy of intersect/, chosen at run time: the
+  strategy ids, one options struct whose fields are named after the strategy
+  they belong to, and the dispatcher, so a technique's back-face, exit and
+  reflection slots are interchangeable (GLSL has no function pointers: a
+  strategy is an int constant that snellIntersectWith branches on).
+use: SnellIntersectOptions o = snellIntersectOptions(SNELL_STRATEGY_CBS);
+     o.cbsSteps = 8;
+     SnellHit h = snellIntersectWith(origin, dir, depthTex, normalTex, pyramidTex, surface, o);
+  origin, dir view-space ray (P1, T1 for the back faces; P2, T2 for the scene)
+  depthTex    the depth buffer `surface` describes
+  normalTex   its view-space normals (PLANE_NORMAL only; any texture otherwise)
+  pyramidTex  its depth min/max pyramid (intersect/depth_pyramid.glsl), full mip
+              chain: the search range of CBS / BINARY / LINEAR_BINARY when
+              o.rangeSource is SNELL_RANGE_PYRAMID, and the depth mips of
+              PLANE_DEPTH (its .x is the mean depth value)
+  o           the strategy and its parameters
+options (strategy ids, the values of SnellIntersectOptions.strategy):
+  SNELL_STRATEGY_SINGLE         0  snellIntersectSingleSample (1 fetch)
+  SNELL_STRATEGY_PLANE_NORMAL   1  snellIntersectPlaneNormal
+  SNELL_STRATEGY_PLANE_DEPTH    2  snellIntersectPlaneDepth (the pyramid's
+                                   levels as depth mips)
+  SNELL_STRATEGY_CBS            3  snellConservativeBinarySearch
+  SNELL_STRATEGY_BINARY         4  snellBinarySearch
+  SNELL_STRATEGY_LINEAR_BINARY  5  snellLinearBinarySearch
+  SNELL_STRATEGY_LINEAR_MARCH   6  snellLinearMarch
+  SNELL_STRATEGY_DDA            7  snellDdaMarch
+  range sources of the searches: SNELL_RANGE_PYRAMID 0 (the pyramid's top
+  level, snellDepthRangeFromPyramid, 1 fetch), SNELL_RANGE_EXPLICIT 1 (o.range
+  as given, e.g. snellDepthRangeFromBox: Oliveira & Brauwers' bounding box)
+  SNELL_INTERSECT_STRATEGIES  bit mask of the strategies compiled in (bit k =
+                              strategy k, 0xFF = all, the default). Every
+                              technique call inlines the dispatcher, and with
+                              it every strategy: a shader that uses one or two
+                              presets compiles much faster (llvmpipe: minutes
+                              -> seconds) with only their bits, e.g.
+                              #define SNELL_INTERSECT_STRATEGIES ((1 << SNELL_STRATEGY_CBS) | 1)
+                              A strategy left out answers snellHitMiss(0).
+  The fields of SnellIntersectOptions, by the strategy that reads them, with
+  their defaults (each default is the strategy file's own macro):
+  every strategy  depthFilter = SNELL_DEPTH_FILTER_NEAREST (how the strategy
+                  reads depth: intersect/depth_surface.glsl; it replaces the
+                  surface's depthFilter field)
+  PLANE_NORMAL, PLANE_DEPTH  planeIterations = SNELL_PLANE_ITERATIONS
+                  (refinements after the first plane)
+  PLANE_NORMAL    planeNormalLod = 0 (the normal texture's level)
+  PLANE_DEPTH     planeMaxLod = -1 (the coarsest depth mip: the pyramid's top
+                  level, snellTextureTopLod)
+  CBS             cbsSteps = SNELL_CBS_STEPS
+  BINARY, LINEAR_BINARY  binarySteps = SNELL_BINARY_SEARCH_STEPS (bisections)
+  LINEAR_BINARY   linearSteps = SNELL_LINEAR_SEARCH_STEPS
+  CBS, BINARY, LINEAR_BINARY  rangeSource = SNELL_RANGE_PYRAMID, range =
+                  snellDepthRangeInvalid() (read under SNELL_RANGE_EXPLICIT only)
+  LINEAR_MARCH    marchSteps = SNELL_LINEAR_MARCH_STEPS, marchBisections =
+                  SNELL_LINEAR_MARCH_REFINE_STEPS, marchMaxDistance =
+                  SNELL_LINEAR_MARCH_MAX_DISTANCE
+  DDA             ddaSteps = SNELL_DDA_STEPS, ddaMaxDistance =
+                  SNELL_DDA_MAX_DISTANCE, ddaThickness = SNELL_DDA_THICKNESS,
+                  ddaStride = SNELL_DDA_STRIDE
+contract:
+  - snellIntersectOptions(strategy): the strategy as given (an unknown one is
+    stored too, and answered with a miss) and every field's default above.
+  - snellIntersectWith, by o.strategy:
+    SINGLE: snellIntersectSingleSample(origin, dir, depthTex, surface).
+    PLANE_NORMAL: snellIntersectPlaneNormal(.., normalTex, surface,
+    o.planeNormalLod, o.planeIterations).
+    PLANE_DEPTH: snellIntersectPlaneDepth(origin, dir, pyramidTex, surface,
+    maxLod, o.planeIterations), maxLod = o.planeMaxLod, or
+    snellTextureTopLod(pyramidTex) when o.planeMaxLod < 0.
+    CBS / BINARY / LINEAR_BINARY: the range is snellDepthRangeFromPyramid(
+    pyramidTex) (1 fetch, counted in h.fetches) or o.range; an invalid range is
+    a miss (with the pyramid's fetch); then the strategy with o.cbsSteps,
+    o.binarySteps, or o.linearSteps and o.binarySteps.
+    LINEAR_MARCH: snellLinearMarch(.., o.marchMaxDistance, o.marchSteps,
+    o.marchBisections). DDA: snellDdaMarch(.., o.ddaMaxDistance,
+    o.ddaThickness, o.ddaStride, o.ddaSteps).
+    Any other strategy: snellHitMiss(0).
+  - every result is the strategy's own SnellHit (contracts in intersect/), with
+    the range fetch added; each strategy clamps its own counts.
+source: DESIGN.md sec. 2 ("every intersector is interchangeable in both
+  slots"); Oliveira & Brauwers 2007 sec. 3 and sec. 6 (the two range sources);
+  the strategies' own sources.
+*/
+#ifndef SNELL_INTERSECT_INTERSECT_WITH_GLSL
+#define SNELL_INTERSECT_INTERSECT_WITH_GLSL
+
+/*
+description: the result every intersection strategy returns: where a view-space
+  ray meets a surface that exists only as a depth buffer.
+use: SnellHit h = snellIntersect...(origin, dir, depthTex, surface, ...);
+     if (h.valid) { vec4 n = SNELL_SAMPLE_LOD(normalTex, h.uv, 0.0f); ... }
+  uv        the hit's projection, viewport uv (origin bottom-left, [0,1]^2)
+  position  the hit point in view space (on the ray; z < 0)
+  valid     false when no hit was found (see each strategy's contract)
+  fetches   texel fetches spent (machine-independent cost; counted also when
+            the search fails)
+contract: snellHitMiss gives valid = false, uv = (0,0), position = (0,0,0) and the
+  fetch count it is given: finite numbers always.
+source: the common interface of DESIGN.md sec. 2 (intersect/).
+*/
+#ifndef SNELL_INTERSECT_HIT_GLSL
+#define SNELL_INTERSECT_HIT_GLSL
+
+
+struct SnellHit {
+  vec2 uv;
+  vec3 position;
+  bool valid;
+  int fetches;
+};
+
+SNELL_FN SnellHit snellHitMiss(int fetches) {
+  SnellHit h;
+  h.uv = vec2(0.0f, 0.0f);
+  h.position = vec3(0.0f, 0.0f, 0.0f);
+  h.valid = false;
+  h.fetches = fetches;
+  return h;
+}
+
+#endif
 /*
 description: how a depth texture describes a surface (the refractive object's
   back faces, or the opaque scene), and the one way every strategy reads it.
@@ -2004,100 +2099,176 @@ SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, Sn
 
 #endif
 /*
-description: plain binary search of a view-space ray against a depth-buffer
-  surface, in texture space along S-E (Policarpo et al. 2005's refinement, with
-  Oliveira & Brauwers' perspective parameterization). It may end on an empty
-  texel: the failure conservative_binary_search.glsl exists to avoid. Kept as a
-  baseline so tests and the lab can show it.
-use: SnellHit h = snellBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest);
-     SnellHit h = snellBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, steps);
-     SnellHit h = snellBisectTexRay(r, depthTex, surface, lo, hi, steps, hitSoFar);
-  arguments as snellConservativeBinarySearch; steps = binary steps (one fetch each)
+description: the depth range [zNearest, zFarthest] the texture-space searches
+  (conservative binary search, binary, linear+binary) walk, from the two
+  sources Oliveira & Brauwers name: the top level of the depth min/max pyramid
+  (their 2nd pass, exact for the buffer) or the object's bounding box (their
+  suggested speed-up: no reduction pass, a looser range). Plus the top mip
+  level of a texture, which the range and the depth-based plane need.
+use: SnellDepthRange r = snellDepthRangeFromPyramid(pyramidTex);
+     SnellDepthRange r = snellDepthRangeFromBox(viewFromObject, boxMin, boxMax);
+     int top = snellTextureTopLod(tex);
+  pyramidTex      a depth min/max pyramid (intersect/depth_pyramid.glsl layout:
+                  y nearest, z farthest view distance, w coverage), all levels
+  viewFromObject  object-to-view transform (camera at the origin looking down -Z)
+  boxMin, boxMax  the object-space axis-aligned bounding box
 options:
-  SNELL_BINARY_SEARCH_STEPS      default steps (5)
-  SNELL_BINARY_SEARCH_MAX_STEPS  compile-time loop bound (24); steps is clamped
-                                 to [0, SNELL_BINARY_SEARCH_MAX_STEPS]
+  SNELL_DEPTH_RANGE_MARGIN  relative widening of the pyramid range (1e-3f):
+                            zNearest * (1 - m), zFarthest * (1 + m), so a
+                            fronto-parallel surface (Zmin == Zmax, which the
+                            searches reject) still gets a range and the
+                            surface lies strictly inside it
 contract:
-  - segment S-E and beta as snellConservativeBinarySearch. Bracket [lo, hi] =
-    [0, 1]; each step tests mid = (lo + hi) / 2 (one fetch): a valid texel with
-    the point strictly in front of the surface (z > viewZ) moves lo to mid,
-    anything else (behind the surface, or an empty / off-screen texel, which the
-    paper's depth-0 storage makes look like "behind") moves hi to mid.
-  - the result is the last point tested (Figure 6's point 4), uv its texture
-    coordinate, position S + beta (E - S); steps = 0 tests S itself (one fetch).
-  - valid = whether that last texel was valid (non-empty, on screen). When it
-    is not, uv and position still report where the search ended (finite), so
-    the failure can be seen and counted: that is this function's point.
-  - precision: for a ray crossing the surface once on S-E, |beta - beta*| <=
-    0.5^c (the last midpoint is an end of the final bracket, of width 0.5^c).
-  - valid = false with snellHitMiss numbers and 0 fetches when the segment is
-    invalid (rays towards the camera, Zmin == Zmax, NaN: see search_segment.glsl).
-  - snellBisectTexRay(r, depthTex, surface, lo, hi, steps, h): the loop itself,
-    for a valid segment r (snellSearchSegment) and a bracket [lo, hi] in beta,
-    each clamped to [0, 1]: clamp(steps, 0, SNELL_BINARY_SEARCH_MAX_STEPS)
-    steps of the rule above; after each, h = the point tested (uv, position,
-    valid as above) with h.fetches + 1. With 0 steps, or a NaN lo or hi, h is
-    returned as given.
-source: F. Policarpo, M. M. Oliveira, J. Comba, "Real-Time Relief Mapping on
-  Arbitrary Polygonal Surfaces", I3D 2005 (binary search); Oliveira & Brauwers
-  2007, sec. 3.3 and Figure 6 (why it can end on an invalid texel), eqs. 3-10.
+  - snellTextureTopLod: floor(log2(max(width, height))) of level 0 (the last
+    level of a full GL mip chain); 0 for a 1x1 or size-0 texture.
+  - snellDepthRangeFromPyramid: one SNELL_TEXEL_FETCH of texel (0, 0) at the
+    top level; valid when its coverage w > 0 and 0 < y <= z are finite;
+    zNearest = -y (1 - margin), zFarthest = -z (1 + margin). Invalid (all 0)
+    for an empty buffer.
+  - snellDepthRangeFromBox: the 8 corners transformed by viewFromObject
+    (w = 1 assumed: an affine transform); zNearest = the largest corner z,
+    zFarthest = the smallest, no fetch. Valid when every corner z is finite
+    and zFarthest < 0; a box reaching to or behind the camera plane gets
+    zNearest = -FLT_MIN (the searches then start at the ray origin). A flat box
+    facing the camera (zNearest == zFarthest) is widened by
+    SNELL_DEPTH_RANGE_MARGIN as for the pyramid. Invalid: all 0.
+source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
+  Objects", I3D 2007, sec. 3 (2nd pass: min/max reduction) and sec. 6
+  ("using the limits of the object's bounding box as Zmin and Zmax").
 */
-#ifndef SNELL_INTERSECT_BINARY_SEARCH_GLSL
-#define SNELL_INTERSECT_BINARY_SEARCH_GLSL
+#ifndef SNELL_INTERSECT_DEPTH_RANGE_GLSL
+#define SNELL_INTERSECT_DEPTH_RANGE_GLSL
+
+
+
+#ifndef SNELL_DEPTH_RANGE_MARGIN
+#  define SNELL_DEPTH_RANGE_MARGIN 1e-3f
+#endif
+
+struct SnellDepthRange {
+  float zNearest;
+  float zFarthest;
+  bool valid;
+};
+
+SNELL_FN SnellDepthRange snellDepthRangeInvalid() {
+  SnellDepthRange r;
+  r.zNearest = 0.0f;
+  r.zFarthest = 0.0f;
+  r.valid = false;
+  return r;
+}
+
+SNELL_FN int snellTextureTopLod(SNELL_TEX2D tex) {
+  ivec2 size = SNELL_TEXTURE_SIZE(tex, 0);
+  int m = max(size.x, size.y);
+  int lod = 0;
+  for (int i = 0; i < 31; ++i) {
+    if (m <= 1) {
+      break;
+    }
+    m = m / 2;
+    lod = lod + 1;
+  }
+  return lod;
+}
+
+/* Oliveira & Brauwers 2007, sec. 3, 2nd pass: the top level of the min/max reduction */
+SNELL_FN SnellDepthRange snellDepthRangeFromPyramid(SNELL_TEX2D pyramidTex) {
+  int top = snellTextureTopLod(pyramidTex);
+  vec4 t = SNELL_TEXEL_FETCH(pyramidTex, ivec2(0, 0), top);
+  if (!(t.w > 0.0f) || !(t.y > 0.0f) || !(t.z >= t.y) || !SNELL_FINITE(t.z)) {
+    return snellDepthRangeInvalid();
+  }
+  SnellDepthRange r;
+  r.zNearest = -t.y * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
+  r.zFarthest = -t.z * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
+  r.valid = true;
+  return r;
+}
+
+/* Oliveira & Brauwers 2007, sec. 6: the bounding box as Zmin, Zmax */
+SNELL_FN SnellDepthRange snellDepthRangeFromBox(mat4 viewFromObject, vec3 boxMin, vec3 boxMax) {
+  float zNearest = -SNELL_FLT_MAX;
+  float zFarthest = SNELL_FLT_MAX;
+  for (int i = 0; i < 8; ++i) {
+    float x = (i == 1 || i == 3 || i == 5 || i == 7) ? boxMax.x : boxMin.x;
+    float y = (i == 2 || i == 3 || i == 6 || i == 7) ? boxMax.y : boxMin.y;
+    float z = i >= 4 ? boxMax.z : boxMin.z;
+    vec4 p = SNELL_MUL(viewFromObject, vec4(x, y, z, 1.0f));
+    if (!SNELL_FINITE(p.z)) {
+      return snellDepthRangeInvalid();
+    }
+    zNearest = max(zNearest, p.z);
+    zFarthest = min(zFarthest, p.z);
+  }
+  if (!(zFarthest < 0.0f)) {
+    return snellDepthRangeInvalid();
+  }
+  SnellDepthRange r;
+  r.zNearest = min(zNearest, -SNELL_FLT_MIN);
+  r.zFarthest = zFarthest;
+  if (!(r.zFarthest < r.zNearest)) {
+    r.zNearest = r.zNearest * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
+    r.zFarthest = r.zFarthest * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
+  }
+  r.valid = true;
+  return r;
+}
+
+#endif
+/*
+description: the single-sample baseline that Mayer & Assarsson compare their
+  plane methods against (the "GPU Gems" row of their table): ONE depth lookup,
+  no search. The surface point B directly behind the ray origin W gives a
+  distance d = |B - W|, and the hit is taken d further along the ray (the
+  thickness approximation of Wyman 2005 and Sousa 2005: the ray travels as far
+  as the surface is behind its start).
+use: SnellHit h = snellIntersectSingleSample(origin, dir, depthTex, surface);
+  origin    view-space ray start W (z < 0): the front-face point for the back-face
+            buffer, the exit point for the opaque scene buffer
+  dir       ray direction (any length; normalized inside)
+  depthTex  the depth texture `surface` describes (read at level surface.lod)
+contract:
+  - uvW = projection of W; B = snellSurfacePoint(depthTex, uvW, surface) (the
+    texel centre point); d = |B - W|; position = W + d normalize(dir); uv = its
+    projection. fetches = 1 always.
+  - valid is true exactly when B exists and the position lies in front of the
+    camera and projects into [0,1]^2. It says nothing about whether the surface
+    exists at uv (no second lookup: that is the baseline's point); exact when
+    dir points from W straight at B (d is then the true distance).
+  - any direction is accepted, also one towards the camera (the answer is then
+    the point d towards the camera, which the caller asked for).
+  - valid = false (snellHitMiss): origin or dir NaN/Inf, |dir|^2 below 1e-30 or
+    overflowing, origin at or behind the camera plane (no projection): fetches 0;
+    W projecting off screen, B empty/invalid, the position off screen or behind
+    the camera: fetches 1 (the lookup is counted once W projects, as a shader
+    would issue it).
+source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation"
+  (the single-sample row of the results table, step 2 for B); T. Sousa, "Generic
+  Refraction Simulation", GPU Gems 2 ch. 19 (2005); C. Wyman, "An Approximate
+  Image-Space Approach for Interactive Refraction", SIGGRAPH 2005 (P2 ~ P1 + d T1).
+*/
+#ifndef SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
+#define SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
+
 
 /*
-description: the perspective texture-space parameterization of a view-space ray
-  segment (Oliveira & Brauwers 2007, sec. 3.2.1, eqs. 3-10, Algorithm 1): the
-  segment S-E of the refracted ray T1 between two constant-z planes, and for any
-  point P on it, from P.z alone, the image-space parameter alpha and the uv where
-  P projects, without a matrix product per step.
-use: SnellTexRay r = snellTexRaySetup(p1, t1, zNearest, zFarthest, clipFromView);
-     // march in 3D: P.z = mix(r.s.z, r.e.z, beta)  (eq. 5)
-     vec2 uv = snellTexRayUv(r, pz);   float alpha = snellTexRayAlpha(r, pz);
-  p1         view-space start of the ray (P1, the front-face hit)
-  t1         ray direction T1 (need not be normalized: eqs. 3-4 divide by T1.z)
-  zNearest   view-space z of the plane where the search starts, the back-face
-             depth nearest to the camera (the paper's Zmin, a minimum *distance*;
-             as a right-handed view-space z it is the LARGER, less negative value)
-  zFarthest  view-space z of the plane where it ends (the paper's Zmax, the
-             farthest back-face depth; the more negative value). Both are z
-             values (< 0), not distances and not the camera's clip planes.
-  clipFromView  the camera projection; eqs. 8-9 assume clip w = -z (true for every
-             matrix of perspective.glsl, glm::perspective*, glFrustum).
+description: project a view-space point to viewport uv ([0,1]^2, origin
+  bottom-left) and NDC z, in one call.
+use: SnellScreenPoint sp = snellViewToUv(clipFromView, pView);
+     if (sp.valid) { vec4 c = SNELL_SAMPLE_LOD(tex, sp.uv, 0.0f); float d = snellNdcZToDepth(sp.ndcZ, conv); }
 contract:
-  - S = P1 + ((zNearest - P1.z)/T1.z) T1 (eq. 3), E likewise with zFarthest (eq.
-    4); S.z == zNearest and E.z == zFarthest exactly. S and E are the
-    intersections of the LINE with the planes: when T1 points towards the camera
-    (T1.z > 0) they lie behind P1 on the ray; the caller decides what that means.
-  - k1 = 1/S.z, k2 = S.z E.z/(S.z - E.z) (eq. 9), ts = t's = 0.5 S~.xy/S~.w + 0.5,
-    dt = t'e - t's (eq. 10, Algorithm 1).
-  - snellTexRayAlpha(r, pz) = (1/pz - k1) k2 (eq. 9), evaluated as the equal
-    ((S.z - pz)/pz) (k1 k2) = ((S.z - pz)/pz) E.z/(S.z - E.z), which has no
-    cancellation when pz is close to S.z. alpha = 0 at S.z, 1 at E.z; pz outside
-    [E.z, S.z] extrapolates along the line (alpha outside [0,1]); never clamped
-    to [0,1], only to +-SNELL_FLT_MAX.
-  - snellTexRayUv(r, pz) = ts + alpha dt (eq. 10): the uv where the point of the
-    line with z = pz projects (equal to projecting P with clipFromView).
-  - zNearest == zFarthest: the segment is a point: S == E, k2 = 0, dt = 0,
-    alpha = 0 for every pz, uv = ts; valid is true.
-  - valid = false, with every field 0 (so alpha = 0 and uv = (0,0)), when: any
-    input is NaN or Inf (matrix included); T1.z == 0 (the ray is parallel to the
-    planes and never reaches them); zNearest >= 0 or zFarthest >= 0 (denormal
-    values count as 0 throughout: GPUs may flush them); S or E
-    project with clip w <= 0; or any result overflows (e.g. T1.z so small that S
-    is at infinity). A plane at or behind the eye (z >= 0) is rejected rather than
-    clamped to the near plane: eq. 8 needs S~.w = -S.z > 0, the back-face depth
-    extremes of a rendered object always lie in front of the near plane, so such
-    input is a caller bug, and clamping would silently search a segment the caller
-    did not ask for.
-  - alpha (and uv) for a valid ray and pz >= 0 (or denormal), NaN or Inf (no
-    projection): alpha 0,
-    uv = ts, i.e. the search start.
-source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
-  Objects", I3D 2007, sec. 3.2.1, eqs. 3, 4, 5, 6, 8, 9, 10 and Algorithm 1.
+  - uv = 0.5 ndc.xy + 0.5 and ndcZ = ndc.z with ndc from
+    snellClipToNdc(snellViewToClip(clipFromView, pView)); valid is that call's valid.
+  - valid is false (uv = (0,0), ndcZ = 0) for points at or behind the camera
+    (clip w <= 0), NaN or Inf; otherwise all results are finite (clamped to
+    +-SNELL_FLT_MAX), also for points off screen (uv outside [0,1]).
+  - ndcZ is NDC z, not a depth-buffer value: snellNdcZToDepth converts it.
+source: Oliveira & Brauwers 2007, Algorithm 1 (t' = 0.5 (S~.xy / S~.w) + 0.5).
 */
-#ifndef SNELL_CAMERA_TEX_RAY_GLSL
-#define SNELL_CAMERA_TEX_RAY_GLSL
+#ifndef SNELL_CAMERA_VIEW_TO_UV_GLSL
+#define SNELL_CAMERA_VIEW_TO_UV_GLSL
 
 
 /*
@@ -2149,535 +2320,6 @@ SNELL_FN SnellNdc snellClipToNdc(vec4 clip) {
 
 #endif
 
-struct SnellTexRay {
-  vec3 s;      // S, on the plane z = zNearest (eq. 3)
-  vec3 e;      // E, on the plane z = zFarthest (eq. 4)
-  float k1;    // 1 / S.z (eq. 9)
-  float k2;    // S.z E.z / (S.z - E.z) (eq. 9); 0 when S.z == E.z
-  vec2 ts;     // t's: uv of S (eq. 10)
-  vec2 dt;     // t'e - t's (Algorithm 1)
-  bool valid;
-};
-
-SNELL_FN SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, float zFarthest, mat4 clipFromView) {
-  SnellTexRay r;
-  r.s = vec3(0.0f, 0.0f, 0.0f);
-  r.e = vec3(0.0f, 0.0f, 0.0f);
-  r.k1 = 0.0f;
-  r.k2 = 0.0f;
-  r.ts = vec2(0.0f, 0.0f);
-  r.dt = vec2(0.0f, 0.0f);
-  r.valid = false;
-  if (!SNELL_FINITE(p1.x) || !SNELL_FINITE(p1.y) || !SNELL_FINITE(p1.z) ||
-      !SNELL_FINITE(t1.x) || !SNELL_FINITE(t1.y) || !SNELL_FINITE(t1.z) ||
-      !SNELL_FINITE(zNearest) || !SNELL_FINITE(zFarthest)) {
-    return r;
-  }
-  if (!(abs(t1.z) >= SNELL_FLT_MIN) || !(zNearest <= -SNELL_FLT_MIN) ||
-      !(zFarthest <= -SNELL_FLT_MIN)) {
-    return r;
-  }
-  float ls = (zNearest - p1.z) / t1.z;
-  float le = (zFarthest - p1.z) / t1.z;
-  vec3 s = vec3(p1.x + ls * t1.x, p1.y + ls * t1.y, zNearest);
-  vec3 e = vec3(p1.x + le * t1.x, p1.y + le * t1.y, zFarthest);
-  SnellNdc ns = snellClipToNdc(snellViewToClip(clipFromView, s));
-  SnellNdc ne = snellClipToNdc(snellViewToClip(clipFromView, e));
-  if (!SNELL_FINITE(s.x) || !SNELL_FINITE(s.y) || !SNELL_FINITE(e.x) ||
-      !SNELL_FINITE(e.y) || !ns.valid || !ne.valid) {
-    return r;
-  }
-  vec2 ts = vec2(ns.ndc.x, ns.ndc.y) * 0.5f + 0.5f;
-  vec2 te = vec2(ne.ndc.x, ne.ndc.y) * 0.5f + 0.5f;
-  vec2 dt = te - ts;
-  float k1 = 1.0f / zNearest;
-  float k2 = zNearest == zFarthest ? 0.0f : (zNearest * zFarthest) / (zNearest - zFarthest);
-  if (!SNELL_FINITE(ts.x) || !SNELL_FINITE(ts.y) || !SNELL_FINITE(dt.x) ||
-      !SNELL_FINITE(dt.y) || !SNELL_FINITE(k1) || !SNELL_FINITE(k2) ||
-      !SNELL_FINITE(k1 * k2)) {
-    return r;
-  }
-  r.s = s;
-  r.e = e;
-  r.k1 = k1;
-  r.k2 = k2;
-  r.ts = ts;
-  r.dt = dt;
-  r.valid = true;
-  return r;
-}
-
-SNELL_FN float snellTexRayAlpha(SnellTexRay r, float pz) {
-  if (!r.valid || r.k2 == 0.0f || !SNELL_FINITE(pz) || !(pz <= -SNELL_FLT_MIN)) {
-    return 0.0f;
-  }
-  float alpha = ((r.s.z - pz) / pz) * (r.k1 * r.k2);
-  // pz denormal-small: inf * (a product that underflowed to 0) is NaN.
-  return isnan(alpha) ? 0.0f : clamp(alpha, -SNELL_FLT_MAX, SNELL_FLT_MAX);
-}
-
-SNELL_FN vec2 snellTexRayUv(SnellTexRay r, float pz) {
-  float alpha = snellTexRayAlpha(r, pz);
-  vec2 uv = r.ts + alpha * r.dt;
-  return clamp(uv, vec2(-SNELL_FLT_MAX, -SNELL_FLT_MAX), vec2(SNELL_FLT_MAX, SNELL_FLT_MAX));
-}
-
-#endif
-/*
-description: the result every intersection strategy returns: where a view-space
-  ray meets a surface that exists only as a depth buffer.
-use: SnellHit h = snellIntersect...(origin, dir, depthTex, surface, ...);
-     if (h.valid) { vec4 n = SNELL_SAMPLE_LOD(normalTex, h.uv, 0.0f); ... }
-  uv        the hit's projection, viewport uv (origin bottom-left, [0,1]^2)
-  position  the hit point in view space (on the ray; z < 0)
-  valid     false when no hit was found (see each strategy's contract)
-  fetches   texel fetches spent (machine-independent cost; counted also when
-            the search fails)
-contract: snellHitMiss gives valid = false, uv = (0,0), position = (0,0,0) and the
-  fetch count it is given: finite numbers always.
-source: the common interface of DESIGN.md sec. 2 (intersect/).
-*/
-#ifndef SNELL_INTERSECT_HIT_GLSL
-#define SNELL_INTERSECT_HIT_GLSL
-
-
-struct SnellHit {
-  vec2 uv;
-  vec3 position;
-  bool valid;
-  int fetches;
-};
-
-SNELL_FN SnellHit snellHitMiss(int fetches) {
-  SnellHit h;
-  h.uv = vec2(0.0f, 0.0f);
-  h.position = vec3(0.0f, 0.0f, 0.0f);
-  h.valid = false;
-  h.fetches = fetches;
-  return h;
-}
-
-#endif
-
-/*
-description: the ray segment the texture-space searches walk (conservative
-  binary search, binary search, linear+binary search): the part of a view-space
-  ray between two constant-z planes that bound the surface in depth, in the
-  perspective texture-space parameterization of Oliveira & Brauwers 2007.
-use: SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
-     // beta in [0,1] along S-E (eq. 5): z = r.s.z + beta (r.e.z - r.s.z), uv = snellTexRayUv(r, z)
-  origin     view-space ray origin (P1: the front-face hit for the back-face
-             buffer, the back-face exit point for the opaque scene buffer)
-  dir        ray direction (need not be normalized)
-  zNearest   view-space z (< 0) of the nearest surface point, the paper's Zmin as
-             a z value (the LARGER, less negative one); zFarthest: of the farthest
-             (the paper's Zmax, more negative). Where they come from is the
-             caller's business, both are just two numbers: the top level of the
-             depth min/max pyramid (exact for the buffer), or the object's
-             bounding box / bounding sphere transformed to view space (looser,
-             so more steps for the same precision, never wrong).
-contract:
-  - the segment starts at S on the plane z = min(zNearest, origin.z): where the
-    ray meets zNearest, or at the origin itself when the origin is already
-    deeper than zNearest (a search never runs backwards along the ray); it ends
-    at E on the plane z = zFarthest. k1, k2, ts, dt as snellTexRaySetup.
-  - valid = false (every field 0, finite) when: any input is NaN or Inf (matrix
-    included); dir.z >= 0 or denormal (the ray points towards the camera or runs
-    parallel to the image plane: it never reaches deeper planes); zNearest <=
-    zFarthest (Zmin == Zmax, swapped or empty range); the origin is at or beyond
-    zFarthest (nothing left to search); and every case snellTexRaySetup
-    rejects (a plane at or behind the eye, S or E not projectable, overflow).
-source: Oliveira & Brauwers 2007, sec. 3.2.1, eqs. 3-4 (S and E), Figure 5
-  (Zmin, Zmax); camera/tex_ray.glsl for eqs. 5-10.
-*/
-#ifndef SNELL_INTERSECT_SEARCH_SEGMENT_GLSL
-#define SNELL_INTERSECT_SEARCH_SEGMENT_GLSL
-
-
-
-
-SNELL_FN SnellTexRay snellSearchSegment(vec3 origin, vec3 dir, float zNearest, float zFarthest, mat4 clipFromView) {
-  SnellTexRay bad;
-  bad.s = vec3(0.0f, 0.0f, 0.0f);
-  bad.e = vec3(0.0f, 0.0f, 0.0f);
-  bad.k1 = 0.0f;
-  bad.k2 = 0.0f;
-  bad.ts = vec2(0.0f, 0.0f);
-  bad.dt = vec2(0.0f, 0.0f);
-  bad.valid = false;
-  if (!SNELL_FINITE(origin.z) || !SNELL_FINITE(dir.z) || !SNELL_FINITE(zNearest) ||
-      !SNELL_FINITE(zFarthest)) {
-    return bad;
-  }
-  if (!(dir.z <= -SNELL_FLT_MIN) || !(zNearest > zFarthest) || !(origin.z > zFarthest)) {
-    return bad;
-  }
-  float zStart = origin.z < zNearest ? origin.z : zNearest;
-  return snellTexRaySetup(origin, dir, zStart, zFarthest, clipFromView);
-}
-
-#endif
-
-#ifndef SNELL_BINARY_SEARCH_STEPS
-#  define SNELL_BINARY_SEARCH_STEPS 5
-#endif
-#ifndef SNELL_BINARY_SEARCH_MAX_STEPS
-#  define SNELL_BINARY_SEARCH_MAX_STEPS 24
-#endif
-
-/* The bisection loop of Policarpo et al. 2005, shared by snellBinarySearch and
-   the refinement of snellLinearBinarySearch (see the contract). */
-SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SnellDepthSurface surface, float lo,
-                                    float hi, int steps, SnellHit h) {
-  if (isnan(lo) || isnan(hi)) {
-    return h;
-  }
-  // Outside [0, 1] the midpoints would extrapolate past S or E.
-  lo = clamp(lo, 0.0f, 1.0f);
-  hi = clamp(hi, 0.0f, 1.0f);
-  int n = clamp(steps, 0, SNELL_BINARY_SEARCH_MAX_STEPS);
-  float dz = r.e.z - r.s.z;
-  for (int i = 0; i < SNELL_BINARY_SEARCH_MAX_STEPS; ++i) {
-    if (i >= n) {
-      break;
-    }
-    float beta = 0.5f * (lo + hi);
-    float z = r.s.z + beta * dz;
-    vec2 uv = snellTexRayUv(r, z);
-    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
-    h.uv = uv;
-    h.position = vec3(r.s.x + beta * (r.e.x - r.s.x), r.s.y + beta * (r.e.y - r.s.y), z);
-    h.valid = x.valid;
-    h.fetches = h.fetches + 1;
-    if (x.valid && z > x.viewZ) {
-      lo = beta;
-    } else {
-      hi = beta;
-    }
-  }
-  return h;
-}
-
-/* Policarpo et al. 2005 binary search on Oliveira & Brauwers 2007, eqs. 5-10 */
-SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
-                                    float zNearest, float zFarthest, int steps) {
-  SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
-  if (!r.valid) {
-    return snellHitMiss(0);
-  }
-  SnellHit h;
-  h.uv = r.ts;
-  h.position = r.s;
-  h.valid = false;
-  h.fetches = 0;
-  if (steps <= 0) {
-    h.valid = snellSampleSurface(depthTex, r.ts, surface).valid;
-    h.fetches = 1;
-    return h;
-  }
-  return snellBisectTexRay(r, depthTex, surface, 0.0f, 1.0f, steps, h);
-}
-
-SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
-                                    float zNearest, float zFarthest) {
-  return snellBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_BINARY_SEARCH_STEPS);
-}
-
-#endif
-/*
-description: conservative binary search (CBS): intersect a view-space ray with
-  a depth-buffer surface by a binary search in texture space that only ever
-  advances along the ray, and only onto texels that hold a surface, so the
-  result never maps to an empty texel (no undefined normal at the silhouette).
-use: SnellHit h = snellConservativeBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest);
-     SnellHit h = snellConservativeBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, steps);
-     if (h.valid) { vec4 n2 = SNELL_TEXEL_FETCH(normalTex, snellUvToPixel(h.uv, size), 0); ... }
-  origin, dir          view-space ray (P1 and T1 in the paper; dir need not be normalized)
-  depthTex, surface    the depth buffer and how to read it (depth_surface.glsl);
-                       back-face buffer or opaque scene buffer alike
-  zNearest, zFarthest  the depth range to search, as view-space z (< 0): see
-                       search_segment.glsl (min/max pyramid top level, or a
-                       bounding volume; two numbers either way)
-  steps                binary steps c (each one texel fetch)
-options:
-  SNELL_CBS_STEPS      default steps (5, the paper's choice: beta error <= 3.125%)
-  SNELL_CBS_MAX_STEPS  compile-time loop bound (24); steps is clamped to
-                       [0, SNELL_CBS_MAX_STEPS] (beyond ~24 halvings beta is
-                       below float resolution anyway)
-contract:
-  - the segment S-E is snellSearchSegment(origin, dir, zNearest, zFarthest,
-    surface.clipFromView); beta in [0,1] along it (eq. 5). Starting at beta = 0,
-    step i (dBeta = 0.5^i) tests beta + dBeta: z = S.z + b (E.z - S.z), uv =
-    snellTexRayUv (eqs. 9-10), one snellSampleSurface fetch; it advances (beta
-    += dBeta) only when the texel is valid and the point is strictly in front of
-    the surface (z > viewZ, Algorithm 2's -P.z < storedDepth); an empty or
-    off-screen texel never lets it advance.
-  - valid means: the returned point maps to a valid (non-empty, on-screen)
-    texel. After at least one advance it is the last point that advanced (its uv
-    is the uv that was fetched, so the texel is exactly the one tested). When
-    no step advanced, the start S itself is tested with one more fetch (counted)
-    and returned if its texel is valid: then the true crossing, if the ray
-    crosses the surface once on S-E, has beta < 0.5^c (or the ray starts behind
-    the surface).
-  - precision: if the ray crosses the surface once on S-E (in front of it at S,
-    behind it, or over an empty texel, at E), the returned beta is at most
-    0.5^c before the crossing: beta_error = 0.5^c - 0.5^k <= 0.5^c for a
-    crossing that needs k > c steps (the paper, sec. 3.3). After an advance the
-    returned point is strictly in front of the surface at its texel (never past
-    it); S is returned whatever its depth order (the ray may start behind).
-  - a ray that stays in front of the surface up to E returns a point near E
-    (the paper's behaviour: the search range is assumed to contain the hit).
-  - position = S + beta (E - S), uv its texture coordinate; fetches = steps
-    performed (+1 for the start test).
-  - valid = false, with snellHitMiss numbers (finite), when the segment is
-    invalid (dir.z >= 0: rays towards the camera; zNearest <= zFarthest
-    including Zmin == Zmax; NaN/Inf inputs; planes at or behind the eye): 0
-    fetches; or when nothing advanced and S maps to an empty or off-screen
-    texel (rays leaving the screen, all-empty buffers).
-source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
-  Objects", I3D 2007, sec. 3.3, Algorithm 2, the error bound
-  beta_error = 0.5^c - 0.5^k; eqs. 3-10 for the parameterization.
-*/
-#ifndef SNELL_INTERSECT_CONSERVATIVE_BINARY_SEARCH_GLSL
-#define SNELL_INTERSECT_CONSERVATIVE_BINARY_SEARCH_GLSL
-
-
-
-
-
-
-#ifndef SNELL_CBS_STEPS
-#  define SNELL_CBS_STEPS 5
-#endif
-#ifndef SNELL_CBS_MAX_STEPS
-#  define SNELL_CBS_MAX_STEPS 24
-#endif
-
-/* Oliveira & Brauwers 2007, Algorithm 2 */
-SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
-                                                float zNearest, float zFarthest, int steps) {
-  SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
-  if (!r.valid) {
-    return snellHitMiss(0);
-  }
-  int n = clamp(steps, 0, SNELL_CBS_MAX_STEPS);
-  float dz = r.e.z - r.s.z;
-  float beta = 0.0f;
-  float dBeta = 1.0f;
-  float zHit = r.s.z;
-  vec2 uvHit = r.ts;
-  bool advanced = false;
-  int fetches = 0;
-  for (int i = 0; i < SNELL_CBS_MAX_STEPS; ++i) {
-    if (i >= n) {
-      break;
-    }
-    dBeta = dBeta * 0.5f;
-    float b = beta + dBeta;
-    float z = r.s.z + b * dz;
-    vec2 uv = snellTexRayUv(r, z);
-    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
-    fetches = fetches + 1;
-    if (x.valid && z > x.viewZ) {
-      beta = b;
-      zHit = z;
-      uvHit = uv;
-      advanced = true;
-    }
-  }
-  if (!advanced) {
-    SnellSurfaceSample x0 = snellSampleSurface(depthTex, uvHit, surface);
-    fetches = fetches + 1;
-    if (!x0.valid) {
-      return snellHitMiss(fetches);
-    }
-  }
-  SnellHit h;
-  h.uv = uvHit;
-  h.position = vec3(r.s.x + beta * (r.e.x - r.s.x), r.s.y + beta * (r.e.y - r.s.y), zHit);
-  h.valid = true;
-  h.fetches = fetches;
-  return h;
-}
-
-SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
-                                                float zNearest, float zFarthest) {
-  return snellConservativeBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_CBS_STEPS);
-}
-
-#endif
-/*
-description: linear-then-binary search (relief mapping) of a view-space ray
-  against a depth-buffer surface, in texture space along S-E: equal steps in
-  beta until the first sample that is not in front of the surface, then a plain
-  binary search inside that step. Finds thin structures the pure binary searches
-  skip, at the cost of the linear steps; like snellBinarySearch it may end on an
-  empty texel.
-use: SnellHit h = snellLinearBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest);
-     SnellHit h = snellLinearBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest,
-                                          linearSteps, binarySteps);
-  arguments as snellConservativeBinarySearch
-  linearSteps   number of equal beta steps (1/linearSteps each, one fetch each)
-  binarySteps   binary steps inside the bracketing step (one fetch each)
-options:
-  SNELL_LINEAR_SEARCH_STEPS      default linearSteps (10, relief mapping's usual)
-  SNELL_LINEAR_SEARCH_MAX_STEPS  compile-time bound (256); linearSteps is
-                                 clamped to [1, SNELL_LINEAR_SEARCH_MAX_STEPS]
-  SNELL_BINARY_SEARCH_STEPS, SNELL_BINARY_SEARCH_MAX_STEPS  (binary_search.glsl):
-                                 default and bound of binarySteps (clamped to [0, max])
-contract:
-  - segment S-E and beta as snellConservativeBinarySearch. Linear phase: beta_i
-    = i / linearSteps, i = 1 .. linearSteps; it stops at the first sample that
-    is not (valid texel and strictly in front of the surface, z > viewZ): behind
-    the surface or an empty / off-screen texel (relief mapping's depth-0 rule).
-  - no such sample up to E: valid = false, snellHitMiss numbers, fetches spent.
-  - binary phase: bracket [beta_(i-1), beta_i], the rule of snellBinarySearch;
-    the result is the last point tested (the linear sample itself when
-    binarySteps = 0); valid = that point's texel is valid; when not, uv and
-    position still report where the search ended (finite), as snellBinarySearch.
-  - precision: for a ray crossing the surface once on S-E, |beta - beta*| <=
-    0.5^binarySteps / linearSteps.
-  - invalid segment (rays towards the camera, Zmin == Zmax, NaN: see
-    search_segment.glsl): valid = false, snellHitMiss numbers, 0 fetches.
-source: F. Policarpo, M. M. Oliveira, J. Comba, "Real-Time Relief Mapping on
-  Arbitrary Polygonal Surfaces", I3D 2005 (linear then binary search);
-  Oliveira & Brauwers 2007, sec. 3.3 (why refraction can skip the linear
-  phase), eqs. 3-10.
-*/
-#ifndef SNELL_INTERSECT_LINEAR_BINARY_SEARCH_GLSL
-#define SNELL_INTERSECT_LINEAR_BINARY_SEARCH_GLSL
-
-
-
-
-
-
-
-#ifndef SNELL_LINEAR_SEARCH_STEPS
-#  define SNELL_LINEAR_SEARCH_STEPS 10
-#endif
-#ifndef SNELL_LINEAR_SEARCH_MAX_STEPS
-#  define SNELL_LINEAR_SEARCH_MAX_STEPS 256
-#endif
-
-/* Policarpo et al. 2005, linear + binary search, on Oliveira & Brauwers 2007 eqs. 5-10 */
-SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
-                                          float zNearest, float zFarthest, int linearSteps, int binarySteps) {
-  SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
-  if (!r.valid) {
-    return snellHitMiss(0);
-  }
-  int nl = clamp(linearSteps, 1, SNELL_LINEAR_SEARCH_MAX_STEPS);
-  int nb = clamp(binarySteps, 0, SNELL_BINARY_SEARCH_MAX_STEPS);
-  float dz = r.e.z - r.s.z;
-  float stepBeta = 1.0f / float(nl);
-  int fetches = 0;
-  int found = -1;
-  float beta = 0.0f;
-  float z = r.s.z;
-  vec2 uv = r.ts;
-  bool lastValid = false;
-  for (int i = 1; i <= SNELL_LINEAR_SEARCH_MAX_STEPS; ++i) {
-    if (i > nl) {
-      break;
-    }
-    beta = float(i) * stepBeta;
-    z = r.s.z + beta * dz;
-    uv = snellTexRayUv(r, z);
-    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
-    fetches = fetches + 1;
-    if (!(x.valid && z > x.viewZ)) {
-      found = i;
-      lastValid = x.valid;
-      break;
-    }
-  }
-  if (found < 0) {
-    return snellHitMiss(fetches);
-  }
-  SnellHit h;
-  h.uv = uv;
-  h.position = vec3(r.s.x + beta * (r.e.x - r.s.x), r.s.y + beta * (r.e.y - r.s.y), z);
-  h.valid = lastValid;
-  h.fetches = fetches;
-  return snellBisectTexRay(r, depthTex, surface, float(found - 1) * stepBeta, beta, nb, h);
-}
-
-SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
-                                          float zNearest, float zFarthest) {
-  return snellLinearBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_LINEAR_SEARCH_STEPS,
-                                 SNELL_BINARY_SEARCH_STEPS);
-}
-
-#endif
-/*
-description: linear march in view space with binary refinement: the screen-space
-  ray-marching baseline. Equal steps along the view-space ray, each projected
-  with the depth buffer's camera and compared with the stored surface; the
-  first step behind the surface is refined by bisection.
-use: SnellHit h = snellLinearMarch(origin, dir, depthTex, surface);
-     SnellHit h = snellLinearMarch(origin, dir, depthTex, surface, maxDistance, steps, refineSteps);
-  origin, dir        view-space ray (dir need not be normalized)
-  depthTex, surface  the depth buffer and how to read it (depth_surface.glsl)
-  maxDistance        view-space length of the marched part of the ray
-  steps              equal steps of maxDistance / steps (one fetch each)
-  refineSteps        bisection steps inside the step that crossed (one fetch
-                     each while on screen)
-options:
-  SNELL_LINEAR_MARCH_STEPS              default steps (32)
-  SNELL_LINEAR_MARCH_MAX_STEPS          compile-time bound (512); steps is clamped to [1, max]
-  SNELL_LINEAR_MARCH_REFINE_STEPS       default refineSteps (4)
-  SNELL_LINEAR_MARCH_MAX_REFINE_STEPS   compile-time bound (24); refineSteps clamped to [0, max]
-  SNELL_LINEAR_MARCH_MAX_DISTANCE       default maxDistance (10.0f view-space units)
-contract:
-  - the ray is marched over t in (0, tMax], tMax = maxDistance / |dir|, cut at
-    the near plane z = -surface.zNear when dir.z > 0 (a ray towards the camera
-    is marched until it would leave the frustum through the near plane).
-    Samples t_i = i tMax / steps, i = 1 .. steps (the origin itself is not
-    tested); each is projected with surface.clipFromView (snellViewToUv).
-  - a sample "crosses" when its texel is valid and the point is on or behind the
-    surface (z <= viewZ): the surface is a solid height field (infinitely thick).
-    Empty texels do not stop the march (no surface there).
-  - the first sample that projects off screen (uv outside [0,1]^2, or not
-    projectable) ends the march: valid = false (the ray left the screen).
-  - refinement: bracket [t_(i-1), t_i]; a midpoint that crosses moves hi, any
-    other (in front, empty, off screen: no fetch then) moves lo. The result is
-    hi: a point on or behind the surface at a valid texel, never in front of
-    the crossing; uv = the uv that was fetched there. Error along the ray <=
-    (tMax / steps) 0.5^refineSteps for a single crossing (plus the depth
-    buffer's own discretization).
-  - valid = false with snellHitMiss numbers (finite) and the fetches spent when
-    no sample crosses; with 0 fetches when: an input is NaN or Inf, |dir| is 0
-    or denormal-small, maxDistance <= 0, or the origin is at or in front of
-    the near plane with dir.z > 0 (the whole ray is outside the frustum).
-source: the classic screen-space ray march (e.g. Sousa, "Crysis 2", 2011;
-  Policarpo et al. 2005 for linear + binary search), here in view space with
-  the Oliveira & Brauwers 2007 (sec. 3.1) depth-surface reading.
-*/
-#ifndef SNELL_INTERSECT_LINEAR_MARCH_GLSL
-#define SNELL_INTERSECT_LINEAR_MARCH_GLSL
-
-
-/*
-description: project a view-space point to viewport uv ([0,1]^2, origin
-  bottom-left) and NDC z, in one call.
-use: SnellScreenPoint sp = snellViewToUv(clipFromView, pView);
-     if (sp.valid) { vec4 c = SNELL_SAMPLE_LOD(tex, sp.uv, 0.0f); float d = snellNdcZToDepth(sp.ndcZ, conv); }
-contract:
-  - uv = 0.5 ndc.xy + 0.5 and ndcZ = ndc.z with ndc from
-    snellClipToNdc(snellViewToClip(clipFromView, pView)); valid is that call's valid.
-  - valid is false (uv = (0,0), ndcZ = 0) for points at or behind the camera
-    (clip w <= 0), NaN or Inf; otherwise all results are finite (clamped to
-    +-SNELL_FLT_MAX), also for points off screen (uv outside [0,1]).
-  - ndcZ is NDC z, not a depth-buffer value: snellNdcZToDepth converts it.
-source: Oliveira & Brauwers 2007, Algorithm 1 (t' = 0.5 (S~.xy / S~.w) + 0.5).
-*/
-#ifndef SNELL_CAMERA_VIEW_TO_UV_GLSL
-#define SNELL_CAMERA_VIEW_TO_UV_GLSL
-
-
-
-
 struct SnellScreenPoint {
   vec2 uv;
   float ndcZ;
@@ -2698,811 +2340,6 @@ SNELL_FN SnellScreenPoint snellViewToUv(mat4 clipFromView, vec3 pView) {
 }
 
 #endif
-
-
-
-#ifndef SNELL_LINEAR_MARCH_STEPS
-#  define SNELL_LINEAR_MARCH_STEPS 32
-#endif
-#ifndef SNELL_LINEAR_MARCH_MAX_STEPS
-#  define SNELL_LINEAR_MARCH_MAX_STEPS 512
-#endif
-#ifndef SNELL_LINEAR_MARCH_REFINE_STEPS
-#  define SNELL_LINEAR_MARCH_REFINE_STEPS 4
-#endif
-#ifndef SNELL_LINEAR_MARCH_MAX_REFINE_STEPS
-#  define SNELL_LINEAR_MARCH_MAX_REFINE_STEPS 24
-#endif
-#ifndef SNELL_LINEAR_MARCH_MAX_DISTANCE
-#  define SNELL_LINEAR_MARCH_MAX_DISTANCE 10.0f
-#endif
-
-/* screen-space ray march: equal view-space steps, then bisection */
-SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
-                                   float maxDistance, int steps, int refineSteps) {
-  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
-      !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
-      !SNELL_FINITE(maxDistance) || !(maxDistance > 0.0f)) {
-    return snellHitMiss(0);
-  }
-  float len = length(dir);
-  if (!SNELL_FINITE(len) || !(len >= SNELL_FLT_MIN)) {
-    return snellHitMiss(0);
-  }
-  float tMax = maxDistance / len;
-  if (dir.z > 0.0f) {
-    float tNear = (-surface.zNear - origin.z) / dir.z;
-    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
-  }
-  if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
-    return snellHitMiss(0);
-  }
-  int n = clamp(steps, 1, SNELL_LINEAR_MARCH_MAX_STEPS);
-  int nr = clamp(refineSteps, 0, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS);
-  float dt = tMax / float(n);
-  int fetches = 0;
-  bool found = false;
-  float tHit = 0.0f;
-  vec2 uvHit = vec2(0.0f, 0.0f);
-  for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
-    if (i > n) {
-      break;
-    }
-    float t = float(i) * dt;
-    vec3 p = origin + t * dir;
-    SnellScreenPoint sp = snellViewToUv(surface.clipFromView, p);
-    if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
-      return snellHitMiss(fetches);
-    }
-    SnellSurfaceSample x = snellSampleSurface(depthTex, sp.uv, surface);
-    fetches = fetches + 1;
-    if (x.valid && p.z <= x.viewZ) {
-      found = true;
-      tHit = t;
-      uvHit = sp.uv;
-      break;
-    }
-  }
-  if (!found) {
-    return snellHitMiss(fetches);
-  }
-  float lo = tHit - dt;
-  for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
-    if (j >= nr) {
-      break;
-    }
-    float mid = 0.5f * (lo + tHit);
-    vec3 q = origin + mid * dir;
-    SnellScreenPoint sq = snellViewToUv(surface.clipFromView, q);
-    bool crosses = false;
-    if (sq.valid && sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f) {
-      SnellSurfaceSample y = snellSampleSurface(depthTex, sq.uv, surface);
-      fetches = fetches + 1;
-      crosses = y.valid && q.z <= y.viewZ;
-    }
-    if (crosses) {
-      tHit = mid;
-      uvHit = sq.uv;
-    } else {
-      lo = mid;
-    }
-  }
-  SnellHit h;
-  h.uv = uvHit;
-  h.position = origin + tHit * dir;
-  h.valid = true;
-  h.fetches = fetches;
-  return h;
-}
-
-SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface) {
-  return snellLinearMarch(origin, dir, depthTex, surface, SNELL_LINEAR_MARCH_MAX_DISTANCE, SNELL_LINEAR_MARCH_STEPS,
-                          SNELL_LINEAR_MARCH_REFINE_STEPS);
-}
-
-#endif
-/*
-description: perspective-correct march in pixel space (a DDA): the view-space
-  ray segment is projected once, then walked in equal pixel steps along its
-  major screen axis, every pixel on the way (stride 1) or every stride-th one,
-  with the ray's depth recovered per step by homogeneous (1/w) interpolation,
-  so no matrix product per step and no pixel skipped or visited twice.
-use: SnellHit h = snellDdaMarch(origin, dir, depthTex, surface);
-     SnellHit h = snellDdaMarch(origin, dir, depthTex, surface, maxDistance, thickness, stride, steps);
-  origin, dir        view-space ray (dir need not be normalized)
-  depthTex, surface  the depth buffer and how to read it (depth_surface.glsl);
-                     the pixel grid is that of level surface.lod
-  maxDistance        view-space length of the marched segment
-  thickness          assumed view-space thickness of the surface: a step hits
-                     when the ray's depth interval over the step overlaps
-                     [viewZ - thickness, viewZ]
-  stride             pixels per step along the major axis (>= 1)
-  steps              maximum number of steps (one fetch each)
-options:
-  SNELL_DDA_STEPS         default steps (256)
-  SNELL_DDA_MAX_STEPS     compile-time bound (1024); steps is clamped to [1, max]
-  SNELL_DDA_STRIDE        default stride (1.0f)
-  SNELL_DDA_THICKNESS     default thickness (SNELL_FLT_MAX: a solid height
-                          field, as the other strategies assume; use a finite
-                          value for opaque scenes with objects in front of
-                          others, so rays can pass behind them)
-  SNELL_DDA_MAX_DISTANCE  default maxDistance (10.0f view-space units)
-contract:
-  - segment: origin to end = origin + (min(maxDistance, 1e30)/|dir|) dir, cut
-    at the near plane z = -surface.zNear when dir.z > 0 (beyond 1e30 view
-    units the end's projection no longer moves for any scene-scale origin; the
-    cap keeps 1/w of the end a normal float, so maxDistance = SNELL_FLT_MAX
-    works as "unbounded"). Both ends are projected with surface.clipFromView:
-    uv0, uv1 and k = 1/w; Q = p/w and k are linear in screen space, so the view
-    point at screen parameter s in [0,1] is
-    (Q0 (1 - s) + Q1 s) / (k0 (1 - s) + k1 s) (perspective-correct; this form
-    is exact at both ends and never cancels, as k0, k1 > 0).
-  - step i (i = 0, 1, ...) samples uv0 + s_i (uv1 - uv0), s_i = min(i ds, 1),
-    ds = stride / (length of the segment along its major axis in pixels), or
-    ds = 1 when the whole segment spans at most stride pixels (a ray along the
-    line of sight: two steps, both halves of its depth range at one pixel); it
-    owns s in [(i - 1/2) ds, (i + 1/2) ds] clipped to [0,1], whose ends give the
-    ray's depth interval [zFar, zNear] for that step. The walk ends after the
-    step owning s = 1.
-  - a step hits when its texel is valid and zNear >= viewZ - thickness and
-    zFar <= viewZ. Empty texels do not stop the march.
-  - hit: uv = the uv that was fetched (its texel is the hit texel), position =
-    the point of the ray within the step whose z is clamp(viewZ, zFar, zNear)
-    (the crossing, when it lies in the step), on the ray, finite.
-  - the first step whose uv is off screen ends the walk: valid = false.
-  - valid = false with snellHitMiss numbers (finite) and the fetches spent when
-    no step hits within steps; with 0 fetches when: an input is NaN or Inf
-    (a NaN thickness uses the default, a NaN stride 1), |dir| is 0 or
-    denormal-small, maxDistance <= 0, the origin is in front of the near plane
-    (z > -surface.zNear), an end does not project to a normal 1/w (clip w <= 0,
-    below FLT_MIN or above 1/FLT_MIN) or to a finite Q, or the level has no
-    texels. thickness < 0 counts as 0, stride < 1 as 1.
-source: M. McGuire, M. Mara, "Efficient GPU Screen-Space Ray Tracing", JCGT
-  3(4), 2014 (pixel-space march with homogeneous interpolation of 1/w and a
-  depth interval per step); our own formulation (per-step parameter instead of
-  accumulated increments, exact crossing inside the hit step).
-*/
-#ifndef SNELL_INTERSECT_DDA_MARCH_GLSL
-#define SNELL_INTERSECT_DDA_MARCH_GLSL
-
-
-
-
-
-
-#ifndef SNELL_DDA_STEPS
-#  define SNELL_DDA_STEPS 256
-#endif
-#ifndef SNELL_DDA_MAX_STEPS
-#  define SNELL_DDA_MAX_STEPS 1024
-#endif
-#ifndef SNELL_DDA_STRIDE
-#  define SNELL_DDA_STRIDE 1.0f
-#endif
-#ifndef SNELL_DDA_THICKNESS
-#  define SNELL_DDA_THICKNESS SNELL_FLT_MAX
-#endif
-#ifndef SNELL_DDA_MAX_DISTANCE
-#  define SNELL_DDA_MAX_DISTANCE 10.0f
-#endif
-
-/* McGuire & Mara 2014: pixel-space march, z from homogeneous interpolation of 1/w */
-SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
-                                float maxDistance, float thickness, float stride, int steps) {
-  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
-      !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
-      !SNELL_FINITE(maxDistance) || !(maxDistance > 0.0f) || !SNELL_FINITE(surface.zNear)) {
-    return snellHitMiss(0);
-  }
-  float thick = isnan(thickness) ? SNELL_DDA_THICKNESS : clamp(thickness, 0.0f, SNELL_FLT_MAX);
-  float px = isnan(stride) ? 1.0f : clamp(stride, 1.0f, SNELL_FLT_MAX);
-  float len = length(dir);
-  if (!SNELL_FINITE(len) || !(len >= SNELL_FLT_MIN) || !(origin.z <= -surface.zNear)) {
-    return snellHitMiss(0);
-  }
-  float tMax = min(maxDistance, 1e30f) / len;
-  if (dir.z > 0.0f) {
-    float tNear = (-surface.zNear - origin.z) / dir.z;
-    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
-  }
-  if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
-    return snellHitMiss(0);
-  }
-  vec3 end = origin + tMax * dir;
-  vec4 h0 = snellViewToClip(surface.clipFromView, origin);
-  vec4 h1 = snellViewToClip(surface.clipFromView, end);
-  ivec2 size = SNELL_TEXTURE_SIZE(depthTex, surface.lod);
-  if (!SNELL_FINITE(end.x) || !SNELL_FINITE(end.y) || !SNELL_FINITE(end.z) ||
-      !SNELL_FINITE(h0.x) || !SNELL_FINITE(h0.y) || !SNELL_FINITE(h0.w) ||
-      !SNELL_FINITE(h1.x) || !SNELL_FINITE(h1.y) || !SNELL_FINITE(h1.w) ||
-      !(h0.w >= SNELL_FLT_MIN) || !(h1.w >= SNELL_FLT_MIN) ||
-      !(h0.w <= 1.0f / SNELL_FLT_MIN) || !(h1.w <= 1.0f / SNELL_FLT_MIN) || size.x <= 0 || size.y <= 0) {
-    return snellHitMiss(0);
-  }
-  // Homogeneous end points: k = 1/w and Q = p k are linear in screen space.
-  // They are interpolated as a (1 - s) + b s, not a + s (b - a): for a far end
-  // (k1 below the ulp of k0) k0 + s (k1 - k0) cancels to 0 at s = 1. Written
-  // out rather than mix(), which drivers may lower to the cancelling form.
-  float k0 = 1.0f / h0.w;
-  float k1 = 1.0f / h1.w;
-  vec3 q0 = origin * k0;
-  vec3 q1 = end * k1;
-  vec2 uv0 = vec2(h0.x * k0, h0.y * k0) * 0.5f + 0.5f;
-  vec2 duv = vec2(h1.x * k1, h1.y * k1) * 0.5f + 0.5f - uv0;
-  float major = max(abs(duv.x * float(size.x)), abs(duv.y * float(size.y)));
-  if (!SNELL_FINITE(major) || !SNELL_FINITE(q0.x) || !SNELL_FINITE(q0.y) ||
-      !SNELL_FINITE(q0.z) || !SNELL_FINITE(q1.x) || !SNELL_FINITE(q1.y) ||
-      !SNELL_FINITE(q1.z)) {
-    return snellHitMiss(0);
-  }
-  float ds = major > px ? px / major : 1.0f;
-  int n = clamp(steps, 1, SNELL_DDA_MAX_STEPS);
-  int fetches = 0;
-  float sA = 0.0f;
-  float zA = origin.z;
-  for (int i = 0; i < SNELL_DDA_MAX_STEPS; ++i) {
-    if (i >= n || sA >= 1.0f) {
-      break;
-    }
-    float sC = min(float(i) * ds, 1.0f);
-    float sB = min((float(i) + 0.5f) * ds, 1.0f);
-    float zB = (q0.z * (1.0f - sB) + q1.z * sB) / (k0 * (1.0f - sB) + k1 * sB);
-    vec2 uv = uv0 + sC * duv;
-    if (!(uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) {
-      return snellHitMiss(fetches);
-    }
-    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
-    fetches = fetches + 1;
-    float zNearRay = max(zA, zB);
-    float zFarRay = min(zA, zB);
-    if (x.valid && zNearRay >= x.viewZ - thick && zFarRay <= x.viewZ) {
-      // The point of the ray inside this step at depth clamp(viewZ, zFar, zNear).
-      float zHit = clamp(x.viewZ, zFarRay, zNearRay);
-      vec3 pA = (q0 * (1.0f - sA) + q1 * sA) / (k0 * (1.0f - sA) + k1 * sA);
-      vec3 pB = (q0 * (1.0f - sB) + q1 * sB) / (k0 * (1.0f - sB) + k1 * sB);
-      float f = pB.z != pA.z ? clamp((zHit - pA.z) / (pB.z - pA.z), 0.0f, 1.0f) : 0.5f;
-      SnellHit h;
-      h.uv = uv;
-      h.position = pA + f * (pB - pA);
-      h.valid = true;
-      h.fetches = fetches;
-      return h;
-    }
-    sA = sB;
-    zA = zB;
-  }
-  return snellHitMiss(fetches);
-}
-
-SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface) {
-  return snellDdaMarch(origin, dir, depthTex, surface, SNELL_DDA_MAX_DISTANCE, SNELL_DDA_THICKNESS, SNELL_DDA_STRIDE,
-                       SNELL_DDA_STEPS);
-}
-
-#endif
-/*
-description: what the two plane strategies (plane_normal.glsl, plane_depth.glsl)
-  share: the iteration options of Mayer & Assarsson's step 5 ("iteratively
-  refine the approximation, using P_e as the location to sample screen buffers
-  and generate a new plane") and the final step 4 lookup that turns a plane
-  hit into a SnellHit (snellPlaneHit, on intersect/hit_on_surface.glsl).
-use: SnellHit h = snellPlaneHit(p, planeUv, depthTex, surface, fetchesSoFar);
-options:
-  SNELL_PLANE_ITERATIONS      refinement iterations callers pass by default (1);
-                              0 is the constant-time method (one plane)
-  SNELL_PLANE_MAX_ITERATIONS  compile-time bound of the refinement loops (8); a
-                              per-call count is clamped to [0, this]
-  SNELL_PLANE_FACING_FALLBACK 1 (default): when a ray does not meet plane k
-                              ahead of its origin, plane k is replaced by the
-                              plane through the same surface point B_k facing
-                              the camera (normal = B_k, the line of sight);
-                              0: plane k is a miss (k = 0) or ends the
-                              refinement, as in the poster
-contract (snellPlaneHit): the comment above the function.
-source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
-  steps 4 and 5.
-*/
-#ifndef SNELL_INTERSECT_PLANE_REFINE_GLSL
-#define SNELL_INTERSECT_PLANE_REFINE_GLSL
-
-
-
-
-
-/*
-description: a view-space point accepted as a hit where a depth buffer has a
-  surface at its projection: the last lookup of the plane methods (Mayer &
-  Assarsson step 4) and of Wyman's distance estimate, which both produce a
-  point first and ask the buffer afterwards.
-use: SnellHit h = snellHitOnSurface(p, depthTex, surface, fetchesSoFar);
-contract:
-  - projects the view-space point p; the hit is (uv = its projection, position
-    = p) and valid exactly when p is finite, in front of the camera, projects
-    into [0,1]^2 and the depth texture has a surface at that uv
-    (snellSampleSurface valid, level s.lod): the approximation landed on the
-    surface, not in an empty texel or off screen.
-  - fetches = fetchesSoFar + 1 when p projects (the step 4 lookup; an off-screen
-    uv is counted though snellSampleSurface answers it without reading), else
-    fetchesSoFar. A miss is snellHitMiss with that count.
-source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
-  step 4.
-*/
-#ifndef SNELL_INTERSECT_HIT_ON_SURFACE_GLSL
-#define SNELL_INTERSECT_HIT_ON_SURFACE_GLSL
-
-
-
-
-
-SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
-  if (!sp.valid) {
-    return snellHitMiss(fetchesSoFar);
-  }
-  SnellSurfaceSample x = snellSampleSurface(depthTex, sp.uv, s);
-  if (!x.valid) {
-    return snellHitMiss(fetchesSoFar + 1);
-  }
-  SnellHit h;
-  h.uv = sp.uv;
-  h.position = p;
-  h.valid = true;
-  h.fetches = fetchesSoFar + 1;
-  return h;
-}
-
-#endif
-
-#ifndef SNELL_PLANE_ITERATIONS
-#  define SNELL_PLANE_ITERATIONS 1
-#endif
-#ifndef SNELL_PLANE_MAX_ITERATIONS
-#  define SNELL_PLANE_MAX_ITERATIONS 8
-#endif
-/* Why the facing fallback: near the silhouette of a convex object, the back
-   face's tangent plane at B_0 (the point behind W) leans away from the
-   refracted ray, which is bent inwards, so the ray never meets it and the
-   poster's method has no hit at all for a band of rim pixels (21.8% of a
-   glass sphere's non-TIR pixels, normal-based). The facing plane is the limit
-   of Mayer & Assarsson's blurred normal level ("a more blurred mip level gives
-   a more complete representation of the scene for drastic refraction
-   effects"): a ray going deeper always meets it, and the refinement then walks
-   along the back surface to tangent planes the ray does meet. Same fetches. */
-#ifndef SNELL_PLANE_FACING_FALLBACK
-#  define SNELL_PLANE_FACING_FALLBACK 1
-#endif
-/* 1: a plane hit whose projection lands on an empty texel is kept on the last
-   valid plane (snellPlaneHit) on a surface whose emptiness hides more of it
-   (SnellDepthSurface.closed, the default: a closed object's back faces curve
-   away behind their silhouette); 0: it is a miss on every surface. */
-#ifndef SNELL_PLANE_HOLD
-#  define SNELL_PLANE_HOLD 1
-#endif
-
-/* The last step of both plane methods (Mayer & Assarsson steps 4-5): the plane
-   hit p is accepted where the buffer has a surface at its projection. Where it has
-   none (the tangent plane of a convex object's back face lies outside the object,
-   so rim rays project past the silhouette), the plane itself is the best estimate
-   left: with SNELL_PLANE_HOLD, on a closed surface (s.closed: an open one such
-   as the opaque scene has nothing behind its empty texels but the
-   environment), the hit stays at p, valid, with uv = planeUv, the
-   texel the plane was built from, so a normal read at h.uv returns that plane's
-   normal. Off-screen or behind-the-camera p is a miss either way, and so is a
-   NaN or infinite planeUv (no texel: the hit's uv stays finite). */
-SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
-  SnellHit h = snellHitOnSurface(p, depthTex, s, fetchesSoFar);
-  if (h.valid || SNELL_PLANE_HOLD == 0 || !s.closed) {
-    return h;
-  }
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
-  if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f) ||
-      !SNELL_FINITE(planeUv.x) || !SNELL_FINITE(planeUv.y)) {
-    return h;
-  }
-  h.uv = planeUv;
-  h.position = p;
-  h.valid = true;
-  return h;
-}
-
-#endif
-
-#define SNELL_STRATEGY_SINGLE 0
-#define SNELL_STRATEGY_PLANE_NORMAL 1
-#define SNELL_STRATEGY_PLANE_DEPTH 2
-#define SNELL_STRATEGY_CBS 3
-#define SNELL_STRATEGY_BINARY 4
-#define SNELL_STRATEGY_LINEAR_BINARY 5
-#define SNELL_STRATEGY_LINEAR_MARCH 6
-#define SNELL_STRATEGY_DDA 7
-#define SNELL_STRATEGY_WYMAN 8
-
-#define SNELL_RANGE_PYRAMID 0
-#define SNELL_RANGE_EXPLICIT 1
-
-#define SNELL_EXIT_ENVIRONMENT 0
-#define SNELL_EXIT_SCENE 1
-
-#define SNELL_FALLBACK_ENVIRONMENT 0
-#define SNELL_FALLBACK_EDGE_FADE 1
-
-#define SNELL_REFLECT_ENVIRONMENT 0
-#define SNELL_REFLECT_SCENE 1
-
-struct SnellIntersectOptions {
-  int strategy;
-  int steps;
-  int refineSteps;
-  float maxDistance;
-  float thickness;
-  float stride;
-  float normalLod;
-  int maxLod;
-  int rangeSource;
-  float zNearest;
-  float zFarthest;
-  int depthFilter;
-};
-
-struct SnellTechniqueOptions {
-  SnellIntersectOptions back;
-  SnellIntersectOptions exit;
-  int exitMode;
-  int fallback;
-  float fallbackDistance;
-  float edgeFadeWidth;
-  int tirPolicy;
-  float ior;
-  float iorOutside;
-  int dispersion;
-  vec3 iors;
-  vec3 absorption;
-  bool reflection;
-  int reflectionMode;
-  SnellIntersectOptions reflect;
-  float roughness;
-  int sceneColorLevels;
-  int environmentLevels;
-  vec3 envX;
-  vec3 envY;
-  vec3 envZ;
-};
-
-SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
-  SnellIntersectOptions o;
-  o.strategy = strategy;
-  o.steps = 0;
-  o.refineSteps = 0;
-  o.maxDistance = SNELL_DDA_MAX_DISTANCE;
-  o.thickness = SNELL_DDA_THICKNESS;
-  o.stride = SNELL_DDA_STRIDE;
-  o.normalLod = 0.0f;
-  o.maxLod = -1;
-  o.rangeSource = SNELL_RANGE_PYRAMID;
-  o.zNearest = 0.0f;
-  o.zFarthest = 0.0f;
-  o.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
-  if (strategy == SNELL_STRATEGY_CBS) {
-    o.steps = SNELL_CBS_STEPS;
-  } else if (strategy == SNELL_STRATEGY_BINARY) {
-    o.steps = SNELL_BINARY_SEARCH_STEPS;
-  } else if (strategy == SNELL_STRATEGY_LINEAR_BINARY) {
-    o.steps = SNELL_LINEAR_SEARCH_STEPS;
-    o.refineSteps = SNELL_BINARY_SEARCH_STEPS;
-  } else if (strategy == SNELL_STRATEGY_PLANE_NORMAL || strategy == SNELL_STRATEGY_PLANE_DEPTH) {
-    o.steps = SNELL_PLANE_ITERATIONS;
-  } else if (strategy == SNELL_STRATEGY_LINEAR_MARCH) {
-    o.steps = SNELL_LINEAR_MARCH_STEPS;
-    o.refineSteps = SNELL_LINEAR_MARCH_REFINE_STEPS;
-    o.maxDistance = SNELL_LINEAR_MARCH_MAX_DISTANCE;
-  } else if (strategy == SNELL_STRATEGY_DDA) {
-    o.steps = SNELL_DDA_STEPS;
-  }
-  return o;
-}
-
-SNELL_FN SnellTechniqueOptions snellTechniqueOptions() {
-  SnellTechniqueOptions o;
-  o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
-  o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
-  o.exitMode = SNELL_EXIT_ENVIRONMENT;
-  o.fallback = SNELL_FALLBACK_ENVIRONMENT;
-  o.fallbackDistance = 1.0f;
-  o.edgeFadeWidth = 0.1f;
-  o.tirPolicy = SNELL_TIR_CRITICAL;
-  o.ior = 1.5f;
-  o.iorOutside = 1.0f;
-  o.dispersion = 1;
-  o.iors = vec3(1.5f, 1.5f, 1.5f);
-  o.absorption = vec3(0.0f, 0.0f, 0.0f);
-  o.reflection = true;
-  o.reflectionMode = SNELL_REFLECT_ENVIRONMENT;
-  o.reflect = snellIntersectOptions(SNELL_STRATEGY_LINEAR_MARCH);
-  o.roughness = 0.0f;
-  o.sceneColorLevels = 1;
-  o.environmentLevels = 1;
-  o.envX = vec3(1.0f, 0.0f, 0.0f);
-  o.envY = vec3(0.0f, 1.0f, 0.0f);
-  o.envZ = vec3(0.0f, 0.0f, 1.0f);
-  return o;
-}
-
-#endif
-/*
-description: named presets for the published two-interface refraction methods
-  and the baselines, all through the same technique (snellTwoInterfaceTrace /
-  snellTwoInterfaceRefraction), so the lab compares them fairly. Each returns
-  snellTechniqueOptions() with both intersection slots set.
-use: SnellTechniqueOptions o = snellPresetDir();           // then adjust fields
-     SnellTechniqueOptions o = snellPresetPlaneNormal(2);
-presets (back slot / exit slot):
-  snellPresetDir()                 Oliveira & Brauwers 2007 (DIR): CBS, 5 steps,
-                                   range from the min/max pyramid's top level /
-                                   the same
-  snellPresetDirBounds(zNearest, zFarthest)  DIR with the bounding-box range
-                                   (their suggested speed-up: no reduction
-                                   pass); the numbers from snellDepthRangeFromBox;
-                                   back slot only, the exit slot keeps the pyramid
-  snellPresetIsr()                 Wyman 2005 (ISR): distance interpolation
-                                   between d_V and the per-vertex d_N /
-                                   single sample
-  snellPresetPlaneNormal(n)        Mayer & Assarsson, normal-based plane, n
-                                   refinement iterations / the same
-  snellPresetPlaneDepth(n)         Mayer & Assarsson, depth-based plane (depth
-                                   mips = the pyramid), n iterations / the same
-  snellPresetSingleSample()        the single-sample (GPU Gems) baseline / the same
-  snellPresetLinearMarch()         screen-space ray march, view-space steps +
-                                   bisection / the same
-  snellPresetDdaMarch()            perspective-correct pixel DDA march / the same
-  snellPresetImageSpaceBound()     not a real-time method: the best any
-                                   image-space technique can do with the same
-                                   buffers, for measuring the others against:
-                                   the linear march at its compile-time limits
-                                   (SNELL_LINEAR_MARCH_MAX_STEPS steps of at
-                                   most ~1 px, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS
-                                   bisections) on bilinear depth reads
-                                   (SNELL_DEPTH_FILTER_BILINEAR: exact on
-                                   planes between texel centres) / the same; set back.maxDistance
-                                   and exit.maxDistance to the depths the
-                                   object and the scene span
-the technique table (the one list of named techniques: snell-lab's
-  --technique names, the benchmarks and the tests all draw on it; names and
-  labels for C++ in include/snell/technique_table.hpp):
-  id                              name            preset
-  SNELL_TECHNIQUE_SINGLE          single          snellPresetSingleSample()
-  SNELL_TECHNIQUE_PLANE_NORMAL_0  plane-normal-0  snellPresetPlaneNormal(0)
-  SNELL_TECHNIQUE_PLANE_NORMAL_1  plane-normal-1  snellPresetPlaneNormal(1)
-  SNELL_TECHNIQUE_PLANE_NORMAL_2  plane-normal-2  snellPresetPlaneNormal(2)
-  SNELL_TECHNIQUE_PLANE_DEPTH     plane-depth     snellPresetPlaneDepth(1)
-  SNELL_TECHNIQUE_DIR             dir             snellPresetDir()
-  SNELL_TECHNIQUE_ISR             isr             snellPresetIsr()
-  SNELL_TECHNIQUE_LINEAR_MARCH    linear-march    snellPresetLinearMarch()
-  SNELL_TECHNIQUE_DDA             dda             snellPresetDdaMarch()
-  SNELL_TECHNIQUE_IMAGE_SPACE_BOUND  image-space-bound  snellPresetImageSpaceBound()
-  SNELL_TECHNIQUE_COUNT           the number of ids (ids are 0 .. COUNT - 1)
-  SnellTechniqueOptions o = snellTechniquePreset(SNELL_TECHNIQUE_PLANE_NORMAL_1);
-  Adding a technique: a preset function here, an id, a branch in
-  snellTechniquePreset and a row in include/snell/technique_table.hpp (a
-  compile-time check there keeps the two the same length).
-options: the defaults of technique_options.glsl and of each strategy's file.
-contract: pure constructors, no texture access; iteration counts are stored as
-  given (each strategy clamps them). snellTechniquePreset of an id outside
-  0 .. SNELL_TECHNIQUE_COUNT - 1: snellTechniquePresetSlots(-1, -1), whose
-  slots answer every ray with a miss (snellIntersectWith).
-source: Oliveira & Brauwers 2007 (sec. 3.3, 5 steps; sec. 6, bounding box);
-  Wyman 2005 via O&B 2007 sec. 2.1, eqs. 1-2; Mayer & Assarsson,
-  "Constant-Time Light Refraction Simulation" (methods 1 and 2, step 5);
-  McGuire & Mara 2014 (DDA).
-*/
-#ifndef SNELL_SHADE_TECHNIQUE_PRESETS_GLSL
-#define SNELL_SHADE_TECHNIQUE_PRESETS_GLSL
-
-
-
-SNELL_FN SnellTechniqueOptions snellTechniquePresetSlots(int backStrategy, int exitStrategy) {
-  SnellTechniqueOptions o = snellTechniqueOptions();
-  o.back = snellIntersectOptions(backStrategy);
-  o.exit = snellIntersectOptions(exitStrategy);
-  return o;
-}
-
-/* Oliveira & Brauwers 2007, sec. 3.3: CBS with c = 5 */
-SNELL_FN SnellTechniqueOptions snellPresetDir() {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_CBS, SNELL_STRATEGY_CBS);
-  o.back.steps = 5;
-  o.exit.steps = 5;
-  return o;
-}
-
-/* Oliveira & Brauwers 2007, sec. 6: bounding-box range instead of the reduction */
-SNELL_FN SnellTechniqueOptions snellPresetDirBounds(float zNearest, float zFarthest) {
-  SnellTechniqueOptions o = snellPresetDir();
-  o.back.rangeSource = SNELL_RANGE_EXPLICIT;
-  o.back.zNearest = zNearest;
-  o.back.zFarthest = zFarthest;
-  return o;
-}
-
-/* Wyman 2005 (O&B 2007 eqs. 1-2) */
-SNELL_FN SnellTechniqueOptions snellPresetIsr() {
-  return snellTechniquePresetSlots(SNELL_STRATEGY_WYMAN, SNELL_STRATEGY_SINGLE);
-}
-
-/* Mayer & Assarsson, method 1 + step 5 */
-SNELL_FN SnellTechniqueOptions snellPresetPlaneNormal(int iterations) {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_NORMAL, SNELL_STRATEGY_PLANE_NORMAL);
-  o.back.steps = iterations;
-  o.exit.steps = iterations;
-  return o;
-}
-
-/* Mayer & Assarsson, method 2 + step 5 */
-SNELL_FN SnellTechniqueOptions snellPresetPlaneDepth(int iterations) {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_DEPTH, SNELL_STRATEGY_PLANE_DEPTH);
-  o.back.steps = iterations;
-  o.exit.steps = iterations;
-  return o;
-}
-
-SNELL_FN SnellTechniqueOptions snellPresetSingleSample() {
-  return snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
-}
-
-SNELL_FN SnellTechniqueOptions snellPresetLinearMarch() {
-  return snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
-}
-
-SNELL_FN SnellTechniqueOptions snellPresetDdaMarch() {
-  return snellTechniquePresetSlots(SNELL_STRATEGY_DDA, SNELL_STRATEGY_DDA);
-}
-
-/* The image-space bound: the linear march at its limits, both slots. */
-SNELL_FN SnellTechniqueOptions snellPresetImageSpaceBound() {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
-  o.back.steps = SNELL_LINEAR_MARCH_MAX_STEPS;
-  o.back.refineSteps = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
-  o.exit.steps = SNELL_LINEAR_MARCH_MAX_STEPS;
-  o.exit.refineSteps = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
-  o.back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-  o.exit.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-  return o;
-}
-
-#define SNELL_TECHNIQUE_SINGLE 0
-#define SNELL_TECHNIQUE_PLANE_NORMAL_0 1
-#define SNELL_TECHNIQUE_PLANE_NORMAL_1 2
-#define SNELL_TECHNIQUE_PLANE_NORMAL_2 3
-#define SNELL_TECHNIQUE_PLANE_DEPTH 4
-#define SNELL_TECHNIQUE_DIR 5
-#define SNELL_TECHNIQUE_ISR 6
-#define SNELL_TECHNIQUE_LINEAR_MARCH 7
-#define SNELL_TECHNIQUE_DDA 8
-#define SNELL_TECHNIQUE_IMAGE_SPACE_BOUND 9
-#define SNELL_TECHNIQUE_COUNT 10
-
-/* the technique table's constructor: id -> preset */
-SNELL_FN SnellTechniqueOptions snellTechniquePreset(int technique) {
-  if (technique == SNELL_TECHNIQUE_SINGLE) {
-    return snellPresetSingleSample();
-  }
-  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_0) {
-    return snellPresetPlaneNormal(0);
-  }
-  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_1) {
-    return snellPresetPlaneNormal(1);
-  }
-  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_2) {
-    return snellPresetPlaneNormal(2);
-  }
-  if (technique == SNELL_TECHNIQUE_PLANE_DEPTH) {
-    return snellPresetPlaneDepth(1);
-  }
-  if (technique == SNELL_TECHNIQUE_DIR) {
-    return snellPresetDir();
-  }
-  if (technique == SNELL_TECHNIQUE_ISR) {
-    return snellPresetIsr();
-  }
-  if (technique == SNELL_TECHNIQUE_LINEAR_MARCH) {
-    return snellPresetLinearMarch();
-  }
-  if (technique == SNELL_TECHNIQUE_DDA) {
-    return snellPresetDdaMarch();
-  }
-  if (technique == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND) {
-    return snellPresetImageSpaceBound();
-  }
-  return snellTechniquePresetSlots(-1, -1);
-}
-
-#endif
-/*
-description: the strategy dispatcher: one call that runs any intersection
-  strategy of intersect/ against a depth buffer, chosen by an int constant, so
-  the back-face slot and the scene slot of a technique are interchangeable.
-use: SnellHit h = snellIntersectWith(SNELL_STRATEGY_CBS, origin, dir, depthTex, normalTex,
-                                     pyramidTex, surface, snellIntersectOptions(SNELL_STRATEGY_CBS));
-  strategy    SNELL_STRATEGY_* (technique_options.glsl); usually o.strategy
-  origin, dir view-space ray (P1, T1 for the back faces; P2, T2 for the scene)
-  depthTex    the depth buffer `surface` describes
-  normalTex   its view-space normals (PLANE_NORMAL only; any texture otherwise)
-  pyramidTex  its depth min/max pyramid (intersect/depth_pyramid.glsl), full mip
-              chain: the search range for CBS / BINARY / LINEAR_BINARY when
-              o.rangeSource is SNELL_RANGE_PYRAMID, and the depth mips of
-              PLANE_DEPTH (its .x is the mean depth value)
-  o           parameters (snellIntersectOptions(strategy) gives the defaults)
-options:
-  SNELL_TECHNIQUE_STRATEGIES  bit mask of the strategies compiled in (bit k =
-                              strategy k, 0x1FF = all, the default). Every
-                              technique call inlines the dispatcher, and with
-                              it every strategy: a shader that uses one or two
-                              presets compiles much faster (llvmpipe: minutes
-                              -> seconds) with only their bits, e.g.
-                              #define SNELL_TECHNIQUE_STRATEGIES ((1 << SNELL_STRATEGY_CBS) | 1)
-                              A strategy left out answers snellHitMiss(0).
-  the rest: technique_options.glsl
-contract:
-  - SINGLE and WYMAN: snellIntersectSingleSample(origin, dir, depthTex, surface).
-  - PLANE_NORMAL: snellIntersectPlaneNormal(.., normalTex, surface, o.normalLod, o.steps).
-  - PLANE_DEPTH: snellIntersectPlaneDepth(origin, dir, pyramidTex, surface,
-    maxLod, o.steps), maxLod = o.maxLod, or snellTextureTopLod(pyramidTex) when
-    o.maxLod < 0.
-  - CBS / BINARY / LINEAR_BINARY: the range [zNearest, zFarthest] is
-    snellDepthRangeFromPyramid(pyramidTex) (1 fetch, counted in h.fetches) or
-    (o.zNearest, o.zFarthest); an invalid pyramid range is a miss with that
-    fetch; then the strategy with o.steps (and o.refineSteps for LINEAR_BINARY).
-  - LINEAR_MARCH: snellLinearMarch(.., o.maxDistance, o.steps, o.refineSteps);
-    DDA: snellDdaMarch(.., o.maxDistance, o.thickness, o.stride, o.steps).
-  - any other strategy value: snellHitMiss(0).
-  - every result is the strategy's own SnellHit (contracts in intersect/), with
-    the range fetch added.
-  - the strategy reads the surface with o.depthFilter (the surface's
-    depthFilter field is replaced by it).
-source: DESIGN.md sec. 2 ("every intersector is interchangeable in both
-  slots"); the strategies' own sources.
-*/
-#ifndef SNELL_SHADE_TECHNIQUE_INTERSECT_GLSL
-#define SNELL_SHADE_TECHNIQUE_INTERSECT_GLSL
-
-
-
-/*
-description: the single-sample baseline that Mayer & Assarsson compare their
-  plane methods against (the "GPU Gems" row of their table): ONE depth lookup,
-  no search. The surface point B directly behind the ray origin W gives a
-  distance d = |B - W|, and the hit is taken d further along the ray (the
-  thickness approximation of Wyman 2005 and Sousa 2005: the ray travels as far
-  as the surface is behind its start).
-use: SnellHit h = snellIntersectSingleSample(origin, dir, depthTex, surface);
-  origin    view-space ray start W (z < 0): the front-face point for the back-face
-            buffer, the exit point for the opaque scene buffer
-  dir       ray direction (any length; normalized inside)
-  depthTex  the depth texture `surface` describes (read at level surface.lod)
-contract:
-  - uvW = projection of W; B = snellSurfacePoint(depthTex, uvW, surface) (the
-    texel centre point); d = |B - W|; position = W + d normalize(dir); uv = its
-    projection. fetches = 1 always.
-  - valid is true exactly when B exists and the position lies in front of the
-    camera and projects into [0,1]^2. It says nothing about whether the surface
-    exists at uv (no second lookup: that is the baseline's point); exact when
-    dir points from W straight at B (d is then the true distance).
-  - any direction is accepted, also one towards the camera (the answer is then
-    the point d towards the camera, which the caller asked for).
-  - valid = false (snellHitMiss): origin or dir NaN/Inf, |dir|^2 below 1e-30 or
-    overflowing, origin at or behind the camera plane (no projection): fetches 0;
-    W projecting off screen, B empty/invalid, the position off screen or behind
-    the camera: fetches 1 (the lookup is counted once W projects, as a shader
-    would issue it).
-source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation"
-  (the single-sample row of the results table, step 2 for B); T. Sousa, "Generic
-  Refraction Simulation", GPU Gems 2 ch. 19 (2005); C. Wyman, "An Approximate
-  Image-Space Approach for Interactive Refraction", SIGGRAPH 2005 (P2 ~ P1 + d T1).
-*/
-#ifndef SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
-#define SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
-
-
-
 
 
 /*
@@ -3776,6 +2613,132 @@ SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D 
   h.position = p;
   h.valid = true;
   h.fetches = 1;
+  return h;
+}
+
+#endif
+/*
+description: what the two plane strategies (plane_normal.glsl, plane_depth.glsl)
+  share: the iteration options of Mayer & Assarsson's step 5 ("iteratively
+  refine the approximation, using P_e as the location to sample screen buffers
+  and generate a new plane") and the final step 4 lookup that turns a plane
+  hit into a SnellHit (snellPlaneHit, on intersect/hit_on_surface.glsl).
+use: SnellHit h = snellPlaneHit(p, planeUv, depthTex, surface, fetchesSoFar);
+options:
+  SNELL_PLANE_ITERATIONS      refinement iterations callers pass by default (1);
+                              0 is the constant-time method (one plane)
+  SNELL_PLANE_MAX_ITERATIONS  compile-time bound of the refinement loops (8); a
+                              per-call count is clamped to [0, this]
+  SNELL_PLANE_FACING_FALLBACK 1 (default): when a ray does not meet plane k
+                              ahead of its origin, plane k is replaced by the
+                              plane through the same surface point B_k facing
+                              the camera (normal = B_k, the line of sight);
+                              0: plane k is a miss (k = 0) or ends the
+                              refinement, as in the poster
+contract (snellPlaneHit): the comment above the function.
+source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
+  steps 4 and 5.
+*/
+#ifndef SNELL_INTERSECT_PLANE_REFINE_GLSL
+#define SNELL_INTERSECT_PLANE_REFINE_GLSL
+
+
+
+
+
+/*
+description: a view-space point accepted as a hit where a depth buffer has a
+  surface at its projection: the last lookup of the plane methods (Mayer &
+  Assarsson step 4) and of Wyman's distance estimate, which both produce a
+  point first and ask the buffer afterwards.
+use: SnellHit h = snellHitOnSurface(p, depthTex, surface, fetchesSoFar);
+contract:
+  - projects the view-space point p; the hit is (uv = its projection, position
+    = p) and valid exactly when p is finite, in front of the camera, projects
+    into [0,1]^2 and the depth texture has a surface at that uv
+    (snellSampleSurface valid, level s.lod): the approximation landed on the
+    surface, not in an empty texel or off screen.
+  - fetches = fetchesSoFar + 1 when p projects (the step 4 lookup; an off-screen
+    uv is counted though snellSampleSurface answers it without reading), else
+    fetchesSoFar. A miss is snellHitMiss with that count.
+source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
+  step 4.
+*/
+#ifndef SNELL_INTERSECT_HIT_ON_SURFACE_GLSL
+#define SNELL_INTERSECT_HIT_ON_SURFACE_GLSL
+
+
+
+
+
+SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  if (!sp.valid) {
+    return snellHitMiss(fetchesSoFar);
+  }
+  SnellSurfaceSample x = snellSampleSurface(depthTex, sp.uv, s);
+  if (!x.valid) {
+    return snellHitMiss(fetchesSoFar + 1);
+  }
+  SnellHit h;
+  h.uv = sp.uv;
+  h.position = p;
+  h.valid = true;
+  h.fetches = fetchesSoFar + 1;
+  return h;
+}
+
+#endif
+
+#ifndef SNELL_PLANE_ITERATIONS
+#  define SNELL_PLANE_ITERATIONS 1
+#endif
+#ifndef SNELL_PLANE_MAX_ITERATIONS
+#  define SNELL_PLANE_MAX_ITERATIONS 8
+#endif
+/* Why the facing fallback: near the silhouette of a convex object, the back
+   face's tangent plane at B_0 (the point behind W) leans away from the
+   refracted ray, which is bent inwards, so the ray never meets it and the
+   poster's method has no hit at all for a band of rim pixels (21.8% of a
+   glass sphere's non-TIR pixels, normal-based). The facing plane is the limit
+   of Mayer & Assarsson's blurred normal level ("a more blurred mip level gives
+   a more complete representation of the scene for drastic refraction
+   effects"): a ray going deeper always meets it, and the refinement then walks
+   along the back surface to tangent planes the ray does meet. Same fetches. */
+#ifndef SNELL_PLANE_FACING_FALLBACK
+#  define SNELL_PLANE_FACING_FALLBACK 1
+#endif
+/* 1: a plane hit whose projection lands on an empty texel is kept on the last
+   valid plane (snellPlaneHit) on a surface whose emptiness hides more of it
+   (SnellDepthSurface.closed, the default: a closed object's back faces curve
+   away behind their silhouette); 0: it is a miss on every surface. */
+#ifndef SNELL_PLANE_HOLD
+#  define SNELL_PLANE_HOLD 1
+#endif
+
+/* The last step of both plane methods (Mayer & Assarsson steps 4-5): the plane
+   hit p is accepted where the buffer has a surface at its projection. Where it has
+   none (the tangent plane of a convex object's back face lies outside the object,
+   so rim rays project past the silhouette), the plane itself is the best estimate
+   left: with SNELL_PLANE_HOLD, on a closed surface (s.closed: an open one such
+   as the opaque scene has nothing behind its empty texels but the
+   environment), the hit stays at p, valid, with uv = planeUv, the
+   texel the plane was built from, so a normal read at h.uv returns that plane's
+   normal. Off-screen or behind-the-camera p is a miss either way, and so is a
+   NaN or infinite planeUv (no texel: the hit's uv stays finite). */
+SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+  SnellHit h = snellHitOnSurface(p, depthTex, s, fetchesSoFar);
+  if (h.valid || SNELL_PLANE_HOLD == 0 || !s.closed) {
+    return h;
+  }
+  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f) ||
+      !SNELL_FINITE(planeUv.x) || !SNELL_FINITE(planeUv.y)) {
+    return h;
+  }
+  h.uv = planeUv;
+  h.position = p;
+  h.valid = true;
   return h;
 }
 
@@ -4107,172 +3070,954 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
 }
 
 #endif
-
-
-
-
-
+/*
+description: conservative binary search (CBS): intersect a view-space ray with
+  a depth-buffer surface by a binary search in texture space that only ever
+  advances along the ray, and only onto texels that hold a surface, so the
+  result never maps to an empty texel (no undefined normal at the silhouette).
+use: SnellHit h = snellConservativeBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest);
+     SnellHit h = snellConservativeBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, steps);
+     if (h.valid) { vec4 n2 = SNELL_TEXEL_FETCH(normalTex, snellUvToPixel(h.uv, size), 0); ... }
+  origin, dir          view-space ray (P1 and T1 in the paper; dir need not be normalized)
+  depthTex, surface    the depth buffer and how to read it (depth_surface.glsl);
+                       back-face buffer or opaque scene buffer alike
+  zNearest, zFarthest  the depth range to search, as view-space z (< 0): see
+                       search_segment.glsl (min/max pyramid top level, or a
+                       bounding volume; two numbers either way)
+  steps                binary steps c (each one texel fetch)
+options:
+  SNELL_CBS_STEPS      default steps (5, the paper's choice: beta error <= 3.125%)
+  SNELL_CBS_MAX_STEPS  compile-time loop bound (24); steps is clamped to
+                       [0, SNELL_CBS_MAX_STEPS] (beyond ~24 halvings beta is
+                       below float resolution anyway)
+contract:
+  - the segment S-E is snellSearchSegment(origin, dir, zNearest, zFarthest,
+    surface.clipFromView); beta in [0,1] along it (eq. 5). Starting at beta = 0,
+    step i (dBeta = 0.5^i) tests beta + dBeta: z = S.z + b (E.z - S.z), uv =
+    snellTexRayUv (eqs. 9-10), one snellSampleSurface fetch; it advances (beta
+    += dBeta) only when the texel is valid and the point is strictly in front of
+    the surface (z > viewZ, Algorithm 2's -P.z < storedDepth); an empty or
+    off-screen texel never lets it advance.
+  - valid means: the returned point maps to a valid (non-empty, on-screen)
+    texel. After at least one advance it is the last point that advanced (its uv
+    is the uv that was fetched, so the texel is exactly the one tested). When
+    no step advanced, the start S itself is tested with one more fetch (counted)
+    and returned if its texel is valid: then the true crossing, if the ray
+    crosses the surface once on S-E, has beta < 0.5^c (or the ray starts behind
+    the surface).
+  - precision: if the ray crosses the surface once on S-E (in front of it at S,
+    behind it, or over an empty texel, at E), the returned beta is at most
+    0.5^c before the crossing: beta_error = 0.5^c - 0.5^k <= 0.5^c for a
+    crossing that needs k > c steps (the paper, sec. 3.3). After an advance the
+    returned point is strictly in front of the surface at its texel (never past
+    it); S is returned whatever its depth order (the ray may start behind).
+  - a ray that stays in front of the surface up to E returns a point near E
+    (the paper's behaviour: the search range is assumed to contain the hit).
+  - position = S + beta (E - S), uv its texture coordinate; fetches = steps
+    performed (+1 for the start test).
+  - valid = false, with snellHitMiss numbers (finite), when the segment is
+    invalid (dir.z >= 0: rays towards the camera; zNearest <= zFarthest
+    including Zmin == Zmax; NaN/Inf inputs; planes at or behind the eye): 0
+    fetches; or when nothing advanced and S maps to an empty or off-screen
+    texel (rays leaving the screen, all-empty buffers).
+source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
+  Objects", I3D 2007, sec. 3.3, Algorithm 2, the error bound
+  beta_error = 0.5^c - 0.5^k; eqs. 3-10 for the parameterization.
+*/
+#ifndef SNELL_INTERSECT_CONSERVATIVE_BINARY_SEARCH_GLSL
+#define SNELL_INTERSECT_CONSERVATIVE_BINARY_SEARCH_GLSL
 
 /*
-description: the depth range [zNearest, zFarthest] the texture-space searches
-  (conservative binary search, binary, linear+binary) walk, from the two
-  sources Oliveira & Brauwers name: the top level of the depth min/max pyramid
-  (their 2nd pass, exact for the buffer) or the object's bounding box (their
-  suggested speed-up: no reduction pass, a looser range). Plus the top mip
-  level of a texture, which the range and the depth-based plane need.
-use: SnellDepthRange r = snellDepthRangeFromPyramid(pyramidTex);
-     SnellDepthRange r = snellDepthRangeFromBox(viewFromObject, boxMin, boxMax);
-     int top = snellTextureTopLod(tex);
-  pyramidTex      a depth min/max pyramid (intersect/depth_pyramid.glsl layout:
-                  y nearest, z farthest view distance, w coverage), all levels
-  viewFromObject  object-to-view transform (camera at the origin looking down -Z)
-  boxMin, boxMax  the object-space axis-aligned bounding box
-options:
-  SNELL_DEPTH_RANGE_MARGIN  relative widening of the pyramid range (1e-3f):
-                            zNearest * (1 - m), zFarthest * (1 + m), so a
-                            fronto-parallel surface (Zmin == Zmax, which the
-                            searches reject) still gets a range and the
-                            surface lies strictly inside it
+description: the perspective texture-space parameterization of a view-space ray
+  segment (Oliveira & Brauwers 2007, sec. 3.2.1, eqs. 3-10, Algorithm 1): the
+  segment S-E of the refracted ray T1 between two constant-z planes, and for any
+  point P on it, from P.z alone, the image-space parameter alpha and the uv where
+  P projects, without a matrix product per step.
+use: SnellTexRay r = snellTexRaySetup(p1, t1, zNearest, zFarthest, clipFromView);
+     // march in 3D: P.z = mix(r.s.z, r.e.z, beta)  (eq. 5)
+     vec2 uv = snellTexRayUv(r, pz);   float alpha = snellTexRayAlpha(r, pz);
+  p1         view-space start of the ray (P1, the front-face hit)
+  t1         ray direction T1 (need not be normalized: eqs. 3-4 divide by T1.z)
+  zNearest   view-space z of the plane where the search starts, the back-face
+             depth nearest to the camera (the paper's Zmin, a minimum *distance*;
+             as a right-handed view-space z it is the LARGER, less negative value)
+  zFarthest  view-space z of the plane where it ends (the paper's Zmax, the
+             farthest back-face depth; the more negative value). Both are z
+             values (< 0), not distances and not the camera's clip planes.
+  clipFromView  the camera projection; eqs. 8-9 assume clip w = -z (true for every
+             matrix of perspective.glsl, glm::perspective*, glFrustum).
 contract:
-  - snellTextureTopLod: floor(log2(max(width, height))) of level 0 (the last
-    level of a full GL mip chain); 0 for a 1x1 or size-0 texture.
-  - snellDepthRangeFromPyramid: one SNELL_TEXEL_FETCH of texel (0, 0) at the
-    top level; valid when its coverage w > 0 and 0 < y <= z are finite;
-    zNearest = -y (1 - margin), zFarthest = -z (1 + margin). Invalid (all 0)
-    for an empty buffer.
-  - snellDepthRangeFromBox: the 8 corners transformed by viewFromObject
-    (w = 1 assumed: an affine transform); zNearest = the largest corner z,
-    zFarthest = the smallest, no fetch. Valid when every corner z is finite
-    and zFarthest < 0; a box reaching to or behind the camera plane gets
-    zNearest = -FLT_MIN (the searches then start at the ray origin). A flat box
-    facing the camera (zNearest == zFarthest) is widened by
-    SNELL_DEPTH_RANGE_MARGIN as for the pyramid. Invalid: all 0.
+  - S = P1 + ((zNearest - P1.z)/T1.z) T1 (eq. 3), E likewise with zFarthest (eq.
+    4); S.z == zNearest and E.z == zFarthest exactly. S and E are the
+    intersections of the LINE with the planes: when T1 points towards the camera
+    (T1.z > 0) they lie behind P1 on the ray; the caller decides what that means.
+  - k1 = 1/S.z, k2 = S.z E.z/(S.z - E.z) (eq. 9), ts = t's = 0.5 S~.xy/S~.w + 0.5,
+    dt = t'e - t's (eq. 10, Algorithm 1).
+  - snellTexRayAlpha(r, pz) = (1/pz - k1) k2 (eq. 9), evaluated as the equal
+    ((S.z - pz)/pz) (k1 k2) = ((S.z - pz)/pz) E.z/(S.z - E.z), which has no
+    cancellation when pz is close to S.z. alpha = 0 at S.z, 1 at E.z; pz outside
+    [E.z, S.z] extrapolates along the line (alpha outside [0,1]); never clamped
+    to [0,1], only to +-SNELL_FLT_MAX.
+  - snellTexRayUv(r, pz) = ts + alpha dt (eq. 10): the uv where the point of the
+    line with z = pz projects (equal to projecting P with clipFromView).
+  - zNearest == zFarthest: the segment is a point: S == E, k2 = 0, dt = 0,
+    alpha = 0 for every pz, uv = ts; valid is true.
+  - valid = false, with every field 0 (so alpha = 0 and uv = (0,0)), when: any
+    input is NaN or Inf (matrix included); T1.z == 0 (the ray is parallel to the
+    planes and never reaches them); zNearest >= 0 or zFarthest >= 0 (denormal
+    values count as 0 throughout: GPUs may flush them); S or E
+    project with clip w <= 0; or any result overflows (e.g. T1.z so small that S
+    is at infinity). A plane at or behind the eye (z >= 0) is rejected rather than
+    clamped to the near plane: eq. 8 needs S~.w = -S.z > 0, the back-face depth
+    extremes of a rendered object always lie in front of the near plane, so such
+    input is a caller bug, and clamping would silently search a segment the caller
+    did not ask for.
+  - alpha (and uv) for a valid ray and pz >= 0 (or denormal), NaN or Inf (no
+    projection): alpha 0,
+    uv = ts, i.e. the search start.
 source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
-  Objects", I3D 2007, sec. 3 (2nd pass: min/max reduction) and sec. 6
-  ("using the limits of the object's bounding box as Zmin and Zmax").
+  Objects", I3D 2007, sec. 3.2.1, eqs. 3, 4, 5, 6, 8, 9, 10 and Algorithm 1.
 */
-#ifndef SNELL_INTERSECT_DEPTH_RANGE_GLSL
-#define SNELL_INTERSECT_DEPTH_RANGE_GLSL
+#ifndef SNELL_CAMERA_TEX_RAY_GLSL
+#define SNELL_CAMERA_TEX_RAY_GLSL
 
 
 
-#ifndef SNELL_DEPTH_RANGE_MARGIN
-#  define SNELL_DEPTH_RANGE_MARGIN 1e-3f
-#endif
 
-struct SnellDepthRange {
-  float zNearest;
-  float zFarthest;
+struct SnellTexRay {
+  vec3 s;      // S, on the plane z = zNearest (eq. 3)
+  vec3 e;      // E, on the plane z = zFarthest (eq. 4)
+  float k1;    // 1 / S.z (eq. 9)
+  float k2;    // S.z E.z / (S.z - E.z) (eq. 9); 0 when S.z == E.z
+  vec2 ts;     // t's: uv of S (eq. 10)
+  vec2 dt;     // t'e - t's (Algorithm 1)
   bool valid;
 };
 
-SNELL_FN SnellDepthRange snellDepthRangeInvalid() {
-  SnellDepthRange r;
-  r.zNearest = 0.0f;
-  r.zFarthest = 0.0f;
+SNELL_FN SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, float zFarthest, mat4 clipFromView) {
+  SnellTexRay r;
+  r.s = vec3(0.0f, 0.0f, 0.0f);
+  r.e = vec3(0.0f, 0.0f, 0.0f);
+  r.k1 = 0.0f;
+  r.k2 = 0.0f;
+  r.ts = vec2(0.0f, 0.0f);
+  r.dt = vec2(0.0f, 0.0f);
   r.valid = false;
+  if (!SNELL_FINITE(p1.x) || !SNELL_FINITE(p1.y) || !SNELL_FINITE(p1.z) ||
+      !SNELL_FINITE(t1.x) || !SNELL_FINITE(t1.y) || !SNELL_FINITE(t1.z) ||
+      !SNELL_FINITE(zNearest) || !SNELL_FINITE(zFarthest)) {
+    return r;
+  }
+  if (!(abs(t1.z) >= SNELL_FLT_MIN) || !(zNearest <= -SNELL_FLT_MIN) ||
+      !(zFarthest <= -SNELL_FLT_MIN)) {
+    return r;
+  }
+  float ls = (zNearest - p1.z) / t1.z;
+  float le = (zFarthest - p1.z) / t1.z;
+  vec3 s = vec3(p1.x + ls * t1.x, p1.y + ls * t1.y, zNearest);
+  vec3 e = vec3(p1.x + le * t1.x, p1.y + le * t1.y, zFarthest);
+  SnellNdc ns = snellClipToNdc(snellViewToClip(clipFromView, s));
+  SnellNdc ne = snellClipToNdc(snellViewToClip(clipFromView, e));
+  if (!SNELL_FINITE(s.x) || !SNELL_FINITE(s.y) || !SNELL_FINITE(e.x) ||
+      !SNELL_FINITE(e.y) || !ns.valid || !ne.valid) {
+    return r;
+  }
+  vec2 ts = vec2(ns.ndc.x, ns.ndc.y) * 0.5f + 0.5f;
+  vec2 te = vec2(ne.ndc.x, ne.ndc.y) * 0.5f + 0.5f;
+  vec2 dt = te - ts;
+  float k1 = 1.0f / zNearest;
+  float k2 = zNearest == zFarthest ? 0.0f : (zNearest * zFarthest) / (zNearest - zFarthest);
+  if (!SNELL_FINITE(ts.x) || !SNELL_FINITE(ts.y) || !SNELL_FINITE(dt.x) ||
+      !SNELL_FINITE(dt.y) || !SNELL_FINITE(k1) || !SNELL_FINITE(k2) ||
+      !SNELL_FINITE(k1 * k2)) {
+    return r;
+  }
+  r.s = s;
+  r.e = e;
+  r.k1 = k1;
+  r.k2 = k2;
+  r.ts = ts;
+  r.dt = dt;
+  r.valid = true;
   return r;
 }
 
-SNELL_FN int snellTextureTopLod(SNELL_TEX2D tex) {
-  ivec2 size = SNELL_TEXTURE_SIZE(tex, 0);
-  int m = max(size.x, size.y);
-  int lod = 0;
-  for (int i = 0; i < 31; ++i) {
-    if (m <= 1) {
+SNELL_FN float snellTexRayAlpha(SnellTexRay r, float pz) {
+  if (!r.valid || r.k2 == 0.0f || !SNELL_FINITE(pz) || !(pz <= -SNELL_FLT_MIN)) {
+    return 0.0f;
+  }
+  float alpha = ((r.s.z - pz) / pz) * (r.k1 * r.k2);
+  // pz denormal-small: inf * (a product that underflowed to 0) is NaN.
+  return isnan(alpha) ? 0.0f : clamp(alpha, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+}
+
+SNELL_FN vec2 snellTexRayUv(SnellTexRay r, float pz) {
+  float alpha = snellTexRayAlpha(r, pz);
+  vec2 uv = r.ts + alpha * r.dt;
+  return clamp(uv, vec2(-SNELL_FLT_MAX, -SNELL_FLT_MAX), vec2(SNELL_FLT_MAX, SNELL_FLT_MAX));
+}
+
+#endif
+
+
+/*
+description: the ray segment the texture-space searches walk (conservative
+  binary search, binary search, linear+binary search): the part of a view-space
+  ray between two constant-z planes that bound the surface in depth, in the
+  perspective texture-space parameterization of Oliveira & Brauwers 2007.
+use: SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
+     // beta in [0,1] along S-E (eq. 5): z = r.s.z + beta (r.e.z - r.s.z), uv = snellTexRayUv(r, z)
+  origin     view-space ray origin (P1: the front-face hit for the back-face
+             buffer, the back-face exit point for the opaque scene buffer)
+  dir        ray direction (need not be normalized)
+  zNearest   view-space z (< 0) of the nearest surface point, the paper's Zmin as
+             a z value (the LARGER, less negative one); zFarthest: of the farthest
+             (the paper's Zmax, more negative). Where they come from is the
+             caller's business, both are just two numbers: the top level of the
+             depth min/max pyramid (exact for the buffer), or the object's
+             bounding box / bounding sphere transformed to view space (looser,
+             so more steps for the same precision, never wrong).
+contract:
+  - the segment starts at S on the plane z = min(zNearest, origin.z): where the
+    ray meets zNearest, or at the origin itself when the origin is already
+    deeper than zNearest (a search never runs backwards along the ray); it ends
+    at E on the plane z = zFarthest. k1, k2, ts, dt as snellTexRaySetup.
+  - valid = false (every field 0, finite) when: any input is NaN or Inf (matrix
+    included); dir.z >= 0 or denormal (the ray points towards the camera or runs
+    parallel to the image plane: it never reaches deeper planes); zNearest <=
+    zFarthest (Zmin == Zmax, swapped or empty range); the origin is at or beyond
+    zFarthest (nothing left to search); and every case snellTexRaySetup
+    rejects (a plane at or behind the eye, S or E not projectable, overflow).
+source: Oliveira & Brauwers 2007, sec. 3.2.1, eqs. 3-4 (S and E), Figure 5
+  (Zmin, Zmax); camera/tex_ray.glsl for eqs. 5-10.
+*/
+#ifndef SNELL_INTERSECT_SEARCH_SEGMENT_GLSL
+#define SNELL_INTERSECT_SEARCH_SEGMENT_GLSL
+
+
+
+
+SNELL_FN SnellTexRay snellSearchSegment(vec3 origin, vec3 dir, float zNearest, float zFarthest, mat4 clipFromView) {
+  SnellTexRay bad;
+  bad.s = vec3(0.0f, 0.0f, 0.0f);
+  bad.e = vec3(0.0f, 0.0f, 0.0f);
+  bad.k1 = 0.0f;
+  bad.k2 = 0.0f;
+  bad.ts = vec2(0.0f, 0.0f);
+  bad.dt = vec2(0.0f, 0.0f);
+  bad.valid = false;
+  if (!SNELL_FINITE(origin.z) || !SNELL_FINITE(dir.z) || !SNELL_FINITE(zNearest) ||
+      !SNELL_FINITE(zFarthest)) {
+    return bad;
+  }
+  if (!(dir.z <= -SNELL_FLT_MIN) || !(zNearest > zFarthest) || !(origin.z > zFarthest)) {
+    return bad;
+  }
+  float zStart = origin.z < zNearest ? origin.z : zNearest;
+  return snellTexRaySetup(origin, dir, zStart, zFarthest, clipFromView);
+}
+
+#endif
+
+#ifndef SNELL_CBS_STEPS
+#  define SNELL_CBS_STEPS 5
+#endif
+#ifndef SNELL_CBS_MAX_STEPS
+#  define SNELL_CBS_MAX_STEPS 24
+#endif
+
+/* Oliveira & Brauwers 2007, Algorithm 2 */
+SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                                float zNearest, float zFarthest, int steps) {
+  SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
+  if (!r.valid) {
+    return snellHitMiss(0);
+  }
+  int n = clamp(steps, 0, SNELL_CBS_MAX_STEPS);
+  float dz = r.e.z - r.s.z;
+  float beta = 0.0f;
+  float dBeta = 1.0f;
+  float zHit = r.s.z;
+  vec2 uvHit = r.ts;
+  bool advanced = false;
+  int fetches = 0;
+  for (int i = 0; i < SNELL_CBS_MAX_STEPS; ++i) {
+    if (i >= n) {
       break;
     }
-    m = m / 2;
-    lod = lod + 1;
-  }
-  return lod;
-}
-
-/* Oliveira & Brauwers 2007, sec. 3, 2nd pass: the top level of the min/max reduction */
-SNELL_FN SnellDepthRange snellDepthRangeFromPyramid(SNELL_TEX2D pyramidTex) {
-  int top = snellTextureTopLod(pyramidTex);
-  vec4 t = SNELL_TEXEL_FETCH(pyramidTex, ivec2(0, 0), top);
-  if (!(t.w > 0.0f) || !(t.y > 0.0f) || !(t.z >= t.y) || !SNELL_FINITE(t.z)) {
-    return snellDepthRangeInvalid();
-  }
-  SnellDepthRange r;
-  r.zNearest = -t.y * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
-  r.zFarthest = -t.z * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
-  r.valid = true;
-  return r;
-}
-
-/* Oliveira & Brauwers 2007, sec. 6: the bounding box as Zmin, Zmax */
-SNELL_FN SnellDepthRange snellDepthRangeFromBox(mat4 viewFromObject, vec3 boxMin, vec3 boxMax) {
-  float zNearest = -SNELL_FLT_MAX;
-  float zFarthest = SNELL_FLT_MAX;
-  for (int i = 0; i < 8; ++i) {
-    float x = (i == 1 || i == 3 || i == 5 || i == 7) ? boxMax.x : boxMin.x;
-    float y = (i == 2 || i == 3 || i == 6 || i == 7) ? boxMax.y : boxMin.y;
-    float z = i >= 4 ? boxMax.z : boxMin.z;
-    vec4 p = SNELL_MUL(viewFromObject, vec4(x, y, z, 1.0f));
-    if (!SNELL_FINITE(p.z)) {
-      return snellDepthRangeInvalid();
+    dBeta = dBeta * 0.5f;
+    float b = beta + dBeta;
+    float z = r.s.z + b * dz;
+    vec2 uv = snellTexRayUv(r, z);
+    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
+    fetches = fetches + 1;
+    if (x.valid && z > x.viewZ) {
+      beta = b;
+      zHit = z;
+      uvHit = uv;
+      advanced = true;
     }
-    zNearest = max(zNearest, p.z);
-    zFarthest = min(zFarthest, p.z);
   }
-  if (!(zFarthest < 0.0f)) {
-    return snellDepthRangeInvalid();
+  if (!advanced) {
+    SnellSurfaceSample x0 = snellSampleSurface(depthTex, uvHit, surface);
+    fetches = fetches + 1;
+    if (!x0.valid) {
+      return snellHitMiss(fetches);
+    }
   }
-  SnellDepthRange r;
-  r.zNearest = min(zNearest, -SNELL_FLT_MIN);
-  r.zFarthest = zFarthest;
-  if (!(r.zFarthest < r.zNearest)) {
-    r.zNearest = r.zNearest * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
-    r.zFarthest = r.zFarthest * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
+  SnellHit h;
+  h.uv = uvHit;
+  h.position = vec3(r.s.x + beta * (r.e.x - r.s.x), r.s.y + beta * (r.e.y - r.s.y), zHit);
+  h.valid = true;
+  h.fetches = fetches;
+  return h;
+}
+
+SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                                float zNearest, float zFarthest) {
+  return snellConservativeBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_CBS_STEPS);
+}
+
+#endif
+/*
+description: plain binary search of a view-space ray against a depth-buffer
+  surface, in texture space along S-E (Policarpo et al. 2005's refinement, with
+  Oliveira & Brauwers' perspective parameterization). It may end on an empty
+  texel: the failure conservative_binary_search.glsl exists to avoid. Kept as a
+  baseline so tests and the lab can show it.
+use: SnellHit h = snellBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest);
+     SnellHit h = snellBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, steps);
+     SnellHit h = snellBisectTexRay(r, depthTex, surface, lo, hi, steps, hitSoFar);
+  arguments as snellConservativeBinarySearch; steps = binary steps (one fetch each)
+options:
+  SNELL_BINARY_SEARCH_STEPS      default steps (5)
+  SNELL_BINARY_SEARCH_MAX_STEPS  compile-time loop bound (24); steps is clamped
+                                 to [0, SNELL_BINARY_SEARCH_MAX_STEPS]
+contract:
+  - segment S-E and beta as snellConservativeBinarySearch. Bracket [lo, hi] =
+    [0, 1]; each step tests mid = (lo + hi) / 2 (one fetch): a valid texel with
+    the point strictly in front of the surface (z > viewZ) moves lo to mid,
+    anything else (behind the surface, or an empty / off-screen texel, which the
+    paper's depth-0 storage makes look like "behind") moves hi to mid.
+  - the result is the last point tested (Figure 6's point 4), uv its texture
+    coordinate, position S + beta (E - S); steps = 0 tests S itself (one fetch).
+  - valid = whether that last texel was valid (non-empty, on screen). When it
+    is not, uv and position still report where the search ended (finite), so
+    the failure can be seen and counted: that is this function's point.
+  - precision: for a ray crossing the surface once on S-E, |beta - beta*| <=
+    0.5^c (the last midpoint is an end of the final bracket, of width 0.5^c).
+  - valid = false with snellHitMiss numbers and 0 fetches when the segment is
+    invalid (rays towards the camera, Zmin == Zmax, NaN: see search_segment.glsl).
+  - snellBisectTexRay(r, depthTex, surface, lo, hi, steps, h): the loop itself,
+    for a valid segment r (snellSearchSegment) and a bracket [lo, hi] in beta,
+    each clamped to [0, 1]: clamp(steps, 0, SNELL_BINARY_SEARCH_MAX_STEPS)
+    steps of the rule above; after each, h = the point tested (uv, position,
+    valid as above) with h.fetches + 1. With 0 steps, or a NaN lo or hi, h is
+    returned as given.
+source: F. Policarpo, M. M. Oliveira, J. Comba, "Real-Time Relief Mapping on
+  Arbitrary Polygonal Surfaces", I3D 2005 (binary search); Oliveira & Brauwers
+  2007, sec. 3.3 and Figure 6 (why it can end on an invalid texel), eqs. 3-10.
+*/
+#ifndef SNELL_INTERSECT_BINARY_SEARCH_GLSL
+#define SNELL_INTERSECT_BINARY_SEARCH_GLSL
+
+
+
+
+
+
+#ifndef SNELL_BINARY_SEARCH_STEPS
+#  define SNELL_BINARY_SEARCH_STEPS 5
+#endif
+#ifndef SNELL_BINARY_SEARCH_MAX_STEPS
+#  define SNELL_BINARY_SEARCH_MAX_STEPS 24
+#endif
+
+/* The bisection loop of Policarpo et al. 2005, shared by snellBinarySearch and
+   the refinement of snellLinearBinarySearch (see the contract). */
+SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SnellDepthSurface surface, float lo,
+                                    float hi, int steps, SnellHit h) {
+  if (isnan(lo) || isnan(hi)) {
+    return h;
   }
-  r.valid = true;
-  return r;
+  // Outside [0, 1] the midpoints would extrapolate past S or E.
+  lo = clamp(lo, 0.0f, 1.0f);
+  hi = clamp(hi, 0.0f, 1.0f);
+  int n = clamp(steps, 0, SNELL_BINARY_SEARCH_MAX_STEPS);
+  float dz = r.e.z - r.s.z;
+  for (int i = 0; i < SNELL_BINARY_SEARCH_MAX_STEPS; ++i) {
+    if (i >= n) {
+      break;
+    }
+    float beta = 0.5f * (lo + hi);
+    float z = r.s.z + beta * dz;
+    vec2 uv = snellTexRayUv(r, z);
+    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
+    h.uv = uv;
+    h.position = vec3(r.s.x + beta * (r.e.x - r.s.x), r.s.y + beta * (r.e.y - r.s.y), z);
+    h.valid = x.valid;
+    h.fetches = h.fetches + 1;
+    if (x.valid && z > x.viewZ) {
+      lo = beta;
+    } else {
+      hi = beta;
+    }
+  }
+  return h;
+}
+
+/* Policarpo et al. 2005 binary search on Oliveira & Brauwers 2007, eqs. 5-10 */
+SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                    float zNearest, float zFarthest, int steps) {
+  SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
+  if (!r.valid) {
+    return snellHitMiss(0);
+  }
+  SnellHit h;
+  h.uv = r.ts;
+  h.position = r.s;
+  h.valid = false;
+  h.fetches = 0;
+  if (steps <= 0) {
+    h.valid = snellSampleSurface(depthTex, r.ts, surface).valid;
+    h.fetches = 1;
+    return h;
+  }
+  return snellBisectTexRay(r, depthTex, surface, 0.0f, 1.0f, steps, h);
+}
+
+SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                    float zNearest, float zFarthest) {
+  return snellBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_BINARY_SEARCH_STEPS);
+}
+
+#endif
+/*
+description: linear-then-binary search (relief mapping) of a view-space ray
+  against a depth-buffer surface, in texture space along S-E: equal steps in
+  beta until the first sample that is not in front of the surface, then a plain
+  binary search inside that step. Finds thin structures the pure binary searches
+  skip, at the cost of the linear steps; like snellBinarySearch it may end on an
+  empty texel.
+use: SnellHit h = snellLinearBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest);
+     SnellHit h = snellLinearBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest,
+                                          linearSteps, binarySteps);
+  arguments as snellConservativeBinarySearch
+  linearSteps   number of equal beta steps (1/linearSteps each, one fetch each)
+  binarySteps   binary steps inside the bracketing step (one fetch each)
+options:
+  SNELL_LINEAR_SEARCH_STEPS      default linearSteps (10, relief mapping's usual)
+  SNELL_LINEAR_SEARCH_MAX_STEPS  compile-time bound (256); linearSteps is
+                                 clamped to [1, SNELL_LINEAR_SEARCH_MAX_STEPS]
+  SNELL_BINARY_SEARCH_STEPS, SNELL_BINARY_SEARCH_MAX_STEPS  (binary_search.glsl):
+                                 default and bound of binarySteps (clamped to [0, max])
+contract:
+  - segment S-E and beta as snellConservativeBinarySearch. Linear phase: beta_i
+    = i / linearSteps, i = 1 .. linearSteps; it stops at the first sample that
+    is not (valid texel and strictly in front of the surface, z > viewZ): behind
+    the surface or an empty / off-screen texel (relief mapping's depth-0 rule).
+  - no such sample up to E: valid = false, snellHitMiss numbers, fetches spent.
+  - binary phase: bracket [beta_(i-1), beta_i], the rule of snellBinarySearch;
+    the result is the last point tested (the linear sample itself when
+    binarySteps = 0); valid = that point's texel is valid; when not, uv and
+    position still report where the search ended (finite), as snellBinarySearch.
+  - precision: for a ray crossing the surface once on S-E, |beta - beta*| <=
+    0.5^binarySteps / linearSteps.
+  - invalid segment (rays towards the camera, Zmin == Zmax, NaN: see
+    search_segment.glsl): valid = false, snellHitMiss numbers, 0 fetches.
+source: F. Policarpo, M. M. Oliveira, J. Comba, "Real-Time Relief Mapping on
+  Arbitrary Polygonal Surfaces", I3D 2005 (linear then binary search);
+  Oliveira & Brauwers 2007, sec. 3.3 (why refraction can skip the linear
+  phase), eqs. 3-10.
+*/
+#ifndef SNELL_INTERSECT_LINEAR_BINARY_SEARCH_GLSL
+#define SNELL_INTERSECT_LINEAR_BINARY_SEARCH_GLSL
+
+
+
+
+
+
+
+#ifndef SNELL_LINEAR_SEARCH_STEPS
+#  define SNELL_LINEAR_SEARCH_STEPS 10
+#endif
+#ifndef SNELL_LINEAR_SEARCH_MAX_STEPS
+#  define SNELL_LINEAR_SEARCH_MAX_STEPS 256
+#endif
+
+/* Policarpo et al. 2005, linear + binary search, on Oliveira & Brauwers 2007 eqs. 5-10 */
+SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                          float zNearest, float zFarthest, int linearSteps, int binarySteps) {
+  SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
+  if (!r.valid) {
+    return snellHitMiss(0);
+  }
+  int nl = clamp(linearSteps, 1, SNELL_LINEAR_SEARCH_MAX_STEPS);
+  int nb = clamp(binarySteps, 0, SNELL_BINARY_SEARCH_MAX_STEPS);
+  float dz = r.e.z - r.s.z;
+  float stepBeta = 1.0f / float(nl);
+  int fetches = 0;
+  int found = -1;
+  float beta = 0.0f;
+  float z = r.s.z;
+  vec2 uv = r.ts;
+  bool lastValid = false;
+  for (int i = 1; i <= SNELL_LINEAR_SEARCH_MAX_STEPS; ++i) {
+    if (i > nl) {
+      break;
+    }
+    beta = float(i) * stepBeta;
+    z = r.s.z + beta * dz;
+    uv = snellTexRayUv(r, z);
+    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
+    fetches = fetches + 1;
+    if (!(x.valid && z > x.viewZ)) {
+      found = i;
+      lastValid = x.valid;
+      break;
+    }
+  }
+  if (found < 0) {
+    return snellHitMiss(fetches);
+  }
+  SnellHit h;
+  h.uv = uv;
+  h.position = vec3(r.s.x + beta * (r.e.x - r.s.x), r.s.y + beta * (r.e.y - r.s.y), z);
+  h.valid = lastValid;
+  h.fetches = fetches;
+  return snellBisectTexRay(r, depthTex, surface, float(found - 1) * stepBeta, beta, nb, h);
+}
+
+SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                          float zNearest, float zFarthest) {
+  return snellLinearBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_LINEAR_SEARCH_STEPS,
+                                 SNELL_BINARY_SEARCH_STEPS);
+}
+
+#endif
+/*
+description: linear march in view space with binary refinement: the screen-space
+  ray-marching baseline. Equal steps along the view-space ray, each projected
+  with the depth buffer's camera and compared with the stored surface; the
+  first step behind the surface is refined by bisection.
+use: SnellHit h = snellLinearMarch(origin, dir, depthTex, surface);
+     SnellHit h = snellLinearMarch(origin, dir, depthTex, surface, maxDistance, steps, refineSteps);
+  origin, dir        view-space ray (dir need not be normalized)
+  depthTex, surface  the depth buffer and how to read it (depth_surface.glsl)
+  maxDistance        view-space length of the marched part of the ray
+  steps              equal steps of maxDistance / steps (one fetch each)
+  refineSteps        bisection steps inside the step that crossed (one fetch
+                     each while on screen)
+options:
+  SNELL_LINEAR_MARCH_STEPS              default steps (32)
+  SNELL_LINEAR_MARCH_MAX_STEPS          compile-time bound (512); steps is clamped to [1, max]
+  SNELL_LINEAR_MARCH_REFINE_STEPS       default refineSteps (4)
+  SNELL_LINEAR_MARCH_MAX_REFINE_STEPS   compile-time bound (24); refineSteps clamped to [0, max]
+  SNELL_LINEAR_MARCH_MAX_DISTANCE       default maxDistance (10.0f view-space units)
+contract:
+  - the ray is marched over t in (0, tMax], tMax = maxDistance / |dir|, cut at
+    the near plane z = -surface.zNear when dir.z > 0 (a ray towards the camera
+    is marched until it would leave the frustum through the near plane).
+    Samples t_i = i tMax / steps, i = 1 .. steps (the origin itself is not
+    tested); each is projected with surface.clipFromView (snellViewToUv).
+  - a sample "crosses" when its texel is valid and the point is on or behind the
+    surface (z <= viewZ): the surface is a solid height field (infinitely thick).
+    Empty texels do not stop the march (no surface there).
+  - the first sample that projects off screen (uv outside [0,1]^2, or not
+    projectable) ends the march: valid = false (the ray left the screen).
+  - refinement: bracket [t_(i-1), t_i]; a midpoint that crosses moves hi, any
+    other (in front, empty, off screen: no fetch then) moves lo. The result is
+    hi: a point on or behind the surface at a valid texel, never in front of
+    the crossing; uv = the uv that was fetched there. Error along the ray <=
+    (tMax / steps) 0.5^refineSteps for a single crossing (plus the depth
+    buffer's own discretization).
+  - valid = false with snellHitMiss numbers (finite) and the fetches spent when
+    no sample crosses; with 0 fetches when: an input is NaN or Inf, |dir| is 0
+    or denormal-small, maxDistance <= 0, or the origin is at or in front of
+    the near plane with dir.z > 0 (the whole ray is outside the frustum).
+source: the classic screen-space ray march (e.g. Sousa, "Crysis 2", 2011;
+  Policarpo et al. 2005 for linear + binary search), here in view space with
+  the Oliveira & Brauwers 2007 (sec. 3.1) depth-surface reading.
+*/
+#ifndef SNELL_INTERSECT_LINEAR_MARCH_GLSL
+#define SNELL_INTERSECT_LINEAR_MARCH_GLSL
+
+
+
+
+
+
+#ifndef SNELL_LINEAR_MARCH_STEPS
+#  define SNELL_LINEAR_MARCH_STEPS 32
+#endif
+#ifndef SNELL_LINEAR_MARCH_MAX_STEPS
+#  define SNELL_LINEAR_MARCH_MAX_STEPS 512
+#endif
+#ifndef SNELL_LINEAR_MARCH_REFINE_STEPS
+#  define SNELL_LINEAR_MARCH_REFINE_STEPS 4
+#endif
+#ifndef SNELL_LINEAR_MARCH_MAX_REFINE_STEPS
+#  define SNELL_LINEAR_MARCH_MAX_REFINE_STEPS 24
+#endif
+#ifndef SNELL_LINEAR_MARCH_MAX_DISTANCE
+#  define SNELL_LINEAR_MARCH_MAX_DISTANCE 10.0f
+#endif
+
+/* screen-space ray march: equal view-space steps, then bisection */
+SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                   float maxDistance, int steps, int refineSteps) {
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
+      !SNELL_FINITE(maxDistance) || !(maxDistance > 0.0f)) {
+    return snellHitMiss(0);
+  }
+  float len = length(dir);
+  if (!SNELL_FINITE(len) || !(len >= SNELL_FLT_MIN)) {
+    return snellHitMiss(0);
+  }
+  float tMax = maxDistance / len;
+  if (dir.z > 0.0f) {
+    float tNear = (-surface.zNear - origin.z) / dir.z;
+    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+  }
+  if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
+    return snellHitMiss(0);
+  }
+  int n = clamp(steps, 1, SNELL_LINEAR_MARCH_MAX_STEPS);
+  int nr = clamp(refineSteps, 0, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS);
+  float dt = tMax / float(n);
+  int fetches = 0;
+  bool found = false;
+  float tHit = 0.0f;
+  vec2 uvHit = vec2(0.0f, 0.0f);
+  for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
+    if (i > n) {
+      break;
+    }
+    float t = float(i) * dt;
+    vec3 p = origin + t * dir;
+    SnellScreenPoint sp = snellViewToUv(surface.clipFromView, p);
+    if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
+      return snellHitMiss(fetches);
+    }
+    SnellSurfaceSample x = snellSampleSurface(depthTex, sp.uv, surface);
+    fetches = fetches + 1;
+    if (x.valid && p.z <= x.viewZ) {
+      found = true;
+      tHit = t;
+      uvHit = sp.uv;
+      break;
+    }
+  }
+  if (!found) {
+    return snellHitMiss(fetches);
+  }
+  float lo = tHit - dt;
+  for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
+    if (j >= nr) {
+      break;
+    }
+    float mid = 0.5f * (lo + tHit);
+    vec3 q = origin + mid * dir;
+    SnellScreenPoint sq = snellViewToUv(surface.clipFromView, q);
+    bool crosses = false;
+    if (sq.valid && sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f) {
+      SnellSurfaceSample y = snellSampleSurface(depthTex, sq.uv, surface);
+      fetches = fetches + 1;
+      crosses = y.valid && q.z <= y.viewZ;
+    }
+    if (crosses) {
+      tHit = mid;
+      uvHit = sq.uv;
+    } else {
+      lo = mid;
+    }
+  }
+  SnellHit h;
+  h.uv = uvHit;
+  h.position = origin + tHit * dir;
+  h.valid = true;
+  h.fetches = fetches;
+  return h;
+}
+
+SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface) {
+  return snellLinearMarch(origin, dir, depthTex, surface, SNELL_LINEAR_MARCH_MAX_DISTANCE, SNELL_LINEAR_MARCH_STEPS,
+                          SNELL_LINEAR_MARCH_REFINE_STEPS);
+}
+
+#endif
+/*
+description: perspective-correct march in pixel space (a DDA): the view-space
+  ray segment is projected once, then walked in equal pixel steps along its
+  major screen axis, every pixel on the way (stride 1) or every stride-th one,
+  with the ray's depth recovered per step by homogeneous (1/w) interpolation,
+  so no matrix product per step and no pixel skipped or visited twice.
+use: SnellHit h = snellDdaMarch(origin, dir, depthTex, surface);
+     SnellHit h = snellDdaMarch(origin, dir, depthTex, surface, maxDistance, thickness, stride, steps);
+  origin, dir        view-space ray (dir need not be normalized)
+  depthTex, surface  the depth buffer and how to read it (depth_surface.glsl);
+                     the pixel grid is that of level surface.lod
+  maxDistance        view-space length of the marched segment
+  thickness          assumed view-space thickness of the surface: a step hits
+                     when the ray's depth interval over the step overlaps
+                     [viewZ - thickness, viewZ]
+  stride             pixels per step along the major axis (>= 1)
+  steps              maximum number of steps (one fetch each)
+options:
+  SNELL_DDA_STEPS         default steps (256)
+  SNELL_DDA_MAX_STEPS     compile-time bound (1024); steps is clamped to [1, max]
+  SNELL_DDA_STRIDE        default stride (1.0f)
+  SNELL_DDA_THICKNESS     default thickness (SNELL_FLT_MAX: a solid height
+                          field, as the other strategies assume; use a finite
+                          value for opaque scenes with objects in front of
+                          others, so rays can pass behind them)
+  SNELL_DDA_MAX_DISTANCE  default maxDistance (10.0f view-space units)
+contract:
+  - segment: origin to end = origin + (min(maxDistance, 1e30)/|dir|) dir, cut
+    at the near plane z = -surface.zNear when dir.z > 0 (beyond 1e30 view
+    units the end's projection no longer moves for any scene-scale origin; the
+    cap keeps 1/w of the end a normal float, so maxDistance = SNELL_FLT_MAX
+    works as "unbounded"). Both ends are projected with surface.clipFromView:
+    uv0, uv1 and k = 1/w; Q = p/w and k are linear in screen space, so the view
+    point at screen parameter s in [0,1] is
+    (Q0 (1 - s) + Q1 s) / (k0 (1 - s) + k1 s) (perspective-correct; this form
+    is exact at both ends and never cancels, as k0, k1 > 0).
+  - step i (i = 0, 1, ...) samples uv0 + s_i (uv1 - uv0), s_i = min(i ds, 1),
+    ds = stride / (length of the segment along its major axis in pixels), or
+    ds = 1 when the whole segment spans at most stride pixels (a ray along the
+    line of sight: two steps, both halves of its depth range at one pixel); it
+    owns s in [(i - 1/2) ds, (i + 1/2) ds] clipped to [0,1], whose ends give the
+    ray's depth interval [zFar, zNear] for that step. The walk ends after the
+    step owning s = 1.
+  - a step hits when its texel is valid and zNear >= viewZ - thickness and
+    zFar <= viewZ. Empty texels do not stop the march.
+  - hit: uv = the uv that was fetched (its texel is the hit texel), position =
+    the point of the ray within the step whose z is clamp(viewZ, zFar, zNear)
+    (the crossing, when it lies in the step), on the ray, finite.
+  - the first step whose uv is off screen ends the walk: valid = false.
+  - valid = false with snellHitMiss numbers (finite) and the fetches spent when
+    no step hits within steps; with 0 fetches when: an input is NaN or Inf
+    (a NaN thickness uses the default, a NaN stride 1), |dir| is 0 or
+    denormal-small, maxDistance <= 0, the origin is in front of the near plane
+    (z > -surface.zNear), an end does not project to a normal 1/w (clip w <= 0,
+    below FLT_MIN or above 1/FLT_MIN) or to a finite Q, or the level has no
+    texels. thickness < 0 counts as 0, stride < 1 as 1.
+source: M. McGuire, M. Mara, "Efficient GPU Screen-Space Ray Tracing", JCGT
+  3(4), 2014 (pixel-space march with homogeneous interpolation of 1/w and a
+  depth interval per step); our own formulation (per-step parameter instead of
+  accumulated increments, exact crossing inside the hit step).
+*/
+#ifndef SNELL_INTERSECT_DDA_MARCH_GLSL
+#define SNELL_INTERSECT_DDA_MARCH_GLSL
+
+
+
+
+
+
+#ifndef SNELL_DDA_STEPS
+#  define SNELL_DDA_STEPS 256
+#endif
+#ifndef SNELL_DDA_MAX_STEPS
+#  define SNELL_DDA_MAX_STEPS 1024
+#endif
+#ifndef SNELL_DDA_STRIDE
+#  define SNELL_DDA_STRIDE 1.0f
+#endif
+#ifndef SNELL_DDA_THICKNESS
+#  define SNELL_DDA_THICKNESS SNELL_FLT_MAX
+#endif
+#ifndef SNELL_DDA_MAX_DISTANCE
+#  define SNELL_DDA_MAX_DISTANCE 10.0f
+#endif
+
+/* McGuire & Mara 2014: pixel-space march, z from homogeneous interpolation of 1/w */
+SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                float maxDistance, float thickness, float stride, int steps) {
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
+      !SNELL_FINITE(maxDistance) || !(maxDistance > 0.0f) || !SNELL_FINITE(surface.zNear)) {
+    return snellHitMiss(0);
+  }
+  float thick = isnan(thickness) ? SNELL_DDA_THICKNESS : clamp(thickness, 0.0f, SNELL_FLT_MAX);
+  float px = isnan(stride) ? 1.0f : clamp(stride, 1.0f, SNELL_FLT_MAX);
+  float len = length(dir);
+  if (!SNELL_FINITE(len) || !(len >= SNELL_FLT_MIN) || !(origin.z <= -surface.zNear)) {
+    return snellHitMiss(0);
+  }
+  float tMax = min(maxDistance, 1e30f) / len;
+  if (dir.z > 0.0f) {
+    float tNear = (-surface.zNear - origin.z) / dir.z;
+    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+  }
+  if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
+    return snellHitMiss(0);
+  }
+  vec3 end = origin + tMax * dir;
+  vec4 h0 = snellViewToClip(surface.clipFromView, origin);
+  vec4 h1 = snellViewToClip(surface.clipFromView, end);
+  ivec2 size = SNELL_TEXTURE_SIZE(depthTex, surface.lod);
+  if (!SNELL_FINITE(end.x) || !SNELL_FINITE(end.y) || !SNELL_FINITE(end.z) ||
+      !SNELL_FINITE(h0.x) || !SNELL_FINITE(h0.y) || !SNELL_FINITE(h0.w) ||
+      !SNELL_FINITE(h1.x) || !SNELL_FINITE(h1.y) || !SNELL_FINITE(h1.w) ||
+      !(h0.w >= SNELL_FLT_MIN) || !(h1.w >= SNELL_FLT_MIN) ||
+      !(h0.w <= 1.0f / SNELL_FLT_MIN) || !(h1.w <= 1.0f / SNELL_FLT_MIN) || size.x <= 0 || size.y <= 0) {
+    return snellHitMiss(0);
+  }
+  // Homogeneous end points: k = 1/w and Q = p k are linear in screen space.
+  // They are interpolated as a (1 - s) + b s, not a + s (b - a): for a far end
+  // (k1 below the ulp of k0) k0 + s (k1 - k0) cancels to 0 at s = 1. Written
+  // out rather than mix(), which drivers may lower to the cancelling form.
+  float k0 = 1.0f / h0.w;
+  float k1 = 1.0f / h1.w;
+  vec3 q0 = origin * k0;
+  vec3 q1 = end * k1;
+  vec2 uv0 = vec2(h0.x * k0, h0.y * k0) * 0.5f + 0.5f;
+  vec2 duv = vec2(h1.x * k1, h1.y * k1) * 0.5f + 0.5f - uv0;
+  float major = max(abs(duv.x * float(size.x)), abs(duv.y * float(size.y)));
+  if (!SNELL_FINITE(major) || !SNELL_FINITE(q0.x) || !SNELL_FINITE(q0.y) ||
+      !SNELL_FINITE(q0.z) || !SNELL_FINITE(q1.x) || !SNELL_FINITE(q1.y) ||
+      !SNELL_FINITE(q1.z)) {
+    return snellHitMiss(0);
+  }
+  float ds = major > px ? px / major : 1.0f;
+  int n = clamp(steps, 1, SNELL_DDA_MAX_STEPS);
+  int fetches = 0;
+  float sA = 0.0f;
+  float zA = origin.z;
+  for (int i = 0; i < SNELL_DDA_MAX_STEPS; ++i) {
+    if (i >= n || sA >= 1.0f) {
+      break;
+    }
+    float sC = min(float(i) * ds, 1.0f);
+    float sB = min((float(i) + 0.5f) * ds, 1.0f);
+    float zB = (q0.z * (1.0f - sB) + q1.z * sB) / (k0 * (1.0f - sB) + k1 * sB);
+    vec2 uv = uv0 + sC * duv;
+    if (!(uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) {
+      return snellHitMiss(fetches);
+    }
+    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
+    fetches = fetches + 1;
+    float zNearRay = max(zA, zB);
+    float zFarRay = min(zA, zB);
+    if (x.valid && zNearRay >= x.viewZ - thick && zFarRay <= x.viewZ) {
+      // The point of the ray inside this step at depth clamp(viewZ, zFar, zNear).
+      float zHit = clamp(x.viewZ, zFarRay, zNearRay);
+      vec3 pA = (q0 * (1.0f - sA) + q1 * sA) / (k0 * (1.0f - sA) + k1 * sA);
+      vec3 pB = (q0 * (1.0f - sB) + q1 * sB) / (k0 * (1.0f - sB) + k1 * sB);
+      float f = pB.z != pA.z ? clamp((zHit - pA.z) / (pB.z - pA.z), 0.0f, 1.0f) : 0.5f;
+      SnellHit h;
+      h.uv = uv;
+      h.position = pA + f * (pB - pA);
+      h.valid = true;
+      h.fetches = fetches;
+      return h;
+    }
+    sA = sB;
+    zA = zB;
+  }
+  return snellHitMiss(fetches);
+}
+
+SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface) {
+  return snellDdaMarch(origin, dir, depthTex, surface, SNELL_DDA_MAX_DISTANCE, SNELL_DDA_THICKNESS, SNELL_DDA_STRIDE,
+                       SNELL_DDA_STEPS);
 }
 
 #endif
 
-#ifndef SNELL_TECHNIQUE_STRATEGIES
-#  define SNELL_TECHNIQUE_STRATEGIES 0x1FF
+#define SNELL_STRATEGY_SINGLE 0
+#define SNELL_STRATEGY_PLANE_NORMAL 1
+#define SNELL_STRATEGY_PLANE_DEPTH 2
+#define SNELL_STRATEGY_CBS 3
+#define SNELL_STRATEGY_BINARY 4
+#define SNELL_STRATEGY_LINEAR_BINARY 5
+#define SNELL_STRATEGY_LINEAR_MARCH 6
+#define SNELL_STRATEGY_DDA 7
+
+#define SNELL_RANGE_PYRAMID 0
+#define SNELL_RANGE_EXPLICIT 1
+
+#ifndef SNELL_INTERSECT_STRATEGIES
+#  define SNELL_INTERSECT_STRATEGIES 0xFF
 #endif
 /* true when strategy k is compiled in (a constant expression: the branch folds away) */
-#define SNELL_TECHNIQUE_HAS(k) ((SNELL_TECHNIQUE_STRATEGIES & (1 << (k))) != 0)
+#define SNELL_INTERSECT_HAS(k) ((SNELL_INTERSECT_STRATEGIES & (1 << (k))) != 0)
 
-SNELL_FN SnellHit snellIntersectWith(int strategy, vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
+struct SnellIntersectOptions {
+  int strategy;
+  int depthFilter;
+  int planeIterations;
+  float planeNormalLod;
+  int planeMaxLod;
+  int cbsSteps;
+  int binarySteps;
+  int linearSteps;
+  int rangeSource;
+  SnellDepthRange range;
+  int marchSteps;
+  int marchBisections;
+  float marchMaxDistance;
+  int ddaSteps;
+  float ddaMaxDistance;
+  float ddaThickness;
+  float ddaStride;
+};
+
+SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
+  SnellIntersectOptions o;
+  o.strategy = strategy;
+  o.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+  o.planeIterations = SNELL_PLANE_ITERATIONS;
+  o.planeNormalLod = 0.0f;
+  o.planeMaxLod = -1;
+  o.cbsSteps = SNELL_CBS_STEPS;
+  o.binarySteps = SNELL_BINARY_SEARCH_STEPS;
+  o.linearSteps = SNELL_LINEAR_SEARCH_STEPS;
+  o.rangeSource = SNELL_RANGE_PYRAMID;
+  o.range = snellDepthRangeInvalid();
+  o.marchSteps = SNELL_LINEAR_MARCH_STEPS;
+  o.marchBisections = SNELL_LINEAR_MARCH_REFINE_STEPS;
+  o.marchMaxDistance = SNELL_LINEAR_MARCH_MAX_DISTANCE;
+  o.ddaSteps = SNELL_DDA_STEPS;
+  o.ddaMaxDistance = SNELL_DDA_MAX_DISTANCE;
+  o.ddaThickness = SNELL_DDA_THICKNESS;
+  o.ddaStride = SNELL_DDA_STRIDE;
+  return o;
+}
+
+SNELL_FN SnellHit snellIntersectWith(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
                                      SNELL_TEX2D pyramidTex, SnellDepthSurface readAs, SnellIntersectOptions o) {
   SnellDepthSurface surface = readAs;
   surface.depthFilter = o.depthFilter;
-  if ((SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_SINGLE) && strategy == SNELL_STRATEGY_SINGLE) ||
-      (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_WYMAN) && strategy == SNELL_STRATEGY_WYMAN)) {
+  int strategy = o.strategy;
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_SINGLE) && strategy == SNELL_STRATEGY_SINGLE) {
     return snellIntersectSingleSample(origin, dir, depthTex, surface);
   }
-  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_PLANE_NORMAL) && strategy == SNELL_STRATEGY_PLANE_NORMAL) {
-    return snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, surface, o.normalLod, o.steps);
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_PLANE_NORMAL) && strategy == SNELL_STRATEGY_PLANE_NORMAL) {
+    return snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, surface, o.planeNormalLod, o.planeIterations);
   }
-  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_PLANE_DEPTH) && strategy == SNELL_STRATEGY_PLANE_DEPTH) {
-    int maxLod = o.maxLod >= 0 ? o.maxLod : snellTextureTopLod(pyramidTex);
-    return snellIntersectPlaneDepth(origin, dir, pyramidTex, surface, maxLod, o.steps);
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_PLANE_DEPTH) && strategy == SNELL_STRATEGY_PLANE_DEPTH) {
+    int maxLod = o.planeMaxLod >= 0 ? o.planeMaxLod : snellTextureTopLod(pyramidTex);
+    return snellIntersectPlaneDepth(origin, dir, pyramidTex, surface, maxLod, o.planeIterations);
   }
-  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_LINEAR_MARCH) && strategy == SNELL_STRATEGY_LINEAR_MARCH) {
-    return snellLinearMarch(origin, dir, depthTex, surface, o.maxDistance, o.steps, o.refineSteps);
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_LINEAR_MARCH) && strategy == SNELL_STRATEGY_LINEAR_MARCH) {
+    return snellLinearMarch(origin, dir, depthTex, surface, o.marchMaxDistance, o.marchSteps, o.marchBisections);
   }
-  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_DDA) && strategy == SNELL_STRATEGY_DDA) {
-    return snellDdaMarch(origin, dir, depthTex, surface, o.maxDistance, o.thickness, o.stride, o.steps);
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_DDA) && strategy == SNELL_STRATEGY_DDA) {
+    return snellDdaMarch(origin, dir, depthTex, surface, o.ddaMaxDistance, o.ddaThickness, o.ddaStride, o.ddaSteps);
   }
-  bool cbs = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_CBS) && strategy == SNELL_STRATEGY_CBS;
-  bool binary = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_BINARY) && strategy == SNELL_STRATEGY_BINARY;
-  bool linearBinary = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_LINEAR_BINARY) && strategy == SNELL_STRATEGY_LINEAR_BINARY;
+  bool cbs = SNELL_INTERSECT_HAS(SNELL_STRATEGY_CBS) && strategy == SNELL_STRATEGY_CBS;
+  bool binary = SNELL_INTERSECT_HAS(SNELL_STRATEGY_BINARY) && strategy == SNELL_STRATEGY_BINARY;
+  bool linearBinary = SNELL_INTERSECT_HAS(SNELL_STRATEGY_LINEAR_BINARY) && strategy == SNELL_STRATEGY_LINEAR_BINARY;
   if (!cbs && !binary && !linearBinary) {
     return snellHitMiss(0);
   }
-  SnellDepthRange range;
+  SnellDepthRange range = o.range;
   int rangeFetches = 0;
-  if (o.rangeSource == SNELL_RANGE_EXPLICIT) {
-    range.zNearest = o.zNearest;
-    range.zFarthest = o.zFarthest;
-    range.valid = true;
-  } else {
+  if (o.rangeSource != SNELL_RANGE_EXPLICIT) {
     range = snellDepthRangeFromPyramid(pyramidTex);
     rangeFetches = 1;
   }
@@ -4281,41 +4026,300 @@ SNELL_FN SnellHit snellIntersectWith(int strategy, vec3 origin, vec3 dir, SNELL_
   }
   SnellHit h;
   if (cbs) {
-    h = snellConservativeBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps);
+    h = snellConservativeBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.cbsSteps);
   } else if (binary) {
-    h = snellBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps);
+    h = snellBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.binarySteps);
   } else {
-    h = snellLinearBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps,
-                                o.refineSteps);
+    h = snellLinearBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.linearSteps,
+                                o.binarySteps);
   }
   h.fetches = h.fetches + rangeFetches;
   return h;
 }
 
 #endif
+
+#define SNELL_BACK_INTERSECT 0
+#define SNELL_BACK_WYMAN 1
+
+#define SNELL_EXIT_ENVIRONMENT 0
+#define SNELL_EXIT_SCENE 1
+
+#define SNELL_FALLBACK_ENVIRONMENT 0
+#define SNELL_FALLBACK_EDGE_FADE 1
+
+#define SNELL_REFLECT_ENVIRONMENT 0
+#define SNELL_REFLECT_SCENE 1
+
+struct SnellTechniqueOptions {
+  int backMethod;
+  SnellIntersectOptions back;
+  SnellIntersectOptions exit;
+  int exitMode;
+  int fallback;
+  float fallbackDistance;
+  float edgeFadeWidth;
+  int tirPolicy;
+  float ior;
+  float iorOutside;
+  int dispersion;
+  vec3 iors;
+  vec3 absorption;
+  bool reflection;
+  int reflectionMode;
+  SnellIntersectOptions reflect;
+  float roughness;
+  int sceneColorLevels;
+  int environmentLevels;
+  vec3 envX;
+  vec3 envY;
+  vec3 envZ;
+};
+
+SNELL_FN SnellTechniqueOptions snellTechniqueOptions() {
+  SnellTechniqueOptions o;
+  o.backMethod = SNELL_BACK_INTERSECT;
+  o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
+  o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
+  o.exitMode = SNELL_EXIT_ENVIRONMENT;
+  o.fallback = SNELL_FALLBACK_ENVIRONMENT;
+  o.fallbackDistance = 1.0f;
+  o.edgeFadeWidth = 0.1f;
+  o.tirPolicy = SNELL_TIR_CRITICAL;
+  o.ior = 1.5f;
+  o.iorOutside = 1.0f;
+  o.dispersion = 1;
+  o.iors = vec3(1.5f, 1.5f, 1.5f);
+  o.absorption = vec3(0.0f, 0.0f, 0.0f);
+  o.reflection = true;
+  o.reflectionMode = SNELL_REFLECT_ENVIRONMENT;
+  o.reflect = snellIntersectOptions(SNELL_STRATEGY_LINEAR_MARCH);
+  o.roughness = 0.0f;
+  o.sceneColorLevels = 1;
+  o.environmentLevels = 1;
+  o.envX = vec3(1.0f, 0.0f, 0.0f);
+  o.envY = vec3(0.0f, 1.0f, 0.0f);
+  o.envZ = vec3(0.0f, 0.0f, 1.0f);
+  return o;
+}
+
+#endif
+/*
+description: named presets for the published two-interface refraction methods
+  and the baselines, all through the same technique (snellTwoInterfaceTrace /
+  snellTwoInterfaceRefraction), so the lab compares them fairly. Each returns
+  snellTechniqueOptions() with both intersection slots set.
+use: SnellTechniqueOptions o = snellPresetDir();           // then adjust fields
+     SnellTechniqueOptions o = snellPresetPlaneNormal(2);
+presets (back slot / exit slot):
+  snellPresetDir()                 Oliveira & Brauwers 2007 (DIR): CBS, 5 steps,
+                                   range from the min/max pyramid's top level /
+                                   the same
+  snellPresetDirBounds(zNearest, zFarthest)  DIR with the bounding-box range
+                                   (their suggested speed-up: no reduction
+                                   pass); the numbers from snellDepthRangeFromBox;
+                                   back slot only, the exit slot keeps the pyramid
+  snellPresetIsr()                 Wyman 2005 (ISR): backMethod
+                                   SNELL_BACK_WYMAN, distance interpolation
+                                   between d_V and the per-vertex d_N /
+                                   single sample
+  snellPresetPlaneNormal(n)        Mayer & Assarsson, normal-based plane, n
+                                   refinement iterations / the same
+  snellPresetPlaneDepth(n)         Mayer & Assarsson, depth-based plane (depth
+                                   mips = the pyramid), n iterations / the same
+  snellPresetSingleSample()        the single-sample (GPU Gems) baseline / the same
+  snellPresetLinearMarch()         screen-space ray march, view-space steps +
+                                   bisection / the same
+  snellPresetDdaMarch()            perspective-correct pixel DDA march / the same
+  snellPresetImageSpaceBound()     not a real-time method: the best any
+                                   image-space technique can do with the same
+                                   buffers, for measuring the others against:
+                                   the linear march at its compile-time limits
+                                   (SNELL_LINEAR_MARCH_MAX_STEPS steps of at
+                                   most ~1 px, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS
+                                   bisections) on bilinear depth reads
+                                   (SNELL_DEPTH_FILTER_BILINEAR: exact on
+                                   planes between texel centres) / the same;
+                                   set back.marchMaxDistance and
+                                   exit.marchMaxDistance to the depths the
+                                   object and the scene span
+the technique table (the one list of named techniques: snell-lab's
+  --technique names, the benchmarks and the tests all draw on it; names and
+  labels for C++ in include/snell/technique_table.hpp):
+  id                              name            preset
+  SNELL_TECHNIQUE_SINGLE          single          snellPresetSingleSample()
+  SNELL_TECHNIQUE_PLANE_NORMAL_0  plane-normal-0  snellPresetPlaneNormal(0)
+  SNELL_TECHNIQUE_PLANE_NORMAL_1  plane-normal-1  snellPresetPlaneNormal(1)
+  SNELL_TECHNIQUE_PLANE_NORMAL_2  plane-normal-2  snellPresetPlaneNormal(2)
+  SNELL_TECHNIQUE_PLANE_DEPTH     plane-depth     snellPresetPlaneDepth(1)
+  SNELL_TECHNIQUE_DIR             dir             snellPresetDir()
+  SNELL_TECHNIQUE_ISR             isr             snellPresetIsr()
+  SNELL_TECHNIQUE_LINEAR_MARCH    linear-march    snellPresetLinearMarch()
+  SNELL_TECHNIQUE_DDA             dda             snellPresetDdaMarch()
+  SNELL_TECHNIQUE_IMAGE_SPACE_BOUND  image-space-bound  snellPresetImageSpaceBound()
+  SNELL_TECHNIQUE_COUNT           the number of ids (ids are 0 .. COUNT - 1)
+  SnellTechniqueOptions o = snellTechniquePreset(SNELL_TECHNIQUE_PLANE_NORMAL_1);
+  Adding a technique: a preset function here, an id, a branch in
+  snellTechniquePreset and a row in include/snell/technique_table.hpp (a
+  compile-time check there keeps the two the same length).
+options: the defaults of technique_options.glsl and of each strategy's file.
+contract: pure constructors, no texture access; iteration counts are stored as
+  given (each strategy clamps them). snellTechniquePreset of an id outside
+  0 .. SNELL_TECHNIQUE_COUNT - 1: snellTechniquePresetSlots(-1, -1), whose
+  slots answer every ray with a miss (snellIntersectWith).
+source: Oliveira & Brauwers 2007 (sec. 3.3, 5 steps; sec. 6, bounding box);
+  Wyman 2005 via O&B 2007 sec. 2.1, eqs. 1-2; Mayer & Assarsson,
+  "Constant-Time Light Refraction Simulation" (methods 1 and 2, step 5);
+  McGuire & Mara 2014 (DDA).
+*/
+#ifndef SNELL_SHADE_TECHNIQUE_PRESETS_GLSL
+#define SNELL_SHADE_TECHNIQUE_PRESETS_GLSL
+
+
+
+SNELL_FN SnellTechniqueOptions snellTechniquePresetSlots(int backStrategy, int exitStrategy) {
+  SnellTechniqueOptions o = snellTechniqueOptions();
+  o.back = snellIntersectOptions(backStrategy);
+  o.exit = snellIntersectOptions(exitStrategy);
+  return o;
+}
+
+/* Oliveira & Brauwers 2007, sec. 3.3: CBS with c = 5 (SNELL_CBS_STEPS' default) */
+SNELL_FN SnellTechniqueOptions snellPresetDir() {
+  return snellTechniquePresetSlots(SNELL_STRATEGY_CBS, SNELL_STRATEGY_CBS);
+}
+
+/* Oliveira & Brauwers 2007, sec. 6: bounding-box range instead of the reduction */
+SNELL_FN SnellTechniqueOptions snellPresetDirBounds(float zNearest, float zFarthest) {
+  SnellTechniqueOptions o = snellPresetDir();
+  o.back.rangeSource = SNELL_RANGE_EXPLICIT;
+  o.back.range.zNearest = zNearest;
+  o.back.range.zFarthest = zFarthest;
+  o.back.range.valid = true;
+  return o;
+}
+
+/* Wyman 2005 (O&B 2007 eqs. 1-2): the trace's Wyman variant; the exit slot samples once */
+SNELL_FN SnellTechniqueOptions snellPresetIsr() {
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
+  o.backMethod = SNELL_BACK_WYMAN;
+  return o;
+}
+
+/* Mayer & Assarsson, method 1 + step 5 */
+SNELL_FN SnellTechniqueOptions snellPresetPlaneNormal(int iterations) {
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_NORMAL, SNELL_STRATEGY_PLANE_NORMAL);
+  o.back.planeIterations = iterations;
+  o.exit.planeIterations = iterations;
+  return o;
+}
+
+/* Mayer & Assarsson, method 2 + step 5 */
+SNELL_FN SnellTechniqueOptions snellPresetPlaneDepth(int iterations) {
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_DEPTH, SNELL_STRATEGY_PLANE_DEPTH);
+  o.back.planeIterations = iterations;
+  o.exit.planeIterations = iterations;
+  return o;
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetSingleSample() {
+  return snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetLinearMarch() {
+  return snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
+}
+
+SNELL_FN SnellTechniqueOptions snellPresetDdaMarch() {
+  return snellTechniquePresetSlots(SNELL_STRATEGY_DDA, SNELL_STRATEGY_DDA);
+}
+
+/* The image-space bound: the linear march at its limits, both slots. */
+SNELL_FN SnellTechniqueOptions snellPresetImageSpaceBound() {
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
+  o.back.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  o.back.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  o.exit.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  o.exit.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  o.back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  o.exit.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  return o;
+}
+
+#define SNELL_TECHNIQUE_SINGLE 0
+#define SNELL_TECHNIQUE_PLANE_NORMAL_0 1
+#define SNELL_TECHNIQUE_PLANE_NORMAL_1 2
+#define SNELL_TECHNIQUE_PLANE_NORMAL_2 3
+#define SNELL_TECHNIQUE_PLANE_DEPTH 4
+#define SNELL_TECHNIQUE_DIR 5
+#define SNELL_TECHNIQUE_ISR 6
+#define SNELL_TECHNIQUE_LINEAR_MARCH 7
+#define SNELL_TECHNIQUE_DDA 8
+#define SNELL_TECHNIQUE_IMAGE_SPACE_BOUND 9
+#define SNELL_TECHNIQUE_COUNT 10
+
+/* the technique table's constructor: id -> preset */
+SNELL_FN SnellTechniqueOptions snellTechniquePreset(int technique) {
+  if (technique == SNELL_TECHNIQUE_SINGLE) {
+    return snellPresetSingleSample();
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_0) {
+    return snellPresetPlaneNormal(0);
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_1) {
+    return snellPresetPlaneNormal(1);
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_2) {
+    return snellPresetPlaneNormal(2);
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_DEPTH) {
+    return snellPresetPlaneDepth(1);
+  }
+  if (technique == SNELL_TECHNIQUE_DIR) {
+    return snellPresetDir();
+  }
+  if (technique == SNELL_TECHNIQUE_ISR) {
+    return snellPresetIsr();
+  }
+  if (technique == SNELL_TECHNIQUE_LINEAR_MARCH) {
+    return snellPresetLinearMarch();
+  }
+  if (technique == SNELL_TECHNIQUE_DDA) {
+    return snellPresetDdaMarch();
+  }
+  if (technique == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND) {
+    return snellPresetImageSpaceBound();
+  }
+  return snellTechniquePresetSlots(-1, -1);
+}
+
+#endif
 /*
 description: the geometry of two-interface refraction: refract the view ray at
   the front face, find where the refracted ray T1 leaves the object in the
-  back-face depth buffer with any intersection strategy (or Wyman's distance
-  interpolation), refract again with the back-face normal found there. The
+  back-face depth buffer (with the back slot's intersection strategy, or, in
+  Wyman's variant, by his distance interpolation), refract again with the
+  back-face normal found there. The
   exit ray (P2, T2) is then resolved by two_interface_shade.glsl against the
   opaque scene or the environment.
 use: SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN,
-         backDepth, backNormal, backPyramid, backSurface, o.back, o.tirPolicy);
+         backDepth, backNormal, backPyramid, backSurface, o);
   frontPosition  P1: view-space position of the front-face fragment (camera at
                  the origin, so the view ray V is frontPosition itself)
   frontNormal    N1: its normal (either orientation, any length)
   eta            n_outside / n_object (snellIorToEta(1.0f, 1.5f) for glass in air)
   dN             Wyman's d_N: thickness along -N1, interpolated from the per-vertex
                  values the host precomputes (include/snell/wyman_dn.hpp); read
-                 only by SNELL_STRATEGY_WYMAN
+                 only by Wyman's variant (o.backMethod SNELL_BACK_WYMAN)
   backDepth, backNormal, backPyramid, backSurface
                  the back-face pass: depth (GL_GREATER after clearing to the near
                  value), view-space normals, the depth min/max pyramid of that
                  depth (snellBuildDepthPyramid / examples/glsl/depth_pyramid.frag),
                  and how to read the depth (emptyDepth = the clear value)
-  o              the back slot's options (strategy and parameters)
-  tirPolicy      SNELL_TIR_ZERO / _CRITICAL / _REFLECT, both interfaces
+  o              the technique's options: o.backMethod, o.back (the back
+                 slot's strategy and parameters) and o.tirPolicy
+                 (SNELL_TIR_ZERO / _CRITICAL / _REFLECT, both interfaces) are
+                 read
 options: technique_options.glsl, and
   SNELL_TWO_INTERFACE_NORMAL_SAMPLE  how N2 is read from backNormal at the hit
                  uv: 1 (default) SNELL_SAMPLE_LOD at level 0 with the texture's
@@ -4324,18 +4328,19 @@ options: technique_options.glsl, and
                  containing the uv, as 0 does); 0 SNELL_TEXEL_FETCH of the texel
                  containing the uv (level 0)
 contract:
-  - T1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy). If it is
+  - T1 = snellRefract(frontPosition, frontNormal, eta, o.tirPolicy). If it is
     invalid or zero (NaN/zero inputs, eta not finite positive; TIR under ZERO
     when eta > 1), the path is invalid: valid = false, every vector 0, fetches 0.
-  - WYMAN: one sample of the back depth at the projection of P1 gives d_V =
-    |P1| (zBack / P1.z - 1) (front-to-back distance along the view ray); d =
-    snellWymanDistanceVec(P1, N1, T1, d_V, dN); P2 = P1 + d T1, accepted when
-    snellHitOnSurface(P2) is valid (the back buffer has a surface there; 2
-    fetches). Every other strategy: snellIntersectWith(o.strategy, P1, T1, ...).
+  - SNELL_BACK_WYMAN: one sample of the back depth at the projection of P1
+    gives d_V = |P1| (zBack / P1.z - 1) (front-to-back distance along the view
+    ray); d = snellWymanDistanceVec(P1, N1, T1, d_V, dN); P2 = P1 + d T1,
+    accepted when snellHitOnSurface(P2) is valid (the back buffer has a
+    surface there; 2 fetches). SNELL_BACK_INTERSECT (and any other value):
+    snellIntersectWith(P1, T1, back..., o.back).
   - on a hit: N2 = xyz of the back normal read at the hit uv, level 0
     (SNELL_TWO_INTERFACE_NORMAL_SAMPLE: filtered sample or texel fetch; 1
     fetch), normalized and flipped to face T1 (dot(N2, T1) <= 0); T2 =
-    snellRefract(T1, N2, 1 / eta, tirPolicy). hit = true, exitPoint = P2,
+    snellRefract(T1, N2, 1 / eta, o.tirPolicy). hit = true, exitPoint = P2,
     exitUv = the hit uv, exitNormal = N2, pathLength = |P2 - P1|, tir = TIR at
     the second interface (T2 follows the policy: critical-angle tangent or
     mirror; the reflected ray is not traced further).
@@ -4512,7 +4517,7 @@ struct SnellTwoInterfacePath {
 SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
                                                       SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
                                                       SNELL_TEX2D backPyramid, SnellDepthSurface back,
-                                                      SnellIntersectOptions o, int tirPolicy) {
+                                                      SnellTechniqueOptions o) {
   SnellTwoInterfacePath p;
   p.entryDirection = vec3(0.0f, 0.0f, 0.0f);
   p.exitPoint = vec3(0.0f, 0.0f, 0.0f);
@@ -4525,7 +4530,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.tir = false;
   p.fellBack = true;
   p.valid = false;
-  SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy);
+  SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, o.tirPolicy);
   if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_FINITE(frontPosition.x) ||
       !SNELL_FINITE(frontPosition.y) || !SNELL_FINITE(frontPosition.z)) {
     return p;
@@ -4536,7 +4541,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitDirection = t1;
   p.valid = true;
   SnellHit h = snellHitMiss(0);
-  if (o.strategy == SNELL_STRATEGY_WYMAN) {
+  if (o.backMethod == SNELL_BACK_WYMAN) {
     SnellScreenPoint sp = snellViewToUv(back.clipFromView, frontPosition);
     if (sp.valid && frontPosition.z < 0.0f) {
       SnellSurfaceSample b = snellSampleSurface(backDepth, sp.uv, back);
@@ -4548,7 +4553,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
       }
     }
   } else {
-    h = snellIntersectWith(o.strategy, frontPosition, t1, backDepth, backNormal, backPyramid, back, o);
+    h = snellIntersectWith(frontPosition, t1, backDepth, backNormal, backPyramid, back, o.back);
   }
   p.fetches = h.fetches;
   // length() squares first: it overflows beyond ~1.8e19 (Wyman's estimate with a huge dN).
@@ -4574,7 +4579,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     n = -n;
   }
   p.exitNormal = n;
-  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, tirPolicy);
+  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, o.tirPolicy);
   p.tir = r2.tir;
   if (!r2.valid || dot(r2.direction, r2.direction) == 0.0f) {
     return p;
@@ -4623,8 +4628,7 @@ contract (snellTwoInterfaceExit(origin, dir, ...)):
   - dir zero or not finite, or origin not finite: color 0, fellBack, 0 fetches.
   - ENVIRONMENT mode: color = SNELL_SAMPLE_ENVIRONMENT(env, world(dir), envLod).xyz,
     1 fetch, hit = snellHitMiss(0), fellBack false.
-  - SCENE mode: hit = snellIntersectWith(o.exit.strategy, origin, dir, scene...,
-    o.exit); valid: color = SNELL_SAMPLE_LOD(sceneColor, hit.uv, sceneLod).xyz
+  - SCENE mode: hit = snellIntersectWith(origin, dir, scene..., o.exit); valid: color = SNELL_SAMPLE_LOD(sceneColor, hit.uv, sceneLod).xyz
     (+1 fetch). Invalid (ray leaves the screen, points towards the camera where a
     search cannot follow, lands on an empty texel): fellBack = true and
     FALLBACK_ENVIRONMENT: the environment along dir; FALLBACK_EDGE_FADE: q =
@@ -4818,7 +4822,7 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
   float sceneLod = snellRoughnessToLod(o.roughness, o.sceneColorLevels);
   vec3 world = d.x * o.envX + d.y * o.envY + d.z * o.envZ;
   if (o.exitMode == SNELL_EXIT_SCENE) {
-    e.hit = snellIntersectWith(o.exit.strategy, origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, o.exit);
+    e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, o.exit);
     e.fetches = e.hit.fetches;
     if (e.hit.valid) {
       vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);
@@ -4859,8 +4863,8 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
                                                              SnellTechniqueOptions o) {
   bool three = o.dispersion == 3;
   float eta = snellIorToEta(o.iorOutside, three ? o.iors.y : o.ior);
-  SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, backDepth, backNormal,
-                                                   backPyramid, back, o.back, o.tirPolicy);
+  SnellTwoInterfacePath p =
+      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, backDepth, backNormal, backPyramid, back, o);
   SnellTwoInterfaceExit e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, sceneDepth, sceneNormal,
                                                   scenePyramid, sceneColor, scene, environment, o);
   vec3 transmitted = e.color * snellBeerLambert(o.absorption, p.pathLength);
@@ -4878,12 +4882,12 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   if (three) {
     SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal,
                                                       snellIorToEta(o.iorOutside, o.iors.x), dN, backDepth,
-                                                      backNormal, backPyramid, back, o.back, o.tirPolicy);
+                                                      backNormal, backPyramid, back, o);
     SnellTwoInterfaceExit er = snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, sceneDepth, sceneNormal,
                                                      scenePyramid, sceneColor, scene, environment, o);
     SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal,
                                                       snellIorToEta(o.iorOutside, o.iors.z), dN, backDepth,
-                                                      backNormal, backPyramid, back, o.back, o.tirPolicy);
+                                                      backNormal, backPyramid, back, o);
     SnellTwoInterfaceExit eb = snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, sceneDepth, sceneNormal,
                                                      scenePyramid, sceneColor, scene, environment, o);
     transmitted.x = er.color.x * snellBeerLambert(o.absorption, pr.pathLength).x;

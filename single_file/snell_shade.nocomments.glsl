@@ -882,6 +882,30 @@ SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
 #ifndef SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
 #define SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
 
+#ifndef SNELL_INTERSECT_INTERSECT_WITH_GLSL
+#define SNELL_INTERSECT_INTERSECT_WITH_GLSL
+
+#ifndef SNELL_INTERSECT_HIT_GLSL
+#define SNELL_INTERSECT_HIT_GLSL
+
+struct SnellHit {
+  vec2 uv;
+  vec3 position;
+  bool valid;
+  int fetches;
+};
+
+SNELL_FN SnellHit snellHitMiss(int fetches) {
+  SnellHit h;
+  h.uv = vec2(0.0f, 0.0f);
+  h.position = vec3(0.0f, 0.0f, 0.0f);
+  h.valid = false;
+  h.fetches = fetches;
+  return h;
+}
+
+#endif
+
 #ifndef SNELL_INTERSECT_DEPTH_SURFACE_GLSL
 #define SNELL_INTERSECT_DEPTH_SURFACE_GLSL
 
@@ -1054,11 +1078,89 @@ SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, Sn
 
 #endif
 
-#ifndef SNELL_INTERSECT_BINARY_SEARCH_GLSL
-#define SNELL_INTERSECT_BINARY_SEARCH_GLSL
+#ifndef SNELL_INTERSECT_DEPTH_RANGE_GLSL
+#define SNELL_INTERSECT_DEPTH_RANGE_GLSL
 
-#ifndef SNELL_CAMERA_TEX_RAY_GLSL
-#define SNELL_CAMERA_TEX_RAY_GLSL
+#ifndef SNELL_DEPTH_RANGE_MARGIN
+#  define SNELL_DEPTH_RANGE_MARGIN 1e-3f
+#endif
+
+struct SnellDepthRange {
+  float zNearest;
+  float zFarthest;
+  bool valid;
+};
+
+SNELL_FN SnellDepthRange snellDepthRangeInvalid() {
+  SnellDepthRange r;
+  r.zNearest = 0.0f;
+  r.zFarthest = 0.0f;
+  r.valid = false;
+  return r;
+}
+
+SNELL_FN int snellTextureTopLod(SNELL_TEX2D tex) {
+  ivec2 size = SNELL_TEXTURE_SIZE(tex, 0);
+  int m = max(size.x, size.y);
+  int lod = 0;
+  for (int i = 0; i < 31; ++i) {
+    if (m <= 1) {
+      break;
+    }
+    m = m / 2;
+    lod = lod + 1;
+  }
+  return lod;
+}
+
+SNELL_FN SnellDepthRange snellDepthRangeFromPyramid(SNELL_TEX2D pyramidTex) {
+  int top = snellTextureTopLod(pyramidTex);
+  vec4 t = SNELL_TEXEL_FETCH(pyramidTex, ivec2(0, 0), top);
+  if (!(t.w > 0.0f) || !(t.y > 0.0f) || !(t.z >= t.y) || !SNELL_FINITE(t.z)) {
+    return snellDepthRangeInvalid();
+  }
+  SnellDepthRange r;
+  r.zNearest = -t.y * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
+  r.zFarthest = -t.z * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN SnellDepthRange snellDepthRangeFromBox(mat4 viewFromObject, vec3 boxMin, vec3 boxMax) {
+  float zNearest = -SNELL_FLT_MAX;
+  float zFarthest = SNELL_FLT_MAX;
+  for (int i = 0; i < 8; ++i) {
+    float x = (i == 1 || i == 3 || i == 5 || i == 7) ? boxMax.x : boxMin.x;
+    float y = (i == 2 || i == 3 || i == 6 || i == 7) ? boxMax.y : boxMin.y;
+    float z = i >= 4 ? boxMax.z : boxMin.z;
+    vec4 p = SNELL_MUL(viewFromObject, vec4(x, y, z, 1.0f));
+    if (!SNELL_FINITE(p.z)) {
+      return snellDepthRangeInvalid();
+    }
+    zNearest = max(zNearest, p.z);
+    zFarthest = min(zFarthest, p.z);
+  }
+  if (!(zFarthest < 0.0f)) {
+    return snellDepthRangeInvalid();
+  }
+  SnellDepthRange r;
+  r.zNearest = min(zNearest, -SNELL_FLT_MIN);
+  r.zFarthest = zFarthest;
+  if (!(r.zFarthest < r.zNearest)) {
+    r.zNearest = r.zNearest * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
+    r.zFarthest = r.zFarthest * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
+  }
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
+#define SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
+
+#ifndef SNELL_CAMERA_VIEW_TO_UV_GLSL
+#define SNELL_CAMERA_VIEW_TO_UV_GLSL
 
 #ifndef SNELL_CAMERA_VIEW_TO_CLIP_GLSL
 #define SNELL_CAMERA_VIEW_TO_CLIP_GLSL
@@ -1088,6 +1190,474 @@ SNELL_FN SnellNdc snellClipToNdc(vec4 clip) {
 }
 
 #endif
+
+struct SnellScreenPoint {
+  vec2 uv;
+  float ndcZ;
+  bool valid;
+};
+
+SNELL_FN SnellScreenPoint snellViewToUv(mat4 clipFromView, vec3 pView) {
+  SnellNdc n = snellClipToNdc(snellViewToClip(clipFromView, pView));
+  SnellScreenPoint r;
+  r.uv = vec2(0.0f, 0.0f);
+  r.ndcZ = 0.0f;
+  r.valid = n.valid;
+  if (n.valid) {
+    r.uv = vec2(n.ndc.x, n.ndc.y) * 0.5f + 0.5f;
+    r.ndcZ = n.ndc.z;
+  }
+  return r;
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_SURFACE_POINT_GLSL
+#define SNELL_INTERSECT_SURFACE_POINT_GLSL
+
+#ifndef SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
+#define SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
+
+#ifndef SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
+#define SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
+
+SNELL_FN float snellDepthToNdcZ(float depthValue, int convention) {
+  float d = isnan(depthValue) ? 0.0f : clamp(depthValue, 0.0f, 1.0f);
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
+    return 2.0f * d - 1.0f;
+  }
+  return d;
+}
+
+SNELL_FN float snellNdcZToDepth(float ndcZ, int convention) {
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
+    float z = isnan(ndcZ) ? -1.0f : clamp(ndcZ, -1.0f, 1.0f);
+    return 0.5f * z + 0.5f;
+  }
+  return isnan(ndcZ) ? 0.0f : clamp(ndcZ, 0.0f, 1.0f);
+}
+
+#endif
+
+struct SnellViewPoint {
+  vec3 position;
+  bool valid;
+};
+
+SNELL_FN SnellViewPoint snellUvDepthToView(vec2 uv, float depthValue, mat4 viewFromClip, int convention) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || isnan(depthValue) || convention < 0 ||
+      convention >= SNELL_DEPTH_CONVENTION_COUNT) {
+    return r;
+  }
+  float zNdc = snellDepthToNdcZ(depthValue, convention);
+  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, zNdc, 1.0f));
+  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 p = vec3(h.x, h.y, h.z) / h.w;
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z) || !(p.z < 0.0f)) {
+    return r;
+  }
+  r.position = p;
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN SnellViewPoint snellUvDistanceToView(vec2 uv, float viewDistance, mat4 viewFromClip) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewDistance) ||
+      !(viewDistance >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, 0.5f, 1.0f));
+  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 q = vec3(h.x, h.y, h.z) / h.w;
+  if (!SNELL_FINITE(q.x) || !SNELL_FINITE(q.y) || !SNELL_FINITE(q.z) || !(q.z < 0.0f)) {
+    return r;
+  }
+  float s = viewDistance / -q.z;
+  vec3 p = vec3(q.x * s, q.y * s, -viewDistance);
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y)) {
+    return r;
+  }
+  r.position = p;
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+#ifndef SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
+#define SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
+
+#if defined(SNELL_LANG_HLSL)
+#  define SNELL_CAMERA_MAT_COLUMN(m, i) (transpose(m)[i])
+#else
+#  define SNELL_CAMERA_MAT_COLUMN(m, i) ((m)[i])
+#endif
+
+SNELL_FN SnellViewPoint snellUvZToView(mat4 clipFromView, vec2 uv, float viewZ) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
+      !(viewZ <= -SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
+  float nx = 2.0f * uv.x - 1.0f;
+  float ny = 2.0f * uv.y - 1.0f;
+  float a00 = c0.x - nx * c0.w;
+  float a01 = c1.x - nx * c1.w;
+  float a10 = c0.y - ny * c0.w;
+  float a11 = c1.y - ny * c1.w;
+  float b0 = -(viewZ * (c2.x - nx * c2.w) + (c3.x - nx * c3.w));
+  float b1 = -(viewZ * (c2.y - ny * c2.w) + (c3.y - ny * c3.w));
+  float det = a00 * a11 - a01 * a10;
+  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  float x = (b0 * a11 - a01 * b1) / det;
+  float y = (a00 * b1 - b0 * a10) / det;
+  if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
+    return r;
+  }
+  r.position = vec3(x, y, viewZ);
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+struct SnellSurfacePoint {
+  vec3 position;
+  vec2 uv;
+  bool valid;
+};
+
+SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
+  SnellSurfacePoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.uv = vec2(0.0f, 0.0f);
+  r.valid = false;
+  SnellSurfaceSample x = snellSampleSurface(depthTex, uv, s);
+  if (!x.valid) {
+    return r;
+  }
+  ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
+  vec2 centre = x.interpolated ? uv : snellPixelToUv(snellUvToPixel(uv, size), size);
+  SnellViewPoint p = snellUvZToView(s.clipFromView, centre, x.viewZ);
+  if (!p.valid) {
+    return r;
+  }
+  r.position = p.position;
+  r.uv = centre;
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface s) {
+  float len2 = dot(dir, dir);
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
+    return snellHitMiss(0);
+  }
+  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  if (!w.valid) {
+    return snellHitMiss(0);
+  }
+  SnellSurfacePoint b = snellSurfacePoint(depthTex, w.uv, s);
+  if (!b.valid) {
+    return snellHitMiss(1);
+  }
+  vec3 toB = b.position - origin;
+  float d = sqrt(dot(toB, toB));
+  vec3 p = origin + (d / sqrt(len2)) * dir;
+  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
+    return snellHitMiss(1);
+  }
+  SnellHit h;
+  h.uv = sp.uv;
+  h.position = p;
+  h.valid = true;
+  h.fetches = 1;
+  return h;
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_PLANE_REFINE_GLSL
+#define SNELL_INTERSECT_PLANE_REFINE_GLSL
+
+#ifndef SNELL_INTERSECT_HIT_ON_SURFACE_GLSL
+#define SNELL_INTERSECT_HIT_ON_SURFACE_GLSL
+
+SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  if (!sp.valid) {
+    return snellHitMiss(fetchesSoFar);
+  }
+  SnellSurfaceSample x = snellSampleSurface(depthTex, sp.uv, s);
+  if (!x.valid) {
+    return snellHitMiss(fetchesSoFar + 1);
+  }
+  SnellHit h;
+  h.uv = sp.uv;
+  h.position = p;
+  h.valid = true;
+  h.fetches = fetchesSoFar + 1;
+  return h;
+}
+
+#endif
+
+#ifndef SNELL_PLANE_ITERATIONS
+#  define SNELL_PLANE_ITERATIONS 1
+#endif
+#ifndef SNELL_PLANE_MAX_ITERATIONS
+#  define SNELL_PLANE_MAX_ITERATIONS 8
+#endif
+
+#ifndef SNELL_PLANE_FACING_FALLBACK
+#  define SNELL_PLANE_FACING_FALLBACK 1
+#endif
+
+#ifndef SNELL_PLANE_HOLD
+#  define SNELL_PLANE_HOLD 1
+#endif
+
+SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+  SnellHit h = snellHitOnSurface(p, depthTex, s, fetchesSoFar);
+  if (h.valid || SNELL_PLANE_HOLD == 0 || !s.closed) {
+    return h;
+  }
+  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f) ||
+      !SNELL_FINITE(planeUv.x) || !SNELL_FINITE(planeUv.y)) {
+    return h;
+  }
+  h.uv = planeUv;
+  h.position = p;
+  h.valid = true;
+  return h;
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_PLANE_NORMAL_GLSL
+#define SNELL_INTERSECT_PLANE_NORMAL_GLSL
+
+SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
+                                            SnellDepthSurface s, float normalLod, int iterations) {
+  float len2 = dot(dir, dir);
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
+    return snellHitMiss(0);
+  }
+  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  if (!w.valid) {
+    return snellHitMiss(0);
+  }
+  int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
+  int fetches = 0;
+  vec2 uv = w.uv;
+  vec2 planeUv = w.uv;
+  vec3 p = origin;
+  for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
+    if (k > n) {
+      break;
+    }
+    if (k > 0) {
+      SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+      if (!sp.valid) {
+        break;
+      }
+      uv = sp.uv;
+    }
+    SnellSurfacePoint b = snellSurfacePoint(depthTex, uv, s);
+    fetches += 1;
+    if (!b.valid) {
+      if (k == 0) {
+        return snellHitMiss(fetches);
+      }
+      break;
+    }
+    vec4 nt = SNELL_SAMPLE_LOD(normalTex, b.uv, normalLod);
+    fetches += 1;
+    SnellRayPlaneHit ph = snellRayPlane(origin, dir, b.position, vec3(nt.x, nt.y, nt.z));
+#if SNELL_PLANE_FACING_FALLBACK
+    if (!ph.valid) {
+      ph = snellRayPlane(origin, dir, b.position, b.position);
+    }
+#endif
+    if (!ph.valid) {
+      if (k == 0) {
+        return snellHitMiss(fetches);
+      }
+      break;
+    }
+    p = ph.position;
+    planeUv = b.uv;
+  }
+  return snellPlaneHit(p, planeUv, depthTex, s, fetches);
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_PLANE_DEPTH_GLSL
+#define SNELL_INTERSECT_PLANE_DEPTH_GLSL
+
+#ifndef SNELL_PLANE_DEPTH_MAX_SPAN_LOD
+#  define SNELL_PLANE_DEPTH_MAX_SPAN_LOD 6
+#endif
+
+struct SnellDepthPlane {
+  vec2 uv;
+  vec3 position;
+  vec3 normal;
+  bool valid;
+  int fetches;
+};
+
+SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthMips, SnellDepthSurface s, int maxLod) {
+  SnellDepthPlane r;
+  r.uv = vec2(0.0f, 0.0f);
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.normal = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  r.fetches = 0;
+  SnellScreenPoint sq = snellViewToUv(s.clipFromView, q);
+  if (!sq.valid) {
+    return r;
+  }
+  SnellSurfacePoint b0 = snellSurfacePoint(depthMips, sq.uv, s);
+  r.fetches = 1;
+  if (!b0.valid) {
+    return r;
+  }
+  r.uv = b0.uv;
+  vec3 toB = b0.position - q;
+  float d = sqrt(dot(toB, toB));
+  vec3 q2 = q.z < b0.position.z ? q - d * dirN : q + d * dirN;
+  SnellScreenPoint s2 = snellViewToUv(s.clipFromView, q2);
+  vec2 uv2 = s2.valid ? s2.uv : sq.uv;
+  ivec2 size0 = SNELL_TEXTURE_SIZE(depthMips, s.lod);
+  float span = max(abs(uv2.x - sq.uv.x) * float(size0.x), abs(uv2.y - sq.uv.y) * float(size0.y));
+  int top = min(maxLod, s.lod + SNELL_PLANE_DEPTH_MAX_SPAN_LOD);
+  int level = s.lod;
+  if (span > 1.0f && SNELL_FINITE(span)) {
+    level = s.lod + int(ceil(log2(span)));
+  }
+  level = max(s.lod, min(level, top));
+  SnellDepthSurface sl = s;
+  sl.lod = level;
+  ivec2 size = SNELL_TEXTURE_SIZE(depthMips, level);
+  ivec2 pb = snellUvToPixel(sq.uv, size);
+  ivec2 pc = snellUvToPixel(uv2, size);
+  ivec2 a = ivec2(1, 0);
+  ivec2 dpc = pc - pb;
+  if (abs(dpc.y) > abs(dpc.x)) {
+    a = ivec2(0, dpc.y > 0 ? 1 : -1);
+  } else if (dpc.x != 0) {
+    a = ivec2(dpc.x > 0 ? 1 : -1, 0);
+  }
+  if (dpc.x == 0 && dpc.y == 0) {
+    pc = pb + a;
+  }
+  ivec2 b = a.x != 0 ? ivec2(0, 1) : ivec2(1, 0);
+  vec3 pB = b0.position;
+  if (level != s.lod) {
+    SnellSurfacePoint bl = snellSurfacePoint(depthMips, snellPixelToUv(pb, size), sl);
+    r.fetches += 1;
+    if (!bl.valid) {
+      return r;
+    }
+    pB = bl.position;
+  }
+  r.position = pB;
+  SnellSurfacePoint c = snellSurfacePoint(depthMips, snellPixelToUv(pc, size), sl);
+  r.fetches += 1;
+  if (!c.valid) {
+    c = snellSurfacePoint(depthMips, snellPixelToUv(pb - a, size), sl);
+    r.fetches += 1;
+    if (!c.valid) {
+      return r;
+    }
+  }
+  SnellSurfacePoint e = snellSurfacePoint(depthMips, snellPixelToUv(pb + b, size), sl);
+  r.fetches += 1;
+  if (!e.valid) {
+    e = snellSurfacePoint(depthMips, snellPixelToUv(pb - b, size), sl);
+    r.fetches += 1;
+    if (!e.valid) {
+      return r;
+    }
+  }
+  r.normal = cross(c.position - pB, e.position - pB);
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D depthMips, SnellDepthSurface s,
+                                           int maxLod, int iterations) {
+  float len2 = dot(dir, dir);
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
+    return snellHitMiss(0);
+  }
+  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  if (!w.valid) {
+    return snellHitMiss(0);
+  }
+  vec3 dirN = dir / sqrt(len2);
+  int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
+  int fetches = 0;
+  vec3 p = origin;
+  vec2 planeUv = w.uv;
+  for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
+    if (k > n) {
+      break;
+    }
+    SnellDepthPlane pl = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
+    fetches += pl.fetches;
+    SnellRayPlaneHit ph = snellRayPlane(origin, dir, pl.position, pl.normal);
+#if SNELL_PLANE_FACING_FALLBACK
+    if (!ph.valid) {
+      ph = snellRayPlane(origin, dir, pl.position, pl.position);
+    }
+#endif
+    if (!ph.valid) {
+      if (k == 0) {
+        return snellHitMiss(fetches);
+      }
+      break;
+    }
+    p = ph.position;
+    planeUv = pl.uv;
+  }
+  return snellPlaneHit(p, planeUv, depthMips, s, fetches);
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_CONSERVATIVE_BINARY_SEARCH_GLSL
+#define SNELL_INTERSECT_CONSERVATIVE_BINARY_SEARCH_GLSL
+
+#ifndef SNELL_CAMERA_TEX_RAY_GLSL
+#define SNELL_CAMERA_TEX_RAY_GLSL
 
 struct SnellTexRay {
   vec3 s;
@@ -1163,27 +1733,6 @@ SNELL_FN vec2 snellTexRayUv(SnellTexRay r, float pz) {
 
 #endif
 
-#ifndef SNELL_INTERSECT_HIT_GLSL
-#define SNELL_INTERSECT_HIT_GLSL
-
-struct SnellHit {
-  vec2 uv;
-  vec3 position;
-  bool valid;
-  int fetches;
-};
-
-SNELL_FN SnellHit snellHitMiss(int fetches) {
-  SnellHit h;
-  h.uv = vec2(0.0f, 0.0f);
-  h.position = vec3(0.0f, 0.0f, 0.0f);
-  h.valid = false;
-  h.fetches = fetches;
-  return h;
-}
-
-#endif
-
 #ifndef SNELL_INTERSECT_SEARCH_SEGMENT_GLSL
 #define SNELL_INTERSECT_SEARCH_SEGMENT_GLSL
 
@@ -1208,6 +1757,69 @@ SNELL_FN SnellTexRay snellSearchSegment(vec3 origin, vec3 dir, float zNearest, f
 }
 
 #endif
+
+#ifndef SNELL_CBS_STEPS
+#  define SNELL_CBS_STEPS 5
+#endif
+#ifndef SNELL_CBS_MAX_STEPS
+#  define SNELL_CBS_MAX_STEPS 24
+#endif
+
+SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                                float zNearest, float zFarthest, int steps) {
+  SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
+  if (!r.valid) {
+    return snellHitMiss(0);
+  }
+  int n = clamp(steps, 0, SNELL_CBS_MAX_STEPS);
+  float dz = r.e.z - r.s.z;
+  float beta = 0.0f;
+  float dBeta = 1.0f;
+  float zHit = r.s.z;
+  vec2 uvHit = r.ts;
+  bool advanced = false;
+  int fetches = 0;
+  for (int i = 0; i < SNELL_CBS_MAX_STEPS; ++i) {
+    if (i >= n) {
+      break;
+    }
+    dBeta = dBeta * 0.5f;
+    float b = beta + dBeta;
+    float z = r.s.z + b * dz;
+    vec2 uv = snellTexRayUv(r, z);
+    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
+    fetches = fetches + 1;
+    if (x.valid && z > x.viewZ) {
+      beta = b;
+      zHit = z;
+      uvHit = uv;
+      advanced = true;
+    }
+  }
+  if (!advanced) {
+    SnellSurfaceSample x0 = snellSampleSurface(depthTex, uvHit, surface);
+    fetches = fetches + 1;
+    if (!x0.valid) {
+      return snellHitMiss(fetches);
+    }
+  }
+  SnellHit h;
+  h.uv = uvHit;
+  h.position = vec3(r.s.x + beta * (r.e.x - r.s.x), r.s.y + beta * (r.e.y - r.s.y), zHit);
+  h.valid = true;
+  h.fetches = fetches;
+  return h;
+}
+
+SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+                                                float zNearest, float zFarthest) {
+  return snellConservativeBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_CBS_STEPS);
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_BINARY_SEARCH_GLSL
+#define SNELL_INTERSECT_BINARY_SEARCH_GLSL
 
 #ifndef SNELL_BINARY_SEARCH_STEPS
 #  define SNELL_BINARY_SEARCH_STEPS 5
@@ -1268,69 +1880,6 @@ SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex,
 SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
                                     float zNearest, float zFarthest) {
   return snellBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_BINARY_SEARCH_STEPS);
-}
-
-#endif
-
-#ifndef SNELL_INTERSECT_CONSERVATIVE_BINARY_SEARCH_GLSL
-#define SNELL_INTERSECT_CONSERVATIVE_BINARY_SEARCH_GLSL
-
-#ifndef SNELL_CBS_STEPS
-#  define SNELL_CBS_STEPS 5
-#endif
-#ifndef SNELL_CBS_MAX_STEPS
-#  define SNELL_CBS_MAX_STEPS 24
-#endif
-
-SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
-                                                float zNearest, float zFarthest, int steps) {
-  SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
-  if (!r.valid) {
-    return snellHitMiss(0);
-  }
-  int n = clamp(steps, 0, SNELL_CBS_MAX_STEPS);
-  float dz = r.e.z - r.s.z;
-  float beta = 0.0f;
-  float dBeta = 1.0f;
-  float zHit = r.s.z;
-  vec2 uvHit = r.ts;
-  bool advanced = false;
-  int fetches = 0;
-  for (int i = 0; i < SNELL_CBS_MAX_STEPS; ++i) {
-    if (i >= n) {
-      break;
-    }
-    dBeta = dBeta * 0.5f;
-    float b = beta + dBeta;
-    float z = r.s.z + b * dz;
-    vec2 uv = snellTexRayUv(r, z);
-    SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
-    fetches = fetches + 1;
-    if (x.valid && z > x.viewZ) {
-      beta = b;
-      zHit = z;
-      uvHit = uv;
-      advanced = true;
-    }
-  }
-  if (!advanced) {
-    SnellSurfaceSample x0 = snellSampleSurface(depthTex, uvHit, surface);
-    fetches = fetches + 1;
-    if (!x0.valid) {
-      return snellHitMiss(fetches);
-    }
-  }
-  SnellHit h;
-  h.uv = uvHit;
-  h.position = vec3(r.s.x + beta * (r.e.x - r.s.x), r.s.y + beta * (r.e.y - r.s.y), zHit);
-  h.valid = true;
-  h.fetches = fetches;
-  return h;
-}
-
-SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
-                                                float zNearest, float zFarthest) {
-  return snellConservativeBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_CBS_STEPS);
 }
 
 #endif
@@ -1397,30 +1946,6 @@ SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D dep
 
 #ifndef SNELL_INTERSECT_LINEAR_MARCH_GLSL
 #define SNELL_INTERSECT_LINEAR_MARCH_GLSL
-
-#ifndef SNELL_CAMERA_VIEW_TO_UV_GLSL
-#define SNELL_CAMERA_VIEW_TO_UV_GLSL
-
-struct SnellScreenPoint {
-  vec2 uv;
-  float ndcZ;
-  bool valid;
-};
-
-SNELL_FN SnellScreenPoint snellViewToUv(mat4 clipFromView, vec3 pView) {
-  SnellNdc n = snellClipToNdc(snellViewToClip(clipFromView, pView));
-  SnellScreenPoint r;
-  r.uv = vec2(0.0f, 0.0f);
-  r.ndcZ = 0.0f;
-  r.valid = n.valid;
-  if (n.valid) {
-    r.uv = vec2(n.ndc.x, n.ndc.y) * 0.5f + 0.5f;
-    r.ndcZ = n.ndc.z;
-  }
-  return r;
-}
-
-#endif
 
 #ifndef SNELL_LINEAR_MARCH_STEPS
 #  define SNELL_LINEAR_MARCH_STEPS 32
@@ -1630,64 +2155,6 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
 
 #endif
 
-#ifndef SNELL_INTERSECT_PLANE_REFINE_GLSL
-#define SNELL_INTERSECT_PLANE_REFINE_GLSL
-
-#ifndef SNELL_INTERSECT_HIT_ON_SURFACE_GLSL
-#define SNELL_INTERSECT_HIT_ON_SURFACE_GLSL
-
-SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
-  if (!sp.valid) {
-    return snellHitMiss(fetchesSoFar);
-  }
-  SnellSurfaceSample x = snellSampleSurface(depthTex, sp.uv, s);
-  if (!x.valid) {
-    return snellHitMiss(fetchesSoFar + 1);
-  }
-  SnellHit h;
-  h.uv = sp.uv;
-  h.position = p;
-  h.valid = true;
-  h.fetches = fetchesSoFar + 1;
-  return h;
-}
-
-#endif
-
-#ifndef SNELL_PLANE_ITERATIONS
-#  define SNELL_PLANE_ITERATIONS 1
-#endif
-#ifndef SNELL_PLANE_MAX_ITERATIONS
-#  define SNELL_PLANE_MAX_ITERATIONS 8
-#endif
-
-#ifndef SNELL_PLANE_FACING_FALLBACK
-#  define SNELL_PLANE_FACING_FALLBACK 1
-#endif
-
-#ifndef SNELL_PLANE_HOLD
-#  define SNELL_PLANE_HOLD 1
-#endif
-
-SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
-  SnellHit h = snellHitOnSurface(p, depthTex, s, fetchesSoFar);
-  if (h.valid || SNELL_PLANE_HOLD == 0 || !s.closed) {
-    return h;
-  }
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
-  if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f) ||
-      !SNELL_FINITE(planeUv.x) || !SNELL_FINITE(planeUv.y)) {
-    return h;
-  }
-  h.uv = planeUv;
-  h.position = p;
-  h.valid = true;
-  return h;
-}
-
-#endif
-
 #define SNELL_STRATEGY_SINGLE 0
 #define SNELL_STRATEGY_PLANE_NORMAL 1
 #define SNELL_STRATEGY_PLANE_DEPTH 2
@@ -1696,10 +2163,110 @@ SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, Snel
 #define SNELL_STRATEGY_LINEAR_BINARY 5
 #define SNELL_STRATEGY_LINEAR_MARCH 6
 #define SNELL_STRATEGY_DDA 7
-#define SNELL_STRATEGY_WYMAN 8
 
 #define SNELL_RANGE_PYRAMID 0
 #define SNELL_RANGE_EXPLICIT 1
+
+#ifndef SNELL_INTERSECT_STRATEGIES
+#  define SNELL_INTERSECT_STRATEGIES 0xFF
+#endif
+#define SNELL_INTERSECT_HAS(k) ((SNELL_INTERSECT_STRATEGIES & (1 << (k))) != 0)
+
+struct SnellIntersectOptions {
+  int strategy;
+  int depthFilter;
+  int planeIterations;
+  float planeNormalLod;
+  int planeMaxLod;
+  int cbsSteps;
+  int binarySteps;
+  int linearSteps;
+  int rangeSource;
+  SnellDepthRange range;
+  int marchSteps;
+  int marchBisections;
+  float marchMaxDistance;
+  int ddaSteps;
+  float ddaMaxDistance;
+  float ddaThickness;
+  float ddaStride;
+};
+
+SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
+  SnellIntersectOptions o;
+  o.strategy = strategy;
+  o.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+  o.planeIterations = SNELL_PLANE_ITERATIONS;
+  o.planeNormalLod = 0.0f;
+  o.planeMaxLod = -1;
+  o.cbsSteps = SNELL_CBS_STEPS;
+  o.binarySteps = SNELL_BINARY_SEARCH_STEPS;
+  o.linearSteps = SNELL_LINEAR_SEARCH_STEPS;
+  o.rangeSource = SNELL_RANGE_PYRAMID;
+  o.range = snellDepthRangeInvalid();
+  o.marchSteps = SNELL_LINEAR_MARCH_STEPS;
+  o.marchBisections = SNELL_LINEAR_MARCH_REFINE_STEPS;
+  o.marchMaxDistance = SNELL_LINEAR_MARCH_MAX_DISTANCE;
+  o.ddaSteps = SNELL_DDA_STEPS;
+  o.ddaMaxDistance = SNELL_DDA_MAX_DISTANCE;
+  o.ddaThickness = SNELL_DDA_THICKNESS;
+  o.ddaStride = SNELL_DDA_STRIDE;
+  return o;
+}
+
+SNELL_FN SnellHit snellIntersectWith(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
+                                     SNELL_TEX2D pyramidTex, SnellDepthSurface readAs, SnellIntersectOptions o) {
+  SnellDepthSurface surface = readAs;
+  surface.depthFilter = o.depthFilter;
+  int strategy = o.strategy;
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_SINGLE) && strategy == SNELL_STRATEGY_SINGLE) {
+    return snellIntersectSingleSample(origin, dir, depthTex, surface);
+  }
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_PLANE_NORMAL) && strategy == SNELL_STRATEGY_PLANE_NORMAL) {
+    return snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, surface, o.planeNormalLod, o.planeIterations);
+  }
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_PLANE_DEPTH) && strategy == SNELL_STRATEGY_PLANE_DEPTH) {
+    int maxLod = o.planeMaxLod >= 0 ? o.planeMaxLod : snellTextureTopLod(pyramidTex);
+    return snellIntersectPlaneDepth(origin, dir, pyramidTex, surface, maxLod, o.planeIterations);
+  }
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_LINEAR_MARCH) && strategy == SNELL_STRATEGY_LINEAR_MARCH) {
+    return snellLinearMarch(origin, dir, depthTex, surface, o.marchMaxDistance, o.marchSteps, o.marchBisections);
+  }
+  if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_DDA) && strategy == SNELL_STRATEGY_DDA) {
+    return snellDdaMarch(origin, dir, depthTex, surface, o.ddaMaxDistance, o.ddaThickness, o.ddaStride, o.ddaSteps);
+  }
+  bool cbs = SNELL_INTERSECT_HAS(SNELL_STRATEGY_CBS) && strategy == SNELL_STRATEGY_CBS;
+  bool binary = SNELL_INTERSECT_HAS(SNELL_STRATEGY_BINARY) && strategy == SNELL_STRATEGY_BINARY;
+  bool linearBinary = SNELL_INTERSECT_HAS(SNELL_STRATEGY_LINEAR_BINARY) && strategy == SNELL_STRATEGY_LINEAR_BINARY;
+  if (!cbs && !binary && !linearBinary) {
+    return snellHitMiss(0);
+  }
+  SnellDepthRange range = o.range;
+  int rangeFetches = 0;
+  if (o.rangeSource != SNELL_RANGE_EXPLICIT) {
+    range = snellDepthRangeFromPyramid(pyramidTex);
+    rangeFetches = 1;
+  }
+  if (!range.valid) {
+    return snellHitMiss(rangeFetches);
+  }
+  SnellHit h;
+  if (cbs) {
+    h = snellConservativeBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.cbsSteps);
+  } else if (binary) {
+    h = snellBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.binarySteps);
+  } else {
+    h = snellLinearBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.linearSteps,
+                                o.binarySteps);
+  }
+  h.fetches = h.fetches + rangeFetches;
+  return h;
+}
+
+#endif
+
+#define SNELL_BACK_INTERSECT 0
+#define SNELL_BACK_WYMAN 1
 
 #define SNELL_EXIT_ENVIRONMENT 0
 #define SNELL_EXIT_SCENE 1
@@ -1710,22 +2277,8 @@ SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, Snel
 #define SNELL_REFLECT_ENVIRONMENT 0
 #define SNELL_REFLECT_SCENE 1
 
-struct SnellIntersectOptions {
-  int strategy;
-  int steps;
-  int refineSteps;
-  float maxDistance;
-  float thickness;
-  float stride;
-  float normalLod;
-  int maxLod;
-  int rangeSource;
-  float zNearest;
-  float zFarthest;
-  int depthFilter;
-};
-
 struct SnellTechniqueOptions {
+  int backMethod;
   SnellIntersectOptions back;
   SnellIntersectOptions exit;
   int exitMode;
@@ -1749,41 +2302,9 @@ struct SnellTechniqueOptions {
   vec3 envZ;
 };
 
-SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
-  SnellIntersectOptions o;
-  o.strategy = strategy;
-  o.steps = 0;
-  o.refineSteps = 0;
-  o.maxDistance = SNELL_DDA_MAX_DISTANCE;
-  o.thickness = SNELL_DDA_THICKNESS;
-  o.stride = SNELL_DDA_STRIDE;
-  o.normalLod = 0.0f;
-  o.maxLod = -1;
-  o.rangeSource = SNELL_RANGE_PYRAMID;
-  o.zNearest = 0.0f;
-  o.zFarthest = 0.0f;
-  o.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
-  if (strategy == SNELL_STRATEGY_CBS) {
-    o.steps = SNELL_CBS_STEPS;
-  } else if (strategy == SNELL_STRATEGY_BINARY) {
-    o.steps = SNELL_BINARY_SEARCH_STEPS;
-  } else if (strategy == SNELL_STRATEGY_LINEAR_BINARY) {
-    o.steps = SNELL_LINEAR_SEARCH_STEPS;
-    o.refineSteps = SNELL_BINARY_SEARCH_STEPS;
-  } else if (strategy == SNELL_STRATEGY_PLANE_NORMAL || strategy == SNELL_STRATEGY_PLANE_DEPTH) {
-    o.steps = SNELL_PLANE_ITERATIONS;
-  } else if (strategy == SNELL_STRATEGY_LINEAR_MARCH) {
-    o.steps = SNELL_LINEAR_MARCH_STEPS;
-    o.refineSteps = SNELL_LINEAR_MARCH_REFINE_STEPS;
-    o.maxDistance = SNELL_LINEAR_MARCH_MAX_DISTANCE;
-  } else if (strategy == SNELL_STRATEGY_DDA) {
-    o.steps = SNELL_DDA_STEPS;
-  }
-  return o;
-}
-
 SNELL_FN SnellTechniqueOptions snellTechniqueOptions() {
   SnellTechniqueOptions o;
+  o.backMethod = SNELL_BACK_INTERSECT;
   o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
   o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
   o.exitMode = SNELL_EXIT_ENVIRONMENT;
@@ -1821,35 +2342,35 @@ SNELL_FN SnellTechniqueOptions snellTechniquePresetSlots(int backStrategy, int e
 }
 
 SNELL_FN SnellTechniqueOptions snellPresetDir() {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_CBS, SNELL_STRATEGY_CBS);
-  o.back.steps = 5;
-  o.exit.steps = 5;
-  return o;
+  return snellTechniquePresetSlots(SNELL_STRATEGY_CBS, SNELL_STRATEGY_CBS);
 }
 
 SNELL_FN SnellTechniqueOptions snellPresetDirBounds(float zNearest, float zFarthest) {
   SnellTechniqueOptions o = snellPresetDir();
   o.back.rangeSource = SNELL_RANGE_EXPLICIT;
-  o.back.zNearest = zNearest;
-  o.back.zFarthest = zFarthest;
+  o.back.range.zNearest = zNearest;
+  o.back.range.zFarthest = zFarthest;
+  o.back.range.valid = true;
   return o;
 }
 
 SNELL_FN SnellTechniqueOptions snellPresetIsr() {
-  return snellTechniquePresetSlots(SNELL_STRATEGY_WYMAN, SNELL_STRATEGY_SINGLE);
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
+  o.backMethod = SNELL_BACK_WYMAN;
+  return o;
 }
 
 SNELL_FN SnellTechniqueOptions snellPresetPlaneNormal(int iterations) {
   SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_NORMAL, SNELL_STRATEGY_PLANE_NORMAL);
-  o.back.steps = iterations;
-  o.exit.steps = iterations;
+  o.back.planeIterations = iterations;
+  o.exit.planeIterations = iterations;
   return o;
 }
 
 SNELL_FN SnellTechniqueOptions snellPresetPlaneDepth(int iterations) {
   SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_DEPTH, SNELL_STRATEGY_PLANE_DEPTH);
-  o.back.steps = iterations;
-  o.exit.steps = iterations;
+  o.back.planeIterations = iterations;
+  o.exit.planeIterations = iterations;
   return o;
 }
 
@@ -1867,10 +2388,10 @@ SNELL_FN SnellTechniqueOptions snellPresetDdaMarch() {
 
 SNELL_FN SnellTechniqueOptions snellPresetImageSpaceBound() {
   SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
-  o.back.steps = SNELL_LINEAR_MARCH_MAX_STEPS;
-  o.back.refineSteps = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
-  o.exit.steps = SNELL_LINEAR_MARCH_MAX_STEPS;
-  o.exit.refineSteps = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  o.back.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  o.back.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  o.exit.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  o.exit.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
   o.back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
   o.exit.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
   return o;
@@ -1920,533 +2441,6 @@ SNELL_FN SnellTechniqueOptions snellTechniquePreset(int technique) {
     return snellPresetImageSpaceBound();
   }
   return snellTechniquePresetSlots(-1, -1);
-}
-
-#endif
-
-#ifndef SNELL_SHADE_TECHNIQUE_INTERSECT_GLSL
-#define SNELL_SHADE_TECHNIQUE_INTERSECT_GLSL
-
-#ifndef SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
-#define SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
-
-#ifndef SNELL_INTERSECT_SURFACE_POINT_GLSL
-#define SNELL_INTERSECT_SURFACE_POINT_GLSL
-
-#ifndef SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
-#define SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
-
-#ifndef SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
-#define SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
-
-SNELL_FN float snellDepthToNdcZ(float depthValue, int convention) {
-  float d = isnan(depthValue) ? 0.0f : clamp(depthValue, 0.0f, 1.0f);
-  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
-    return 2.0f * d - 1.0f;
-  }
-  return d;
-}
-
-SNELL_FN float snellNdcZToDepth(float ndcZ, int convention) {
-  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
-    float z = isnan(ndcZ) ? -1.0f : clamp(ndcZ, -1.0f, 1.0f);
-    return 0.5f * z + 0.5f;
-  }
-  return isnan(ndcZ) ? 0.0f : clamp(ndcZ, 0.0f, 1.0f);
-}
-
-#endif
-
-struct SnellViewPoint {
-  vec3 position;
-  bool valid;
-};
-
-SNELL_FN SnellViewPoint snellUvDepthToView(vec2 uv, float depthValue, mat4 viewFromClip, int convention) {
-  SnellViewPoint r;
-  r.position = vec3(0.0f, 0.0f, 0.0f);
-  r.valid = false;
-  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || isnan(depthValue) || convention < 0 ||
-      convention >= SNELL_DEPTH_CONVENTION_COUNT) {
-    return r;
-  }
-  float zNdc = snellDepthToNdcZ(depthValue, convention);
-  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, zNdc, 1.0f));
-  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
-    return r;
-  }
-  vec3 p = vec3(h.x, h.y, h.z) / h.w;
-  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z) || !(p.z < 0.0f)) {
-    return r;
-  }
-  r.position = p;
-  r.valid = true;
-  return r;
-}
-
-SNELL_FN SnellViewPoint snellUvDistanceToView(vec2 uv, float viewDistance, mat4 viewFromClip) {
-  SnellViewPoint r;
-  r.position = vec3(0.0f, 0.0f, 0.0f);
-  r.valid = false;
-  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewDistance) ||
-      !(viewDistance >= SNELL_FLT_MIN)) {
-    return r;
-  }
-  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, 0.5f, 1.0f));
-  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
-    return r;
-  }
-  vec3 q = vec3(h.x, h.y, h.z) / h.w;
-  if (!SNELL_FINITE(q.x) || !SNELL_FINITE(q.y) || !SNELL_FINITE(q.z) || !(q.z < 0.0f)) {
-    return r;
-  }
-  float s = viewDistance / -q.z;
-  vec3 p = vec3(q.x * s, q.y * s, -viewDistance);
-  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y)) {
-    return r;
-  }
-  r.position = p;
-  r.valid = true;
-  return r;
-}
-
-#endif
-
-#ifndef SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
-#define SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
-
-#if defined(SNELL_LANG_HLSL)
-#  define SNELL_CAMERA_MAT_COLUMN(m, i) (transpose(m)[i])
-#else
-#  define SNELL_CAMERA_MAT_COLUMN(m, i) ((m)[i])
-#endif
-
-SNELL_FN SnellViewPoint snellUvZToView(mat4 clipFromView, vec2 uv, float viewZ) {
-  SnellViewPoint r;
-  r.position = vec3(0.0f, 0.0f, 0.0f);
-  r.valid = false;
-  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
-      !(viewZ <= -SNELL_FLT_MIN)) {
-    return r;
-  }
-  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
-  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
-  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
-  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
-  float nx = 2.0f * uv.x - 1.0f;
-  float ny = 2.0f * uv.y - 1.0f;
-  float a00 = c0.x - nx * c0.w;
-  float a01 = c1.x - nx * c1.w;
-  float a10 = c0.y - ny * c0.w;
-  float a11 = c1.y - ny * c1.w;
-  float b0 = -(viewZ * (c2.x - nx * c2.w) + (c3.x - nx * c3.w));
-  float b1 = -(viewZ * (c2.y - ny * c2.w) + (c3.y - ny * c3.w));
-  float det = a00 * a11 - a01 * a10;
-  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
-    return r;
-  }
-  float x = (b0 * a11 - a01 * b1) / det;
-  float y = (a00 * b1 - b0 * a10) / det;
-  if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
-    return r;
-  }
-  r.position = vec3(x, y, viewZ);
-  r.valid = true;
-  return r;
-}
-
-#endif
-
-struct SnellSurfacePoint {
-  vec3 position;
-  vec2 uv;
-  bool valid;
-};
-
-SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
-  SnellSurfacePoint r;
-  r.position = vec3(0.0f, 0.0f, 0.0f);
-  r.uv = vec2(0.0f, 0.0f);
-  r.valid = false;
-  SnellSurfaceSample x = snellSampleSurface(depthTex, uv, s);
-  if (!x.valid) {
-    return r;
-  }
-  ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
-  vec2 centre = x.interpolated ? uv : snellPixelToUv(snellUvToPixel(uv, size), size);
-  SnellViewPoint p = snellUvZToView(s.clipFromView, centre, x.viewZ);
-  if (!p.valid) {
-    return r;
-  }
-  r.position = p.position;
-  r.uv = centre;
-  r.valid = true;
-  return r;
-}
-
-#endif
-
-SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface s) {
-  float len2 = dot(dir, dir);
-  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
-      !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
-    return snellHitMiss(0);
-  }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
-  if (!w.valid) {
-    return snellHitMiss(0);
-  }
-  SnellSurfacePoint b = snellSurfacePoint(depthTex, w.uv, s);
-  if (!b.valid) {
-    return snellHitMiss(1);
-  }
-  vec3 toB = b.position - origin;
-  float d = sqrt(dot(toB, toB));
-  vec3 p = origin + (d / sqrt(len2)) * dir;
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
-  if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
-    return snellHitMiss(1);
-  }
-  SnellHit h;
-  h.uv = sp.uv;
-  h.position = p;
-  h.valid = true;
-  h.fetches = 1;
-  return h;
-}
-
-#endif
-
-#ifndef SNELL_INTERSECT_PLANE_NORMAL_GLSL
-#define SNELL_INTERSECT_PLANE_NORMAL_GLSL
-
-SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
-                                            SnellDepthSurface s, float normalLod, int iterations) {
-  float len2 = dot(dir, dir);
-  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
-      !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
-    return snellHitMiss(0);
-  }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
-  if (!w.valid) {
-    return snellHitMiss(0);
-  }
-  int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
-  int fetches = 0;
-  vec2 uv = w.uv;
-  vec2 planeUv = w.uv;
-  vec3 p = origin;
-  for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
-    if (k > n) {
-      break;
-    }
-    if (k > 0) {
-      SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
-      if (!sp.valid) {
-        break;
-      }
-      uv = sp.uv;
-    }
-    SnellSurfacePoint b = snellSurfacePoint(depthTex, uv, s);
-    fetches += 1;
-    if (!b.valid) {
-      if (k == 0) {
-        return snellHitMiss(fetches);
-      }
-      break;
-    }
-    vec4 nt = SNELL_SAMPLE_LOD(normalTex, b.uv, normalLod);
-    fetches += 1;
-    SnellRayPlaneHit ph = snellRayPlane(origin, dir, b.position, vec3(nt.x, nt.y, nt.z));
-#if SNELL_PLANE_FACING_FALLBACK
-    if (!ph.valid) {
-      ph = snellRayPlane(origin, dir, b.position, b.position);
-    }
-#endif
-    if (!ph.valid) {
-      if (k == 0) {
-        return snellHitMiss(fetches);
-      }
-      break;
-    }
-    p = ph.position;
-    planeUv = b.uv;
-  }
-  return snellPlaneHit(p, planeUv, depthTex, s, fetches);
-}
-
-#endif
-
-#ifndef SNELL_INTERSECT_PLANE_DEPTH_GLSL
-#define SNELL_INTERSECT_PLANE_DEPTH_GLSL
-
-#ifndef SNELL_PLANE_DEPTH_MAX_SPAN_LOD
-#  define SNELL_PLANE_DEPTH_MAX_SPAN_LOD 6
-#endif
-
-struct SnellDepthPlane {
-  vec2 uv;
-  vec3 position;
-  vec3 normal;
-  bool valid;
-  int fetches;
-};
-
-SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthMips, SnellDepthSurface s, int maxLod) {
-  SnellDepthPlane r;
-  r.uv = vec2(0.0f, 0.0f);
-  r.position = vec3(0.0f, 0.0f, 0.0f);
-  r.normal = vec3(0.0f, 0.0f, 0.0f);
-  r.valid = false;
-  r.fetches = 0;
-  SnellScreenPoint sq = snellViewToUv(s.clipFromView, q);
-  if (!sq.valid) {
-    return r;
-  }
-  SnellSurfacePoint b0 = snellSurfacePoint(depthMips, sq.uv, s);
-  r.fetches = 1;
-  if (!b0.valid) {
-    return r;
-  }
-  r.uv = b0.uv;
-  vec3 toB = b0.position - q;
-  float d = sqrt(dot(toB, toB));
-  vec3 q2 = q.z < b0.position.z ? q - d * dirN : q + d * dirN;
-  SnellScreenPoint s2 = snellViewToUv(s.clipFromView, q2);
-  vec2 uv2 = s2.valid ? s2.uv : sq.uv;
-  ivec2 size0 = SNELL_TEXTURE_SIZE(depthMips, s.lod);
-  float span = max(abs(uv2.x - sq.uv.x) * float(size0.x), abs(uv2.y - sq.uv.y) * float(size0.y));
-  int top = min(maxLod, s.lod + SNELL_PLANE_DEPTH_MAX_SPAN_LOD);
-  int level = s.lod;
-  if (span > 1.0f && SNELL_FINITE(span)) {
-    level = s.lod + int(ceil(log2(span)));
-  }
-  level = max(s.lod, min(level, top));
-  SnellDepthSurface sl = s;
-  sl.lod = level;
-  ivec2 size = SNELL_TEXTURE_SIZE(depthMips, level);
-  ivec2 pb = snellUvToPixel(sq.uv, size);
-  ivec2 pc = snellUvToPixel(uv2, size);
-  ivec2 a = ivec2(1, 0);
-  ivec2 dpc = pc - pb;
-  if (abs(dpc.y) > abs(dpc.x)) {
-    a = ivec2(0, dpc.y > 0 ? 1 : -1);
-  } else if (dpc.x != 0) {
-    a = ivec2(dpc.x > 0 ? 1 : -1, 0);
-  }
-  if (dpc.x == 0 && dpc.y == 0) {
-    pc = pb + a;
-  }
-  ivec2 b = a.x != 0 ? ivec2(0, 1) : ivec2(1, 0);
-  vec3 pB = b0.position;
-  if (level != s.lod) {
-    SnellSurfacePoint bl = snellSurfacePoint(depthMips, snellPixelToUv(pb, size), sl);
-    r.fetches += 1;
-    if (!bl.valid) {
-      return r;
-    }
-    pB = bl.position;
-  }
-  r.position = pB;
-  SnellSurfacePoint c = snellSurfacePoint(depthMips, snellPixelToUv(pc, size), sl);
-  r.fetches += 1;
-  if (!c.valid) {
-    c = snellSurfacePoint(depthMips, snellPixelToUv(pb - a, size), sl);
-    r.fetches += 1;
-    if (!c.valid) {
-      return r;
-    }
-  }
-  SnellSurfacePoint e = snellSurfacePoint(depthMips, snellPixelToUv(pb + b, size), sl);
-  r.fetches += 1;
-  if (!e.valid) {
-    e = snellSurfacePoint(depthMips, snellPixelToUv(pb - b, size), sl);
-    r.fetches += 1;
-    if (!e.valid) {
-      return r;
-    }
-  }
-  r.normal = cross(c.position - pB, e.position - pB);
-  r.valid = true;
-  return r;
-}
-
-SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D depthMips, SnellDepthSurface s,
-                                           int maxLod, int iterations) {
-  float len2 = dot(dir, dir);
-  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
-      !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
-    return snellHitMiss(0);
-  }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
-  if (!w.valid) {
-    return snellHitMiss(0);
-  }
-  vec3 dirN = dir / sqrt(len2);
-  int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
-  int fetches = 0;
-  vec3 p = origin;
-  vec2 planeUv = w.uv;
-  for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
-    if (k > n) {
-      break;
-    }
-    SnellDepthPlane pl = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
-    fetches += pl.fetches;
-    SnellRayPlaneHit ph = snellRayPlane(origin, dir, pl.position, pl.normal);
-#if SNELL_PLANE_FACING_FALLBACK
-    if (!ph.valid) {
-      ph = snellRayPlane(origin, dir, pl.position, pl.position);
-    }
-#endif
-    if (!ph.valid) {
-      if (k == 0) {
-        return snellHitMiss(fetches);
-      }
-      break;
-    }
-    p = ph.position;
-    planeUv = pl.uv;
-  }
-  return snellPlaneHit(p, planeUv, depthMips, s, fetches);
-}
-
-#endif
-
-#ifndef SNELL_INTERSECT_DEPTH_RANGE_GLSL
-#define SNELL_INTERSECT_DEPTH_RANGE_GLSL
-
-#ifndef SNELL_DEPTH_RANGE_MARGIN
-#  define SNELL_DEPTH_RANGE_MARGIN 1e-3f
-#endif
-
-struct SnellDepthRange {
-  float zNearest;
-  float zFarthest;
-  bool valid;
-};
-
-SNELL_FN SnellDepthRange snellDepthRangeInvalid() {
-  SnellDepthRange r;
-  r.zNearest = 0.0f;
-  r.zFarthest = 0.0f;
-  r.valid = false;
-  return r;
-}
-
-SNELL_FN int snellTextureTopLod(SNELL_TEX2D tex) {
-  ivec2 size = SNELL_TEXTURE_SIZE(tex, 0);
-  int m = max(size.x, size.y);
-  int lod = 0;
-  for (int i = 0; i < 31; ++i) {
-    if (m <= 1) {
-      break;
-    }
-    m = m / 2;
-    lod = lod + 1;
-  }
-  return lod;
-}
-
-SNELL_FN SnellDepthRange snellDepthRangeFromPyramid(SNELL_TEX2D pyramidTex) {
-  int top = snellTextureTopLod(pyramidTex);
-  vec4 t = SNELL_TEXEL_FETCH(pyramidTex, ivec2(0, 0), top);
-  if (!(t.w > 0.0f) || !(t.y > 0.0f) || !(t.z >= t.y) || !SNELL_FINITE(t.z)) {
-    return snellDepthRangeInvalid();
-  }
-  SnellDepthRange r;
-  r.zNearest = -t.y * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
-  r.zFarthest = -t.z * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
-  r.valid = true;
-  return r;
-}
-
-SNELL_FN SnellDepthRange snellDepthRangeFromBox(mat4 viewFromObject, vec3 boxMin, vec3 boxMax) {
-  float zNearest = -SNELL_FLT_MAX;
-  float zFarthest = SNELL_FLT_MAX;
-  for (int i = 0; i < 8; ++i) {
-    float x = (i == 1 || i == 3 || i == 5 || i == 7) ? boxMax.x : boxMin.x;
-    float y = (i == 2 || i == 3 || i == 6 || i == 7) ? boxMax.y : boxMin.y;
-    float z = i >= 4 ? boxMax.z : boxMin.z;
-    vec4 p = SNELL_MUL(viewFromObject, vec4(x, y, z, 1.0f));
-    if (!SNELL_FINITE(p.z)) {
-      return snellDepthRangeInvalid();
-    }
-    zNearest = max(zNearest, p.z);
-    zFarthest = min(zFarthest, p.z);
-  }
-  if (!(zFarthest < 0.0f)) {
-    return snellDepthRangeInvalid();
-  }
-  SnellDepthRange r;
-  r.zNearest = min(zNearest, -SNELL_FLT_MIN);
-  r.zFarthest = zFarthest;
-  if (!(r.zFarthest < r.zNearest)) {
-    r.zNearest = r.zNearest * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
-    r.zFarthest = r.zFarthest * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
-  }
-  r.valid = true;
-  return r;
-}
-
-#endif
-
-#ifndef SNELL_TECHNIQUE_STRATEGIES
-#  define SNELL_TECHNIQUE_STRATEGIES 0x1FF
-#endif
-#define SNELL_TECHNIQUE_HAS(k) ((SNELL_TECHNIQUE_STRATEGIES & (1 << (k))) != 0)
-
-SNELL_FN SnellHit snellIntersectWith(int strategy, vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
-                                     SNELL_TEX2D pyramidTex, SnellDepthSurface readAs, SnellIntersectOptions o) {
-  SnellDepthSurface surface = readAs;
-  surface.depthFilter = o.depthFilter;
-  if ((SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_SINGLE) && strategy == SNELL_STRATEGY_SINGLE) ||
-      (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_WYMAN) && strategy == SNELL_STRATEGY_WYMAN)) {
-    return snellIntersectSingleSample(origin, dir, depthTex, surface);
-  }
-  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_PLANE_NORMAL) && strategy == SNELL_STRATEGY_PLANE_NORMAL) {
-    return snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, surface, o.normalLod, o.steps);
-  }
-  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_PLANE_DEPTH) && strategy == SNELL_STRATEGY_PLANE_DEPTH) {
-    int maxLod = o.maxLod >= 0 ? o.maxLod : snellTextureTopLod(pyramidTex);
-    return snellIntersectPlaneDepth(origin, dir, pyramidTex, surface, maxLod, o.steps);
-  }
-  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_LINEAR_MARCH) && strategy == SNELL_STRATEGY_LINEAR_MARCH) {
-    return snellLinearMarch(origin, dir, depthTex, surface, o.maxDistance, o.steps, o.refineSteps);
-  }
-  if (SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_DDA) && strategy == SNELL_STRATEGY_DDA) {
-    return snellDdaMarch(origin, dir, depthTex, surface, o.maxDistance, o.thickness, o.stride, o.steps);
-  }
-  bool cbs = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_CBS) && strategy == SNELL_STRATEGY_CBS;
-  bool binary = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_BINARY) && strategy == SNELL_STRATEGY_BINARY;
-  bool linearBinary = SNELL_TECHNIQUE_HAS(SNELL_STRATEGY_LINEAR_BINARY) && strategy == SNELL_STRATEGY_LINEAR_BINARY;
-  if (!cbs && !binary && !linearBinary) {
-    return snellHitMiss(0);
-  }
-  SnellDepthRange range;
-  int rangeFetches = 0;
-  if (o.rangeSource == SNELL_RANGE_EXPLICIT) {
-    range.zNearest = o.zNearest;
-    range.zFarthest = o.zFarthest;
-    range.valid = true;
-  } else {
-    range = snellDepthRangeFromPyramid(pyramidTex);
-    rangeFetches = 1;
-  }
-  if (!range.valid) {
-    return snellHitMiss(rangeFetches);
-  }
-  SnellHit h;
-  if (cbs) {
-    h = snellConservativeBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps);
-  } else if (binary) {
-    h = snellBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps);
-  } else {
-    h = snellLinearBinarySearch(origin, dir, depthTex, surface, range.zNearest, range.zFarthest, o.steps,
-                                o.refineSteps);
-  }
-  h.fetches = h.fetches + rangeFetches;
-  return h;
 }
 
 #endif
@@ -2536,7 +2530,7 @@ struct SnellTwoInterfacePath {
 SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
                                                       SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
                                                       SNELL_TEX2D backPyramid, SnellDepthSurface back,
-                                                      SnellIntersectOptions o, int tirPolicy) {
+                                                      SnellTechniqueOptions o) {
   SnellTwoInterfacePath p;
   p.entryDirection = vec3(0.0f, 0.0f, 0.0f);
   p.exitPoint = vec3(0.0f, 0.0f, 0.0f);
@@ -2549,7 +2543,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.tir = false;
   p.fellBack = true;
   p.valid = false;
-  SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy);
+  SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, o.tirPolicy);
   if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_FINITE(frontPosition.x) ||
       !SNELL_FINITE(frontPosition.y) || !SNELL_FINITE(frontPosition.z)) {
     return p;
@@ -2560,7 +2554,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitDirection = t1;
   p.valid = true;
   SnellHit h = snellHitMiss(0);
-  if (o.strategy == SNELL_STRATEGY_WYMAN) {
+  if (o.backMethod == SNELL_BACK_WYMAN) {
     SnellScreenPoint sp = snellViewToUv(back.clipFromView, frontPosition);
     if (sp.valid && frontPosition.z < 0.0f) {
       SnellSurfaceSample b = snellSampleSurface(backDepth, sp.uv, back);
@@ -2572,7 +2566,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
       }
     }
   } else {
-    h = snellIntersectWith(o.strategy, frontPosition, t1, backDepth, backNormal, backPyramid, back, o);
+    h = snellIntersectWith(frontPosition, t1, backDepth, backNormal, backPyramid, back, o.back);
   }
   p.fetches = h.fetches;
   float pathLength = length(h.position - frontPosition);
@@ -2597,7 +2591,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     n = -n;
   }
   p.exitNormal = n;
-  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, tirPolicy);
+  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, o.tirPolicy);
   p.tir = r2.tir;
   if (!r2.valid || dot(r2.direction, r2.direction) == 0.0f) {
     return p;
@@ -2690,7 +2684,7 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
   float sceneLod = snellRoughnessToLod(o.roughness, o.sceneColorLevels);
   vec3 world = d.x * o.envX + d.y * o.envY + d.z * o.envZ;
   if (o.exitMode == SNELL_EXIT_SCENE) {
-    e.hit = snellIntersectWith(o.exit.strategy, origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, o.exit);
+    e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, o.exit);
     e.fetches = e.hit.fetches;
     if (e.hit.valid) {
       vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);
@@ -2730,8 +2724,8 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
                                                              SnellTechniqueOptions o) {
   bool three = o.dispersion == 3;
   float eta = snellIorToEta(o.iorOutside, three ? o.iors.y : o.ior);
-  SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, backDepth, backNormal,
-                                                   backPyramid, back, o.back, o.tirPolicy);
+  SnellTwoInterfacePath p =
+      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, backDepth, backNormal, backPyramid, back, o);
   SnellTwoInterfaceExit e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, sceneDepth, sceneNormal,
                                                   scenePyramid, sceneColor, scene, environment, o);
   vec3 transmitted = e.color * snellBeerLambert(o.absorption, p.pathLength);
@@ -2749,12 +2743,12 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   if (three) {
     SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal,
                                                       snellIorToEta(o.iorOutside, o.iors.x), dN, backDepth,
-                                                      backNormal, backPyramid, back, o.back, o.tirPolicy);
+                                                      backNormal, backPyramid, back, o);
     SnellTwoInterfaceExit er = snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, sceneDepth, sceneNormal,
                                                      scenePyramid, sceneColor, scene, environment, o);
     SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal,
                                                       snellIorToEta(o.iorOutside, o.iors.z), dN, backDepth,
-                                                      backNormal, backPyramid, back, o.back, o.tirPolicy);
+                                                      backNormal, backPyramid, back, o);
     SnellTwoInterfaceExit eb = snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, sceneDepth, sceneNormal,
                                                      scenePyramid, sceneColor, scene, environment, o);
     transmitted.x = er.color.x * snellBeerLambert(o.absorption, pr.pathLength).x;

@@ -63,11 +63,10 @@ struct LabParams {
 
 SNELL_FN SnellTechniqueOptions labTechniqueOptions(int technique, LabParams p) {
   SnellTechniqueOptions o = snellTechniquePreset(technique);
-  if (o.back.strategy == SNELL_STRATEGY_LINEAR_MARCH || o.back.strategy == SNELL_STRATEGY_DDA) {
-    o.back.maxDistance = p.backRange;
-  }
+  o.back.marchMaxDistance = p.backRange;
+  o.back.ddaMaxDistance = p.backRange;
   if (technique == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND) {
-    o.exit.maxDistance = p.exitRange;
+    o.exit.marchMaxDistance = p.exitRange;
   }
   if (p.depthFilter == SNELL_DEPTH_FILTER_BILINEAR) {
     o.back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;

@@ -17,4 +17,5 @@
 #include "intersect/linear_binary_search.glsl"
 #include "intersect/linear_march.glsl"
 #include "intersect/dda_march.glsl"
+#include "intersect/intersect_with.glsl"
 #endif

@@ -16,7 +16,6 @@
 #include "shade/environment.glsl"
 #include "shade/technique_options.glsl"
 #include "shade/technique_presets.glsl"
-#include "shade/technique_intersect.glsl"
 #include "shade/two_interface.glsl"
 #include "shade/two_interface_shade.glsl"
 #endif

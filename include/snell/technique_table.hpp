@@ -61,11 +61,11 @@ inline const SnellTechniqueInfo* snellFindTechnique(const std::string& name) {
 }
 
 // One slot's strategy and parameters in words, from the options themselves
-// (so no description restates a default): "CBS, 5 steps, range from the pyramid".
+// (so no description restates a default): "conservative binary search, 5 steps, range from the pyramid".
 inline std::string snellDescribeIntersect(const SnellIntersectOptions& o) {
-  const std::string n = std::to_string(o.steps);
-  const auto distance = [&] {
-    std::string d = std::to_string(o.maxDistance);
+  const auto count = [](int n, const char* one, const char* many) { return std::to_string(n) + (n == 1 ? one : many); };
+  const auto distance = [](float x) {
+    std::string d = std::to_string(x);
     d.erase(d.find_last_not_of('0') + 1);
     if (!d.empty() && d.back() == '.') d.pop_back();
     return d;
@@ -73,26 +73,32 @@ inline std::string snellDescribeIntersect(const SnellIntersectOptions& o) {
   const std::string range = o.rangeSource == SNELL_RANGE_EXPLICIT ? "range from a bounding box" : "range from the pyramid";
   switch (o.strategy) {
     case SNELL_STRATEGY_SINGLE: return "single sample";
-    case SNELL_STRATEGY_PLANE_NORMAL: return "normal plane, " + n + (o.steps == 1 ? " iteration" : " iterations");
+    case SNELL_STRATEGY_PLANE_NORMAL: return "normal plane, " + count(o.planeIterations, " iteration", " iterations");
     case SNELL_STRATEGY_PLANE_DEPTH:
-      return "depth plane (depth mips = the min/max pyramid), " + n + (o.steps == 1 ? " iteration" : " iterations");
-    case SNELL_STRATEGY_CBS: return "conservative binary search, " + n + " steps, " + range;
-    case SNELL_STRATEGY_BINARY: return "binary search, " + n + " steps, " + range;
+      return "depth plane (depth mips = the min/max pyramid), " + count(o.planeIterations, " iteration", " iterations");
+    case SNELL_STRATEGY_CBS: return "conservative binary search, " + count(o.cbsSteps, " step", " steps") + ", " + range;
+    case SNELL_STRATEGY_BINARY: return "binary search, " + count(o.binarySteps, " step", " steps") + ", " + range;
     case SNELL_STRATEGY_LINEAR_BINARY:
-      return "linear search, " + n + " steps + " + std::to_string(o.refineSteps) + " binary steps, " + range;
+      return "linear search, " + count(o.linearSteps, " step", " steps") + " + " +
+             count(o.binarySteps, " binary step", " binary steps") + ", " + range;
     case SNELL_STRATEGY_LINEAR_MARCH:
-      return "linear march, " + n + " view-space steps + " + std::to_string(o.refineSteps) + " bisections over " +
-             distance();
-    case SNELL_STRATEGY_DDA: return "pixel DDA march, up to " + n + " steps over " + distance();
-    case SNELL_STRATEGY_WYMAN: return "distance interpolation between d_V and the per-vertex d_N";
+      return "linear march, " + count(o.marchSteps, " view-space step", " view-space steps") + " + " +
+             count(o.marchBisections, " bisection", " bisections") + " over " + distance(o.marchMaxDistance);
+    case SNELL_STRATEGY_DDA: return "pixel DDA march, up to " + count(o.ddaSteps, " step", " steps") + " over " + distance(o.ddaMaxDistance);
     default: return "no strategy (every ray misses)";
   }
+}
+
+// How one technique finds the back face: its back slot, or Wyman's distance interpolation.
+inline std::string snellDescribeBack(const SnellTechniqueOptions& o) {
+  if (o.backMethod == SNELL_BACK_WYMAN) return "distance interpolation between d_V and the per-vertex d_N";
+  return snellDescribeIntersect(o.back);
 }
 
 // "method; back faces: ...; exit: ..." for --help and the docs, from the preset.
 inline std::string snellDescribeTechnique(const SnellTechniqueInfo& t) {
   const SnellTechniqueOptions o = snellTechniquePreset(t.id);
-  const std::string back = snellDescribeIntersect(o.back), exit = snellDescribeIntersect(o.exit);
+  const std::string back = snellDescribeBack(o), exit = snellDescribeIntersect(o.exit);
   return std::string(t.method) + "; back faces: " + back + "; exit: " + (exit == back ? "the same" : exit);
 }
 

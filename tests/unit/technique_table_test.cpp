@@ -16,22 +16,35 @@ namespace {
 
 struct Expected {
   const char* name;
-  int back, backSteps, exit, exitSteps;
+  int backMethod;
+  int back, backSteps, exit, exitSteps;  // steps: the strategy's own count (iterations, steps); 0 for single sample
 };
 
 // snell-lab --technique names and table.json "technique" values (issue 11: keep them).
 const Expected kExpected[] = {
-    {"single", SNELL_STRATEGY_SINGLE, 0, SNELL_STRATEGY_SINGLE, 0},
-    {"plane-normal-0", SNELL_STRATEGY_PLANE_NORMAL, 0, SNELL_STRATEGY_PLANE_NORMAL, 0},
-    {"plane-normal-1", SNELL_STRATEGY_PLANE_NORMAL, 1, SNELL_STRATEGY_PLANE_NORMAL, 1},
-    {"plane-normal-2", SNELL_STRATEGY_PLANE_NORMAL, 2, SNELL_STRATEGY_PLANE_NORMAL, 2},
-    {"plane-depth", SNELL_STRATEGY_PLANE_DEPTH, 1, SNELL_STRATEGY_PLANE_DEPTH, 1},
-    {"dir", SNELL_STRATEGY_CBS, 5, SNELL_STRATEGY_CBS, 5},  // O&B 2007 sec. 3.3: c = 5
-    {"isr", SNELL_STRATEGY_WYMAN, 0, SNELL_STRATEGY_SINGLE, 0},
-    {"linear-march", SNELL_STRATEGY_LINEAR_MARCH, 32, SNELL_STRATEGY_LINEAR_MARCH, 32},
-    {"dda", SNELL_STRATEGY_DDA, 256, SNELL_STRATEGY_DDA, 256},
-    {"image-space-bound", SNELL_STRATEGY_LINEAR_MARCH, 512, SNELL_STRATEGY_LINEAR_MARCH, 512},
+    {"single", SNELL_BACK_INTERSECT, SNELL_STRATEGY_SINGLE, 0, SNELL_STRATEGY_SINGLE, 0},
+    {"plane-normal-0", SNELL_BACK_INTERSECT, SNELL_STRATEGY_PLANE_NORMAL, 0, SNELL_STRATEGY_PLANE_NORMAL, 0},
+    {"plane-normal-1", SNELL_BACK_INTERSECT, SNELL_STRATEGY_PLANE_NORMAL, 1, SNELL_STRATEGY_PLANE_NORMAL, 1},
+    {"plane-normal-2", SNELL_BACK_INTERSECT, SNELL_STRATEGY_PLANE_NORMAL, 2, SNELL_STRATEGY_PLANE_NORMAL, 2},
+    {"plane-depth", SNELL_BACK_INTERSECT, SNELL_STRATEGY_PLANE_DEPTH, 1, SNELL_STRATEGY_PLANE_DEPTH, 1},
+    {"dir", SNELL_BACK_INTERSECT, SNELL_STRATEGY_CBS, 5, SNELL_STRATEGY_CBS, 5},  // O&B 2007 sec. 3.3: c = 5
+    {"isr", SNELL_BACK_WYMAN, SNELL_STRATEGY_SINGLE, 0, SNELL_STRATEGY_SINGLE, 0},  // Wyman 2005: d_V, d_N
+    {"linear-march", SNELL_BACK_INTERSECT, SNELL_STRATEGY_LINEAR_MARCH, 32, SNELL_STRATEGY_LINEAR_MARCH, 32},
+    {"dda", SNELL_BACK_INTERSECT, SNELL_STRATEGY_DDA, 256, SNELL_STRATEGY_DDA, 256},
+    {"image-space-bound", SNELL_BACK_INTERSECT, SNELL_STRATEGY_LINEAR_MARCH, 512, SNELL_STRATEGY_LINEAR_MARCH, 512},
 };
+
+// The count each strategy is known by (what the lab's labels and the papers name).
+int mainCount(const SnellIntersectOptions& o) {
+  switch (o.strategy) {
+    case SNELL_STRATEGY_PLANE_NORMAL:
+    case SNELL_STRATEGY_PLANE_DEPTH: return o.planeIterations;
+    case SNELL_STRATEGY_CBS: return o.cbsSteps;
+    case SNELL_STRATEGY_LINEAR_MARCH: return o.marchSteps;
+    case SNELL_STRATEGY_DDA: return o.ddaSteps;
+    default: return 0;
+  }
+}
 
 }  // namespace
 
@@ -54,10 +67,11 @@ TEST(TechniqueTable, EachPresetHasThePublishedSlots) {
   for (const SnellTechniqueInfo& t : snellTechniqueTable()) {
     const Expected& e = kExpected[t.id];
     const SnellTechniqueOptions o = snellTechniquePreset(t.id);
+    EXPECT_EQ(o.backMethod, e.backMethod) << t.name;
     EXPECT_EQ(o.back.strategy, e.back) << t.name;
-    EXPECT_EQ(o.back.steps, e.backSteps) << t.name;
+    EXPECT_EQ(mainCount(o.back), e.backSteps) << t.name;
     EXPECT_EQ(o.exit.strategy, e.exit) << t.name;
-    EXPECT_EQ(o.exit.steps, e.exitSteps) << t.name;
+    EXPECT_EQ(mainCount(o.exit), e.exitSteps) << t.name;
     EXPECT_EQ(o.back.rangeSource, SNELL_RANGE_PYRAMID) << t.name;
     // The shared optics defaults, untouched by any preset.
     EXPECT_EQ(o.tirPolicy, SNELL_TIR_CRITICAL) << t.name;
@@ -80,7 +94,10 @@ TEST(TechniqueTable, DescriptionsComeFromTheOptions) {
             "Oliveira & Brauwers 2007, conservative binary search; back faces: conservative binary search, 5 steps, "
             "range from the pyramid; exit: the same");
   SnellIntersectOptions march = snellIntersectOptions(SNELL_STRATEGY_LINEAR_MARCH);
-  march.maxDistance = 2.5f;
+  march.marchMaxDistance = 2.5f;
   EXPECT_EQ(snellDescribeIntersect(march), "linear march, 32 view-space steps + 4 bisections over 2.5");
   EXPECT_EQ(snellDescribeIntersect(snellIntersectOptions(-1)), "no strategy (every ray misses)");
+  EXPECT_EQ(snellDescribeTechnique(snellTechniqueTable()[SNELL_TECHNIQUE_ISR]),
+            "Wyman 2005, distance interpolation; back faces: distance interpolation between d_V and the per-vertex "
+            "d_N; exit: single sample");
 }

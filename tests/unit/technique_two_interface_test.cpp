@@ -35,7 +35,7 @@ const Scene& scene() {
 
 SnellTwoInterfacePath trace(const Scene& s, const Exact& e, const SnellTechniqueOptions& o, float dN) {
   return snellTwoInterfaceTrace(glm::vec3(e.p1), glm::vec3(e.n1), snellIorToEta(1.0f, float(kIor)), dN, s.back.depth,
-                                s.backNormalMips, s.backPyramid, s.backSurface(), o.back, o.tirPolicy);
+                                s.backNormalMips, s.backPyramid, s.backSurface(), o);
 }
 
 struct Stats {
@@ -96,7 +96,7 @@ TEST(TechniqueTwoInterface, ExitDirectionPerPreset) {
     SnellTechniqueOptions o;
   };
   SnellTechniqueOptions dir16 = snellPresetDir();
-  dir16.back.steps = 16;
+  dir16.back.cbsSteps = 16;
   const SnellDepthRange box = snellDepthRangeFromBox(
       mat4(1.0f), glm::vec3(technique_test::kCentre) - glm::vec3(float(technique_test::kRadius)),
       glm::vec3(technique_test::kCentre) + glm::vec3(float(technique_test::kRadius)));
@@ -235,8 +235,8 @@ TEST(TechniqueTwoInterface, PaintingBehindTheSphere) {
                             {"Single sample", snellPresetSingleSample()},
                             {"Linear march", snellPresetLinearMarch()},
                             {"DDA march", snellPresetDdaMarch()}};
-  presets[8].o.back.steps = 12;
-  presets[8].o.exit.steps = 12;
+  presets[8].o.back.cbsSteps = 12;
+  presets[8].o.exit.cbsSteps = 12;
   std::vector<PaintingStats> all;
   for (P& p : presets) {
     p.o.exitMode = SNELL_EXIT_SCENE;
@@ -284,7 +284,7 @@ TEST(TechniqueTwoInterface, PaintingBehindTheSphere) {
 TEST(TechniqueTwoInterface, BeerLambertUsesTheFoundChord) {
   const Scene& s = scene();
   SnellTechniqueOptions o = snellPresetDir();
-  o.back.steps = 16;
+  o.back.cbsSteps = 16;
   o.reflection = false;
   o.absorption = glm::vec3(0.1f, 0.3f, 0.6f);
   double maxRel = 0.0, maxColor = 0.0;
@@ -367,7 +367,8 @@ TEST(TechniqueTwoInterface, FallbackWhenTheExitLeavesTheScreen) {
 // still finite) is a hit.
 TEST(TechniqueTwoInterface, BackHitBeyondFloatLengthFallsBack) {
   const Scene& s = scene();
-  const SnellTechniqueOptions isr = snellPresetIsr();
+  SnellTechniqueOptions isr = snellPresetIsr();
+  isr.tirPolicy = SNELL_TIR_REFLECT;
   {
     const glm::vec3 p1(-0.88325721f, 0.6121943f, -4.33259392f), n1(0.0f, 0.369179219f, 0.757911861f);
     const float ior = 1.28285468f;
@@ -376,7 +377,7 @@ TEST(TechniqueTwoInterface, BackHitBeyondFloatLengthFallsBack) {
     const glm::dvec3 t1 = glm::refract(v, glm::dot(v, n) > 0.0 ? -n : n, double(eta));
     auto run = [&](float dN) {
       return snellTwoInterfaceTrace(p1, n1, eta, dN, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(),
-                                    isr.back, SNELL_TIR_REFLECT);
+                                    isr);
     };
     const SnellTwoInterfacePath far = run(1e30f);
     EXPECT_TRUE(far.valid);
@@ -425,33 +426,33 @@ TEST(TechniqueTwoInterface, DispatcherMatchesTheStrategies) {
     auto same = [](const SnellHit& x, const SnellHit& y, int extraFetches) {
       return x.valid == y.valid && x.uv == y.uv && x.position == y.position && x.fetches == y.fetches + extraFetches;
     };
-    EXPECT_TRUE(same(snellIntersectWith(SNELL_STRATEGY_SINGLE, o, d, s.back.depth, s.backNormalMips, s.backPyramid, b,
+    EXPECT_TRUE(same(snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid, b,
                                         snellIntersectOptions(SNELL_STRATEGY_SINGLE)),
                      snellIntersectSingleSample(o, d, s.back.depth, b), 0));
-    EXPECT_TRUE(same(snellIntersectWith(SNELL_STRATEGY_PLANE_NORMAL, o, d, s.back.depth, s.backNormalMips, s.backPyramid,
+    EXPECT_TRUE(same(snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid,
                                         b, snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL)),
                      snellIntersectPlaneNormal(o, d, s.back.depth, s.backNormalMips, b, 0.0f, SNELL_PLANE_ITERATIONS), 0));
-    EXPECT_TRUE(same(snellIntersectWith(SNELL_STRATEGY_PLANE_DEPTH, o, d, s.back.depth, s.backNormalMips, s.backPyramid,
+    EXPECT_TRUE(same(snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid,
                                         b, snellIntersectOptions(SNELL_STRATEGY_PLANE_DEPTH)),
                      snellIntersectPlaneDepth(o, d, s.backPyramid, b, s.backPyramid.levelCount() - 1,
                                               SNELL_PLANE_ITERATIONS),
                      0));
-    EXPECT_TRUE(same(snellIntersectWith(SNELL_STRATEGY_CBS, o, d, s.back.depth, s.backNormalMips, s.backPyramid, b,
+    EXPECT_TRUE(same(snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid, b,
                                         snellIntersectOptions(SNELL_STRATEGY_CBS)),
                      snellConservativeBinarySearch(o, d, s.back.depth, b, range.zNearest, range.zFarthest), 1));
-    EXPECT_TRUE(same(snellIntersectWith(SNELL_STRATEGY_BINARY, o, d, s.back.depth, s.backNormalMips, s.backPyramid, b,
+    EXPECT_TRUE(same(snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid, b,
                                         snellIntersectOptions(SNELL_STRATEGY_BINARY)),
                      snellBinarySearch(o, d, s.back.depth, b, range.zNearest, range.zFarthest), 1));
-    EXPECT_TRUE(same(snellIntersectWith(SNELL_STRATEGY_LINEAR_BINARY, o, d, s.back.depth, s.backNormalMips,
+    EXPECT_TRUE(same(snellIntersectWith(o, d, s.back.depth, s.backNormalMips,
                                         s.backPyramid, b, snellIntersectOptions(SNELL_STRATEGY_LINEAR_BINARY)),
                      snellLinearBinarySearch(o, d, s.back.depth, b, range.zNearest, range.zFarthest), 1));
-    EXPECT_TRUE(same(snellIntersectWith(SNELL_STRATEGY_LINEAR_MARCH, o, d, s.back.depth, s.backNormalMips,
+    EXPECT_TRUE(same(snellIntersectWith(o, d, s.back.depth, s.backNormalMips,
                                         s.backPyramid, b, snellIntersectOptions(SNELL_STRATEGY_LINEAR_MARCH)),
                      snellLinearMarch(o, d, s.back.depth, b), 0));
-    EXPECT_TRUE(same(snellIntersectWith(SNELL_STRATEGY_DDA, o, d, s.back.depth, s.backNormalMips, s.backPyramid, b,
+    EXPECT_TRUE(same(snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid, b,
                                         snellIntersectOptions(SNELL_STRATEGY_DDA)),
                      snellDdaMarch(o, d, s.back.depth, b), 0));
-    EXPECT_FALSE(snellIntersectWith(42, o, d, s.back.depth, s.backNormalMips, s.backPyramid, b,
+    EXPECT_FALSE(snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid, b,
                                     snellIntersectOptions(42)).valid);
   }
 }
@@ -569,11 +570,11 @@ TEST(TechniqueRange, PyramidAndBox) {
 TEST(TechniqueBound, ConvergesToTheExactExitPoints) {
   SnellTechniqueOptions o = snellPresetImageSpaceBound();
   o.exitMode = SNELL_EXIT_SCENE;
-  o.back.maxDistance = float(2.0 * technique_test::kRadius);  // the sphere's diameter: every chord fits
-  o.exit.maxDistance = 20.0f;                                // beyond the painting from anywhere on the sphere
+  o.back.marchMaxDistance = float(2.0 * technique_test::kRadius);  // the sphere's diameter: every chord fits
+  o.exit.marchMaxDistance = 20.0f;  // beyond the painting from anywhere on the sphere
   SnellTechniqueOptions half = o;
-  half.back.steps /= 2;
-  half.exit.steps /= 2;
+  half.back.marchSteps /= 2;
+  half.exit.marchSteps /= 2;
   const PaintingStats full = paintingErrors(o);
   const PaintingStats coarse = paintingErrors(half);
   ASSERT_EQ(full.errors.size(), coarse.errors.size());
@@ -606,9 +607,9 @@ TEST(TechniqueReflection, FindsTheMirroredPaintingAtTheAnalyticPosition) {
     o.reflectionMode = SNELL_REFLECT_SCENE;
     o.reflect = snellIntersectOptions(strategy);
     if (strategy == SNELL_STRATEGY_LINEAR_MARCH) {
-      o.reflect.steps = 256;
-      o.reflect.refineSteps = 16;
-      o.reflect.maxDistance = 20.0f;
+      o.reflect.marchSteps = 256;
+      o.reflect.marchBisections = 16;
+      o.reflect.marchMaxDistance = 20.0f;
     }
     std::vector<double> errors;
     int environment = 0, misses = 0;
@@ -682,11 +683,11 @@ TEST(TechniqueGuardBand, FindsExitsBeyondTheViewportAtTheAnalyticPoint) {
                                    (glm::dvec2(buffer.tanHalfX, buffer.tanHalfY) * viewportShare);
     offViewport += std::abs(viewportNdc.x) > 1.0 || std::abs(viewportNdc.y) > 1.0;
     SnellIntersectOptions o = snellIntersectOptions(SNELL_STRATEGY_LINEAR_MARCH);
-    o.steps = 256;
-    o.refineSteps = 16;
-    o.maxDistance = 20.0f;
+    o.marchSteps = 256;
+    o.marchBisections = 16;
+    o.marchMaxDistance = 20.0f;
     o.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;  // the image-space bound's reads: exact on the plane
-    const SnellHit h = snellIntersectWith(o.strategy, glm::vec3(origin), glm::vec3(dir), buffer.depth, buffer.normals,
+    const SnellHit h = snellIntersectWith(glm::vec3(origin), glm::vec3(dir), buffer.depth, buffer.normals,
                                           buffer.depth, buffer.surface(), o);
     if (!h.valid) continue;
     ++found;

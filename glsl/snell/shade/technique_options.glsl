@@ -1,35 +1,20 @@
 /*
-description: the knobs of a two-interface refraction technique: which
-  intersection strategy fills each slot (GLSL has no function pointers, so a
-  strategy is an int constant that snellIntersectWith dispatches on), its
-  parameters, and the optics and shading options. Both structs come with a
-  constructor that fills every field with the documented default; presets
-  (technique_presets.glsl) start from these.
-use: SnellIntersectOptions io = snellIntersectOptions(SNELL_STRATEGY_CBS);
-     io.steps = 8;
-     SnellTechniqueOptions o = snellTechniqueOptions();
-     o.back = io; o.exitMode = SNELL_EXIT_SCENE; o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
-options (strategy constants, the values of SnellIntersectOptions.strategy):
-  SNELL_STRATEGY_SINGLE         0  snellIntersectSingleSample (1 fetch)
-  SNELL_STRATEGY_PLANE_NORMAL   1  snellIntersectPlaneNormal, `steps` iterations
-  SNELL_STRATEGY_PLANE_DEPTH    2  snellIntersectPlaneDepth, `steps` iterations,
-                                   reads the pyramid texture as depth mips
-  SNELL_STRATEGY_CBS            3  snellConservativeBinarySearch, `steps` steps
-  SNELL_STRATEGY_BINARY         4  snellBinarySearch, `steps` steps
-  SNELL_STRATEGY_LINEAR_BINARY  5  snellLinearBinarySearch, `steps` linear +
-                                   `refineSteps` binary steps
-  SNELL_STRATEGY_LINEAR_MARCH   6  snellLinearMarch, `steps` steps, `refineSteps`
-                                   bisections, over `maxDistance`
-  SNELL_STRATEGY_DDA            7  snellDdaMarch, `steps`, `stride`, `thickness`,
-                                   `maxDistance`
-  SNELL_STRATEGY_WYMAN          8  Wyman 2005 distance interpolation (first slot
-                                   of snellTwoInterfaceTrace only; it needs the
-                                   per-vertex d_N). snellIntersectWith treats it
-                                   as SINGLE, which is Wyman's estimate with
-                                   d = d_V (ratio 1)
-  range sources (searches): SNELL_RANGE_PYRAMID 0 (top level of the pyramid
-  texture, snellDepthRangeFromPyramid), SNELL_RANGE_EXPLICIT 1 (zNearest and
-  zFarthest fields: a bounding box, snellDepthRangeFromBox)
+description: the knobs of a two-interface refraction technique: how the back
+  face is found (any intersection strategy in the back slot, or Wyman's
+  distance interpolation), which strategy fills the exit and reflection slots
+  (intersect/intersect_with.glsl: SnellIntersectOptions, one per slot), and
+  the optics and shading options. The constructor fills every field with the
+  documented default; presets (technique_presets.glsl) start from it.
+use: SnellTechniqueOptions o = snellTechniqueOptions();
+     o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
+     o.back.cbsSteps = 8;
+     o.exitMode = SNELL_EXIT_SCENE;
+     o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
+options:
+  back methods (how P2 is found, snellTwoInterfaceTrace): SNELL_BACK_INTERSECT
+  0 (the back slot's strategy against the back-face depth buffer),
+  SNELL_BACK_WYMAN 1 (Wyman 2005 distance interpolation between d_V and the
+  per-vertex d_N; the back slot is not read)
   exit modes: SNELL_EXIT_ENVIRONMENT 0 (distant environment along T2),
   SNELL_EXIT_SCENE 1 (the opaque scene's depth/colour buffers, exit slot)
   reflection modes (the first surface's reflected ray R, when reflection is
@@ -41,20 +26,8 @@ options (strategy constants, the values of SnellIntersectOptions.strategy):
   (environment along T2), SNELL_FALLBACK_EDGE_FADE 1 (scene colour at the
   clamped projection of P2 + fallbackDistance T2, faded to the environment
   over edgeFadeWidth of uv near and beyond the screen edge)
-contract (defaults):
-  SnellIntersectOptions: steps = SNELL_CBS_STEPS (CBS), SNELL_BINARY_SEARCH_STEPS
-  (BINARY), SNELL_LINEAR_SEARCH_STEPS (LINEAR_BINARY), SNELL_PLANE_ITERATIONS
-  (planes), SNELL_LINEAR_MARCH_STEPS, SNELL_DDA_STEPS, 0 (SINGLE, WYMAN);
-  refineSteps = SNELL_BINARY_SEARCH_STEPS (LINEAR_BINARY),
-  SNELL_LINEAR_MARCH_REFINE_STEPS (LINEAR_MARCH), else 0; maxDistance =
-  SNELL_LINEAR_MARCH_MAX_DISTANCE (LINEAR_MARCH) or SNELL_DDA_MAX_DISTANCE;
-  thickness = SNELL_DDA_THICKNESS; stride = SNELL_DDA_STRIDE; normalLod = 0;
-  maxLod = -1 (the pyramid's top level); rangeSource = PYRAMID; zNearest =
-  zFarthest = 0; depthFilter = SNELL_DEPTH_FILTER_NEAREST (how the strategy reads
-  the depth buffer: intersect/depth_surface.glsl; the dispatcher hands it to the
-  strategy in the surface's depthFilter field). An unknown strategy is stored as given (snellIntersectWith
-  answers it with a miss).
-  SnellTechniqueOptions: back = CBS, exit = PLANE_NORMAL, exitMode =
+contract (defaults): backMethod = INTERSECT, back = CBS, exit =
+  PLANE_NORMAL (each slot with snellIntersectOptions' defaults), exitMode =
   ENVIRONMENT, fallback = ENVIRONMENT, fallbackDistance = 1, edgeFadeWidth =
   0.1, tirPolicy = SNELL_TIR_CRITICAL (Wyman 2005, O&B 2007 sec. 5), ior = 1.5,
   iorOutside = 1, dispersion = 1 (one trace; 3 = one per channel with iors,
@@ -62,38 +35,23 @@ contract (defaults):
   (1.5, 1.5, 1.5), absorption = 0 (Beer-Lambert sigma per channel, per view
   unit), reflection = true (Fresnel-weighted reflection at the first
   interface), reflectionMode = ENVIRONMENT, reflect = LINEAR_MARCH (its
-  defaults; read only in SCENE mode), roughness = 0, sceneColorLevels = environmentLevels = 1
-  (mip levels for snellRoughnessToLod), envX/envY/envZ = the columns of the
-  world-from-view rotation used for environment lookups (identity).
+  defaults; read only in SCENE mode), roughness = 0, sceneColorLevels =
+  environmentLevels = 1 (mip levels for snellRoughnessToLod), envX/envY/envZ
+  = the columns of the world-from-view rotation used for environment lookups
+  (identity).
 source: the composition of DESIGN.md sec. 2 (a technique = optics, an
   intersector against the back faces, optics, an intersector against the scene
-  or an environment lookup); Oliveira & Brauwers 2007 sec. 3; Mayer &
-  Assarsson, "Constant-Time Light Refraction Simulation".
+  or an environment lookup); Oliveira & Brauwers 2007 sec. 3; Wyman 2005;
+  Mayer & Assarsson, "Constant-Time Light Refraction Simulation".
 */
 #ifndef SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
 #define SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
 #include "../prelude.glsl"
 #include "../optics/refract.glsl"
-#include "../intersect/depth_surface.glsl"
-#include "../intersect/binary_search.glsl"
-#include "../intersect/conservative_binary_search.glsl"
-#include "../intersect/linear_binary_search.glsl"
-#include "../intersect/linear_march.glsl"
-#include "../intersect/dda_march.glsl"
-#include "../intersect/plane_refine.glsl"
+#include "../intersect/intersect_with.glsl"
 
-#define SNELL_STRATEGY_SINGLE 0
-#define SNELL_STRATEGY_PLANE_NORMAL 1
-#define SNELL_STRATEGY_PLANE_DEPTH 2
-#define SNELL_STRATEGY_CBS 3
-#define SNELL_STRATEGY_BINARY 4
-#define SNELL_STRATEGY_LINEAR_BINARY 5
-#define SNELL_STRATEGY_LINEAR_MARCH 6
-#define SNELL_STRATEGY_DDA 7
-#define SNELL_STRATEGY_WYMAN 8
-
-#define SNELL_RANGE_PYRAMID 0
-#define SNELL_RANGE_EXPLICIT 1
+#define SNELL_BACK_INTERSECT 0
+#define SNELL_BACK_WYMAN 1
 
 #define SNELL_EXIT_ENVIRONMENT 0
 #define SNELL_EXIT_SCENE 1
@@ -104,22 +62,8 @@ source: the composition of DESIGN.md sec. 2 (a technique = optics, an
 #define SNELL_REFLECT_ENVIRONMENT 0
 #define SNELL_REFLECT_SCENE 1
 
-struct SnellIntersectOptions {
-  int strategy;
-  int steps;
-  int refineSteps;
-  float maxDistance;
-  float thickness;
-  float stride;
-  float normalLod;
-  int maxLod;
-  int rangeSource;
-  float zNearest;
-  float zFarthest;
-  int depthFilter;
-};
-
 struct SnellTechniqueOptions {
+  int backMethod;
   SnellIntersectOptions back;
   SnellIntersectOptions exit;
   int exitMode;
@@ -143,41 +87,9 @@ struct SnellTechniqueOptions {
   vec3 envZ;
 };
 
-SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
-  SnellIntersectOptions o;
-  o.strategy = strategy;
-  o.steps = 0;
-  o.refineSteps = 0;
-  o.maxDistance = SNELL_DDA_MAX_DISTANCE;
-  o.thickness = SNELL_DDA_THICKNESS;
-  o.stride = SNELL_DDA_STRIDE;
-  o.normalLod = 0.0f;
-  o.maxLod = -1;
-  o.rangeSource = SNELL_RANGE_PYRAMID;
-  o.zNearest = 0.0f;
-  o.zFarthest = 0.0f;
-  o.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
-  if (strategy == SNELL_STRATEGY_CBS) {
-    o.steps = SNELL_CBS_STEPS;
-  } else if (strategy == SNELL_STRATEGY_BINARY) {
-    o.steps = SNELL_BINARY_SEARCH_STEPS;
-  } else if (strategy == SNELL_STRATEGY_LINEAR_BINARY) {
-    o.steps = SNELL_LINEAR_SEARCH_STEPS;
-    o.refineSteps = SNELL_BINARY_SEARCH_STEPS;
-  } else if (strategy == SNELL_STRATEGY_PLANE_NORMAL || strategy == SNELL_STRATEGY_PLANE_DEPTH) {
-    o.steps = SNELL_PLANE_ITERATIONS;
-  } else if (strategy == SNELL_STRATEGY_LINEAR_MARCH) {
-    o.steps = SNELL_LINEAR_MARCH_STEPS;
-    o.refineSteps = SNELL_LINEAR_MARCH_REFINE_STEPS;
-    o.maxDistance = SNELL_LINEAR_MARCH_MAX_DISTANCE;
-  } else if (strategy == SNELL_STRATEGY_DDA) {
-    o.steps = SNELL_DDA_STEPS;
-  }
-  return o;
-}
-
 SNELL_FN SnellTechniqueOptions snellTechniqueOptions() {
   SnellTechniqueOptions o;
+  o.backMethod = SNELL_BACK_INTERSECT;
   o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
   o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
   o.exitMode = SNELL_EXIT_ENVIRONMENT;

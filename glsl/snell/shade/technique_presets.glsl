@@ -13,7 +13,8 @@ presets (back slot / exit slot):
                                    (their suggested speed-up: no reduction
                                    pass); the numbers from snellDepthRangeFromBox;
                                    back slot only, the exit slot keeps the pyramid
-  snellPresetIsr()                 Wyman 2005 (ISR): distance interpolation
+  snellPresetIsr()                 Wyman 2005 (ISR): backMethod
+                                   SNELL_BACK_WYMAN, distance interpolation
                                    between d_V and the per-vertex d_N /
                                    single sample
   snellPresetPlaneNormal(n)        Mayer & Assarsson, normal-based plane, n
@@ -32,8 +33,9 @@ presets (back slot / exit slot):
                                    most ~1 px, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS
                                    bisections) on bilinear depth reads
                                    (SNELL_DEPTH_FILTER_BILINEAR: exact on
-                                   planes between texel centres) / the same; set back.maxDistance
-                                   and exit.maxDistance to the depths the
+                                   planes between texel centres) / the same;
+                                   set back.marchMaxDistance and
+                                   exit.marchMaxDistance to the depths the
                                    object and the scene span
 the technique table (the one list of named techniques: snell-lab's
   --technique names, the benchmarks and the tests all draw on it; names and
@@ -76,41 +78,41 @@ SNELL_FN SnellTechniqueOptions snellTechniquePresetSlots(int backStrategy, int e
   return o;
 }
 
-/* Oliveira & Brauwers 2007, sec. 3.3: CBS with c = 5 */
+/* Oliveira & Brauwers 2007, sec. 3.3: CBS with c = 5 (SNELL_CBS_STEPS' default) */
 SNELL_FN SnellTechniqueOptions snellPresetDir() {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_CBS, SNELL_STRATEGY_CBS);
-  o.back.steps = 5;
-  o.exit.steps = 5;
-  return o;
+  return snellTechniquePresetSlots(SNELL_STRATEGY_CBS, SNELL_STRATEGY_CBS);
 }
 
 /* Oliveira & Brauwers 2007, sec. 6: bounding-box range instead of the reduction */
 SNELL_FN SnellTechniqueOptions snellPresetDirBounds(float zNearest, float zFarthest) {
   SnellTechniqueOptions o = snellPresetDir();
   o.back.rangeSource = SNELL_RANGE_EXPLICIT;
-  o.back.zNearest = zNearest;
-  o.back.zFarthest = zFarthest;
+  o.back.range.zNearest = zNearest;
+  o.back.range.zFarthest = zFarthest;
+  o.back.range.valid = true;
   return o;
 }
 
-/* Wyman 2005 (O&B 2007 eqs. 1-2) */
+/* Wyman 2005 (O&B 2007 eqs. 1-2): the trace's Wyman variant; the exit slot samples once */
 SNELL_FN SnellTechniqueOptions snellPresetIsr() {
-  return snellTechniquePresetSlots(SNELL_STRATEGY_WYMAN, SNELL_STRATEGY_SINGLE);
+  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
+  o.backMethod = SNELL_BACK_WYMAN;
+  return o;
 }
 
 /* Mayer & Assarsson, method 1 + step 5 */
 SNELL_FN SnellTechniqueOptions snellPresetPlaneNormal(int iterations) {
   SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_NORMAL, SNELL_STRATEGY_PLANE_NORMAL);
-  o.back.steps = iterations;
-  o.exit.steps = iterations;
+  o.back.planeIterations = iterations;
+  o.exit.planeIterations = iterations;
   return o;
 }
 
 /* Mayer & Assarsson, method 2 + step 5 */
 SNELL_FN SnellTechniqueOptions snellPresetPlaneDepth(int iterations) {
   SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_DEPTH, SNELL_STRATEGY_PLANE_DEPTH);
-  o.back.steps = iterations;
-  o.exit.steps = iterations;
+  o.back.planeIterations = iterations;
+  o.exit.planeIterations = iterations;
   return o;
 }
 
@@ -129,10 +131,10 @@ SNELL_FN SnellTechniqueOptions snellPresetDdaMarch() {
 /* The image-space bound: the linear march at its limits, both slots. */
 SNELL_FN SnellTechniqueOptions snellPresetImageSpaceBound() {
   SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
-  o.back.steps = SNELL_LINEAR_MARCH_MAX_STEPS;
-  o.back.refineSteps = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
-  o.exit.steps = SNELL_LINEAR_MARCH_MAX_STEPS;
-  o.exit.refineSteps = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  o.back.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  o.back.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  o.exit.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  o.exit.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
   o.back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
   o.exit.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
   return o;

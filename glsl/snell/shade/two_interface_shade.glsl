@@ -36,8 +36,7 @@ contract (snellTwoInterfaceExit(origin, dir, ...)):
   - dir zero or not finite, or origin not finite: color 0, fellBack, 0 fetches.
   - ENVIRONMENT mode: color = SNELL_SAMPLE_ENVIRONMENT(env, world(dir), envLod).xyz,
     1 fetch, hit = snellHitMiss(0), fellBack false.
-  - SCENE mode: hit = snellIntersectWith(o.exit.strategy, origin, dir, scene...,
-    o.exit); valid: color = SNELL_SAMPLE_LOD(sceneColor, hit.uv, sceneLod).xyz
+  - SCENE mode: hit = snellIntersectWith(origin, dir, scene..., o.exit); valid: color = SNELL_SAMPLE_LOD(sceneColor, hit.uv, sceneLod).xyz
     (+1 fetch). Invalid (ray leaves the screen, points towards the camera where a
     search cannot follow, lands on an empty texel): fellBack = true and
     FALLBACK_ENVIRONMENT: the environment along dir; FALLBACK_EDGE_FADE: q =
@@ -87,8 +86,8 @@ source: Wyman 2005 and Oliveira & Brauwers 2007 (two interfaces, distant
 #include "roughness.glsl"
 #include "environment.glsl"
 #include "perturb_edge_fade.glsl"
+#include "../intersect/intersect_with.glsl"
 #include "technique_options.glsl"
-#include "technique_intersect.glsl"
 #include "two_interface.glsl"
 
 struct SnellTwoInterfaceExit {
@@ -130,7 +129,7 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
   float sceneLod = snellRoughnessToLod(o.roughness, o.sceneColorLevels);
   vec3 world = d.x * o.envX + d.y * o.envY + d.z * o.envZ;
   if (o.exitMode == SNELL_EXIT_SCENE) {
-    e.hit = snellIntersectWith(o.exit.strategy, origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, o.exit);
+    e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, o.exit);
     e.fetches = e.hit.fetches;
     if (e.hit.valid) {
       vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);
@@ -171,8 +170,8 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
                                                              SnellTechniqueOptions o) {
   bool three = o.dispersion == 3;
   float eta = snellIorToEta(o.iorOutside, three ? o.iors.y : o.ior);
-  SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, backDepth, backNormal,
-                                                   backPyramid, back, o.back, o.tirPolicy);
+  SnellTwoInterfacePath p =
+      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, backDepth, backNormal, backPyramid, back, o);
   SnellTwoInterfaceExit e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, sceneDepth, sceneNormal,
                                                   scenePyramid, sceneColor, scene, environment, o);
   vec3 transmitted = e.color * snellBeerLambert(o.absorption, p.pathLength);
@@ -190,12 +189,12 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   if (three) {
     SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal,
                                                       snellIorToEta(o.iorOutside, o.iors.x), dN, backDepth,
-                                                      backNormal, backPyramid, back, o.back, o.tirPolicy);
+                                                      backNormal, backPyramid, back, o);
     SnellTwoInterfaceExit er = snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, sceneDepth, sceneNormal,
                                                      scenePyramid, sceneColor, scene, environment, o);
     SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal,
                                                       snellIorToEta(o.iorOutside, o.iors.z), dN, backDepth,
-                                                      backNormal, backPyramid, back, o.back, o.tirPolicy);
+                                                      backNormal, backPyramid, back, o);
     SnellTwoInterfaceExit eb = snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, sceneDepth, sceneNormal,
                                                      scenePyramid, sceneColor, scene, environment, o);
     transmitted.x = er.color.x * snellBeerLambert(o.absorption, pr.pathLength).x;

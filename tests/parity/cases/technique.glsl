@@ -58,7 +58,7 @@ SNELL_FN SnellTechniqueOptions techPreset(float preset, float steps) {
   int n = int(steps);
   if (p == 0) {
     SnellTechniqueOptions o = snellPresetDir();
-    o.back.steps = n;
+    o.back.cbsSteps = n;
     return o;
   }
   if (p == 1) {
@@ -108,17 +108,33 @@ SNELL_FN SnellTechniqueOptions techOptions(vec4 a, vec4 b, vec4 d) {
   return o;
 }
 
-/* Options packed: a = (back strategy, steps, refine, rangeSource), b = (exit strategy, steps, exitMode, fallback),
-   c = (tir, ior, dispersion, reflection), d = (maxDistance, thickness clamp, stride, maxLod) */
+/* A slot's counts in one float each: plane iterations + 16 CBS steps + 256 binary steps (+ 4096 linear steps of
+   the linear search), and march steps + 1024 bisections + 32768 DDA steps. */
+SNELL_FN vec2 techPackCounts(SnellIntersectOptions o) {
+  return vec2(float(o.planeIterations) + 16.0f * float(o.cbsSteps) + 256.0f * float(o.binarySteps) +
+                  4096.0f * float(o.linearSteps),
+              float(o.marchSteps) + 1024.0f * float(o.marchBisections) + 32768.0f * float(o.ddaSteps));
+}
+
+/* Options packed: a = (back strategy, back counts, rangeSource + 2 backMethod + 4 explicit range valid),
+   b = (exit strategy, exit counts, exitMode + 2 fallback), c = (tir, ior, dispersion, reflection), d = (explicit range, thickness clamp +
+   fallback distance + edge fade, stride + roughness + distances + normal lod, max lod, levels, environment axes,
+   iors, absorption, depth filter) */
 SNELL_FN SnellParityOut techPackOptions(SnellTechniqueOptions o) {
   SnellParityOut r;
-  r.a = vec4(float(o.back.strategy), float(o.back.steps), float(o.back.refineSteps), float(o.back.rangeSource));
-  r.b = vec4(float(o.exit.strategy), float(o.exit.steps), float(o.exitMode), float(o.fallback));
+  vec2 back = techPackCounts(o.back);
+  vec2 exit = techPackCounts(o.exit);
+  r.a = vec4(float(o.back.strategy), back.x, back.y,
+             float(o.back.rangeSource) + 2.0f * float(o.backMethod) + 4.0f * techFlag(o.back.range.valid));
+  r.b = vec4(float(o.exit.strategy), exit.x, exit.y, float(o.exitMode) + 2.0f * float(o.fallback));
   r.c = vec4(float(o.tirPolicy), o.ior, float(o.dispersion), techFlag(o.reflection));
-  r.d = vec4(o.back.maxDistance + o.back.zNearest + o.back.zFarthest + o.back.normalLod,
-             min(o.back.thickness, 1e6f) + o.fallbackDistance + o.edgeFadeWidth, o.back.stride + o.roughness,
-             float(o.back.maxLod) + float(o.sceneColorLevels + o.environmentLevels) + o.envX.x + o.envY.y + o.envZ.z +
-                 o.iorOutside + o.iors.y + o.absorption.x);
+  // The given range alone in d.x (sums of inputs and constants let a compiler fold the constants first, which
+  // changes the last bit); the other sums hold only whole numbers or constants.
+  r.d = vec4(o.back.range.zNearest + o.back.range.zFarthest,
+             min(o.back.ddaThickness, 1e6f) + o.fallbackDistance + o.edgeFadeWidth,
+             o.back.ddaStride + o.roughness + o.back.marchMaxDistance + o.back.ddaMaxDistance + o.back.planeNormalLod,
+             float(o.back.planeMaxLod) + float(o.sceneColorLevels + o.environmentLevels) + o.envX.x + o.envY.y +
+                 o.envZ.z + o.iorOutside + o.iors.y + o.absorption.x + float(o.back.depthFilter));
   return r;
 }
 
@@ -271,22 +287,31 @@ SNELL_FN SnellParityOut caseSnellTechniquePreset(vec4 a, vec4 b, vec4 c, vec4 d)
   return techPackOptions(snellTechniquePreset(int(a.x)));
 }
 
-/* ray case: a = (origin, strategy), b = (dir, steps), c = matrix, d = (scene?, -, -, -) */
+/* ray case: a = (origin, strategy), b = (dir, the strategy's main count: iterations, steps, linear steps),
+   c = matrix, d = (scene?, explicit range?, -, -) */
 SNELL_FN SnellParityOut caseSnellIntersectWith(vec4 a, vec4 b, vec4 c, vec4 d) {
-  int strategy = int(a.w);
-  SnellIntersectOptions o = snellIntersectOptions(strategy);
-  o.steps = int(b.w);
+  SnellIntersectOptions o = snellIntersectOptions(int(a.w));
+  int n = int(b.w);
+  o.planeIterations = n;
+  o.cbsSteps = n;
+  if (o.strategy == SNELL_STRATEGY_BINARY) {
+    o.binarySteps = n;
+  }
+  o.linearSteps = n;
+  o.marchSteps = n;
+  o.ddaSteps = n;
   if (d.y > 0.5f) {
     o.rangeSource = SNELL_RANGE_EXPLICIT;
-    o.zNearest = -3.8f;
-    o.zFarthest = -12.0f;
+    o.range.zNearest = -3.8f;
+    o.range.zFarthest = -12.0f;
+    o.range.valid = true;
   }
   if (d.x > 0.5f) {
-    return techPackHit(snellIntersectWith(strategy, vec3(a.x, a.y, a.z), vec3(b.x, b.y, b.z), techSceneDepth,
-                                          techSceneNormal, techScenePyramid, techSceneSurface(c), o));
+    return techPackHit(snellIntersectWith(vec3(a.x, a.y, a.z), vec3(b.x, b.y, b.z), techSceneDepth, techSceneNormal,
+                                          techScenePyramid, techSceneSurface(c), o));
   }
-  return techPackHit(snellIntersectWith(strategy, vec3(a.x, a.y, a.z), vec3(b.x, b.y, b.z), techBackDepth,
-                                        techBackNormal, techBackPyramid, techBackSurface(c), o));
+  return techPackHit(snellIntersectWith(vec3(a.x, a.y, a.z), vec3(b.x, b.y, b.z), techBackDepth, techBackNormal,
+                                        techBackPyramid, techBackSurface(c), o));
 }
 
 /* out a = (T2, fetches), b = (P2, pathLength), c = (N2, flags hit + 2 tir + 4 fellBack + 8 valid), d = (uv, T1.z) */
@@ -294,7 +319,7 @@ SNELL_FN SnellParityOut caseSnellTwoInterfaceTrace(vec4 a, vec4 b, vec4 c, vec4 
   SnellTechniqueOptions o = techOptions(a, b, d);
   SnellTwoInterfacePath p = snellTwoInterfaceTrace(vec3(a.x, a.y, a.z), vec3(b.x, b.y, b.z),
                                                    snellIorToEta(1.0f, o.ior), d.y, techBackDepth, techBackNormal,
-                                                   techBackPyramid, techBackSurface(c), o.back, o.tirPolicy);
+                                                   techBackPyramid, techBackSurface(c), o);
   SnellParityOut r;
   r.a = vec4(p.exitDirection.x, p.exitDirection.y, p.exitDirection.z, float(p.fetches));
   r.b = vec4(p.exitPoint.x, p.exitPoint.y, p.exitPoint.z, p.pathLength);
