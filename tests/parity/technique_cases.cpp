@@ -102,7 +102,10 @@ std::vector<ParityIO> techniqueInputs(std::uint32_t seed) {
     if (k < 0.01f) p = g.hostileVector();
     else if (k < 0.02f) n = g.hostileVector();
     else if (k < 0.03f) n = glm::vec3(0.0f);
-    const int preset = g.integer(0, 8);
+    // Every row of the technique table but the image-space bound (the linear march with 16x the steps: its
+    // CPU-GPU agreement is the lab's whole-frame comparison), and techPreset's variants past the table.
+    int preset = g.integer(0, SNELL_TECHNIQUE_COUNT + 4);
+    if (preset == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND) preset = SNELL_TECHNIQUE_COUNT + g.integer(0, 4);
     ParityIO in{};
     in.v[0] = glm::vec4(p, float(preset));
     in.v[1] = glm::vec4(n, float(g.integer(0, 8)));

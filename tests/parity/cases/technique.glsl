@@ -4,7 +4,7 @@
    back-face depth / normal mips / pyramid of a glass sphere, an opaque painting
    plane's depth / normal mips / pyramid / mipmapped colour, an equirectangular
    environment (256x128, trilinear).
-   Ray cases: a = (P1, preset), b = (N1, steps), c = the projection's entries
+   Ray cases: a = (P1, technique: techPreset), b = (N1, steps), c = the projection's entries
    (A, B, C, D as in plane.glsl), d = (ior, dN, mode bits, roughness); mode bits:
    1 exit to scene, 2 edge-fade fallback, 4 dispersion (3 traces), 8 no reflection,
    16 TIR policy ZERO, 32 REFLECT, 64 absorption. */
@@ -53,34 +53,34 @@ SNELL_FN SnellDepthSurface techSceneSurface(vec4 c) {
   return snellDepthSurface(techMatrix(c), 0.5f, 40.0f, SNELL_DEPTH_GL, 1.0f);
 }
 
+/* The ray cases' technique: a row of the technique table (ids 0 .. SNELL_TECHNIQUE_COUNT - 1, as the lab runs
+   them), or one of the variants past it that sweep a count or use what no row does: TECH_DIR_STEPS (DIR with
+   `steps` CBS steps in the back slot), TECH_DIR_BOUNDS (the bounding-box range), TECH_PLANE_NORMAL_N and
+   TECH_PLANE_DEPTH_N (`steps` iterations), TECH_BINARY (binary search / linear+binary search). */
+#define TECH_DIR_STEPS (SNELL_TECHNIQUE_COUNT + 0)
+#define TECH_DIR_BOUNDS (SNELL_TECHNIQUE_COUNT + 1)
+#define TECH_PLANE_NORMAL_N (SNELL_TECHNIQUE_COUNT + 2)
+#define TECH_PLANE_DEPTH_N (SNELL_TECHNIQUE_COUNT + 3)
+#define TECH_BINARY (SNELL_TECHNIQUE_COUNT + 4)
 SNELL_FN SnellTechniqueOptions techPreset(float preset, float steps) {
   int p = int(preset);
   int n = int(steps);
-  if (p == 0) {
+  if (p >= 0 && p < SNELL_TECHNIQUE_COUNT) {
+    return snellTechniquePreset(p);
+  }
+  if (p == TECH_DIR_STEPS) {
     SnellTechniqueOptions o = snellPresetDir();
     o.back.cbsSteps = n;
     return o;
   }
-  if (p == 1) {
+  if (p == TECH_DIR_BOUNDS) {
     return snellPresetDirBounds(-3.8f, -8.3f);
   }
-  if (p == 2) {
-    return snellPresetIsr();
-  }
-  if (p == 3) {
+  if (p == TECH_PLANE_NORMAL_N) {
     return snellPresetPlaneNormal(n);
   }
-  if (p == 4) {
+  if (p == TECH_PLANE_DEPTH_N) {
     return snellPresetPlaneDepth(n);
-  }
-  if (p == 5) {
-    return snellPresetSingleSample();
-  }
-  if (p == 6) {
-    return snellPresetLinearMarch();
-  }
-  if (p == 7) {
-    return snellPresetDdaMarch();
   }
   SnellTechniqueOptions o = snellTechniqueOptions();
   o.back = snellIntersectOptions(SNELL_STRATEGY_BINARY);
