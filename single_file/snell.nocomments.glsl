@@ -1115,8 +1115,6 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
   vec2 uv = w.uv;
   vec2 planeUv = w.uv;
   vec3 p = origin;
-  vec3 planePoint = origin;
-  bool tangent = false;
   for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
     if (k > n) {
       break;
@@ -1130,18 +1128,6 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     }
     SnellSurfacePoint b = snellSurfacePoint(depthTex, uv, s);
     fetches += 1;
-#if SNELL_PLANE_FACING_FALLBACK
-    if (!b.valid && tangent) {
-      SnellRayPlaneHit f = snellRayPlane(origin, dir, planePoint, planePoint);
-      SnellScreenPoint fp = snellViewToUv(s.clipFromView, f.position);
-      if (f.valid && fp.valid) {
-        p = f.position;
-        tangent = false;
-        b = snellSurfacePoint(depthTex, fp.uv, s);
-        fetches += 1;
-      }
-    }
-#endif
     if (!b.valid) {
       if (k == 0) {
         return snellHitMiss(fetches);
@@ -1151,7 +1137,6 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     vec4 nt = SNELL_SAMPLE_LOD(normalTex, b.uv, normalLod);
     fetches += 1;
     SnellRayPlaneHit ph = snellRayPlane(origin, dir, b.position, vec3(nt.x, nt.y, nt.z));
-    tangent = ph.valid;
 #if SNELL_PLANE_FACING_FALLBACK
     if (!ph.valid) {
       ph = snellRayPlane(origin, dir, b.position, b.position);
@@ -1165,7 +1150,6 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     }
     p = ph.position;
     planeUv = b.uv;
-    planePoint = b.position;
   }
   return snellPlaneHit(p, planeUv, depthTex, s, fetches);
 }

@@ -9,9 +9,7 @@
 # ray loop is not instruction for instruction the one timed. Not part of the suite.
 # Usage: bash benchmarks/kernels/kernel_table.sh [strategy ...]
 #   CXX=g++ (default)       the compiler
-#   KERNEL_TABLE_DEFINES=...  extra -D options for every build (e.g.
-#                           -DKERN_PLANE_NORMAL_RETRY=0 for a plane_normal.glsl
-#                           without the facing-plane retry, see kernels.hpp)
+#   KERNEL_TABLE_DEFINES=...  extra -D options for every build
 #   KERNEL_TABLE_JOBS=2     builds and callgrind runs in parallel
 #   KERNEL_TABLE_BREAKDOWN=1  also print, per strategy, where snell's instructions
 #                           per ray go (callgrind, source file of the inlined

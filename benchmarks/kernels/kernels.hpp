@@ -145,14 +145,7 @@ inline Hit singleSample(const Camera& c, const float* o, const float* d) {
 // all zero); SNELL_PLANE_FACING_FALLBACK 1,
 // SNELL_PLANE_HOLD 1 on a closed surface; the last P's projection is computed
 // once (snellPlaneHit projects it twice); a P that does not project ends the
-// call as the miss snellPlaneHit would return. KERN_PLANE_NORMAL_RETRY 1
-// (default): the facing-plane retry of plane_normal.glsl (when P_(k-1) came
-// from a tangent plane and B_k is empty or off screen, P_(k-1) becomes the
-// facing plane's hit through B_(k-1) and B_k is read again there); 0 for a
-// plane_normal.glsl without it.
-#ifndef KERN_PLANE_NORMAL_RETRY
-#define KERN_PLANE_NORMAL_RETRY 1
-#endif
+// call as the miss snellPlaneHit would return.
 template <int N>
 inline Hit planeNormal(const Camera& c, const float* o, const float* d) {
   const float len2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
@@ -162,8 +155,6 @@ inline Hit planeNormal(const Camera& c, const float* o, const float* d) {
   int fetches = 0;
   float pu = u, pv = v;  // planeUv
   float p[3] = {o[0], o[1], o[2]};
-  float bp[3] = {o[0], o[1], o[2]};  // B_(k-1)
-  bool tangent = false;    // P_(k-1) is on B_(k-1)'s tangent plane
   bool projected = true;   // (u, v) is the projection of p
   for (int k = 0; k <= N; ++k) {
     if (k > 0) {
@@ -174,18 +165,6 @@ inline Hit planeNormal(const Camera& c, const float* o, const float* d) {
     int px = 0, py = 0;
     float dv = 0.0f;
     if (onScreen(u, v)) px = texel(u), py = texel(v), dv = depthAt(c.depth, kW, px, py);
-#if KERN_PLANE_NORMAL_RETRY
-    if (dv == 0.0f && tangent) {
-      float f[3], fu, fv;
-      if (rayPlane(o, d, eps, bp, bp, f) && project(c, f[0], f[1], f[2], fu, fv)) {
-        p[0] = f[0], p[1] = f[1], p[2] = f[2];
-        u = fu, v = fv;
-        tangent = false;
-        fetches += 1;
-        if (onScreen(u, v)) px = texel(u), py = texel(v), dv = depthAt(c.depth, kW, px, py);
-      }
-    }
-#endif
     if (dv == 0.0f) {  // empty, or off screen
       if (k == 0) return miss(fetches);
       break;
@@ -195,14 +174,12 @@ inline Hit planeNormal(const Camera& c, const float* o, const float* d) {
     const float* n = c.normal + 4 * (py * kW + px);
     fetches += 1;
     float q[3];
-    tangent = rayPlane(o, d, eps, B, n, q);
-    if (!tangent && !rayPlane(o, d, eps, B, B, q)) {
+    if (!rayPlane(o, d, eps, B, n, q) && !rayPlane(o, d, eps, B, B, q)) {
       if (k == 0) return miss(fetches);
       break;
     }
     p[0] = q[0], p[1] = q[1], p[2] = q[2];
     pu = cu, pv = cv;
-    bp[0] = B[0], bp[1] = B[1], bp[2] = B[2];
     projected = false;
   }
   if (!projected && !project(c, p[0], p[1], p[2], u, v)) return miss(fetches);

@@ -24,10 +24,6 @@ contract:
     meet that plane ahead of W and SNELL_PLANE_FACING_FALLBACK is 1 (default),
     P_k = snellRayPlane(W, dir, B_k, B_k): the plane through B_k facing the
     camera (normal along the line of sight through B_k), see plane_refine.glsl.
-    With the fallback, also when P_(k-1) (k >= 1) came from a tangent plane and
-    B_k is empty or off screen (plane k-1 was almost parallel to the ray and
-    its hit left the surface), P_(k-1) is replaced by the facing plane's hit
-    through B_(k-1) and B_k is read again at its projection (1 more fetch).
     The hit is
     snellPlaneHit(P_N): position P_N (on the ray), uv its projection, valid
     when the surface exists there. A refinement step that cannot build its plane
@@ -39,8 +35,8 @@ contract:
   - exact (up to float rounding) for a planar surface with exact normals, for
     every N >= 0: every plane is the surface's plane.
   - fetches = 2 (N + 1) + 1 on success (a depth and a normal read per plane,
-    one final depth read), plus 1 per facing-plane retry; on failure the reads
-    issued so far (lookups at an off-screen uv included).
+    one final depth read); on failure the reads issued so far (lookups at an
+    off-screen uv included).
   - rays towards the camera are accepted: the plane is intersected wherever it
     lies ahead of W (t >= 0).
   - valid = false (snellHitMiss, finite): origin/dir NaN/Inf, |dir|^2 below 1e-30
@@ -80,8 +76,6 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
   vec2 uv = w.uv;
   vec2 planeUv = w.uv;
   vec3 p = origin;
-  vec3 planePoint = origin;  // B_(k-1)
-  bool tangent = false;      // plane k-1 is B_(k-1)'s tangent plane (not its facing plane)
   for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
     if (k > n) {
       break;
@@ -95,20 +89,6 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     }
     SnellSurfacePoint b = snellSurfacePoint(depthTex, uv, s);
     fetches += 1;
-#if SNELL_PLANE_FACING_FALLBACK
-    if (!b.valid && tangent) {
-      // Plane k-1 was almost parallel to the ray, so its hit left the surface; its
-      // facing plane keeps the ray at B_(k-1)'s depth, and the refinement goes on there.
-      SnellRayPlaneHit f = snellRayPlane(origin, dir, planePoint, planePoint);
-      SnellScreenPoint fp = snellViewToUv(s.clipFromView, f.position);
-      if (f.valid && fp.valid) {
-        p = f.position;
-        tangent = false;
-        b = snellSurfacePoint(depthTex, fp.uv, s);
-        fetches += 1;
-      }
-    }
-#endif
     if (!b.valid) {
       if (k == 0) {
         return snellHitMiss(fetches);
@@ -118,7 +98,6 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     vec4 nt = SNELL_SAMPLE_LOD(normalTex, b.uv, normalLod);
     fetches += 1;
     SnellRayPlaneHit ph = snellRayPlane(origin, dir, b.position, vec3(nt.x, nt.y, nt.z));
-    tangent = ph.valid;
 #if SNELL_PLANE_FACING_FALLBACK
     if (!ph.valid) {
       ph = snellRayPlane(origin, dir, b.position, b.position);
@@ -132,7 +111,6 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     }
     p = ph.position;
     planeUv = b.uv;
-    planePoint = b.position;
   }
   return snellPlaneHit(p, planeUv, depthTex, s, fetches);
 }
