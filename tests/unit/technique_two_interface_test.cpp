@@ -454,6 +454,39 @@ TEST(TechniqueTwoInterface, DispatcherMatchesTheStrategies) {
                      snellDdaMarch(o, d, s.back.depth, b), 0));
     EXPECT_FALSE(snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid, b,
                                     snellIntersectOptions(42)).valid);
+    // Each count is the field named after its strategy, and the explicit range is read as given.
+    SnellIntersectOptions cbs = snellIntersectOptions(SNELL_STRATEGY_CBS);
+    cbs.cbsSteps = 9;
+    cbs.binarySteps = 1;  // another strategy's field: not read
+    cbs.rangeSource = SNELL_RANGE_EXPLICIT;
+    cbs.range = snellDepthRangeFromBox(mat4(1.0f), glm::vec3(technique_test::kCentre) - glm::vec3(2.5f),
+                                       glm::vec3(technique_test::kCentre) + glm::vec3(2.5f));
+    ASSERT_TRUE(cbs.range.valid);
+    EXPECT_TRUE(same(snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid, b, cbs),
+                     snellConservativeBinarySearch(o, d, s.back.depth, b, cbs.range.zNearest, cbs.range.zFarthest, 9),
+                     0));
+    SnellIntersectOptions lin = snellIntersectOptions(SNELL_STRATEGY_LINEAR_BINARY);
+    lin.linearSteps = 7;
+    lin.binarySteps = 3;
+    lin.cbsSteps = 1;
+    EXPECT_TRUE(same(snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid, b, lin),
+                     snellLinearBinarySearch(o, d, s.back.depth, b, range.zNearest, range.zFarthest, 7, 3), 1));
+    SnellIntersectOptions march = snellIntersectOptions(SNELL_STRATEGY_LINEAR_MARCH);
+    march.marchSteps = 48;
+    march.marchBisections = 6;
+    march.marchMaxDistance = 4.4f;
+    march.ddaMaxDistance = 0.1f;
+    EXPECT_TRUE(same(snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid, b, march),
+                     snellLinearMarch(o, d, s.back.depth, b, 4.4f, 48, 6), 0));
+    SnellIntersectOptions plane = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
+    plane.planeIterations = 3;
+    EXPECT_TRUE(same(snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid, b, plane),
+                     snellIntersectPlaneNormal(o, d, s.back.depth, s.backNormalMips, b, 0.0f, 3), 0));
+    // An explicit range that is not valid (an empty box, say) is a miss without a fetch.
+    cbs.range = snellDepthRangeInvalid();
+    const SnellHit none = snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid, b, cbs);
+    EXPECT_FALSE(none.valid);
+    EXPECT_EQ(none.fetches, 0);
   }
 }
 
