@@ -104,6 +104,15 @@ inline const std::map<std::string, const char*>& pendingTriage() {
 // still mutated through the other base inputs, where they are not.
 inline bool intLike(float x) { return std::fabs(x) <= 1e6f && x == std::floor(x); }
 
+// splitmix64's step constant and finalizer: the input mutations' random stream
+// and the output digest both mix with it.
+constexpr std::uint64_t kGolden = 0x9E3779B97F4A7C15ull;
+inline std::uint64_t splitmix64(std::uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
 // A mutation of `base`, seeded by `index`.
 inline ParityIO mutate(const ParityIO& base, std::uint64_t index) {
   static const float hostile[] = {std::numeric_limits<float>::quiet_NaN(),
@@ -119,13 +128,8 @@ inline ParityIO mutate(const ParityIO& base, std::uint64_t index) {
   static const float scales[] = {0.0f, 1e-20f, 1e20f};
   // splitmix64: a cheap, well-mixed stream per input (seeding a Mersenne
   // twister per input would cost more than most functions under test).
-  std::uint64_t state = index * 0x9E3779B97F4A7C15ull + 1u;
-  auto rng = [&state]() {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  };
+  std::uint64_t state = index * kGolden + 1u;
+  auto rng = [&state]() { return splitmix64(state += kGolden); };
   ParityIO in = base;
   const int mode = static_cast<int>(rng() % 4u);
   if (mode == 3) {  // scale one vec4's xyz
@@ -173,15 +177,14 @@ inline std::uint16_t contractViolations(const Exception* e, int outputs, const P
   return bad;
 }
 
-// splitmix64's finalizer over the 16 output floats' bits, seeded by the input's index.
+// The 16 output floats' bits, chained through splitmix64 from the input's index.
 inline std::uint64_t outputDigest(std::uint64_t index, const ParityIO& out) {
-  std::uint64_t h = index * 0x9E3779B97F4A7C15ull;
+  std::uint64_t h = splitmix64(index * kGolden);
   for (int k = 0; k < 16; ++k) {
     std::uint32_t bits;
     const float x = comp(out, k);
     std::memcpy(&bits, &x, sizeof bits);
-    h = (h ^ bits) * 0xBF58476D1CE4E5B9ull;
-    h ^= h >> 31;
+    h = splitmix64(h ^ bits);
   }
   return h;
 }
