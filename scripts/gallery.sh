@@ -8,15 +8,7 @@
 # snell-gallery (`bash scripts/gallery.sh --help`). Under a minute on 2 cores
 # after the build. Paths in the arguments are relative to where it is run from.
 set -euo pipefail
-caller=$(pwd)
-repo=$(cd "$(dirname "$0")/.." && pwd)
-cd "$repo"
-bash scripts/install-deps.sh
-build=${SNELL_BUILD_DIR:-build}
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" -j "$(nproc)" --target snell-gallery
-gallery=$(cd "$build" && pwd)/examples/gallery/snell-gallery
-cd "$caller"
+gallery=$(bash "$(dirname "$0")/build-target.sh" snell-gallery)/examples/gallery/snell-gallery
 "$gallery" "$@"
 # The output directory as snell-gallery took it (the last --out, else its default).
 out=gallery-out

@@ -9,13 +9,5 @@
 # Paths in the arguments (scene files, --out) are taken relative to the
 # directory it is run from; the build happens in the repository.
 set -euo pipefail
-caller=$(pwd)
-repo=$(cd "$(dirname "$0")/.." && pwd)
-cd "$repo"
-bash scripts/install-deps.sh
-build=${SNELL_BUILD_DIR:-build}
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" -j "$(nproc)" --target snell-lab
-lab=$(cd "$build" && pwd)/examples/lab/snell-lab
-cd "$caller"
+lab=$(bash "$(dirname "$0")/build-target.sh" snell-lab)/examples/lab/snell-lab
 "$lab" "$@"
