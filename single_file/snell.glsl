@@ -1620,6 +1620,12 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
                 silhouette: the plane methods keep their last plane there,
                 SNELL_PLANE_HOLD); false: empty texels are open space (the
                 opaque scene: the environment shows there), set the field
+  perspective   set by snellDepthSurface: true when clipFromView has the shape of a
+                perspective (columns (a,0,0,0) (0,b,0,0) (c,d,e,-1) (0,0,f,0):
+                symmetric, off-centre and jittered frusta). The strategies then
+                project and reconstruct without the products with the zero
+                entries (intersect/surface_projection.glsl, the same results);
+                set it false if you give clipFromView another shape afterwards
 contract (snellSampleSurface):
   - NEAREST: reads the texel containing uv (no filtering: filtering depth
     invents surfaces between foreground and background, Oliveira & Brauwers
@@ -1642,6 +1648,7 @@ source: Oliveira & Brauwers 2007 sec. 3.1 and Algorithm 2 ("invalid texels have
 
 
 
+
 #define SNELL_DEPTH_FILTER_NEAREST 0
 #define SNELL_DEPTH_FILTER_BILINEAR 1
 
@@ -1654,6 +1661,7 @@ struct SnellDepthSurface {
   int lod;
   int depthFilter;
   bool closed;
+  bool perspective;
 };
 
 struct SnellSurfaceSample {
@@ -1673,6 +1681,12 @@ SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, flo
   s.lod = 0;
   s.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
   s.closed = true;
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
+  s.perspective = c0.y == 0.0f && c0.z == 0.0f && c0.w == 0.0f && c1.x == 0.0f && c1.z == 0.0f &&
+                  c1.w == 0.0f && c2.w == -1.0f && c3.x == 0.0f && c3.y == 0.0f && c3.w == 0.0f;
   return s;
 }
 
@@ -1729,6 +1743,107 @@ SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, Sn
 
 #endif
 /*
+description: a depth surface's projection and reconstruction, with the work a
+  perspective projection does not need left out: the strategies project their
+  points and rebuild their texels through these two.
+use: SnellScreenPoint sp = snellSurfaceViewToUv(surface, pView);
+     SnellViewPoint p = snellSurfaceUvZToView(surface, uv, viewZ);
+contract:
+  - surface.perspective false: exactly snellViewToUv(surface.clipFromView, pView)
+    and snellUvZToView(surface.clipFromView, uv, viewZ).
+  - surface.perspective true (snellDepthSurface sets it when clipFromView's
+    columns are (a,0,0,0) (0,b,0,0) (c,d,e,-1) (0,0,f,0), the shape of every
+    perspective, off-centre and jittered frustum included): the same
+    operations without the products with those zero entries, which for a
+    finite product add +-0 and for an infinite one make NaN. The results are
+    the general path's bit for bit, valid flags included, except for the sign
+    of a coordinate that is exactly zero (uv never is: it is 0.5 ndc + 0.5) and
+    of an exactly zero ndcZ; with +0 zero entries, as glm::perspective and
+    snellPerspective write them, the reconstruction is bit-exact.
+  - the flag is the surface's promise: set it false after giving clipFromView
+    another shape.
+source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC); the equations in
+  camera/view_to_uv.glsl and camera/uv_z_to_view.glsl.
+*/
+#ifndef SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
+#define SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
+
+
+
+
+
+SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SnellDepthSurface s, vec3 pView) {
+  if (!s.perspective) {
+    return snellViewToUv(s.clipFromView, pView);
+  }
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 3);
+  SnellScreenPoint r;
+  r.uv = vec2(0.0f, 0.0f);
+  r.ndcZ = 0.0f;
+  r.valid = false;
+  // A non-finite coordinate makes its own clip term non-finite here, where the
+  // general product spreads it as NaN through a zero entry: invalid either way.
+  float cx = c0.x * pView.x + c2.x * pView.z;
+  float cy = c1.y * pView.y + c2.y * pView.z;
+  float cz = c2.z * pView.z + c3.z;
+  float cw = -pView.z;
+  if (!SNELL_FINITE(cx) || !SNELL_FINITE(cy) || !SNELL_FINITE(cz) || !SNELL_FINITE(cw) ||
+      !(cw >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 q = vec3(cx, cy, cz) / cw;
+  vec3 ndc = clamp(q, vec3(-SNELL_FLT_MAX, -SNELL_FLT_MAX, -SNELL_FLT_MAX),
+                   vec3(SNELL_FLT_MAX, SNELL_FLT_MAX, SNELL_FLT_MAX));
+  r.uv = vec2(ndc.x, ndc.y) * 0.5f + 0.5f;
+  r.ndcZ = ndc.z;
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN SnellViewPoint snellSurfaceUvZToView(SnellDepthSurface s, vec2 uv, float viewZ) {
+  if (!s.perspective) {
+    return snellUvZToView(s.clipFromView, uv, viewZ);
+  }
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
+      !(viewZ <= -SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 2);
+  float nx = 2.0f * uv.x - 1.0f;
+  float ny = 2.0f * uv.y - 1.0f;
+  // The general system's a01 and a10 are 0 - n * 0 = +0 for a finite n, and
+  // NaN for an infinite one (2 uv - 1 overflows), which makes it singular.
+  if (!SNELL_FINITE(nx) || !SNELL_FINITE(ny)) {
+    return r;
+  }
+  // c2.x - n c2.w with c2.w = -1 is c2.x + n; c3.x - n c3.w is +0.
+  float b0 = -(viewZ * (c2.x + nx) + 0.0f);
+  float b1 = -(viewZ * (c2.y + ny) + 0.0f);
+  float det = c0.x * c1.y;
+  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  // The zero coefficients stay as products: 0 * b is NaN for an infinite b.
+  float x = (b0 * c1.y - 0.0f * b1) / det;
+  float y = (c0.x * b1 - b0 * 0.0f) / det;
+  if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
+    return r;
+  }
+  r.position = vec3(x, y, viewZ);
+  r.valid = true;
+  return r;
+}
+
+#endif
+/*
 description: the view-space point a depth texture stores at a uv: the texel
   containing uv, reconstructed at that texel's CENTRE (the point the rasterizer
   actually sampled, by camera/uv_z_to_view.glsl). The plane strategies build
@@ -1757,6 +1872,7 @@ source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC), sec. 14.5 (fragment
 
 
 
+
 struct SnellSurfacePoint {
   vec3 position;  // view space, on the texel centre's pixel ray
   vec2 uv;        // the texel centre
@@ -1774,7 +1890,7 @@ SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, Snel
   }
   ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
   vec2 centre = x.interpolated ? uv : snellPixelToUv(snellUvToPixel(uv, size), size);
-  SnellViewPoint p = snellUvZToView(s.clipFromView, centre, x.viewZ);
+  SnellViewPoint p = snellSurfaceUvZToView(s, centre, x.viewZ);
   if (!p.valid) {
     return r;
   }
@@ -1826,13 +1942,14 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation"
 
 
 
+
 SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface s) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
     return snellHitMiss(0);
   }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  SnellScreenPoint w = snellSurfaceViewToUv(s, origin);
   if (!w.valid) {
     return snellHitMiss(0);
   }
@@ -1843,7 +1960,7 @@ SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D 
   vec3 toB = b.position - origin;
   float d = sqrt(dot(toB, toB));
   vec3 p = origin + (d / sqrt(len2)) * dir;
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
     return snellHitMiss(1);
   }
@@ -1881,8 +1998,9 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 
 
 
+
 SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid) {
     return snellHitMiss(fetchesSoFar);
   }
@@ -1923,6 +2041,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 */
 #ifndef SNELL_INTERSECT_PLANE_REFINE_GLSL
 #define SNELL_INTERSECT_PLANE_REFINE_GLSL
+
 
 
 
@@ -1971,7 +2090,7 @@ SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, Snel
   if (h.valid || SNELL_PLANE_HOLD == 0 || !s.closed) {
     return h;
   }
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f) ||
       !SNELL_FINITE(planeUv.x) || !SNELL_FINITE(planeUv.y)) {
     return h;
@@ -2045,6 +2164,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 
 
 
+
 SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
                                             SnellDepthSurface s, float normalLod, int iterations) {
   float len2 = dot(dir, dir);
@@ -2052,7 +2172,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
     return snellHitMiss(0);
   }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  SnellScreenPoint w = snellSurfaceViewToUv(s, origin);
   if (!w.valid) {
     return snellHitMiss(0);
   }
@@ -2066,7 +2186,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
       break;
     }
     if (k > 0) {
-      SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+      SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
       if (!sp.valid) {
         break;  // keep P_(k-1) on plane k-1
       }
@@ -2174,6 +2294,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 
 
 
+
 #ifndef SNELL_PLANE_DEPTH_MAX_SPAN_LOD
 #  define SNELL_PLANE_DEPTH_MAX_SPAN_LOD 6
 #endif
@@ -2195,7 +2316,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   r.normal = vec3(0.0f, 0.0f, 0.0f);
   r.valid = false;
   r.fetches = 0;
-  SnellScreenPoint sq = snellViewToUv(s.clipFromView, q);
+  SnellScreenPoint sq = snellSurfaceViewToUv(s, q);
   if (!sq.valid) {
     return r;
   }
@@ -2208,7 +2329,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   vec3 toB = b0.position - q;
   float d = sqrt(dot(toB, toB));
   vec3 q2 = q.z < b0.position.z ? q - d * dirN : q + d * dirN;
-  SnellScreenPoint s2 = snellViewToUv(s.clipFromView, q2);
+  SnellScreenPoint s2 = snellSurfaceViewToUv(s, q2);
   vec2 uv2 = s2.valid ? s2.uv : sq.uv;
   ivec2 size0 = SNELL_TEXTURE_SIZE(depthMips, s.lod);
   float span = max(abs(uv2.x - sq.uv.x) * float(size0.x), abs(uv2.y - sq.uv.y) * float(size0.y));
@@ -2274,7 +2395,7 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
     return snellHitMiss(0);
   }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  SnellScreenPoint w = snellSurfaceViewToUv(s, origin);
   if (!w.valid) {
     return snellHitMiss(0);
   }
@@ -2980,6 +3101,7 @@ source: the classic screen-space ray march (e.g. Sousa, "Crysis 2", 2011;
 
 
 
+
 #ifndef SNELL_LINEAR_MARCH_STEPS
 #  define SNELL_LINEAR_MARCH_STEPS 32
 #endif
@@ -3029,7 +3151,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
     }
     float t = float(i) * dt;
     vec3 p = origin + t * dir;
-    SnellScreenPoint sp = snellViewToUv(surface.clipFromView, p);
+    SnellScreenPoint sp = snellSurfaceViewToUv(surface, p);
     if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
       return snellHitMiss(fetches);
     }
@@ -3052,7 +3174,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
     }
     float mid = 0.5f * (lo + tHit);
     vec3 q = origin + mid * dir;
-    SnellScreenPoint sq = snellViewToUv(surface.clipFromView, q);
+    SnellScreenPoint sq = snellSurfaceViewToUv(surface, q);
     bool crosses = false;
     if (sq.valid && sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f) {
       SnellSurfaceSample y = snellSampleSurface(depthTex, sq.uv, surface);

@@ -185,6 +185,12 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
                 silhouette: the plane methods keep their last plane there,
                 SNELL_PLANE_HOLD); false: empty texels are open space (the
                 opaque scene: the environment shows there), set the field
+  perspective   set by snellDepthSurface: true when clipFromView has the shape of a
+                perspective (columns (a,0,0,0) (0,b,0,0) (c,d,e,-1) (0,0,f,0):
+                symmetric, off-centre and jittered frusta). The strategies then
+                project and reconstruct without the products with the zero
+                entries (intersect/surface_projection.glsl, the same results);
+                set it false if you give clipFromView another shape afterwards
 contract (snellSampleSurface):
   - NEAREST: reads the texel containing uv (no filtering: filtering depth
     invents surfaces between foreground and background, Oliveira & Brauwers
@@ -410,117 +416,26 @@ SNELL_FN ivec2 snellUvToPixel(vec2 uv, ivec2 size) {
 }
 
 #endif
-
-#define SNELL_DEPTH_FILTER_NEAREST 0
-#define SNELL_DEPTH_FILTER_BILINEAR 1
-
-struct SnellDepthSurface {
-  mat4 clipFromView;
-  float zNear;
-  float zFar;
-  int convention;
-  float emptyDepth;
-  int lod;
-  int depthFilter;
-  bool closed;
-};
-
-struct SnellSurfaceSample {
-  float viewZ;
-  bool valid;
-  bool interpolated;  // BILINEAR and all four texels held a surface: viewZ is the depth at uv itself
-};
-
-SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, float zFar, int convention,
-                                             float emptyDepth) {
-  SnellDepthSurface s;
-  s.clipFromView = clipFromView;
-  s.zNear = zNear;
-  s.zFar = zFar;
-  s.convention = convention;
-  s.emptyDepth = emptyDepth;
-  s.lod = 0;
-  s.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
-  s.closed = true;
-  return s;
-}
-
-SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
-  SnellSurfaceSample r;
-  r.viewZ = 0.0f;
-  r.valid = false;
-  r.interpolated = false;
-  // Written so NaN fails: every comparison with NaN is false.
-  if (!(uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) {
-    return r;
-  }
-  ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
-  if (size.x <= 0 || size.y <= 0) {
-    return r;
-  }
-  float d = SNELL_TEXEL_FETCH(depthTex, snellUvToPixel(uv, size), s.lod).x;
-  if (d == s.emptyDepth) {
-    return r;
-  }
-  if (s.depthFilter == SNELL_DEPTH_FILTER_BILINEAR) {
-    // Texel-centre coordinates: texel i's centre sits at i + 0.5.
-    SNELL_PRECISE float tx = uv.x * float(size.x) - 0.5f;
-    SNELL_PRECISE float ty = uv.y * float(size.y) - 0.5f;
-    float fx = floor(tx);
-    float fy = floor(ty);
-    int x0 = clamp(int(fx), 0, size.x - 1);
-    int y0 = clamp(int(fy), 0, size.y - 1);
-    int x1 = clamp(int(fx) + 1, 0, size.x - 1);
-    int y1 = clamp(int(fy) + 1, 0, size.y - 1);
-    float d00 = SNELL_TEXEL_FETCH(depthTex, ivec2(x0, y0), s.lod).x;
-    float d10 = SNELL_TEXEL_FETCH(depthTex, ivec2(x1, y0), s.lod).x;
-    float d01 = SNELL_TEXEL_FETCH(depthTex, ivec2(x0, y1), s.lod).x;
-    float d11 = SNELL_TEXEL_FETCH(depthTex, ivec2(x1, y1), s.lod).x;
-    if (d00 != s.emptyDepth && d10 != s.emptyDepth && d01 != s.emptyDepth && d11 != s.emptyDepth) {
-      float wx = tx - fx;
-      float wy = ty - fy;
-      SNELL_PRECISE float d0 = d00 + wx * (d10 - d00);
-      SNELL_PRECISE float d1 = d01 + wx * (d11 - d01);
-      SNELL_PRECISE float dm = d0 + wy * (d1 - d0);
-      d = dm;
-      r.interpolated = true;
-    }
-  }
-  float v = snellLinearizeDepth(d, s.zNear, s.zFar, s.convention);
-  if (!(v > 0.0f)) {
-    r.interpolated = false;
-    return r;
-  }
-  r.viewZ = -v;
-  r.valid = true;
-  return r;
-}
-
-#endif
 /*
-description: the view-space point a depth texture stores at a uv: the texel
-  containing uv, reconstructed at that texel's CENTRE (the point the rasterizer
-  actually sampled, by camera/uv_z_to_view.glsl). The plane strategies build
-  their planes from these points.
-use: SnellSurfacePoint b = snellSurfacePoint(depthTex, uv, surface);   // b.position, b.uv, b.valid
+description: the inverse projection for a known view z: the view-space point
+  on the pixel ray of a uv at a given depth, without an inverse matrix (the
+  surface strategies reconstruct every depth texel through it).
+use: SnellViewPoint p = snellUvZToView(clipFromView, uv, viewZ);
+  uv            viewport uv ([0,1]^2, origin bottom-left)
+  viewZ         view-space z (< 0) of the wanted point
+  clipFromView  any projection with clip w = -z (perspective.glsl, glm::perspective*,
+                glFrustum, off-centre frusta); no inverse matrix is needed
 contract:
-  - snellSurfacePoint: one snellSampleSurface at uv (one fetch, level s.lod);
-    uv = the centre of the texel read (snellPixelToUv of snellUvToPixel at level
-    s.lod), or uv itself when the sample was interpolated (s.depthFilter
-    BILINEAR with four surface texels: the depth there is the surface's at uv),
-    position = snellUvZToView(s.clipFromView, that uv, viewZ). valid
-    = false (uv and position 0) when the sample is invalid (off screen, empty,
-    NaN) or the reconstruction is. Costs one fetch whatever the outcome.
-  - texel-centre reconstruction is what makes the plane strategies exact on
-    planar surfaces: a depth texel is the surface depth at its centre.
-source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC), sec. 14.5 (fragment
-  centres); Mayer & Assarsson, "Constant-Time Light Refraction Simulation",
-  step 2 (B, the point directly behind W, from the screen buffers).
+  - the point p with p.z == viewZ whose projection has NDC xy =
+    2 uv - 1, from the 2x2 linear system clip.xy = ndc.xy clip.w (Cramer's rule on
+    the matrix columns). valid =
+    false, position (0,0,0), when an input is NaN/Inf, viewZ >= 0 or denormal, the
+    system is singular (|det| below the smallest normal float) or the result
+    overflows.
+source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC).
 */
-#ifndef SNELL_INTERSECT_SURFACE_POINT_GLSL
-#define SNELL_INTERSECT_SURFACE_POINT_GLSL
-
-
+#ifndef SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
+#define SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
 
 /*
 description: reconstruct the view-space position seen at a uv from a depth-buffer
@@ -644,28 +559,6 @@ SNELL_FN SnellViewPoint snellUvDistanceToView(vec2 uv, float viewDistance, mat4 
 }
 
 #endif
-/*
-description: the inverse projection for a known view z: the view-space point
-  on the pixel ray of a uv at a given depth, without an inverse matrix (the
-  surface strategies reconstruct every depth texel through it).
-use: SnellViewPoint p = snellUvZToView(clipFromView, uv, viewZ);
-  uv            viewport uv ([0,1]^2, origin bottom-left)
-  viewZ         view-space z (< 0) of the wanted point
-  clipFromView  any projection with clip w = -z (perspective.glsl, glm::perspective*,
-                glFrustum, off-centre frusta); no inverse matrix is needed
-contract:
-  - the point p with p.z == viewZ whose projection has NDC xy =
-    2 uv - 1, from the 2x2 linear system clip.xy = ndc.xy clip.w (Cramer's rule on
-    the matrix columns). valid =
-    false, position (0,0,0), when an input is NaN/Inf, viewZ >= 0 or denormal, the
-    system is singular (|det| below the smallest normal float) or the result
-    overflows.
-source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC).
-*/
-#ifndef SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
-#define SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
-
-
 
 /* Column i of a matrix (the matrix's i-th basis image) without a matrix product:
    GLSL and GLM index columns, HLSL rows. */
@@ -712,70 +605,124 @@ SNELL_FN SnellViewPoint snellUvZToView(mat4 clipFromView, vec2 uv, float viewZ) 
 
 #endif
 
+#define SNELL_DEPTH_FILTER_NEAREST 0
+#define SNELL_DEPTH_FILTER_BILINEAR 1
 
-struct SnellSurfacePoint {
-  vec3 position;  // view space, on the texel centre's pixel ray
-  vec2 uv;        // the texel centre
-  bool valid;
+struct SnellDepthSurface {
+  mat4 clipFromView;
+  float zNear;
+  float zFar;
+  int convention;
+  float emptyDepth;
+  int lod;
+  int depthFilter;
+  bool closed;
+  bool perspective;
 };
 
-SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
-  SnellSurfacePoint r;
-  r.position = vec3(0.0f, 0.0f, 0.0f);
-  r.uv = vec2(0.0f, 0.0f);
+struct SnellSurfaceSample {
+  float viewZ;
+  bool valid;
+  bool interpolated;  // BILINEAR and all four texels held a surface: viewZ is the depth at uv itself
+};
+
+SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, float zFar, int convention,
+                                             float emptyDepth) {
+  SnellDepthSurface s;
+  s.clipFromView = clipFromView;
+  s.zNear = zNear;
+  s.zFar = zFar;
+  s.convention = convention;
+  s.emptyDepth = emptyDepth;
+  s.lod = 0;
+  s.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+  s.closed = true;
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
+  s.perspective = c0.y == 0.0f && c0.z == 0.0f && c0.w == 0.0f && c1.x == 0.0f && c1.z == 0.0f &&
+                  c1.w == 0.0f && c2.w == -1.0f && c3.x == 0.0f && c3.y == 0.0f && c3.w == 0.0f;
+  return s;
+}
+
+SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
+  SnellSurfaceSample r;
+  r.viewZ = 0.0f;
   r.valid = false;
-  SnellSurfaceSample x = snellSampleSurface(depthTex, uv, s);
-  if (!x.valid) {
+  r.interpolated = false;
+  // Written so NaN fails: every comparison with NaN is false.
+  if (!(uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) {
     return r;
   }
   ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
-  vec2 centre = x.interpolated ? uv : snellPixelToUv(snellUvToPixel(uv, size), size);
-  SnellViewPoint p = snellUvZToView(s.clipFromView, centre, x.viewZ);
-  if (!p.valid) {
+  if (size.x <= 0 || size.y <= 0) {
     return r;
   }
-  r.position = p.position;
-  r.uv = centre;
+  float d = SNELL_TEXEL_FETCH(depthTex, snellUvToPixel(uv, size), s.lod).x;
+  if (d == s.emptyDepth) {
+    return r;
+  }
+  if (s.depthFilter == SNELL_DEPTH_FILTER_BILINEAR) {
+    // Texel-centre coordinates: texel i's centre sits at i + 0.5.
+    SNELL_PRECISE float tx = uv.x * float(size.x) - 0.5f;
+    SNELL_PRECISE float ty = uv.y * float(size.y) - 0.5f;
+    float fx = floor(tx);
+    float fy = floor(ty);
+    int x0 = clamp(int(fx), 0, size.x - 1);
+    int y0 = clamp(int(fy), 0, size.y - 1);
+    int x1 = clamp(int(fx) + 1, 0, size.x - 1);
+    int y1 = clamp(int(fy) + 1, 0, size.y - 1);
+    float d00 = SNELL_TEXEL_FETCH(depthTex, ivec2(x0, y0), s.lod).x;
+    float d10 = SNELL_TEXEL_FETCH(depthTex, ivec2(x1, y0), s.lod).x;
+    float d01 = SNELL_TEXEL_FETCH(depthTex, ivec2(x0, y1), s.lod).x;
+    float d11 = SNELL_TEXEL_FETCH(depthTex, ivec2(x1, y1), s.lod).x;
+    if (d00 != s.emptyDepth && d10 != s.emptyDepth && d01 != s.emptyDepth && d11 != s.emptyDepth) {
+      float wx = tx - fx;
+      float wy = ty - fy;
+      SNELL_PRECISE float d0 = d00 + wx * (d10 - d00);
+      SNELL_PRECISE float d1 = d01 + wx * (d11 - d01);
+      SNELL_PRECISE float dm = d0 + wy * (d1 - d0);
+      d = dm;
+      r.interpolated = true;
+    }
+  }
+  float v = snellLinearizeDepth(d, s.zNear, s.zFar, s.convention);
+  if (!(v > 0.0f)) {
+    r.interpolated = false;
+    return r;
+  }
+  r.viewZ = -v;
   r.valid = true;
   return r;
 }
 
 #endif
 /*
-description: the single-sample baseline that Mayer & Assarsson compare their
-  plane methods against (the "GPU Gems" row of their table): ONE depth lookup,
-  no search. The surface point B directly behind the ray origin W gives a
-  distance d = |B - W|, and the hit is taken d further along the ray (the
-  thickness approximation of Wyman 2005 and Sousa 2005: the ray travels as far
-  as the surface is behind its start).
-use: SnellHit h = snellIntersectSingleSample(origin, dir, depthTex, surface);
-  origin    view-space ray start W (z < 0): the front-face point for the back-face
-            buffer, the exit point for the opaque scene buffer
-  dir       ray direction (any length; normalized inside)
-  depthTex  the depth texture `surface` describes (read at level surface.lod)
+description: a depth surface's projection and reconstruction, with the work a
+  perspective projection does not need left out: the strategies project their
+  points and rebuild their texels through these two.
+use: SnellScreenPoint sp = snellSurfaceViewToUv(surface, pView);
+     SnellViewPoint p = snellSurfaceUvZToView(surface, uv, viewZ);
 contract:
-  - uvW = projection of W; B = snellSurfacePoint(depthTex, uvW, surface) (the
-    texel centre point); d = |B - W|; position = W + d normalize(dir); uv = its
-    projection. fetches = 1 always.
-  - valid is true exactly when B exists and the position lies in front of the
-    camera and projects into [0,1]^2. It says nothing about whether the surface
-    exists at uv (no second lookup: that is the baseline's point); exact when
-    dir points from W straight at B (d is then the true distance).
-  - any direction is accepted, also one towards the camera (the answer is then
-    the point d towards the camera, which the caller asked for).
-  - valid = false (snellHitMiss): origin or dir NaN/Inf, |dir|^2 below 1e-30 or
-    overflowing, origin at or behind the camera plane (no projection): fetches 0;
-    W projecting off screen, B empty/invalid, the position off screen or behind
-    the camera: fetches 1 (the lookup is counted once W projects, as a shader
-    would issue it).
-source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation"
-  (the single-sample row of the results table, step 2 for B); T. Sousa, "Generic
-  Refraction Simulation", GPU Gems 2 ch. 19 (2005); C. Wyman, "An Approximate
-  Image-Space Approach for Interactive Refraction", SIGGRAPH 2005 (P2 ~ P1 + d T1).
+  - surface.perspective false: exactly snellViewToUv(surface.clipFromView, pView)
+    and snellUvZToView(surface.clipFromView, uv, viewZ).
+  - surface.perspective true (snellDepthSurface sets it when clipFromView's
+    columns are (a,0,0,0) (0,b,0,0) (c,d,e,-1) (0,0,f,0), the shape of every
+    perspective, off-centre and jittered frustum included): the same
+    operations without the products with those zero entries, which for a
+    finite product add +-0 and for an infinite one make NaN. The results are
+    the general path's bit for bit, valid flags included, except for the sign
+    of a coordinate that is exactly zero (uv never is: it is 0.5 ndc + 0.5) and
+    of an exactly zero ndcZ; with +0 zero entries, as glm::perspective and
+    snellPerspective write them, the reconstruction is bit-exact.
+  - the flag is the surface's promise: set it false after giving clipFromView
+    another shape.
+source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC); the equations in
+  camera/view_to_uv.glsl and camera/uv_z_to_view.glsl.
 */
-#ifndef SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
-#define SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
-
+#ifndef SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
+#define SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
 
 /*
 description: project a view-space point to viewport uv ([0,1]^2, origin
@@ -867,6 +814,176 @@ SNELL_FN SnellScreenPoint snellViewToUv(mat4 clipFromView, vec3 pView) {
 
 
 
+SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SnellDepthSurface s, vec3 pView) {
+  if (!s.perspective) {
+    return snellViewToUv(s.clipFromView, pView);
+  }
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 3);
+  SnellScreenPoint r;
+  r.uv = vec2(0.0f, 0.0f);
+  r.ndcZ = 0.0f;
+  r.valid = false;
+  // A non-finite coordinate makes its own clip term non-finite here, where the
+  // general product spreads it as NaN through a zero entry: invalid either way.
+  float cx = c0.x * pView.x + c2.x * pView.z;
+  float cy = c1.y * pView.y + c2.y * pView.z;
+  float cz = c2.z * pView.z + c3.z;
+  float cw = -pView.z;
+  if (!SNELL_FINITE(cx) || !SNELL_FINITE(cy) || !SNELL_FINITE(cz) || !SNELL_FINITE(cw) ||
+      !(cw >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 q = vec3(cx, cy, cz) / cw;
+  vec3 ndc = clamp(q, vec3(-SNELL_FLT_MAX, -SNELL_FLT_MAX, -SNELL_FLT_MAX),
+                   vec3(SNELL_FLT_MAX, SNELL_FLT_MAX, SNELL_FLT_MAX));
+  r.uv = vec2(ndc.x, ndc.y) * 0.5f + 0.5f;
+  r.ndcZ = ndc.z;
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN SnellViewPoint snellSurfaceUvZToView(SnellDepthSurface s, vec2 uv, float viewZ) {
+  if (!s.perspective) {
+    return snellUvZToView(s.clipFromView, uv, viewZ);
+  }
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
+      !(viewZ <= -SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 2);
+  float nx = 2.0f * uv.x - 1.0f;
+  float ny = 2.0f * uv.y - 1.0f;
+  // The general system's a01 and a10 are 0 - n * 0 = +0 for a finite n, and
+  // NaN for an infinite one (2 uv - 1 overflows), which makes it singular.
+  if (!SNELL_FINITE(nx) || !SNELL_FINITE(ny)) {
+    return r;
+  }
+  // c2.x - n c2.w with c2.w = -1 is c2.x + n; c3.x - n c3.w is +0.
+  float b0 = -(viewZ * (c2.x + nx) + 0.0f);
+  float b1 = -(viewZ * (c2.y + ny) + 0.0f);
+  float det = c0.x * c1.y;
+  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  // The zero coefficients stay as products: 0 * b is NaN for an infinite b.
+  float x = (b0 * c1.y - 0.0f * b1) / det;
+  float y = (c0.x * b1 - b0 * 0.0f) / det;
+  if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
+    return r;
+  }
+  r.position = vec3(x, y, viewZ);
+  r.valid = true;
+  return r;
+}
+
+#endif
+/*
+description: the view-space point a depth texture stores at a uv: the texel
+  containing uv, reconstructed at that texel's CENTRE (the point the rasterizer
+  actually sampled, by camera/uv_z_to_view.glsl). The plane strategies build
+  their planes from these points.
+use: SnellSurfacePoint b = snellSurfacePoint(depthTex, uv, surface);   // b.position, b.uv, b.valid
+contract:
+  - snellSurfacePoint: one snellSampleSurface at uv (one fetch, level s.lod);
+    uv = the centre of the texel read (snellPixelToUv of snellUvToPixel at level
+    s.lod), or uv itself when the sample was interpolated (s.depthFilter
+    BILINEAR with four surface texels: the depth there is the surface's at uv),
+    position = snellUvZToView(s.clipFromView, that uv, viewZ). valid
+    = false (uv and position 0) when the sample is invalid (off screen, empty,
+    NaN) or the reconstruction is. Costs one fetch whatever the outcome.
+  - texel-centre reconstruction is what makes the plane strategies exact on
+    planar surfaces: a depth texel is the surface depth at its centre.
+source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC), sec. 14.5 (fragment
+  centres); Mayer & Assarsson, "Constant-Time Light Refraction Simulation",
+  step 2 (B, the point directly behind W, from the screen buffers).
+*/
+#ifndef SNELL_INTERSECT_SURFACE_POINT_GLSL
+#define SNELL_INTERSECT_SURFACE_POINT_GLSL
+
+
+
+
+
+
+
+
+struct SnellSurfacePoint {
+  vec3 position;  // view space, on the texel centre's pixel ray
+  vec2 uv;        // the texel centre
+  bool valid;
+};
+
+SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
+  SnellSurfacePoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.uv = vec2(0.0f, 0.0f);
+  r.valid = false;
+  SnellSurfaceSample x = snellSampleSurface(depthTex, uv, s);
+  if (!x.valid) {
+    return r;
+  }
+  ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
+  vec2 centre = x.interpolated ? uv : snellPixelToUv(snellUvToPixel(uv, size), size);
+  SnellViewPoint p = snellSurfaceUvZToView(s, centre, x.viewZ);
+  if (!p.valid) {
+    return r;
+  }
+  r.position = p.position;
+  r.uv = centre;
+  r.valid = true;
+  return r;
+}
+
+#endif
+/*
+description: the single-sample baseline that Mayer & Assarsson compare their
+  plane methods against (the "GPU Gems" row of their table): ONE depth lookup,
+  no search. The surface point B directly behind the ray origin W gives a
+  distance d = |B - W|, and the hit is taken d further along the ray (the
+  thickness approximation of Wyman 2005 and Sousa 2005: the ray travels as far
+  as the surface is behind its start).
+use: SnellHit h = snellIntersectSingleSample(origin, dir, depthTex, surface);
+  origin    view-space ray start W (z < 0): the front-face point for the back-face
+            buffer, the exit point for the opaque scene buffer
+  dir       ray direction (any length; normalized inside)
+  depthTex  the depth texture `surface` describes (read at level surface.lod)
+contract:
+  - uvW = projection of W; B = snellSurfacePoint(depthTex, uvW, surface) (the
+    texel centre point); d = |B - W|; position = W + d normalize(dir); uv = its
+    projection. fetches = 1 always.
+  - valid is true exactly when B exists and the position lies in front of the
+    camera and projects into [0,1]^2. It says nothing about whether the surface
+    exists at uv (no second lookup: that is the baseline's point); exact when
+    dir points from W straight at B (d is then the true distance).
+  - any direction is accepted, also one towards the camera (the answer is then
+    the point d towards the camera, which the caller asked for).
+  - valid = false (snellHitMiss): origin or dir NaN/Inf, |dir|^2 below 1e-30 or
+    overflowing, origin at or behind the camera plane (no projection): fetches 0;
+    W projecting off screen, B empty/invalid, the position off screen or behind
+    the camera: fetches 1 (the lookup is counted once W projects, as a shader
+    would issue it).
+source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation"
+  (the single-sample row of the results table, step 2 for B); T. Sousa, "Generic
+  Refraction Simulation", GPU Gems 2 ch. 19 (2005); C. Wyman, "An Approximate
+  Image-Space Approach for Interactive Refraction", SIGGRAPH 2005 (P2 ~ P1 + d T1).
+*/
+#ifndef SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
+#define SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
+
+
+
+
+
+
+
 
 SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface s) {
   float len2 = dot(dir, dir);
@@ -874,7 +991,7 @@ SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D 
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
     return snellHitMiss(0);
   }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  SnellScreenPoint w = snellSurfaceViewToUv(s, origin);
   if (!w.valid) {
     return snellHitMiss(0);
   }
@@ -885,7 +1002,7 @@ SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D 
   vec3 toB = b.position - origin;
   float d = sqrt(dot(toB, toB));
   vec3 p = origin + (d / sqrt(len2)) * dir;
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
     return snellHitMiss(1);
   }
@@ -923,8 +1040,9 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 
 
 
+
 SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid) {
     return snellHitMiss(fetchesSoFar);
   }
@@ -965,6 +1083,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 */
 #ifndef SNELL_INTERSECT_PLANE_REFINE_GLSL
 #define SNELL_INTERSECT_PLANE_REFINE_GLSL
+
 
 
 
@@ -1013,7 +1132,7 @@ SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, Snel
   if (h.valid || SNELL_PLANE_HOLD == 0 || !s.closed) {
     return h;
   }
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f) ||
       !SNELL_FINITE(planeUv.x) || !SNELL_FINITE(planeUv.y)) {
     return h;
@@ -1182,6 +1301,7 @@ SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, 
 
 
 
+
 SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
                                             SnellDepthSurface s, float normalLod, int iterations) {
   float len2 = dot(dir, dir);
@@ -1189,7 +1309,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
     return snellHitMiss(0);
   }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  SnellScreenPoint w = snellSurfaceViewToUv(s, origin);
   if (!w.valid) {
     return snellHitMiss(0);
   }
@@ -1203,7 +1323,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
       break;
     }
     if (k > 0) {
-      SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+      SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
       if (!sp.valid) {
         break;  // keep P_(k-1) on plane k-1
       }
@@ -1311,6 +1431,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 
 
 
+
 #ifndef SNELL_PLANE_DEPTH_MAX_SPAN_LOD
 #  define SNELL_PLANE_DEPTH_MAX_SPAN_LOD 6
 #endif
@@ -1332,7 +1453,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   r.normal = vec3(0.0f, 0.0f, 0.0f);
   r.valid = false;
   r.fetches = 0;
-  SnellScreenPoint sq = snellViewToUv(s.clipFromView, q);
+  SnellScreenPoint sq = snellSurfaceViewToUv(s, q);
   if (!sq.valid) {
     return r;
   }
@@ -1345,7 +1466,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   vec3 toB = b0.position - q;
   float d = sqrt(dot(toB, toB));
   vec3 q2 = q.z < b0.position.z ? q - d * dirN : q + d * dirN;
-  SnellScreenPoint s2 = snellViewToUv(s.clipFromView, q2);
+  SnellScreenPoint s2 = snellSurfaceViewToUv(s, q2);
   vec2 uv2 = s2.valid ? s2.uv : sq.uv;
   ivec2 size0 = SNELL_TEXTURE_SIZE(depthMips, s.lod);
   float span = max(abs(uv2.x - sq.uv.x) * float(size0.x), abs(uv2.y - sq.uv.y) * float(size0.y));
@@ -1411,7 +1532,7 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
     return snellHitMiss(0);
   }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  SnellScreenPoint w = snellSurfaceViewToUv(s, origin);
   if (!w.valid) {
     return snellHitMiss(0);
   }
@@ -2247,6 +2368,7 @@ source: the classic screen-space ray march (e.g. Sousa, "Crysis 2", 2011;
 
 
 
+
 #ifndef SNELL_LINEAR_MARCH_STEPS
 #  define SNELL_LINEAR_MARCH_STEPS 32
 #endif
@@ -2296,7 +2418,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
     }
     float t = float(i) * dt;
     vec3 p = origin + t * dir;
-    SnellScreenPoint sp = snellViewToUv(surface.clipFromView, p);
+    SnellScreenPoint sp = snellSurfaceViewToUv(surface, p);
     if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
       return snellHitMiss(fetches);
     }
@@ -2319,7 +2441,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
     }
     float mid = 0.5f * (lo + tHit);
     vec3 q = origin + mid * dir;
-    SnellScreenPoint sq = snellViewToUv(surface.clipFromView, q);
+    SnellScreenPoint sq = snellSurfaceViewToUv(surface, q);
     bool crosses = false;
     if (sq.valid && sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f) {
       SnellSurfaceSample y = snellSampleSurface(depthTex, sq.uv, surface);

@@ -210,93 +210,8 @@ SNELL_FN ivec2 snellUvToPixel(vec2 uv, ivec2 size) {
 
 #endif
 
-#define SNELL_DEPTH_FILTER_NEAREST 0
-#define SNELL_DEPTH_FILTER_BILINEAR 1
-
-struct SnellDepthSurface {
-  mat4 clipFromView;
-  float zNear;
-  float zFar;
-  int convention;
-  float emptyDepth;
-  int lod;
-  int depthFilter;
-  bool closed;
-};
-
-struct SnellSurfaceSample {
-  float viewZ;
-  bool valid;
-  bool interpolated;
-};
-
-SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, float zFar, int convention,
-                                             float emptyDepth) {
-  SnellDepthSurface s;
-  s.clipFromView = clipFromView;
-  s.zNear = zNear;
-  s.zFar = zFar;
-  s.convention = convention;
-  s.emptyDepth = emptyDepth;
-  s.lod = 0;
-  s.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
-  s.closed = true;
-  return s;
-}
-
-SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
-  SnellSurfaceSample r;
-  r.viewZ = 0.0f;
-  r.valid = false;
-  r.interpolated = false;
-  if (!(uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) {
-    return r;
-  }
-  ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
-  if (size.x <= 0 || size.y <= 0) {
-    return r;
-  }
-  float d = SNELL_TEXEL_FETCH(depthTex, snellUvToPixel(uv, size), s.lod).x;
-  if (d == s.emptyDepth) {
-    return r;
-  }
-  if (s.depthFilter == SNELL_DEPTH_FILTER_BILINEAR) {
-    SNELL_PRECISE float tx = uv.x * float(size.x) - 0.5f;
-    SNELL_PRECISE float ty = uv.y * float(size.y) - 0.5f;
-    float fx = floor(tx);
-    float fy = floor(ty);
-    int x0 = clamp(int(fx), 0, size.x - 1);
-    int y0 = clamp(int(fy), 0, size.y - 1);
-    int x1 = clamp(int(fx) + 1, 0, size.x - 1);
-    int y1 = clamp(int(fy) + 1, 0, size.y - 1);
-    float d00 = SNELL_TEXEL_FETCH(depthTex, ivec2(x0, y0), s.lod).x;
-    float d10 = SNELL_TEXEL_FETCH(depthTex, ivec2(x1, y0), s.lod).x;
-    float d01 = SNELL_TEXEL_FETCH(depthTex, ivec2(x0, y1), s.lod).x;
-    float d11 = SNELL_TEXEL_FETCH(depthTex, ivec2(x1, y1), s.lod).x;
-    if (d00 != s.emptyDepth && d10 != s.emptyDepth && d01 != s.emptyDepth && d11 != s.emptyDepth) {
-      float wx = tx - fx;
-      float wy = ty - fy;
-      SNELL_PRECISE float d0 = d00 + wx * (d10 - d00);
-      SNELL_PRECISE float d1 = d01 + wx * (d11 - d01);
-      SNELL_PRECISE float dm = d0 + wy * (d1 - d0);
-      d = dm;
-      r.interpolated = true;
-    }
-  }
-  float v = snellLinearizeDepth(d, s.zNear, s.zFar, s.convention);
-  if (!(v > 0.0f)) {
-    r.interpolated = false;
-    return r;
-  }
-  r.viewZ = -v;
-  r.valid = true;
-  return r;
-}
-
-#endif
-
-#ifndef SNELL_INTERSECT_SURFACE_POINT_GLSL
-#define SNELL_INTERSECT_SURFACE_POINT_GLSL
+#ifndef SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
+#define SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
 
 #ifndef SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
 #define SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
@@ -377,9 +292,6 @@ SNELL_FN SnellViewPoint snellUvDistanceToView(vec2 uv, float viewDistance, mat4 
 
 #endif
 
-#ifndef SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
-#define SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
-
 #if defined(SNELL_LANG_HLSL)
 #  define SNELL_CAMERA_MAT_COLUMN(m, i) (transpose(m)[i])
 #else
@@ -422,37 +334,100 @@ SNELL_FN SnellViewPoint snellUvZToView(mat4 clipFromView, vec2 uv, float viewZ) 
 
 #endif
 
-struct SnellSurfacePoint {
-  vec3 position;
-  vec2 uv;
-  bool valid;
+#define SNELL_DEPTH_FILTER_NEAREST 0
+#define SNELL_DEPTH_FILTER_BILINEAR 1
+
+struct SnellDepthSurface {
+  mat4 clipFromView;
+  float zNear;
+  float zFar;
+  int convention;
+  float emptyDepth;
+  int lod;
+  int depthFilter;
+  bool closed;
+  bool perspective;
 };
 
-SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
-  SnellSurfacePoint r;
-  r.position = vec3(0.0f, 0.0f, 0.0f);
-  r.uv = vec2(0.0f, 0.0f);
+struct SnellSurfaceSample {
+  float viewZ;
+  bool valid;
+  bool interpolated;
+};
+
+SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, float zFar, int convention,
+                                             float emptyDepth) {
+  SnellDepthSurface s;
+  s.clipFromView = clipFromView;
+  s.zNear = zNear;
+  s.zFar = zFar;
+  s.convention = convention;
+  s.emptyDepth = emptyDepth;
+  s.lod = 0;
+  s.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+  s.closed = true;
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
+  s.perspective = c0.y == 0.0f && c0.z == 0.0f && c0.w == 0.0f && c1.x == 0.0f && c1.z == 0.0f &&
+                  c1.w == 0.0f && c2.w == -1.0f && c3.x == 0.0f && c3.y == 0.0f && c3.w == 0.0f;
+  return s;
+}
+
+SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
+  SnellSurfaceSample r;
+  r.viewZ = 0.0f;
   r.valid = false;
-  SnellSurfaceSample x = snellSampleSurface(depthTex, uv, s);
-  if (!x.valid) {
+  r.interpolated = false;
+  if (!(uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) {
     return r;
   }
   ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
-  vec2 centre = x.interpolated ? uv : snellPixelToUv(snellUvToPixel(uv, size), size);
-  SnellViewPoint p = snellUvZToView(s.clipFromView, centre, x.viewZ);
-  if (!p.valid) {
+  if (size.x <= 0 || size.y <= 0) {
     return r;
   }
-  r.position = p.position;
-  r.uv = centre;
+  float d = SNELL_TEXEL_FETCH(depthTex, snellUvToPixel(uv, size), s.lod).x;
+  if (d == s.emptyDepth) {
+    return r;
+  }
+  if (s.depthFilter == SNELL_DEPTH_FILTER_BILINEAR) {
+    SNELL_PRECISE float tx = uv.x * float(size.x) - 0.5f;
+    SNELL_PRECISE float ty = uv.y * float(size.y) - 0.5f;
+    float fx = floor(tx);
+    float fy = floor(ty);
+    int x0 = clamp(int(fx), 0, size.x - 1);
+    int y0 = clamp(int(fy), 0, size.y - 1);
+    int x1 = clamp(int(fx) + 1, 0, size.x - 1);
+    int y1 = clamp(int(fy) + 1, 0, size.y - 1);
+    float d00 = SNELL_TEXEL_FETCH(depthTex, ivec2(x0, y0), s.lod).x;
+    float d10 = SNELL_TEXEL_FETCH(depthTex, ivec2(x1, y0), s.lod).x;
+    float d01 = SNELL_TEXEL_FETCH(depthTex, ivec2(x0, y1), s.lod).x;
+    float d11 = SNELL_TEXEL_FETCH(depthTex, ivec2(x1, y1), s.lod).x;
+    if (d00 != s.emptyDepth && d10 != s.emptyDepth && d01 != s.emptyDepth && d11 != s.emptyDepth) {
+      float wx = tx - fx;
+      float wy = ty - fy;
+      SNELL_PRECISE float d0 = d00 + wx * (d10 - d00);
+      SNELL_PRECISE float d1 = d01 + wx * (d11 - d01);
+      SNELL_PRECISE float dm = d0 + wy * (d1 - d0);
+      d = dm;
+      r.interpolated = true;
+    }
+  }
+  float v = snellLinearizeDepth(d, s.zNear, s.zFar, s.convention);
+  if (!(v > 0.0f)) {
+    r.interpolated = false;
+    return r;
+  }
+  r.viewZ = -v;
   r.valid = true;
   return r;
 }
 
 #endif
 
-#ifndef SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
-#define SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
+#ifndef SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
+#define SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
 
 #ifndef SNELL_CAMERA_VIEW_TO_UV_GLSL
 #define SNELL_CAMERA_VIEW_TO_UV_GLSL
@@ -507,13 +482,114 @@ SNELL_FN SnellScreenPoint snellViewToUv(mat4 clipFromView, vec3 pView) {
 
 #endif
 
+SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SnellDepthSurface s, vec3 pView) {
+  if (!s.perspective) {
+    return snellViewToUv(s.clipFromView, pView);
+  }
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 3);
+  SnellScreenPoint r;
+  r.uv = vec2(0.0f, 0.0f);
+  r.ndcZ = 0.0f;
+  r.valid = false;
+  float cx = c0.x * pView.x + c2.x * pView.z;
+  float cy = c1.y * pView.y + c2.y * pView.z;
+  float cz = c2.z * pView.z + c3.z;
+  float cw = -pView.z;
+  if (!SNELL_FINITE(cx) || !SNELL_FINITE(cy) || !SNELL_FINITE(cz) || !SNELL_FINITE(cw) ||
+      !(cw >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 q = vec3(cx, cy, cz) / cw;
+  vec3 ndc = clamp(q, vec3(-SNELL_FLT_MAX, -SNELL_FLT_MAX, -SNELL_FLT_MAX),
+                   vec3(SNELL_FLT_MAX, SNELL_FLT_MAX, SNELL_FLT_MAX));
+  r.uv = vec2(ndc.x, ndc.y) * 0.5f + 0.5f;
+  r.ndcZ = ndc.z;
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN SnellViewPoint snellSurfaceUvZToView(SnellDepthSurface s, vec2 uv, float viewZ) {
+  if (!s.perspective) {
+    return snellUvZToView(s.clipFromView, uv, viewZ);
+  }
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
+      !(viewZ <= -SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 2);
+  float nx = 2.0f * uv.x - 1.0f;
+  float ny = 2.0f * uv.y - 1.0f;
+  if (!SNELL_FINITE(nx) || !SNELL_FINITE(ny)) {
+    return r;
+  }
+  float b0 = -(viewZ * (c2.x + nx) + 0.0f);
+  float b1 = -(viewZ * (c2.y + ny) + 0.0f);
+  float det = c0.x * c1.y;
+  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  float x = (b0 * c1.y - 0.0f * b1) / det;
+  float y = (c0.x * b1 - b0 * 0.0f) / det;
+  if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
+    return r;
+  }
+  r.position = vec3(x, y, viewZ);
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_SURFACE_POINT_GLSL
+#define SNELL_INTERSECT_SURFACE_POINT_GLSL
+
+struct SnellSurfacePoint {
+  vec3 position;
+  vec2 uv;
+  bool valid;
+};
+
+SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
+  SnellSurfacePoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.uv = vec2(0.0f, 0.0f);
+  r.valid = false;
+  SnellSurfaceSample x = snellSampleSurface(depthTex, uv, s);
+  if (!x.valid) {
+    return r;
+  }
+  ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
+  vec2 centre = x.interpolated ? uv : snellPixelToUv(snellUvToPixel(uv, size), size);
+  SnellViewPoint p = snellSurfaceUvZToView(s, centre, x.viewZ);
+  if (!p.valid) {
+    return r;
+  }
+  r.position = p.position;
+  r.uv = centre;
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
+#define SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
+
 SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface s) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
     return snellHitMiss(0);
   }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  SnellScreenPoint w = snellSurfaceViewToUv(s, origin);
   if (!w.valid) {
     return snellHitMiss(0);
   }
@@ -524,7 +600,7 @@ SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D 
   vec3 toB = b.position - origin;
   float d = sqrt(dot(toB, toB));
   vec3 p = origin + (d / sqrt(len2)) * dir;
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
     return snellHitMiss(1);
   }
@@ -542,7 +618,7 @@ SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D 
 #define SNELL_INTERSECT_HIT_ON_SURFACE_GLSL
 
 SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid) {
     return snellHitMiss(fetchesSoFar);
   }
@@ -583,7 +659,7 @@ SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, Snel
   if (h.valid || SNELL_PLANE_HOLD == 0 || !s.closed) {
     return h;
   }
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f) ||
       !SNELL_FINITE(planeUv.x) || !SNELL_FINITE(planeUv.y)) {
     return h;
@@ -667,7 +743,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
     return snellHitMiss(0);
   }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  SnellScreenPoint w = snellSurfaceViewToUv(s, origin);
   if (!w.valid) {
     return snellHitMiss(0);
   }
@@ -681,7 +757,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
       break;
     }
     if (k > 0) {
-      SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+      SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
       if (!sp.valid) {
         break;
       }
@@ -739,7 +815,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   r.normal = vec3(0.0f, 0.0f, 0.0f);
   r.valid = false;
   r.fetches = 0;
-  SnellScreenPoint sq = snellViewToUv(s.clipFromView, q);
+  SnellScreenPoint sq = snellSurfaceViewToUv(s, q);
   if (!sq.valid) {
     return r;
   }
@@ -752,7 +828,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   vec3 toB = b0.position - q;
   float d = sqrt(dot(toB, toB));
   vec3 q2 = q.z < b0.position.z ? q - d * dirN : q + d * dirN;
-  SnellScreenPoint s2 = snellViewToUv(s.clipFromView, q2);
+  SnellScreenPoint s2 = snellSurfaceViewToUv(s, q2);
   vec2 uv2 = s2.valid ? s2.uv : sq.uv;
   ivec2 size0 = SNELL_TEXTURE_SIZE(depthMips, s.lod);
   float span = max(abs(uv2.x - sq.uv.x) * float(size0.x), abs(uv2.y - sq.uv.y) * float(size0.y));
@@ -818,7 +894,7 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
     return snellHitMiss(0);
   }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  SnellScreenPoint w = snellSurfaceViewToUv(s, origin);
   if (!w.valid) {
     return snellHitMiss(0);
   }
@@ -1323,7 +1399,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
     }
     float t = float(i) * dt;
     vec3 p = origin + t * dir;
-    SnellScreenPoint sp = snellViewToUv(surface.clipFromView, p);
+    SnellScreenPoint sp = snellSurfaceViewToUv(surface, p);
     if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
       return snellHitMiss(fetches);
     }
@@ -1346,7 +1422,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
     }
     float mid = 0.5f * (lo + tHit);
     vec3 q = origin + mid * dir;
-    SnellScreenPoint sq = snellViewToUv(surface.clipFromView, q);
+    SnellScreenPoint sq = snellSurfaceViewToUv(surface, q);
     bool crosses = false;
     if (sq.valid && sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f) {
       SnellSurfaceSample y = snellSampleSurface(depthTex, sq.uv, surface);

@@ -1844,6 +1844,12 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
                 silhouette: the plane methods keep their last plane there,
                 SNELL_PLANE_HOLD); false: empty texels are open space (the
                 opaque scene: the environment shows there), set the field
+  perspective   set by snellDepthSurface: true when clipFromView has the shape of a
+                perspective (columns (a,0,0,0) (0,b,0,0) (c,d,e,-1) (0,0,f,0):
+                symmetric, off-centre and jittered frusta). The strategies then
+                project and reconstruct without the products with the zero
+                entries (intersect/surface_projection.glsl, the same results);
+                set it false if you give clipFromView another shape afterwards
 contract (snellSampleSurface):
   - NEAREST: reads the texel containing uv (no filtering: filtering depth
     invents surfaces between foreground and background, Oliveira & Brauwers
@@ -2011,6 +2017,194 @@ SNELL_FN ivec2 snellUvToPixel(vec2 uv, ivec2 size) {
 }
 
 #endif
+/*
+description: the inverse projection for a known view z: the view-space point
+  on the pixel ray of a uv at a given depth, without an inverse matrix (the
+  surface strategies reconstruct every depth texel through it).
+use: SnellViewPoint p = snellUvZToView(clipFromView, uv, viewZ);
+  uv            viewport uv ([0,1]^2, origin bottom-left)
+  viewZ         view-space z (< 0) of the wanted point
+  clipFromView  any projection with clip w = -z (perspective.glsl, glm::perspective*,
+                glFrustum, off-centre frusta); no inverse matrix is needed
+contract:
+  - the point p with p.z == viewZ whose projection has NDC xy =
+    2 uv - 1, from the 2x2 linear system clip.xy = ndc.xy clip.w (Cramer's rule on
+    the matrix columns). valid =
+    false, position (0,0,0), when an input is NaN/Inf, viewZ >= 0 or denormal, the
+    system is singular (|det| below the smallest normal float) or the result
+    overflows.
+source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC).
+*/
+#ifndef SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
+#define SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
+
+/*
+description: reconstruct the view-space position seen at a uv from a depth-buffer
+  value (snellUvDepthToView) or from a linear view distance (snellUvDistanceToView).
+use: SnellViewPoint p = snellUvDepthToView(uv, depthValue, viewFromClip, SNELL_DEPTH_GL);
+     SnellViewPoint p = snellUvDistanceToView(uv, viewDistance, viewFromClip);
+  viewFromClip  inverse of the projection (snellPerspectiveInverse, or your
+                engine's inverse projection matrix)
+  depthValue    the stored depth-buffer value ([0,1], window space), not NDC z
+  viewDistance  -z_view (> 0), e.g. snellLinearizeDepth(...) or a linear depth texture
+contract:
+  - snellUvDepthToView: ndc = (2 uv - 1, snellDepthToNdcZ(depthValue, convention)),
+    h = viewFromClip * vec4(ndc, 1), position = h.xyz / h.w. depthValue is clamped
+    to [0,1]; uv outside [0,1] is allowed (the point is off screen).
+  - snellUvDistanceToView: the point at z = -viewDistance on the ray from the eye
+    through uv (found by unprojecting NDC z = 0.5, a finite point in front of the
+    camera for every convention); position.z == -viewDistance exactly. Requires a
+    perspective projection (eye at the view-space origin).
+  - valid is true exactly when the result is finite and in front of the camera
+    (position.z < 0). It is false, with position (0,0,0), for NaN/Inf inputs, an
+    unknown convention, depth on the far plane of an infinite convention (depth 1
+    INFINITE_GL, depth 0 INFINITE_REVERSED: h.w = 0, the point is at infinity, e.g.
+    sky pixels), a zero/singular matrix (|h.w| below the smallest normal float),
+    viewDistance <= 0 or denormal (at or behind the camera) or a reconstruction at or behind the camera plane.
+source: OpenGL 4.5 core spec sec. 13.6, inverted; Oliveira & Brauwers 2007 sec.
+  3.2.1 (camera-space points from depth maps under perspective projection).
+*/
+#ifndef SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
+#define SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
+
+
+/*
+description: depth-buffer value <-> NDC z for a depth convention (the
+  glDepthRange / viewport depth transform with its default range).
+use: float zNdc = snellDepthToNdcZ(depthValue, SNELL_DEPTH_GL);
+     float depthValue = snellNdcZToDepth(zNdc, SNELL_DEPTH_GL);
+contract:
+  - SNELL_DEPTH_GL and SNELL_DEPTH_INFINITE_GL: z_ndc = 2 d - 1, d = 0.5 z_ndc + 0.5;
+    every other convention (ZERO_ONE, REVERSED, INFINITE_REVERSED, and unknown
+    values) has NDC z in [0,1] and stores it unchanged.
+  - inputs are clamped into their range first (depth [0,1]; NDC z [-1,1] or
+    [0,1]), which is what a depth buffer (or GL_DEPTH_CLAMP) does with them;
+    NaN is treated as the low end of the range. Results are always finite.
+source: OpenGL 4.5 core spec sec. 13.6.1 (z_w = (f - n)/2 z_d + (n + f)/2 with the
+  default glDepthRange(0,1)) and sec. 13.7 (glClipControl GL_ZERO_TO_ONE: z_w = z_d).
+*/
+#ifndef SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
+#define SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
+
+
+
+SNELL_FN float snellDepthToNdcZ(float depthValue, int convention) {
+  float d = isnan(depthValue) ? 0.0f : clamp(depthValue, 0.0f, 1.0f);
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
+    return 2.0f * d - 1.0f;
+  }
+  return d;
+}
+
+SNELL_FN float snellNdcZToDepth(float ndcZ, int convention) {
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
+    float z = isnan(ndcZ) ? -1.0f : clamp(ndcZ, -1.0f, 1.0f);
+    return 0.5f * z + 0.5f;
+  }
+  return isnan(ndcZ) ? 0.0f : clamp(ndcZ, 0.0f, 1.0f);
+}
+
+#endif
+
+struct SnellViewPoint {
+  vec3 position;
+  bool valid;
+};
+
+SNELL_FN SnellViewPoint snellUvDepthToView(vec2 uv, float depthValue, mat4 viewFromClip, int convention) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || isnan(depthValue) || convention < 0 ||
+      convention >= SNELL_DEPTH_CONVENTION_COUNT) {
+    return r;
+  }
+  float zNdc = snellDepthToNdcZ(depthValue, convention);
+  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, zNdc, 1.0f));
+  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 p = vec3(h.x, h.y, h.z) / h.w;
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z) || !(p.z < 0.0f)) {
+    return r;
+  }
+  r.position = p;
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN SnellViewPoint snellUvDistanceToView(vec2 uv, float viewDistance, mat4 viewFromClip) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewDistance) ||
+      !(viewDistance >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, 0.5f, 1.0f));
+  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 q = vec3(h.x, h.y, h.z) / h.w;
+  if (!SNELL_FINITE(q.x) || !SNELL_FINITE(q.y) || !SNELL_FINITE(q.z) || !(q.z < 0.0f)) {
+    return r;
+  }
+  float s = viewDistance / -q.z;
+  vec3 p = vec3(q.x * s, q.y * s, -viewDistance);
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y)) {
+    return r;
+  }
+  r.position = p;
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+/* Column i of a matrix (the matrix's i-th basis image) without a matrix product:
+   GLSL and GLM index columns, HLSL rows. */
+#if defined(SNELL_LANG_HLSL)
+#  define SNELL_CAMERA_MAT_COLUMN(m, i) (transpose(m)[i])
+#else
+#  define SNELL_CAMERA_MAT_COLUMN(m, i) ((m)[i])
+#endif
+
+SNELL_FN SnellViewPoint snellUvZToView(mat4 clipFromView, vec2 uv, float viewZ) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
+      !(viewZ <= -SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
+  float nx = 2.0f * uv.x - 1.0f;
+  float ny = 2.0f * uv.y - 1.0f;
+  // x a00 + y a01 = b0,  x a10 + y a11 = b1
+  float a00 = c0.x - nx * c0.w;
+  float a01 = c1.x - nx * c1.w;
+  float a10 = c0.y - ny * c0.w;
+  float a11 = c1.y - ny * c1.w;
+  float b0 = -(viewZ * (c2.x - nx * c2.w) + (c3.x - nx * c3.w));
+  float b1 = -(viewZ * (c2.y - ny * c2.w) + (c3.y - ny * c3.w));
+  float det = a00 * a11 - a01 * a10;
+  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  float x = (b0 * a11 - a01 * b1) / det;
+  float y = (a00 * b1 - b0 * a10) / det;
+  if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
+    return r;
+  }
+  r.position = vec3(x, y, viewZ);
+  r.valid = true;
+  return r;
+}
+
+#endif
 
 #define SNELL_DEPTH_FILTER_NEAREST 0
 #define SNELL_DEPTH_FILTER_BILINEAR 1
@@ -2024,6 +2218,7 @@ struct SnellDepthSurface {
   int lod;
   int depthFilter;
   bool closed;
+  bool perspective;
 };
 
 struct SnellSurfaceSample {
@@ -2043,6 +2238,12 @@ SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, flo
   s.lod = 0;
   s.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
   s.closed = true;
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
+  s.perspective = c0.y == 0.0f && c0.z == 0.0f && c0.w == 0.0f && c1.x == 0.0f && c1.z == 0.0f &&
+                  c1.w == 0.0f && c2.w == -1.0f && c3.x == 0.0f && c3.y == 0.0f && c3.w == 0.0f;
   return s;
 }
 
@@ -2343,6 +2544,107 @@ SNELL_FN SnellScreenPoint snellViewToUv(mat4 clipFromView, vec3 pView) {
 
 
 /*
+description: a depth surface's projection and reconstruction, with the work a
+  perspective projection does not need left out: the strategies project their
+  points and rebuild their texels through these two.
+use: SnellScreenPoint sp = snellSurfaceViewToUv(surface, pView);
+     SnellViewPoint p = snellSurfaceUvZToView(surface, uv, viewZ);
+contract:
+  - surface.perspective false: exactly snellViewToUv(surface.clipFromView, pView)
+    and snellUvZToView(surface.clipFromView, uv, viewZ).
+  - surface.perspective true (snellDepthSurface sets it when clipFromView's
+    columns are (a,0,0,0) (0,b,0,0) (c,d,e,-1) (0,0,f,0), the shape of every
+    perspective, off-centre and jittered frustum included): the same
+    operations without the products with those zero entries, which for a
+    finite product add +-0 and for an infinite one make NaN. The results are
+    the general path's bit for bit, valid flags included, except for the sign
+    of a coordinate that is exactly zero (uv never is: it is 0.5 ndc + 0.5) and
+    of an exactly zero ndcZ; with +0 zero entries, as glm::perspective and
+    snellPerspective write them, the reconstruction is bit-exact.
+  - the flag is the surface's promise: set it false after giving clipFromView
+    another shape.
+source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC); the equations in
+  camera/view_to_uv.glsl and camera/uv_z_to_view.glsl.
+*/
+#ifndef SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
+#define SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
+
+
+
+
+
+SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SnellDepthSurface s, vec3 pView) {
+  if (!s.perspective) {
+    return snellViewToUv(s.clipFromView, pView);
+  }
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 3);
+  SnellScreenPoint r;
+  r.uv = vec2(0.0f, 0.0f);
+  r.ndcZ = 0.0f;
+  r.valid = false;
+  // A non-finite coordinate makes its own clip term non-finite here, where the
+  // general product spreads it as NaN through a zero entry: invalid either way.
+  float cx = c0.x * pView.x + c2.x * pView.z;
+  float cy = c1.y * pView.y + c2.y * pView.z;
+  float cz = c2.z * pView.z + c3.z;
+  float cw = -pView.z;
+  if (!SNELL_FINITE(cx) || !SNELL_FINITE(cy) || !SNELL_FINITE(cz) || !SNELL_FINITE(cw) ||
+      !(cw >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 q = vec3(cx, cy, cz) / cw;
+  vec3 ndc = clamp(q, vec3(-SNELL_FLT_MAX, -SNELL_FLT_MAX, -SNELL_FLT_MAX),
+                   vec3(SNELL_FLT_MAX, SNELL_FLT_MAX, SNELL_FLT_MAX));
+  r.uv = vec2(ndc.x, ndc.y) * 0.5f + 0.5f;
+  r.ndcZ = ndc.z;
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN SnellViewPoint snellSurfaceUvZToView(SnellDepthSurface s, vec2 uv, float viewZ) {
+  if (!s.perspective) {
+    return snellUvZToView(s.clipFromView, uv, viewZ);
+  }
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
+      !(viewZ <= -SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 2);
+  float nx = 2.0f * uv.x - 1.0f;
+  float ny = 2.0f * uv.y - 1.0f;
+  // The general system's a01 and a10 are 0 - n * 0 = +0 for a finite n, and
+  // NaN for an infinite one (2 uv - 1 overflows), which makes it singular.
+  if (!SNELL_FINITE(nx) || !SNELL_FINITE(ny)) {
+    return r;
+  }
+  // c2.x - n c2.w with c2.w = -1 is c2.x + n; c3.x - n c3.w is +0.
+  float b0 = -(viewZ * (c2.x + nx) + 0.0f);
+  float b1 = -(viewZ * (c2.y + ny) + 0.0f);
+  float det = c0.x * c1.y;
+  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  // The zero coefficients stay as products: 0 * b is NaN for an infinite b.
+  float x = (b0 * c1.y - 0.0f * b1) / det;
+  float y = (c0.x * b1 - b0 * 0.0f) / det;
+  if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
+    return r;
+  }
+  r.position = vec3(x, y, viewZ);
+  r.valid = true;
+  return r;
+}
+
+#endif
+/*
 description: the view-space point a depth texture stores at a uv: the texel
   containing uv, reconstructed at that texel's CENTRE (the point the rasterizer
   actually sampled, by camera/uv_z_to_view.glsl). The plane strategies build
@@ -2367,195 +2669,9 @@ source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC), sec. 14.5 (fragment
 
 
 
-/*
-description: reconstruct the view-space position seen at a uv from a depth-buffer
-  value (snellUvDepthToView) or from a linear view distance (snellUvDistanceToView).
-use: SnellViewPoint p = snellUvDepthToView(uv, depthValue, viewFromClip, SNELL_DEPTH_GL);
-     SnellViewPoint p = snellUvDistanceToView(uv, viewDistance, viewFromClip);
-  viewFromClip  inverse of the projection (snellPerspectiveInverse, or your
-                engine's inverse projection matrix)
-  depthValue    the stored depth-buffer value ([0,1], window space), not NDC z
-  viewDistance  -z_view (> 0), e.g. snellLinearizeDepth(...) or a linear depth texture
-contract:
-  - snellUvDepthToView: ndc = (2 uv - 1, snellDepthToNdcZ(depthValue, convention)),
-    h = viewFromClip * vec4(ndc, 1), position = h.xyz / h.w. depthValue is clamped
-    to [0,1]; uv outside [0,1] is allowed (the point is off screen).
-  - snellUvDistanceToView: the point at z = -viewDistance on the ray from the eye
-    through uv (found by unprojecting NDC z = 0.5, a finite point in front of the
-    camera for every convention); position.z == -viewDistance exactly. Requires a
-    perspective projection (eye at the view-space origin).
-  - valid is true exactly when the result is finite and in front of the camera
-    (position.z < 0). It is false, with position (0,0,0), for NaN/Inf inputs, an
-    unknown convention, depth on the far plane of an infinite convention (depth 1
-    INFINITE_GL, depth 0 INFINITE_REVERSED: h.w = 0, the point is at infinity, e.g.
-    sky pixels), a zero/singular matrix (|h.w| below the smallest normal float),
-    viewDistance <= 0 or denormal (at or behind the camera) or a reconstruction at or behind the camera plane.
-source: OpenGL 4.5 core spec sec. 13.6, inverted; Oliveira & Brauwers 2007 sec.
-  3.2.1 (camera-space points from depth maps under perspective projection).
-*/
-#ifndef SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
-#define SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
-
-
-/*
-description: depth-buffer value <-> NDC z for a depth convention (the
-  glDepthRange / viewport depth transform with its default range).
-use: float zNdc = snellDepthToNdcZ(depthValue, SNELL_DEPTH_GL);
-     float depthValue = snellNdcZToDepth(zNdc, SNELL_DEPTH_GL);
-contract:
-  - SNELL_DEPTH_GL and SNELL_DEPTH_INFINITE_GL: z_ndc = 2 d - 1, d = 0.5 z_ndc + 0.5;
-    every other convention (ZERO_ONE, REVERSED, INFINITE_REVERSED, and unknown
-    values) has NDC z in [0,1] and stores it unchanged.
-  - inputs are clamped into their range first (depth [0,1]; NDC z [-1,1] or
-    [0,1]), which is what a depth buffer (or GL_DEPTH_CLAMP) does with them;
-    NaN is treated as the low end of the range. Results are always finite.
-source: OpenGL 4.5 core spec sec. 13.6.1 (z_w = (f - n)/2 z_d + (n + f)/2 with the
-  default glDepthRange(0,1)) and sec. 13.7 (glClipControl GL_ZERO_TO_ONE: z_w = z_d).
-*/
-#ifndef SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
-#define SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
 
 
 
-SNELL_FN float snellDepthToNdcZ(float depthValue, int convention) {
-  float d = isnan(depthValue) ? 0.0f : clamp(depthValue, 0.0f, 1.0f);
-  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
-    return 2.0f * d - 1.0f;
-  }
-  return d;
-}
-
-SNELL_FN float snellNdcZToDepth(float ndcZ, int convention) {
-  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
-    float z = isnan(ndcZ) ? -1.0f : clamp(ndcZ, -1.0f, 1.0f);
-    return 0.5f * z + 0.5f;
-  }
-  return isnan(ndcZ) ? 0.0f : clamp(ndcZ, 0.0f, 1.0f);
-}
-
-#endif
-
-struct SnellViewPoint {
-  vec3 position;
-  bool valid;
-};
-
-SNELL_FN SnellViewPoint snellUvDepthToView(vec2 uv, float depthValue, mat4 viewFromClip, int convention) {
-  SnellViewPoint r;
-  r.position = vec3(0.0f, 0.0f, 0.0f);
-  r.valid = false;
-  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || isnan(depthValue) || convention < 0 ||
-      convention >= SNELL_DEPTH_CONVENTION_COUNT) {
-    return r;
-  }
-  float zNdc = snellDepthToNdcZ(depthValue, convention);
-  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, zNdc, 1.0f));
-  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
-    return r;
-  }
-  vec3 p = vec3(h.x, h.y, h.z) / h.w;
-  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z) || !(p.z < 0.0f)) {
-    return r;
-  }
-  r.position = p;
-  r.valid = true;
-  return r;
-}
-
-SNELL_FN SnellViewPoint snellUvDistanceToView(vec2 uv, float viewDistance, mat4 viewFromClip) {
-  SnellViewPoint r;
-  r.position = vec3(0.0f, 0.0f, 0.0f);
-  r.valid = false;
-  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewDistance) ||
-      !(viewDistance >= SNELL_FLT_MIN)) {
-    return r;
-  }
-  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, 0.5f, 1.0f));
-  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
-    return r;
-  }
-  vec3 q = vec3(h.x, h.y, h.z) / h.w;
-  if (!SNELL_FINITE(q.x) || !SNELL_FINITE(q.y) || !SNELL_FINITE(q.z) || !(q.z < 0.0f)) {
-    return r;
-  }
-  float s = viewDistance / -q.z;
-  vec3 p = vec3(q.x * s, q.y * s, -viewDistance);
-  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y)) {
-    return r;
-  }
-  r.position = p;
-  r.valid = true;
-  return r;
-}
-
-#endif
-/*
-description: the inverse projection for a known view z: the view-space point
-  on the pixel ray of a uv at a given depth, without an inverse matrix (the
-  surface strategies reconstruct every depth texel through it).
-use: SnellViewPoint p = snellUvZToView(clipFromView, uv, viewZ);
-  uv            viewport uv ([0,1]^2, origin bottom-left)
-  viewZ         view-space z (< 0) of the wanted point
-  clipFromView  any projection with clip w = -z (perspective.glsl, glm::perspective*,
-                glFrustum, off-centre frusta); no inverse matrix is needed
-contract:
-  - the point p with p.z == viewZ whose projection has NDC xy =
-    2 uv - 1, from the 2x2 linear system clip.xy = ndc.xy clip.w (Cramer's rule on
-    the matrix columns). valid =
-    false, position (0,0,0), when an input is NaN/Inf, viewZ >= 0 or denormal, the
-    system is singular (|det| below the smallest normal float) or the result
-    overflows.
-source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC).
-*/
-#ifndef SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
-#define SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
-
-
-
-/* Column i of a matrix (the matrix's i-th basis image) without a matrix product:
-   GLSL and GLM index columns, HLSL rows. */
-#if defined(SNELL_LANG_HLSL)
-#  define SNELL_CAMERA_MAT_COLUMN(m, i) (transpose(m)[i])
-#else
-#  define SNELL_CAMERA_MAT_COLUMN(m, i) ((m)[i])
-#endif
-
-SNELL_FN SnellViewPoint snellUvZToView(mat4 clipFromView, vec2 uv, float viewZ) {
-  SnellViewPoint r;
-  r.position = vec3(0.0f, 0.0f, 0.0f);
-  r.valid = false;
-  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
-      !(viewZ <= -SNELL_FLT_MIN)) {
-    return r;
-  }
-  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
-  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
-  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
-  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
-  float nx = 2.0f * uv.x - 1.0f;
-  float ny = 2.0f * uv.y - 1.0f;
-  // x a00 + y a01 = b0,  x a10 + y a11 = b1
-  float a00 = c0.x - nx * c0.w;
-  float a01 = c1.x - nx * c1.w;
-  float a10 = c0.y - ny * c0.w;
-  float a11 = c1.y - ny * c1.w;
-  float b0 = -(viewZ * (c2.x - nx * c2.w) + (c3.x - nx * c3.w));
-  float b1 = -(viewZ * (c2.y - ny * c2.w) + (c3.y - ny * c3.w));
-  float det = a00 * a11 - a01 * a10;
-  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
-    return r;
-  }
-  float x = (b0 * a11 - a01 * b1) / det;
-  float y = (a00 * b1 - b0 * a10) / det;
-  if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
-    return r;
-  }
-  r.position = vec3(x, y, viewZ);
-  r.valid = true;
-  return r;
-}
-
-#endif
 
 
 struct SnellSurfacePoint {
@@ -2575,7 +2691,7 @@ SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, Snel
   }
   ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
   vec2 centre = x.interpolated ? uv : snellPixelToUv(snellUvToPixel(uv, size), size);
-  SnellViewPoint p = snellUvZToView(s.clipFromView, centre, x.viewZ);
+  SnellViewPoint p = snellSurfaceUvZToView(s, centre, x.viewZ);
   if (!p.valid) {
     return r;
   }
@@ -2593,7 +2709,7 @@ SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D 
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
     return snellHitMiss(0);
   }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  SnellScreenPoint w = snellSurfaceViewToUv(s, origin);
   if (!w.valid) {
     return snellHitMiss(0);
   }
@@ -2604,7 +2720,7 @@ SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D 
   vec3 toB = b.position - origin;
   float d = sqrt(dot(toB, toB));
   vec3 p = origin + (d / sqrt(len2)) * dir;
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
     return snellHitMiss(1);
   }
@@ -2646,6 +2762,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 
 
 
+
 /*
 description: a view-space point accepted as a hit where a depth buffer has a
   surface at its projection: the last lookup of the plane methods (Mayer &
@@ -2671,8 +2788,9 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 
 
 
+
 SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid) {
     return snellHitMiss(fetchesSoFar);
   }
@@ -2731,7 +2849,7 @@ SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, Snel
   if (h.valid || SNELL_PLANE_HOLD == 0 || !s.closed) {
     return h;
   }
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f) ||
       !SNELL_FINITE(planeUv.x) || !SNELL_FINITE(planeUv.y)) {
     return h;
@@ -2805,6 +2923,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 
 
 
+
 SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
                                             SnellDepthSurface s, float normalLod, int iterations) {
   float len2 = dot(dir, dir);
@@ -2812,7 +2931,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
     return snellHitMiss(0);
   }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  SnellScreenPoint w = snellSurfaceViewToUv(s, origin);
   if (!w.valid) {
     return snellHitMiss(0);
   }
@@ -2826,7 +2945,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
       break;
     }
     if (k > 0) {
-      SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+      SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
       if (!sp.valid) {
         break;  // keep P_(k-1) on plane k-1
       }
@@ -2934,6 +3053,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 
 
 
+
 #ifndef SNELL_PLANE_DEPTH_MAX_SPAN_LOD
 #  define SNELL_PLANE_DEPTH_MAX_SPAN_LOD 6
 #endif
@@ -2955,7 +3075,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   r.normal = vec3(0.0f, 0.0f, 0.0f);
   r.valid = false;
   r.fetches = 0;
-  SnellScreenPoint sq = snellViewToUv(s.clipFromView, q);
+  SnellScreenPoint sq = snellSurfaceViewToUv(s, q);
   if (!sq.valid) {
     return r;
   }
@@ -2968,7 +3088,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   vec3 toB = b0.position - q;
   float d = sqrt(dot(toB, toB));
   vec3 q2 = q.z < b0.position.z ? q - d * dirN : q + d * dirN;
-  SnellScreenPoint s2 = snellViewToUv(s.clipFromView, q2);
+  SnellScreenPoint s2 = snellSurfaceViewToUv(s, q2);
   vec2 uv2 = s2.valid ? s2.uv : sq.uv;
   ivec2 size0 = SNELL_TEXTURE_SIZE(depthMips, s.lod);
   float span = max(abs(uv2.x - sq.uv.x) * float(size0.x), abs(uv2.y - sq.uv.y) * float(size0.y));
@@ -3034,7 +3154,7 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
     return snellHitMiss(0);
   }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  SnellScreenPoint w = snellSurfaceViewToUv(s, origin);
   if (!w.valid) {
     return snellHitMiss(0);
   }
@@ -3648,6 +3768,7 @@ source: the classic screen-space ray march (e.g. Sousa, "Crysis 2", 2011;
 
 
 
+
 #ifndef SNELL_LINEAR_MARCH_STEPS
 #  define SNELL_LINEAR_MARCH_STEPS 32
 #endif
@@ -3697,7 +3818,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
     }
     float t = float(i) * dt;
     vec3 p = origin + t * dir;
-    SnellScreenPoint sp = snellViewToUv(surface.clipFromView, p);
+    SnellScreenPoint sp = snellSurfaceViewToUv(surface, p);
     if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
       return snellHitMiss(fetches);
     }
@@ -3720,7 +3841,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
     }
     float mid = 0.5f * (lo + tHit);
     vec3 q = origin + mid * dir;
-    SnellScreenPoint sq = snellViewToUv(surface.clipFromView, q);
+    SnellScreenPoint sq = snellSurfaceViewToUv(surface, q);
     bool crosses = false;
     if (sq.valid && sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f) {
       SnellSurfaceSample y = snellSampleSurface(depthTex, sq.uv, surface);

@@ -3,6 +3,7 @@
 #define SNELL_INTERSECT_GLSL
 #include "intersect/hit.glsl"
 #include "intersect/depth_surface.glsl"
+#include "intersect/surface_projection.glsl"
 #include "intersect/surface_point.glsl"
 #include "intersect/single_sample.glsl"
 #include "intersect/hit_on_surface.glsl"

@@ -215,6 +215,53 @@ std::vector<ParityIO> uvZInputs() {
   return v;
 }
 
+// The surface's projection pair: perspective, off-centre and sheared (general)
+// matrices, the flag cleared for a quarter, hostile coordinates and entries.
+ParityIO surfaceShapeInput(InputGen& g) {
+  const float b = 1.0f / std::tan(0.5f * g.uniform(0.3f, 2.5f));
+  ParityIO in{};
+  in.v[1] = glm::vec4(0.0f);
+  if (g.chance(0.3f)) in.v[1] = glm::vec4(g.uniform(-0.3f, 0.3f), g.uniform(-0.3f, 0.3f), 0.0f, 0.0f);
+  if (g.chance(0.2f)) in.v[1].z = g.uniform(-0.3f, 0.3f);
+  in.v[2] = glm::vec4(b / g.uniform(0.5f, 2.0f), b, -1.0f - g.uniform(0.0f, 0.1f), -g.uniform(0.01f, 2.0f));
+  if (g.chance(0.03f)) in.v[2].x = 0.0f;  // singular
+  if (g.chance(0.03f)) in.v[2][g.integer(0, 3)] = g.hostile();
+  in.v[0].w = g.chance(0.25f) ? 1.0f : 0.0f;
+  return in;
+}
+std::vector<ParityIO> surfaceViewToUvInputs() {
+  InputGen g(613);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    ParityIO in = surfaceShapeInput(g);
+    glm::vec3 p(g.uniform(-3.0f, 3.0f), g.uniform(-3.0f, 3.0f), -std::pow(10.0f, g.uniform(-2.0f, 3.0f)));
+    const float k = g.uniform(0.0f, 1.0f);
+    if (k < 0.03f) p.z = g.uniform(0.0f, 5.0f);  // behind
+    else if (k < 0.05f) p.z = 0.0f;
+    else if (k < 0.10f) p[g.integer(0, 2)] = g.hostile();
+    else if (k < 0.12f) p.x = 0.0f;
+    in.v[0] = glm::vec4(p, in.v[0].w);
+    v.push_back(in);
+  }
+  return v;
+}
+std::vector<ParityIO> surfaceUvZInputs() {
+  InputGen g(614);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    ParityIO in = surfaceShapeInput(g);
+    glm::vec3 a(g.uniform(-0.2f, 1.2f), g.uniform(-0.2f, 1.2f), -std::pow(10.0f, g.uniform(-2.0f, 3.0f)));
+    const float k = g.uniform(0.0f, 1.0f);
+    if (k < 0.03f) a.z = g.uniform(0.0f, 5.0f);  // behind
+    else if (k < 0.05f) a.z = 0.0f;
+    else if (k < 0.10f) a[g.integer(0, 2)] = g.hostile();
+    else if (k < 0.12f) a.x = 0.5f;  // the centre column
+    in.v[0] = glm::vec4(a, in.v[0].w);
+    v.push_back(in);
+  }
+  return v;
+}
+
 std::vector<ParityIO> hitOnSurfaceInputs() {
   InputGen g(604);
   std::vector<ParityIO> v;
@@ -290,6 +337,10 @@ SNELL_PARITY_CASE({"snellSampleSurface", "plane.glsl", "caseSnellSampleSurface",
 // Cramer's rule: a handful of products and two divisions.
 SNELL_PARITY_CASE({"snellUvZToView", "plane.glsl", "caseSnellUvZToView", uvZInputs,
                    [](const ParityIO& in) { return run(caseSnellUvZToView, in); }, 0x0008, 4, {1e-5f, 1e-5f}});
+SNELL_PARITY_CASE({"snellSurfaceViewToUv", "plane.glsl", "caseSnellSurfaceViewToUv", surfaceViewToUvInputs,
+                   [](const ParityIO& in) { return run(caseSnellSurfaceViewToUv, in); }, 0x0018, 5, {1e-5f, 1e-5f}});
+SNELL_PARITY_CASE({"snellSurfaceUvZToView", "plane.glsl", "caseSnellSurfaceUvZToView", surfaceUvZInputs,
+                   [](const ParityIO& in) { return run(caseSnellSurfaceUvZToView, in); }, 0x0018, 5, {1e-5f, 1e-5f}});
 SNELL_PARITY_CASE({"snellSurfacePoint", "plane.glsl", "caseSnellSurfacePoint", [] { return uvInputs(608, false); },
                    [](const ParityIO& in) { return run(caseSnellSurfacePoint, in); }, 0x0038, 6, {1e-5f, 1e-5f},
                    textures(), buildTextures});

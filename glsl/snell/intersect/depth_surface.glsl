@@ -26,6 +26,12 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
                 silhouette: the plane methods keep their last plane there,
                 SNELL_PLANE_HOLD); false: empty texels are open space (the
                 opaque scene: the environment shows there), set the field
+  perspective   set by snellDepthSurface: true when clipFromView has the shape of a
+                perspective (columns (a,0,0,0) (0,b,0,0) (c,d,e,-1) (0,0,f,0):
+                symmetric, off-centre and jittered frusta). The strategies then
+                project and reconstruct without the products with the zero
+                entries (intersect/surface_projection.glsl, the same results);
+                set it false if you give clipFromView another shape afterwards
 contract (snellSampleSurface):
   - NEAREST: reads the texel containing uv (no filtering: filtering depth
     invents surfaces between foreground and background, Oliveira & Brauwers
@@ -47,6 +53,7 @@ source: Oliveira & Brauwers 2007 sec. 3.1 and Algorithm 2 ("invalid texels have
 #include "../prelude.glsl"
 #include "../camera/linearize_depth.glsl"
 #include "../camera/pixel_to_uv.glsl"
+#include "../camera/uv_z_to_view.glsl"
 
 #define SNELL_DEPTH_FILTER_NEAREST 0
 #define SNELL_DEPTH_FILTER_BILINEAR 1
@@ -60,6 +67,7 @@ struct SnellDepthSurface {
   int lod;
   int depthFilter;
   bool closed;
+  bool perspective;
 };
 
 struct SnellSurfaceSample {
@@ -79,6 +87,12 @@ SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, flo
   s.lod = 0;
   s.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
   s.closed = true;
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
+  s.perspective = c0.y == 0.0f && c0.z == 0.0f && c0.w == 0.0f && c1.x == 0.0f && c1.z == 0.0f &&
+                  c1.w == 0.0f && c2.w == -1.0f && c3.x == 0.0f && c3.y == 0.0f && c3.w == 0.0f;
   return s;
 }
 

@@ -22,9 +22,10 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 #include "../camera/view_to_uv.glsl"
 #include "hit.glsl"
 #include "depth_surface.glsl"
+#include "surface_projection.glsl"
 
 SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid) {
     return snellHitMiss(fetchesSoFar);
   }

@@ -49,6 +49,7 @@ source: the classic screen-space ray march (e.g. Sousa, "Crysis 2", 2011;
 #include "../camera/view_to_uv.glsl"
 #include "hit.glsl"
 #include "depth_surface.glsl"
+#include "surface_projection.glsl"
 
 #ifndef SNELL_LINEAR_MARCH_STEPS
 #  define SNELL_LINEAR_MARCH_STEPS 32
@@ -99,7 +100,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
     }
     float t = float(i) * dt;
     vec3 p = origin + t * dir;
-    SnellScreenPoint sp = snellViewToUv(surface.clipFromView, p);
+    SnellScreenPoint sp = snellSurfaceViewToUv(surface, p);
     if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
       return snellHitMiss(fetches);
     }
@@ -122,7 +123,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
     }
     float mid = 0.5f * (lo + tHit);
     vec3 q = origin + mid * dir;
-    SnellScreenPoint sq = snellViewToUv(surface.clipFromView, q);
+    SnellScreenPoint sq = snellSurfaceViewToUv(surface, q);
     bool crosses = false;
     if (sq.valid && sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f) {
       SnellSurfaceSample y = snellSampleSurface(depthTex, sq.uv, surface);

@@ -68,6 +68,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 #include "../optics/ray_plane.glsl"
 #include "hit.glsl"
 #include "depth_surface.glsl"
+#include "surface_projection.glsl"
 #include "surface_point.glsl"
 #include "plane_refine.glsl"
 
@@ -92,7 +93,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   r.normal = vec3(0.0f, 0.0f, 0.0f);
   r.valid = false;
   r.fetches = 0;
-  SnellScreenPoint sq = snellViewToUv(s.clipFromView, q);
+  SnellScreenPoint sq = snellSurfaceViewToUv(s, q);
   if (!sq.valid) {
     return r;
   }
@@ -105,7 +106,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   vec3 toB = b0.position - q;
   float d = sqrt(dot(toB, toB));
   vec3 q2 = q.z < b0.position.z ? q - d * dirN : q + d * dirN;
-  SnellScreenPoint s2 = snellViewToUv(s.clipFromView, q2);
+  SnellScreenPoint s2 = snellSurfaceViewToUv(s, q2);
   vec2 uv2 = s2.valid ? s2.uv : sq.uv;
   ivec2 size0 = SNELL_TEXTURE_SIZE(depthMips, s.lod);
   float span = max(abs(uv2.x - sq.uv.x) * float(size0.x), abs(uv2.y - sq.uv.y) * float(size0.y));
@@ -171,7 +172,7 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
     return snellHitMiss(0);
   }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  SnellScreenPoint w = snellSurfaceViewToUv(s, origin);
   if (!w.valid) {
     return snellHitMiss(0);
   }

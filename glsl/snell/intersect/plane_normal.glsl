@@ -57,6 +57,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 #include "../optics/ray_plane.glsl"
 #include "hit.glsl"
 #include "depth_surface.glsl"
+#include "surface_projection.glsl"
 #include "surface_point.glsl"
 #include "plane_refine.glsl"
 
@@ -67,7 +68,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
     return snellHitMiss(0);
   }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  SnellScreenPoint w = snellSurfaceViewToUv(s, origin);
   if (!w.valid) {
     return snellHitMiss(0);
   }
@@ -81,7 +82,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
       break;
     }
     if (k > 0) {
-      SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+      SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
       if (!sp.valid) {
         break;  // keep P_(k-1) on plane k-1
       }

@@ -27,6 +27,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 #include "../camera/view_to_uv.glsl"
 #include "hit.glsl"
 #include "depth_surface.glsl"
+#include "surface_projection.glsl"
 #include "hit_on_surface.glsl"
 
 #ifndef SNELL_PLANE_ITERATIONS
@@ -70,7 +71,7 @@ SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, Snel
   if (h.valid || SNELL_PLANE_HOLD == 0 || !s.closed) {
     return h;
   }
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f) ||
       !SNELL_FINITE(planeUv.x) || !SNELL_FINITE(planeUv.y)) {
     return h;

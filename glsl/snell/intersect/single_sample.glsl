@@ -37,6 +37,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation"
 #include "../camera/view_to_uv.glsl"
 #include "hit.glsl"
 #include "depth_surface.glsl"
+#include "surface_projection.glsl"
 #include "surface_point.glsl"
 
 SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface s) {
@@ -45,7 +46,7 @@ SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D 
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
     return snellHitMiss(0);
   }
-  SnellScreenPoint w = snellViewToUv(s.clipFromView, origin);
+  SnellScreenPoint w = snellSurfaceViewToUv(s, origin);
   if (!w.valid) {
     return snellHitMiss(0);
   }
@@ -56,7 +57,7 @@ SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D 
   vec3 toB = b.position - origin;
   float d = sqrt(dot(toB, toB));
   vec3 p = origin + (d / sqrt(len2)) * dir;
-  SnellScreenPoint sp = snellViewToUv(s.clipFromView, p);
+  SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
     return snellHitMiss(1);
   }

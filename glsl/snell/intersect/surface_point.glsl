@@ -26,6 +26,7 @@ source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC), sec. 14.5 (fragment
 #include "../camera/uv_depth_to_view.glsl"
 #include "../camera/uv_z_to_view.glsl"
 #include "depth_surface.glsl"
+#include "surface_projection.glsl"
 
 struct SnellSurfacePoint {
   vec3 position;  // view space, on the texel centre's pixel ray
@@ -44,7 +45,7 @@ SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, Snel
   }
   ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
   vec2 centre = x.interpolated ? uv : snellPixelToUv(snellUvToPixel(uv, size), size);
-  SnellViewPoint p = snellUvZToView(s.clipFromView, centre, x.viewZ);
+  SnellViewPoint p = snellSurfaceUvZToView(s, centre, x.viewZ);
   if (!p.valid) {
     return r;
   }

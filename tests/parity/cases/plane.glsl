@@ -106,6 +106,38 @@ SNELL_FN SnellParityOut caseSnellUvZToView(vec4 a, vec4 b, vec4 c, vec4 d) {
   return planeParityOut(vec4(p.position.x, p.position.y, p.position.z, planeParityFlag(p.valid)), vec4(0.0f));
 }
 
+/* The surface's own projection (surface_projection.glsl): b = (m20, m21) off-centre
+   terms and m10, a shear that makes the matrix general; a.w > 0.5 clears the
+   perspective flag. Out b.x = the flag snellDepthSurface set. */
+SNELL_FN SnellDepthSurface planeParityShapedSurface(vec4 b, vec4 c) {
+  mat4 m = SNELL_CAMERA_MAT4_COLUMNS(vec4(c.x, 0.0f, 0.0f, 0.0f), vec4(b.z, c.y, 0.0f, 0.0f),
+                                     vec4(b.x, b.y, c.z, -1.0f), vec4(0.0f, 0.0f, c.w, 0.0f));
+  return snellDepthSurface(m, 0.5f, 40.0f, SNELL_DEPTH_GL, 0.0f);
+}
+
+/* a = (pView, clear flag); out a = (uv, ndcZ, valid), b.x = flag */
+SNELL_FN SnellParityOut caseSnellSurfaceViewToUv(vec4 a, vec4 b, vec4 c, vec4 d) {
+  SnellDepthSurface s = planeParityShapedSurface(b, c);
+  float flag = planeParityFlag(s.perspective);
+  if (a.w > 0.5f) {
+    s.perspective = false;
+  }
+  SnellScreenPoint sp = snellSurfaceViewToUv(s, vec3(a.x, a.y, a.z));
+  return planeParityOut(vec4(sp.uv.x, sp.uv.y, sp.ndcZ, planeParityFlag(sp.valid)), vec4(flag, 0.0f, 0.0f, 0.0f));
+}
+
+/* a = (uv, viewZ, clear flag); out a = (position, valid), b.x = flag */
+SNELL_FN SnellParityOut caseSnellSurfaceUvZToView(vec4 a, vec4 b, vec4 c, vec4 d) {
+  SnellDepthSurface s = planeParityShapedSurface(b, c);
+  float flag = planeParityFlag(s.perspective);
+  if (a.w > 0.5f) {
+    s.perspective = false;
+  }
+  SnellViewPoint p = snellSurfaceUvZToView(s, vec2(a.x, a.y), a.z);
+  return planeParityOut(vec4(p.position.x, p.position.y, p.position.z, planeParityFlag(p.valid)),
+                        vec4(flag, 0.0f, 0.0f, 0.0f));
+}
+
 /* a = (uv, -, scene); out a = (position, valid), b = (uv, 0, 0) */
 SNELL_FN SnellParityOut caseSnellSurfacePoint(vec4 a, vec4 b, vec4 c, vec4 d) {
   SnellDepthSurface s = planeParitySurface(a.w, c);

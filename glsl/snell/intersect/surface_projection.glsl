@@ -1,0 +1,101 @@
+/*
+description: a depth surface's projection and reconstruction, with the work a
+  perspective projection does not need left out: the strategies project their
+  points and rebuild their texels through these two.
+use: SnellScreenPoint sp = snellSurfaceViewToUv(surface, pView);
+     SnellViewPoint p = snellSurfaceUvZToView(surface, uv, viewZ);
+contract:
+  - surface.perspective false: exactly snellViewToUv(surface.clipFromView, pView)
+    and snellUvZToView(surface.clipFromView, uv, viewZ).
+  - surface.perspective true (snellDepthSurface sets it when clipFromView's
+    columns are (a,0,0,0) (0,b,0,0) (c,d,e,-1) (0,0,f,0), the shape of every
+    perspective, off-centre and jittered frustum included): the same
+    operations without the products with those zero entries, which for a
+    finite product add +-0 and for an infinite one make NaN. The results are
+    the general path's bit for bit, valid flags included, except for the sign
+    of a coordinate that is exactly zero (uv never is: it is 0.5 ndc + 0.5) and
+    of an exactly zero ndcZ; with +0 zero entries, as glm::perspective and
+    snellPerspective write them, the reconstruction is bit-exact.
+  - the flag is the surface's promise: set it false after giving clipFromView
+    another shape.
+source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC); the equations in
+  camera/view_to_uv.glsl and camera/uv_z_to_view.glsl.
+*/
+#ifndef SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
+#define SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
+#include "../prelude.glsl"
+#include "../camera/view_to_uv.glsl"
+#include "../camera/uv_z_to_view.glsl"
+#include "depth_surface.glsl"
+
+SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SnellDepthSurface s, vec3 pView) {
+  if (!s.perspective) {
+    return snellViewToUv(s.clipFromView, pView);
+  }
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 3);
+  SnellScreenPoint r;
+  r.uv = vec2(0.0f, 0.0f);
+  r.ndcZ = 0.0f;
+  r.valid = false;
+  // A non-finite coordinate makes its own clip term non-finite here, where the
+  // general product spreads it as NaN through a zero entry: invalid either way.
+  float cx = c0.x * pView.x + c2.x * pView.z;
+  float cy = c1.y * pView.y + c2.y * pView.z;
+  float cz = c2.z * pView.z + c3.z;
+  float cw = -pView.z;
+  if (!SNELL_FINITE(cx) || !SNELL_FINITE(cy) || !SNELL_FINITE(cz) || !SNELL_FINITE(cw) ||
+      !(cw >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 q = vec3(cx, cy, cz) / cw;
+  vec3 ndc = clamp(q, vec3(-SNELL_FLT_MAX, -SNELL_FLT_MAX, -SNELL_FLT_MAX),
+                   vec3(SNELL_FLT_MAX, SNELL_FLT_MAX, SNELL_FLT_MAX));
+  r.uv = vec2(ndc.x, ndc.y) * 0.5f + 0.5f;
+  r.ndcZ = ndc.z;
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN SnellViewPoint snellSurfaceUvZToView(SnellDepthSurface s, vec2 uv, float viewZ) {
+  if (!s.perspective) {
+    return snellUvZToView(s.clipFromView, uv, viewZ);
+  }
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
+      !(viewZ <= -SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 2);
+  float nx = 2.0f * uv.x - 1.0f;
+  float ny = 2.0f * uv.y - 1.0f;
+  // The general system's a01 and a10 are 0 - n * 0 = +0 for a finite n, and
+  // NaN for an infinite one (2 uv - 1 overflows), which makes it singular.
+  if (!SNELL_FINITE(nx) || !SNELL_FINITE(ny)) {
+    return r;
+  }
+  // c2.x - n c2.w with c2.w = -1 is c2.x + n; c3.x - n c3.w is +0.
+  float b0 = -(viewZ * (c2.x + nx) + 0.0f);
+  float b1 = -(viewZ * (c2.y + ny) + 0.0f);
+  float det = c0.x * c1.y;
+  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  // The zero coefficients stay as products: 0 * b is NaN for an infinite b.
+  float x = (b0 * c1.y - 0.0f * b1) / det;
+  float y = (c0.x * b1 - b0 * 0.0f) / det;
+  if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
+    return r;
+  }
+  r.position = vec3(x, y, viewZ);
+  r.valid = true;
+  return r;
+}
+
+#endif

@@ -1,0 +1,146 @@
+// glsl/snell/intersect/surface_projection.glsl: the perspective path of a depth
+// surface's projection and reconstruction against the general matrix path
+// (camera/view_to_uv.glsl, camera/uv_z_to_view.glsl: a full 4x4 product and
+// Cramer's rule) bit for bit, and against the projection in double.
+#include <gtest/gtest.h>
+
+#include <snell/camera.hpp>
+#include <snell/intersect.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+
+namespace {
+
+using namespace snell;
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Perspective-shaped matrices as engines build them: symmetric, off-centre,
+// jittered (TAA: the jitter lands in column 2), GL and zero-to-one depth.
+glm::mat4 randomPerspective(std::mt19937& rng, int kind) {
+  std::uniform_real_distribution<float> fovy(0.2f, 2.8f), aspect(0.3f, 3.0f), logNear(-2.0f, 0.5f), u(-1.0f, 1.0f);
+  const float n = std::pow(10.0f, logNear(rng));
+  const float f = n * 1000.0f;
+  switch (kind % 4) {
+    case 0:
+      return glm::perspective(fovy(rng), aspect(rng), n, f);
+    case 1:
+      return glm::perspectiveZO(fovy(rng), aspect(rng), n, f);
+    case 2: {
+      const float t = n * std::tan(0.5f * fovy(rng)), r = t * aspect(rng);
+      const float dx = 0.5f * r * u(rng), dy = 0.5f * t * u(rng);
+      return glm::frustum(-r + dx, r + dx, -t + dy, t + dy, n, f);
+    }
+    default: {
+      glm::mat4 m = snellPerspective(fovy(rng), aspect(rng), n, f);
+      m[2][0] += 1e-3f * u(rng);  // sub-pixel jitter
+      m[2][1] += 1e-3f * u(rng);
+      return m;
+    }
+  }
+}
+
+TEST(SurfaceProjection, PerspectiveShapesAreRecognized) {
+  std::mt19937 rng(41);
+  for (int i = 0; i < 400; ++i) {
+    const glm::mat4 m = randomPerspective(rng, i);
+    EXPECT_TRUE(snellDepthSurface(m, 0.1f, 100.0f, SNELL_DEPTH_GL, 0.0f).perspective) << i;
+  }
+  glm::mat4 sheared = glm::perspective(1.0f, 1.3f, 0.1f, 100.0f);
+  sheared[1][0] = 0.01f;
+  EXPECT_FALSE(snellDepthSurface(sheared, 0.1f, 100.0f, SNELL_DEPTH_GL, 0.0f).perspective);
+  glm::mat4 translated = glm::perspective(1.0f, 1.3f, 0.1f, 100.0f);
+  translated[3][0] = 0.5f;
+  EXPECT_FALSE(snellDepthSurface(translated, 0.1f, 100.0f, SNELL_DEPTH_GL, 0.0f).perspective);
+  EXPECT_FALSE(snellDepthSurface(glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, 0.1f, 10.0f), 0.1f, 10.0f, SNELL_DEPTH_GL, 0.0f)
+                   .perspective);
+  EXPECT_FALSE(snellDepthSurface(glm::mat4(kNaN), 0.1f, 10.0f, SNELL_DEPTH_GL, 0.0f).perspective);
+}
+
+// The fast path gives the general path's bits: uv, ndcZ (up to the sign of an
+// exact zero), position and valid, on points in and out of the frustum,
+// behind the camera and non-finite ones.
+TEST(SurfaceProjection, PerspectivePathIsTheGeneralPathBitForBit) {
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<float> s(-2.0f, 2.0f), logZ(-3.0f, 4.0f), uv(-0.3f, 1.3f), pick(0.0f, 1.0f);
+  const float hostile[] = {kNaN, kInf, -kInf, 0.0f, -0.0f, 1e-40f, 3e38f, -3e38f};
+  int validUv = 0, validPos = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const glm::mat4 m = randomPerspective(rng, i);
+    const SnellDepthSurface surf = snellDepthSurface(m, 0.1f, 100.0f, SNELL_DEPTH_GL, 0.0f);
+    ASSERT_TRUE(surf.perspective);
+    const float z = -std::pow(10.0f, logZ(rng));
+    glm::vec3 p(s(rng) * -z, s(rng) * -z, z);
+    glm::vec2 t(uv(rng), uv(rng));
+    float vz = z;
+    if (pick(rng) < 0.1f) p[i % 3] = hostile[i % 8];
+    if (pick(rng) < 0.05f) p.z = -p.z;  // behind the camera
+    if (pick(rng) < 0.1f) t[i % 2] = hostile[(i / 2) % 8];
+    if (pick(rng) < 0.05f) vz = hostile[(i / 3) % 8];
+
+    const SnellScreenPoint a = snellSurfaceViewToUv(surf, p);
+    const SnellScreenPoint b = snellViewToUv(m, p);
+    ASSERT_EQ(a.valid, b.valid) << i;
+    ASSERT_TRUE(sameBits(a.uv.x, b.uv.x) && sameBits(a.uv.y, b.uv.y)) << i;
+    ASSERT_TRUE(a.ndcZ == b.ndcZ) << i;
+    validUv += a.valid;
+
+    const SnellViewPoint c = snellSurfaceUvZToView(surf, t, vz);
+    const SnellViewPoint d = snellUvZToView(m, t, vz);
+    ASSERT_EQ(c.valid, d.valid) << i;
+    for (int k = 0; k < 3; ++k) ASSERT_TRUE(sameBits(c.position[k], d.position[k])) << i << " " << k;
+    validPos += c.valid;
+  }
+  // Most inputs are ordinary points, so the comparisons above are mostly of numbers.
+  EXPECT_GT(validUv, 150000);
+  EXPECT_GT(validPos, 150000);
+}
+
+// Against the projection in double: uv = 0.5 clip.xy / clip.w + 0.5, and the
+// reconstruction of (uv, z) is the point.
+TEST(SurfaceProjection, MatchesTheProjectionInDouble) {
+  std::mt19937 rng(43);
+  std::uniform_real_distribution<float> s(-1.0f, 1.0f), logZ(-1.0f, 2.0f);
+  for (int i = 0; i < 20000; ++i) {
+    const glm::mat4 m = randomPerspective(rng, i);
+    const SnellDepthSurface surf = snellDepthSurface(m, 0.1f, 100.0f, SNELL_DEPTH_GL, 0.0f);
+    const float z = -std::pow(10.0f, logZ(rng));
+    const glm::vec3 p(s(rng) * -z, s(rng) * -z, z);
+    const glm::dvec4 clip = glm::dmat4(m) * glm::dvec4(glm::dvec3(p), 1.0);
+    const SnellScreenPoint sp = snellSurfaceViewToUv(surf, p);
+    ASSERT_TRUE(sp.valid);
+    EXPECT_NEAR(sp.uv.x, 0.5 * clip.x / clip.w + 0.5, 1e-5) << i;
+    EXPECT_NEAR(sp.uv.y, 0.5 * clip.y / clip.w + 0.5, 1e-5) << i;
+    EXPECT_NEAR(sp.ndcZ, clip.z / clip.w, 1e-4) << i;
+    const SnellViewPoint q = snellSurfaceUvZToView(surf, sp.uv, z);
+    ASSERT_TRUE(q.valid);
+    EXPECT_NEAR(q.position.x, p.x, 1e-4 * (1.0 - static_cast<double>(z))) << i;
+    EXPECT_NEAR(q.position.y, p.y, 1e-4 * (1.0 - static_cast<double>(z))) << i;
+    EXPECT_EQ(q.position.z, z);
+  }
+}
+
+// With the flag cleared the general path runs, whatever the matrix.
+TEST(SurfaceProjection, ClearedFlagRunsTheGeneralPath) {
+  glm::mat4 sheared = glm::perspective(1.0f, 1.3f, 0.1f, 100.0f);
+  sheared[1][0] = 0.2f;
+  SnellDepthSurface surf = snellDepthSurface(sheared, 0.1f, 100.0f, SNELL_DEPTH_GL, 0.0f);
+  ASSERT_FALSE(surf.perspective);
+  const glm::vec3 p(0.3f, -0.4f, -2.0f);
+  const SnellScreenPoint a = snellSurfaceViewToUv(surf, p), b = snellViewToUv(sheared, p);
+  EXPECT_TRUE(a.valid && sameBits(a.uv.x, b.uv.x) && sameBits(a.uv.y, b.uv.y));
+  const SnellViewPoint c = snellSurfaceUvZToView(surf, a.uv, p.z);
+  ASSERT_TRUE(c.valid);
+  EXPECT_NEAR(c.position.x, p.x, 1e-5f);  // the shear is undone: the fast path would not
+  EXPECT_NEAR(c.position.y, p.y, 1e-5f);
+}
+
+}  // namespace
