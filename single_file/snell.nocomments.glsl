@@ -69,6 +69,14 @@
 #  endif
 #endif
 
+#ifndef SNELL_IN
+#  if defined(SNELL_LANG_CXX)
+#    define SNELL_IN(T) const T&
+#  else
+#    define SNELL_IN(T) T
+#  endif
+#endif
+
 #if defined(SNELL_LANG_HLSL)
 #  define SNELL_MUL(m, v) mul(m, v)
 #else
@@ -982,7 +990,7 @@ SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, Sn
 #ifndef SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
 #define SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
 
-SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SnellDepthSurface s, vec3 pView) {
+SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, vec3 pView) {
   if (!s.perspective) {
     return snellViewToUv(s.clipFromView, pView);
   }
@@ -1011,7 +1019,7 @@ SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SnellDepthSurface s, vec3 pView) 
   return r;
 }
 
-SNELL_FN SnellViewPoint snellSurfaceUvZToView(SnellDepthSurface s, vec2 uv, float viewZ) {
+SNELL_FN SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface) s, vec2 uv, float viewZ) {
   if (!s.perspective) {
     return snellUvZToView(s.clipFromView, uv, viewZ);
   }
@@ -1057,7 +1065,7 @@ struct SnellSurfacePoint {
   bool valid;
 };
 
-SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
+SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SNELL_IN(SnellDepthSurface) s) {
   SnellSurfacePoint r;
   r.position = vec3(0.0f, 0.0f, 0.0f);
   r.uv = vec2(0.0f, 0.0f);
@@ -1083,7 +1091,7 @@ SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, Snel
 #ifndef SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
 #define SNELL_INTERSECT_SINGLE_SAMPLE_GLSL
 
-SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface s) {
+SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) s) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
@@ -1117,7 +1125,7 @@ SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D 
 #ifndef SNELL_INTERSECT_HIT_ON_SURFACE_GLSL
 #define SNELL_INTERSECT_HIT_ON_SURFACE_GLSL
 
-SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) s, int fetchesSoFar) {
   SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid) {
     return snellHitMiss(fetchesSoFar);
@@ -1154,7 +1162,7 @@ SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurf
 #  define SNELL_PLANE_HOLD 1
 #endif
 
-SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) s, int fetchesSoFar) {
   SnellHit h = snellHitOnSurface(p, depthTex, s, fetchesSoFar);
   if (h.valid || SNELL_PLANE_HOLD == 0 || !s.closed) {
     return h;
@@ -1176,7 +1184,7 @@ SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, Snel
 #define SNELL_INTERSECT_PLANE_NORMAL_GLSL
 
 SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
-                                            SnellDepthSurface s, float normalLod, int iterations) {
+                                            SNELL_IN(SnellDepthSurface) s, float normalLod, int iterations) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
@@ -1247,7 +1255,7 @@ struct SnellDepthPlane {
   int fetches;
 };
 
-SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthMips, SnellDepthSurface s, int maxLod) {
+SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthMips, SNELL_IN(SnellDepthSurface) s, int maxLod) {
   SnellDepthPlane r;
   r.uv = vec2(0.0f, 0.0f);
   r.position = vec3(0.0f, 0.0f, 0.0f);
@@ -1326,7 +1334,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   return r;
 }
 
-SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D depthMips, SnellDepthSurface s,
+SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D depthMips, SNELL_IN(SnellDepthSurface) s,
                                            int maxLod, int iterations) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
@@ -1371,7 +1379,7 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
 #ifndef SNELL_INTERSECT_DEPTH_PYRAMID_GLSL
 #define SNELL_INTERSECT_DEPTH_PYRAMID_GLSL
 
-SNELL_FN vec4 snellDepthPyramidBase(float depthValue, SnellDepthSurface s) {
+SNELL_FN vec4 snellDepthPyramidBase(float depthValue, SNELL_IN(SnellDepthSurface) s) {
   vec4 empty = vec4(s.emptyDepth, 0.0f, 0.0f, 0.0f);
   if (!SNELL_FINITE(depthValue) || depthValue == s.emptyDepth) {
     return empty;
@@ -1531,7 +1539,7 @@ SNELL_FN SnellTexRay snellSearchSegment(vec3 origin, vec3 dir, float zNearest, f
 #  define SNELL_CBS_MAX_STEPS 24
 #endif
 
-SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                                 float zNearest, float zFarthest, int steps) {
   SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
   if (!r.valid) {
@@ -1577,7 +1585,7 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
   return h;
 }
 
-SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                                 float zNearest, float zFarthest) {
   return snellConservativeBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_CBS_STEPS);
 }
@@ -1594,7 +1602,7 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
 #  define SNELL_BINARY_SEARCH_MAX_STEPS 24
 #endif
 
-SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SnellDepthSurface surface, float lo,
+SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface, float lo,
                                     float hi, int steps, SnellHit h) {
   if (isnan(lo) || isnan(hi)) {
     return h;
@@ -1624,7 +1632,7 @@ SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SnellDe
   return h;
 }
 
-SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                     float zNearest, float zFarthest, int steps) {
   SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
   if (!r.valid) {
@@ -1643,7 +1651,7 @@ SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex,
   return snellBisectTexRay(r, depthTex, surface, 0.0f, 1.0f, steps, h);
 }
 
-SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                     float zNearest, float zFarthest) {
   return snellBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_BINARY_SEARCH_STEPS);
 }
@@ -1660,7 +1668,7 @@ SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex,
 #  define SNELL_LINEAR_SEARCH_MAX_STEPS 256
 #endif
 
-SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                           float zNearest, float zFarthest, int linearSteps, int binarySteps) {
   SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
   if (!r.valid) {
@@ -1702,7 +1710,7 @@ SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D dep
   return snellBisectTexRay(r, depthTex, surface, float(found - 1) * stepBeta, beta, nb, h);
 }
 
-SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                           float zNearest, float zFarthest) {
   return snellLinearBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_LINEAR_SEARCH_STEPS,
                                  SNELL_BINARY_SEARCH_STEPS);
@@ -1729,7 +1737,7 @@ SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D dep
 #  define SNELL_LINEAR_MARCH_MAX_DISTANCE 10.0f
 #endif
 
-SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                    float maxDistance, int steps, int refineSteps) {
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
@@ -1806,7 +1814,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
   return h;
 }
 
-SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface) {
+SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface) {
   return snellLinearMarch(origin, dir, depthTex, surface, SNELL_LINEAR_MARCH_MAX_DISTANCE, SNELL_LINEAR_MARCH_STEPS,
                           SNELL_LINEAR_MARCH_REFINE_STEPS);
 }
@@ -1984,7 +1992,7 @@ SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
 }
 
 SNELL_FN SnellHit snellIntersectWith(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
-                                     SNELL_TEX2D pyramidTex, SnellDepthSurface readAs, SnellIntersectOptions o) {
+                                     SNELL_TEX2D pyramidTex, SNELL_IN(SnellDepthSurface) readAs, SnellIntersectOptions o) {
   SnellDepthSurface surface = readAs;
   surface.depthFilter = o.depthFilter;
   int strategy = o.strategy;
@@ -2814,7 +2822,7 @@ struct SnellTwoInterfacePath {
 
 SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
                                                       SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
-                                                      SNELL_TEX2D backPyramid, SnellDepthSurface back,
+                                                      SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back,
                                                       SnellTechniqueOptions o) {
   SnellTwoInterfacePath p;
   p.entryDirection = vec3(0.0f, 0.0f, 0.0f);
@@ -2914,7 +2922,7 @@ struct SnellTwoInterfaceResult {
 
 SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_TEX2D sceneDepth,
                                                      SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid,
-                                                     SNELL_TEX2D sceneColor, SnellDepthSurface scene,
+                                                     SNELL_TEX2D sceneColor, SNELL_IN(SnellDepthSurface) scene,
                                                      SNELL_ENVIRONMENT_TEX environment, SnellTechniqueOptions o) {
   SnellTwoInterfaceExit e;
   e.color = vec3(0.0f, 0.0f, 0.0f);
@@ -2963,10 +2971,10 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
 
 SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition, vec3 frontNormal, float dN,
                                                              SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
-                                                             SNELL_TEX2D backPyramid, SnellDepthSurface back,
+                                                             SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back,
                                                              SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal,
                                                              SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor,
-                                                             SnellDepthSurface scene, SNELL_ENVIRONMENT_TEX environment,
+                                                             SNELL_IN(SnellDepthSurface) scene, SNELL_ENVIRONMENT_TEX environment,
                                                              SnellTechniqueOptions o) {
   bool three = o.dispersion == 3;
   float eta = snellIorToEta(o.iorOutside, three ? o.iors.y : o.ior);

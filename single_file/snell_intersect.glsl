@@ -38,6 +38,7 @@ options:
                        filter state at explicit mip level lod (float)
   SNELL_TEXTURE_SIZE(tex, lod)     ivec2 size of mip level lod (0 <= lod < levels;
                        base level 0)
+  SNELL_IN(T)          a read-only struct parameter (C++: const T&; else T)
   Define any hook before this file to redirect reads (reversed-Z, linear depth,
   texture arrays, a Hi-Z chain).
 contract: macros only; no function is defined here.
@@ -109,6 +110,18 @@ contract: macros only.
 /* Level size from the base size: Mesa 22.3 llvmpipe evaluates textureSize with
    one invocation's lod for a whole SIMD batch when lod varies per invocation. */
 #    define SNELL_TEXTURE_SIZE(tex, lod) max(textureSize(tex, 0) >> (lod), ivec2(1, 1))
+#  endif
+#endif
+
+/* SNELL_IN(T) name: a read-only parameter of struct type T. GLSL and HLSL pass
+   it by value; C++ by const reference, because a call the compiler does not
+   inline would otherwise copy the whole struct (a SnellDepthSurface is 92
+   bytes: 8 % of a plane ray's instructions, issue 14). */
+#ifndef SNELL_IN
+#  if defined(SNELL_LANG_CXX)
+#    define SNELL_IN(T) const T&
+#  else
+#    define SNELL_IN(T) T
 #  endif
 #endif
 
@@ -646,6 +659,8 @@ SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, flo
   return s;
 }
 
+/* The surface by value, not SNELL_IN: g++ inlines this read into every loop
+   that way, and measured slower by reference (benchmarks/kernels). */
 SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
   SnellSurfaceSample r;
   r.viewZ = 0.0f;
@@ -814,7 +829,7 @@ SNELL_FN SnellScreenPoint snellViewToUv(mat4 clipFromView, vec3 pView) {
 
 
 
-SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SnellDepthSurface s, vec3 pView) {
+SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, vec3 pView) {
   if (!s.perspective) {
     return snellViewToUv(s.clipFromView, pView);
   }
@@ -845,7 +860,7 @@ SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SnellDepthSurface s, vec3 pView) 
   return r;
 }
 
-SNELL_FN SnellViewPoint snellSurfaceUvZToView(SnellDepthSurface s, vec2 uv, float viewZ) {
+SNELL_FN SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface) s, vec2 uv, float viewZ) {
   if (!s.perspective) {
     return snellUvZToView(s.clipFromView, uv, viewZ);
   }
@@ -921,7 +936,7 @@ struct SnellSurfacePoint {
   bool valid;
 };
 
-SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
+SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SNELL_IN(SnellDepthSurface) s) {
   SnellSurfacePoint r;
   r.position = vec3(0.0f, 0.0f, 0.0f);
   r.uv = vec2(0.0f, 0.0f);
@@ -985,7 +1000,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation"
 
 
 
-SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface s) {
+SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) s) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
@@ -1041,7 +1056,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 
 
 
-SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) s, int fetchesSoFar) {
   SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid) {
     return snellHitMiss(fetchesSoFar);
@@ -1127,7 +1142,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
    texel the plane was built from, so a normal read at h.uv returns that plane's
    normal. Off-screen or behind-the-camera p is a miss either way, and so is a
    NaN or infinite planeUv (no texel: the hit's uv stays finite). */
-SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) s, int fetchesSoFar) {
   SnellHit h = snellHitOnSurface(p, depthTex, s, fetchesSoFar);
   if (h.valid || SNELL_PLANE_HOLD == 0 || !s.closed) {
     return h;
@@ -1303,7 +1318,7 @@ SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, 
 
 
 SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
-                                            SnellDepthSurface s, float normalLod, int iterations) {
+                                            SNELL_IN(SnellDepthSurface) s, float normalLod, int iterations) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
@@ -1446,7 +1461,7 @@ struct SnellDepthPlane {
   int fetches;
 };
 
-SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthMips, SnellDepthSurface s, int maxLod) {
+SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthMips, SNELL_IN(SnellDepthSurface) s, int maxLod) {
   SnellDepthPlane r;
   r.uv = vec2(0.0f, 0.0f);
   r.position = vec3(0.0f, 0.0f, 0.0f);
@@ -1525,7 +1540,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   return r;
 }
 
-SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D depthMips, SnellDepthSurface s,
+SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D depthMips, SNELL_IN(SnellDepthSurface) s,
                                            int maxLod, int iterations) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
@@ -1624,7 +1639,7 @@ source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
 
 
 
-SNELL_FN vec4 snellDepthPyramidBase(float depthValue, SnellDepthSurface s) {
+SNELL_FN vec4 snellDepthPyramidBase(float depthValue, SNELL_IN(SnellDepthSurface) s) {
   vec4 empty = vec4(s.emptyDepth, 0.0f, 0.0f, 0.0f);
   if (!SNELL_FINITE(depthValue) || depthValue == s.emptyDepth) {
     return empty;
@@ -2047,7 +2062,7 @@ source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
 #endif
 
 /* Oliveira & Brauwers 2007, Algorithm 2 */
-SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                                 float zNearest, float zFarthest, int steps) {
   SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
   if (!r.valid) {
@@ -2093,7 +2108,7 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
   return h;
 }
 
-SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                                 float zNearest, float zFarthest) {
   return snellConservativeBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_CBS_STEPS);
 }
@@ -2155,7 +2170,7 @@ source: F. Policarpo, M. M. Oliveira, J. Comba, "Real-Time Relief Mapping on
 
 /* The bisection loop of Policarpo et al. 2005, shared by snellBinarySearch and
    the refinement of snellLinearBinarySearch (see the contract). */
-SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SnellDepthSurface surface, float lo,
+SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface, float lo,
                                     float hi, int steps, SnellHit h) {
   if (isnan(lo) || isnan(hi)) {
     return h;
@@ -2187,7 +2202,7 @@ SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SnellDe
 }
 
 /* Policarpo et al. 2005 binary search on Oliveira & Brauwers 2007, eqs. 5-10 */
-SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                     float zNearest, float zFarthest, int steps) {
   SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
   if (!r.valid) {
@@ -2206,7 +2221,7 @@ SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex,
   return snellBisectTexRay(r, depthTex, surface, 0.0f, 1.0f, steps, h);
 }
 
-SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                     float zNearest, float zFarthest) {
   return snellBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_BINARY_SEARCH_STEPS);
 }
@@ -2267,7 +2282,7 @@ source: F. Policarpo, M. M. Oliveira, J. Comba, "Real-Time Relief Mapping on
 #endif
 
 /* Policarpo et al. 2005, linear + binary search, on Oliveira & Brauwers 2007 eqs. 5-10 */
-SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                           float zNearest, float zFarthest, int linearSteps, int binarySteps) {
   SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
   if (!r.valid) {
@@ -2309,7 +2324,7 @@ SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D dep
   return snellBisectTexRay(r, depthTex, surface, float(found - 1) * stepBeta, beta, nb, h);
 }
 
-SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                           float zNearest, float zFarthest) {
   return snellLinearBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_LINEAR_SEARCH_STEPS,
                                  SNELL_BINARY_SEARCH_STEPS);
@@ -2386,7 +2401,7 @@ source: the classic screen-space ray march (e.g. Sousa, "Crysis 2", 2011;
 #endif
 
 /* screen-space ray march: equal view-space steps, then bisection */
-SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                    float maxDistance, int steps, int refineSteps) {
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
@@ -2463,7 +2478,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
   return h;
 }
 
-SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface) {
+SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface) {
   return snellLinearMarch(origin, dir, depthTex, surface, SNELL_LINEAR_MARCH_MAX_DISTANCE, SNELL_LINEAR_MARCH_STEPS,
                           SNELL_LINEAR_MARCH_REFINE_STEPS);
 }
@@ -2555,6 +2570,9 @@ source: M. McGuire, M. Mara, "Efficient GPU Screen-Space Ray Tracing", JCGT
 #endif
 
 /* McGuire & Mara 2014: pixel-space march, z from homogeneous interpolation of 1/w */
+/* The surface by value, not SNELL_IN: in C++ the march's loop then keeps its
+   fields in registers across the library calls it makes (floorf, sqrtf); by
+   reference it reloads them every step (8 % more instructions, benchmarks/kernels). */
 SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
                                 float maxDistance, float thickness, float stride, int steps) {
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
@@ -2808,7 +2826,7 @@ SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
 }
 
 SNELL_FN SnellHit snellIntersectWith(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
-                                     SNELL_TEX2D pyramidTex, SnellDepthSurface readAs, SnellIntersectOptions o) {
+                                     SNELL_TEX2D pyramidTex, SNELL_IN(SnellDepthSurface) readAs, SnellIntersectOptions o) {
   SnellDepthSurface surface = readAs;
   surface.depthFilter = o.depthFilter;
   int strategy = o.strategy;

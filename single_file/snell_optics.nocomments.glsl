@@ -67,6 +67,14 @@
 #  endif
 #endif
 
+#ifndef SNELL_IN
+#  if defined(SNELL_LANG_CXX)
+#    define SNELL_IN(T) const T&
+#  else
+#    define SNELL_IN(T) T
+#  endif
+#endif
+
 #if defined(SNELL_LANG_HLSL)
 #  define SNELL_MUL(m, v) mul(m, v)
 #else

@@ -55,6 +55,7 @@ options:
                        filter state at explicit mip level lod (float)
   SNELL_TEXTURE_SIZE(tex, lod)     ivec2 size of mip level lod (0 <= lod < levels;
                        base level 0)
+  SNELL_IN(T)          a read-only struct parameter (C++: const T&; else T)
   Define any hook before this file to redirect reads (reversed-Z, linear depth,
   texture arrays, a Hi-Z chain).
 contract: macros only; no function is defined here.
@@ -126,6 +127,18 @@ contract: macros only.
 /* Level size from the base size: Mesa 22.3 llvmpipe evaluates textureSize with
    one invocation's lod for a whole SIMD batch when lod varies per invocation. */
 #    define SNELL_TEXTURE_SIZE(tex, lod) max(textureSize(tex, 0) >> (lod), ivec2(1, 1))
+#  endif
+#endif
+
+/* SNELL_IN(T) name: a read-only parameter of struct type T. GLSL and HLSL pass
+   it by value; C++ by const reference, because a call the compiler does not
+   inline would otherwise copy the whole struct (a SnellDepthSurface is 92
+   bytes: 8 % of a plane ray's instructions, issue 14). */
+#ifndef SNELL_IN
+#  if defined(SNELL_LANG_CXX)
+#    define SNELL_IN(T) const T&
+#  else
+#    define SNELL_IN(T) T
 #  endif
 #endif
 
@@ -2247,6 +2260,8 @@ SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, flo
   return s;
 }
 
+/* The surface by value, not SNELL_IN: g++ inlines this read into every loop
+   that way, and measured slower by reference (benchmarks/kernels). */
 SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
   SnellSurfaceSample r;
   r.viewZ = 0.0f;
@@ -2573,7 +2588,7 @@ source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC); the equations in
 
 
 
-SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SnellDepthSurface s, vec3 pView) {
+SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, vec3 pView) {
   if (!s.perspective) {
     return snellViewToUv(s.clipFromView, pView);
   }
@@ -2604,7 +2619,7 @@ SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SnellDepthSurface s, vec3 pView) 
   return r;
 }
 
-SNELL_FN SnellViewPoint snellSurfaceUvZToView(SnellDepthSurface s, vec2 uv, float viewZ) {
+SNELL_FN SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface) s, vec2 uv, float viewZ) {
   if (!s.perspective) {
     return snellUvZToView(s.clipFromView, uv, viewZ);
   }
@@ -2680,7 +2695,7 @@ struct SnellSurfacePoint {
   bool valid;
 };
 
-SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
+SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SNELL_IN(SnellDepthSurface) s) {
   SnellSurfacePoint r;
   r.position = vec3(0.0f, 0.0f, 0.0f);
   r.uv = vec2(0.0f, 0.0f);
@@ -2703,7 +2718,7 @@ SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, Snel
 
 #endif
 
-SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface s) {
+SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) s) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
@@ -2789,7 +2804,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 
 
 
-SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) s, int fetchesSoFar) {
   SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid) {
     return snellHitMiss(fetchesSoFar);
@@ -2844,7 +2859,7 @@ SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurf
    texel the plane was built from, so a normal read at h.uv returns that plane's
    normal. Off-screen or behind-the-camera p is a miss either way, and so is a
    NaN or infinite planeUv (no texel: the hit's uv stays finite). */
-SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) s, int fetchesSoFar) {
   SnellHit h = snellHitOnSurface(p, depthTex, s, fetchesSoFar);
   if (h.valid || SNELL_PLANE_HOLD == 0 || !s.closed) {
     return h;
@@ -2925,7 +2940,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 
 
 SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
-                                            SnellDepthSurface s, float normalLod, int iterations) {
+                                            SNELL_IN(SnellDepthSurface) s, float normalLod, int iterations) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
@@ -3068,7 +3083,7 @@ struct SnellDepthPlane {
   int fetches;
 };
 
-SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthMips, SnellDepthSurface s, int maxLod) {
+SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthMips, SNELL_IN(SnellDepthSurface) s, int maxLod) {
   SnellDepthPlane r;
   r.uv = vec2(0.0f, 0.0f);
   r.position = vec3(0.0f, 0.0f, 0.0f);
@@ -3147,7 +3162,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   return r;
 }
 
-SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D depthMips, SnellDepthSurface s,
+SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D depthMips, SNELL_IN(SnellDepthSurface) s,
                                            int maxLod, int iterations) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
@@ -3447,7 +3462,7 @@ SNELL_FN SnellTexRay snellSearchSegment(vec3 origin, vec3 dir, float zNearest, f
 #endif
 
 /* Oliveira & Brauwers 2007, Algorithm 2 */
-SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                                 float zNearest, float zFarthest, int steps) {
   SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
   if (!r.valid) {
@@ -3493,7 +3508,7 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
   return h;
 }
 
-SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                                 float zNearest, float zFarthest) {
   return snellConservativeBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_CBS_STEPS);
 }
@@ -3555,7 +3570,7 @@ source: F. Policarpo, M. M. Oliveira, J. Comba, "Real-Time Relief Mapping on
 
 /* The bisection loop of Policarpo et al. 2005, shared by snellBinarySearch and
    the refinement of snellLinearBinarySearch (see the contract). */
-SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SnellDepthSurface surface, float lo,
+SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface, float lo,
                                     float hi, int steps, SnellHit h) {
   if (isnan(lo) || isnan(hi)) {
     return h;
@@ -3587,7 +3602,7 @@ SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SnellDe
 }
 
 /* Policarpo et al. 2005 binary search on Oliveira & Brauwers 2007, eqs. 5-10 */
-SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                     float zNearest, float zFarthest, int steps) {
   SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
   if (!r.valid) {
@@ -3606,7 +3621,7 @@ SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex,
   return snellBisectTexRay(r, depthTex, surface, 0.0f, 1.0f, steps, h);
 }
 
-SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                     float zNearest, float zFarthest) {
   return snellBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_BINARY_SEARCH_STEPS);
 }
@@ -3667,7 +3682,7 @@ source: F. Policarpo, M. M. Oliveira, J. Comba, "Real-Time Relief Mapping on
 #endif
 
 /* Policarpo et al. 2005, linear + binary search, on Oliveira & Brauwers 2007 eqs. 5-10 */
-SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                           float zNearest, float zFarthest, int linearSteps, int binarySteps) {
   SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
   if (!r.valid) {
@@ -3709,7 +3724,7 @@ SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D dep
   return snellBisectTexRay(r, depthTex, surface, float(found - 1) * stepBeta, beta, nb, h);
 }
 
-SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                           float zNearest, float zFarthest) {
   return snellLinearBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_LINEAR_SEARCH_STEPS,
                                  SNELL_BINARY_SEARCH_STEPS);
@@ -3786,7 +3801,7 @@ source: the classic screen-space ray march (e.g. Sousa, "Crysis 2", 2011;
 #endif
 
 /* screen-space ray march: equal view-space steps, then bisection */
-SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                    float maxDistance, int steps, int refineSteps) {
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
@@ -3863,7 +3878,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
   return h;
 }
 
-SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface) {
+SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface) {
   return snellLinearMarch(origin, dir, depthTex, surface, SNELL_LINEAR_MARCH_MAX_DISTANCE, SNELL_LINEAR_MARCH_STEPS,
                           SNELL_LINEAR_MARCH_REFINE_STEPS);
 }
@@ -3955,6 +3970,9 @@ source: M. McGuire, M. Mara, "Efficient GPU Screen-Space Ray Tracing", JCGT
 #endif
 
 /* McGuire & Mara 2014: pixel-space march, z from homogeneous interpolation of 1/w */
+/* The surface by value, not SNELL_IN: in C++ the march's loop then keeps its
+   fields in registers across the library calls it makes (floorf, sqrtf); by
+   reference it reloads them every step (8 % more instructions, benchmarks/kernels). */
 SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
                                 float maxDistance, float thickness, float stride, int steps) {
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
@@ -4110,7 +4128,7 @@ SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
 }
 
 SNELL_FN SnellHit snellIntersectWith(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
-                                     SNELL_TEX2D pyramidTex, SnellDepthSurface readAs, SnellIntersectOptions o) {
+                                     SNELL_TEX2D pyramidTex, SNELL_IN(SnellDepthSurface) readAs, SnellIntersectOptions o) {
   SnellDepthSurface surface = readAs;
   surface.depthFilter = o.depthFilter;
   int strategy = o.strategy;
@@ -4637,7 +4655,7 @@ struct SnellTwoInterfacePath {
 /* Wyman 2005 / Oliveira & Brauwers 2007 sec. 3: P1, T1 -> P2 (back-face buffer), N2 -> T2 */
 SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
                                                       SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
-                                                      SNELL_TEX2D backPyramid, SnellDepthSurface back,
+                                                      SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back,
                                                       SnellTechniqueOptions o) {
   SnellTwoInterfacePath p;
   p.entryDirection = vec3(0.0f, 0.0f, 0.0f);
@@ -4927,7 +4945,7 @@ struct SnellTwoInterfaceResult {
 
 SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_TEX2D sceneDepth,
                                                      SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid,
-                                                     SNELL_TEX2D sceneColor, SnellDepthSurface scene,
+                                                     SNELL_TEX2D sceneColor, SNELL_IN(SnellDepthSurface) scene,
                                                      SNELL_ENVIRONMENT_TEX environment, SnellTechniqueOptions o) {
   SnellTwoInterfaceExit e;
   e.color = vec3(0.0f, 0.0f, 0.0f);
@@ -4977,10 +4995,10 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
 /* Wyman 2005; Oliveira & Brauwers 2007; Mayer & Assarsson: the composed technique */
 SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition, vec3 frontNormal, float dN,
                                                              SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
-                                                             SNELL_TEX2D backPyramid, SnellDepthSurface back,
+                                                             SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back,
                                                              SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal,
                                                              SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor,
-                                                             SnellDepthSurface scene, SNELL_ENVIRONMENT_TEX environment,
+                                                             SNELL_IN(SnellDepthSurface) scene, SNELL_ENVIRONMENT_TEX environment,
                                                              SnellTechniqueOptions o) {
   bool three = o.dispersion == 3;
   float eta = snellIorToEta(o.iorOutside, three ? o.iors.y : o.ior);

@@ -67,6 +67,14 @@
 #  endif
 #endif
 
+#ifndef SNELL_IN
+#  if defined(SNELL_LANG_CXX)
+#    define SNELL_IN(T) const T&
+#  else
+#    define SNELL_IN(T) T
+#  endif
+#endif
+
 #if defined(SNELL_LANG_HLSL)
 #  define SNELL_MUL(m, v) mul(m, v)
 #else
@@ -1346,7 +1354,7 @@ SNELL_FN SnellScreenPoint snellViewToUv(mat4 clipFromView, vec3 pView) {
 #ifndef SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
 #define SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
 
-SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SnellDepthSurface s, vec3 pView) {
+SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, vec3 pView) {
   if (!s.perspective) {
     return snellViewToUv(s.clipFromView, pView);
   }
@@ -1375,7 +1383,7 @@ SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SnellDepthSurface s, vec3 pView) 
   return r;
 }
 
-SNELL_FN SnellViewPoint snellSurfaceUvZToView(SnellDepthSurface s, vec2 uv, float viewZ) {
+SNELL_FN SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface) s, vec2 uv, float viewZ) {
   if (!s.perspective) {
     return snellUvZToView(s.clipFromView, uv, viewZ);
   }
@@ -1421,7 +1429,7 @@ struct SnellSurfacePoint {
   bool valid;
 };
 
-SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
+SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SNELL_IN(SnellDepthSurface) s) {
   SnellSurfacePoint r;
   r.position = vec3(0.0f, 0.0f, 0.0f);
   r.uv = vec2(0.0f, 0.0f);
@@ -1444,7 +1452,7 @@ SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, Snel
 
 #endif
 
-SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface s) {
+SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) s) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
@@ -1481,7 +1489,7 @@ SNELL_FN SnellHit snellIntersectSingleSample(vec3 origin, vec3 dir, SNELL_TEX2D 
 #ifndef SNELL_INTERSECT_HIT_ON_SURFACE_GLSL
 #define SNELL_INTERSECT_HIT_ON_SURFACE_GLSL
 
-SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) s, int fetchesSoFar) {
   SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
   if (!sp.valid) {
     return snellHitMiss(fetchesSoFar);
@@ -1515,7 +1523,7 @@ SNELL_FN SnellHit snellHitOnSurface(vec3 p, SNELL_TEX2D depthTex, SnellDepthSurf
 #  define SNELL_PLANE_HOLD 1
 #endif
 
-SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) s, int fetchesSoFar) {
   SnellHit h = snellHitOnSurface(p, depthTex, s, fetchesSoFar);
   if (h.valid || SNELL_PLANE_HOLD == 0 || !s.closed) {
     return h;
@@ -1537,7 +1545,7 @@ SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, Snel
 #define SNELL_INTERSECT_PLANE_NORMAL_GLSL
 
 SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
-                                            SnellDepthSurface s, float normalLod, int iterations) {
+                                            SNELL_IN(SnellDepthSurface) s, float normalLod, int iterations) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
@@ -1608,7 +1616,7 @@ struct SnellDepthPlane {
   int fetches;
 };
 
-SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthMips, SnellDepthSurface s, int maxLod) {
+SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthMips, SNELL_IN(SnellDepthSurface) s, int maxLod) {
   SnellDepthPlane r;
   r.uv = vec2(0.0f, 0.0f);
   r.position = vec3(0.0f, 0.0f, 0.0f);
@@ -1687,7 +1695,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   return r;
 }
 
-SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D depthMips, SnellDepthSurface s,
+SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D depthMips, SNELL_IN(SnellDepthSurface) s,
                                            int maxLod, int iterations) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
@@ -1841,7 +1849,7 @@ SNELL_FN SnellTexRay snellSearchSegment(vec3 origin, vec3 dir, float zNearest, f
 #  define SNELL_CBS_MAX_STEPS 24
 #endif
 
-SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                                 float zNearest, float zFarthest, int steps) {
   SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
   if (!r.valid) {
@@ -1887,7 +1895,7 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
   return h;
 }
 
-SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                                 float zNearest, float zFarthest) {
   return snellConservativeBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_CBS_STEPS);
 }
@@ -1904,7 +1912,7 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
 #  define SNELL_BINARY_SEARCH_MAX_STEPS 24
 #endif
 
-SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SnellDepthSurface surface, float lo,
+SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface, float lo,
                                     float hi, int steps, SnellHit h) {
   if (isnan(lo) || isnan(hi)) {
     return h;
@@ -1934,7 +1942,7 @@ SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SnellDe
   return h;
 }
 
-SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                     float zNearest, float zFarthest, int steps) {
   SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
   if (!r.valid) {
@@ -1953,7 +1961,7 @@ SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex,
   return snellBisectTexRay(r, depthTex, surface, 0.0f, 1.0f, steps, h);
 }
 
-SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                     float zNearest, float zFarthest) {
   return snellBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_BINARY_SEARCH_STEPS);
 }
@@ -1970,7 +1978,7 @@ SNELL_FN SnellHit snellBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex,
 #  define SNELL_LINEAR_SEARCH_MAX_STEPS 256
 #endif
 
-SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                           float zNearest, float zFarthest, int linearSteps, int binarySteps) {
   SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, surface.clipFromView);
   if (!r.valid) {
@@ -2012,7 +2020,7 @@ SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D dep
   return snellBisectTexRay(r, depthTex, surface, float(found - 1) * stepBeta, beta, nb, h);
 }
 
-SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                           float zNearest, float zFarthest) {
   return snellLinearBinarySearch(origin, dir, depthTex, surface, zNearest, zFarthest, SNELL_LINEAR_SEARCH_STEPS,
                                  SNELL_BINARY_SEARCH_STEPS);
@@ -2039,7 +2047,7 @@ SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D dep
 #  define SNELL_LINEAR_MARCH_MAX_DISTANCE 10.0f
 #endif
 
-SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface,
+SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface,
                                    float maxDistance, int steps, int refineSteps) {
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
@@ -2116,7 +2124,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
   return h;
 }
 
-SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SnellDepthSurface surface) {
+SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) surface) {
   return snellLinearMarch(origin, dir, depthTex, surface, SNELL_LINEAR_MARCH_MAX_DISTANCE, SNELL_LINEAR_MARCH_STEPS,
                           SNELL_LINEAR_MARCH_REFINE_STEPS);
 }
@@ -2291,7 +2299,7 @@ SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
 }
 
 SNELL_FN SnellHit snellIntersectWith(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
-                                     SNELL_TEX2D pyramidTex, SnellDepthSurface readAs, SnellIntersectOptions o) {
+                                     SNELL_TEX2D pyramidTex, SNELL_IN(SnellDepthSurface) readAs, SnellIntersectOptions o) {
   SnellDepthSurface surface = readAs;
   surface.depthFilter = o.depthFilter;
   int strategy = o.strategy;
@@ -2605,7 +2613,7 @@ struct SnellTwoInterfacePath {
 
 SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
                                                       SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
-                                                      SNELL_TEX2D backPyramid, SnellDepthSurface back,
+                                                      SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back,
                                                       SnellTechniqueOptions o) {
   SnellTwoInterfacePath p;
   p.entryDirection = vec3(0.0f, 0.0f, 0.0f);
@@ -2744,7 +2752,7 @@ struct SnellTwoInterfaceResult {
 
 SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_TEX2D sceneDepth,
                                                      SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid,
-                                                     SNELL_TEX2D sceneColor, SnellDepthSurface scene,
+                                                     SNELL_TEX2D sceneColor, SNELL_IN(SnellDepthSurface) scene,
                                                      SNELL_ENVIRONMENT_TEX environment, SnellTechniqueOptions o) {
   SnellTwoInterfaceExit e;
   e.color = vec3(0.0f, 0.0f, 0.0f);
@@ -2793,10 +2801,10 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
 
 SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition, vec3 frontNormal, float dN,
                                                              SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
-                                                             SNELL_TEX2D backPyramid, SnellDepthSurface back,
+                                                             SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back,
                                                              SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal,
                                                              SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor,
-                                                             SnellDepthSurface scene, SNELL_ENVIRONMENT_TEX environment,
+                                                             SNELL_IN(SnellDepthSurface) scene, SNELL_ENVIRONMENT_TEX environment,
                                                              SnellTechniqueOptions o) {
   bool three = o.dispersion == 3;
   float eta = snellIorToEta(o.iorOutside, three ? o.iors.y : o.ior);

@@ -2,7 +2,8 @@
 # Prints the function reference of docs/api.md (the part after its
 # "generated below" marker) from the header blocks of glsl/snell: per file,
 # the first sentence block of its description and every public function's
-# signature (SNELL_FN ... snellName(...)), in include order of the families.
+# signature (SNELL_FN ... snellName(...), macro parameters such as
+# SNELL_IN(T) included), in include order of the families.
 # tests/compile/check_api_doc.sh fails when docs/api.md differs from it.
 # Usage: functions.sh <repo root>
 set -euo pipefail
@@ -14,7 +15,7 @@ for family in optics camera intersect shade; do
   for f in $(find "snell/$family" -name '*.glsl' | sort); do
     sigs=$(perl -0777 -ne '
       s{/\*.*?\*/}{}gs; s{//[^\n]*}{}g;
-      while (/^SNELL_FN\s+([^{;]*?\bsnell\w+\s*\([^)]*\))/mg) { my $s = $1; $s =~ s/\s+/ /g; print "$s\n"; }' "$f")
+      while (/^SNELL_FN\s+([^{;]*?\bsnell\w+\s*\((?:[^()]|\([^()]*\))*\))/mg) { my $s = $1; $s =~ s/\s+/ /g; print "$s\n"; }' "$f")
     [ -n "$sigs" ] || continue
     desc=$(perl -0777 -ne 'if (m{/\*\s*\ndescription:\s*(.*?)\n(?:[a-z]+:|\*/)}s) { my $d = $1; $d =~ s/\s+/ /g; print $d; }' "$f")
     echo

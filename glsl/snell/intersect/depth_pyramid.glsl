@@ -54,7 +54,7 @@ source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
 #include "../camera/linearize_depth.glsl"
 #include "depth_surface.glsl"
 
-SNELL_FN vec4 snellDepthPyramidBase(float depthValue, SnellDepthSurface s) {
+SNELL_FN vec4 snellDepthPyramidBase(float depthValue, SNELL_IN(SnellDepthSurface) s) {
   vec4 empty = vec4(s.emptyDepth, 0.0f, 0.0f, 0.0f);
   if (!SNELL_FINITE(depthValue) || depthValue == s.emptyDepth) {
     return empty;

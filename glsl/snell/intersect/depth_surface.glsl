@@ -96,6 +96,8 @@ SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, flo
   return s;
 }
 
+/* The surface by value, not SNELL_IN: g++ inlines this read into every loop
+   that way, and measured slower by reference (benchmarks/kernels). */
 SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
   SnellSurfaceSample r;
   r.viewZ = 0.0f;

@@ -66,7 +66,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
    texel the plane was built from, so a normal read at h.uv returns that plane's
    normal. Off-screen or behind-the-camera p is a miss either way, and so is a
    NaN or infinite planeUv (no texel: the hit's uv stays finite). */
-SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SnellDepthSurface s, int fetchesSoFar) {
+SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) s, int fetchesSoFar) {
   SnellHit h = snellHitOnSurface(p, depthTex, s, fetchesSoFar);
   if (h.valid || SNELL_PLANE_HOLD == 0 || !s.closed) {
     return h;

@@ -28,7 +28,7 @@ source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC); the equations in
 #include "../camera/uv_z_to_view.glsl"
 #include "depth_surface.glsl"
 
-SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SnellDepthSurface s, vec3 pView) {
+SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, vec3 pView) {
   if (!s.perspective) {
     return snellViewToUv(s.clipFromView, pView);
   }
@@ -59,7 +59,7 @@ SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SnellDepthSurface s, vec3 pView) 
   return r;
 }
 
-SNELL_FN SnellViewPoint snellSurfaceUvZToView(SnellDepthSurface s, vec2 uv, float viewZ) {
+SNELL_FN SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface) s, vec2 uv, float viewZ) {
   if (!s.perspective) {
     return snellUvZToView(s.clipFromView, uv, viewZ);
   }

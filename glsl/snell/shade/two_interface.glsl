@@ -97,7 +97,7 @@ struct SnellTwoInterfacePath {
 /* Wyman 2005 / Oliveira & Brauwers 2007 sec. 3: P1, T1 -> P2 (back-face buffer), N2 -> T2 */
 SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
                                                       SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
-                                                      SNELL_TEX2D backPyramid, SnellDepthSurface back,
+                                                      SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back,
                                                       SnellTechniqueOptions o) {
   SnellTwoInterfacePath p;
   p.entryDirection = vec3(0.0f, 0.0f, 0.0f);

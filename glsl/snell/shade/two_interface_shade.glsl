@@ -113,7 +113,7 @@ struct SnellTwoInterfaceResult {
 
 SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_TEX2D sceneDepth,
                                                      SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid,
-                                                     SNELL_TEX2D sceneColor, SnellDepthSurface scene,
+                                                     SNELL_TEX2D sceneColor, SNELL_IN(SnellDepthSurface) scene,
                                                      SNELL_ENVIRONMENT_TEX environment, SnellTechniqueOptions o) {
   SnellTwoInterfaceExit e;
   e.color = vec3(0.0f, 0.0f, 0.0f);
@@ -163,10 +163,10 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
 /* Wyman 2005; Oliveira & Brauwers 2007; Mayer & Assarsson: the composed technique */
 SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition, vec3 frontNormal, float dN,
                                                              SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
-                                                             SNELL_TEX2D backPyramid, SnellDepthSurface back,
+                                                             SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back,
                                                              SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal,
                                                              SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor,
-                                                             SnellDepthSurface scene, SNELL_ENVIRONMENT_TEX environment,
+                                                             SNELL_IN(SnellDepthSurface) scene, SNELL_ENVIRONMENT_TEX environment,
                                                              SnellTechniqueOptions o) {
   bool three = o.dispersion == 3;
   float eta = snellIorToEta(o.iorOutside, three ? o.iors.y : o.ior);
