@@ -677,6 +677,8 @@ SNELL_FN vec2 snellPixelToUv(ivec2 px, ivec2 size) {
   return vec2(u, v);
 }
 
+#define SNELL_PIXEL_ON_SCREEN(uv, size) ivec2(min(int((uv).x * float((size).x)), (size).x - 1), min(int((uv).y * float((size).y)), (size).y - 1))
+
 SNELL_FN ivec2 snellUvToPixel(vec2 uv, ivec2 size) {
   if (size.x <= 0 || size.y <= 0) {
     return ivec2(0, 0);
@@ -948,7 +950,7 @@ SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, Sn
   if (size.x <= 0 || size.y <= 0) {
     return r;
   }
-  float d = SNELL_TEXEL_FETCH(depthTex, snellUvToPixel(uv, size), s.lod).x;
+  float d = SNELL_TEXEL_FETCH(depthTex, SNELL_PIXEL_ON_SCREEN(uv, size), s.lod).x;
   if (d == s.emptyDepth) {
     return r;
   }
@@ -1075,7 +1077,7 @@ SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SNEL
     return r;
   }
   ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
-  vec2 centre = x.interpolated ? uv : snellPixelToUv(snellUvToPixel(uv, size), size);
+  vec2 centre = x.interpolated ? uv : snellPixelToUv(SNELL_PIXEL_ON_SCREEN(uv, size), size);
   SnellViewPoint p = snellSurfaceUvZToView(s, centre, x.viewZ);
   if (!p.valid) {
     return r;

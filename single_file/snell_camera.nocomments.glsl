@@ -333,6 +333,8 @@ SNELL_FN vec2 snellPixelToUv(ivec2 px, ivec2 size) {
   return vec2(u, v);
 }
 
+#define SNELL_PIXEL_ON_SCREEN(uv, size) ivec2(min(int((uv).x * float((size).x)), (size).x - 1), min(int((uv).y * float((size).y)), (size).y - 1))
+
 SNELL_FN ivec2 snellUvToPixel(vec2 uv, ivec2 size) {
   if (size.x <= 0 || size.y <= 0) {
     return ivec2(0, 0);

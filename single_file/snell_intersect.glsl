@@ -419,6 +419,15 @@ SNELL_FN vec2 snellPixelToUv(ivec2 px, ivec2 size) {
   return vec2(u, v);
 }
 
+/* SNELL_PIXEL_ON_SCREEN(uv, size): snellUvToPixel(uv, size), the same texel,
+   for a uv already checked to lie in [0,1]^2 (so not NaN) and size > 0: there
+   the truncation is the floor and only uv == 1 needs the clamp, which saves the
+   NaN test, the floor and the lower clamp per read. A macro, not a function,
+   because it is undefined outside that domain (int() of NaN): only code that
+   has just checked the domain uses it (intersect/depth_surface.glsl,
+   intersect/surface_point.glsl). One line: GLSL 330 has no line continuation. */
+#define SNELL_PIXEL_ON_SCREEN(uv, size) ivec2(min(int((uv).x * float((size).x)), (size).x - 1), min(int((uv).y * float((size).y)), (size).y - 1))
+
 SNELL_FN ivec2 snellUvToPixel(vec2 uv, ivec2 size) {
   if (size.x <= 0 || size.y <= 0) {
     return ivec2(0, 0);
@@ -674,7 +683,7 @@ SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, Sn
   if (size.x <= 0 || size.y <= 0) {
     return r;
   }
-  float d = SNELL_TEXEL_FETCH(depthTex, snellUvToPixel(uv, size), s.lod).x;
+  float d = SNELL_TEXEL_FETCH(depthTex, SNELL_PIXEL_ON_SCREEN(uv, size), s.lod).x;
   if (d == s.emptyDepth) {
     return r;
   }
@@ -946,7 +955,8 @@ SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SNEL
     return r;
   }
   ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
-  vec2 centre = x.interpolated ? uv : snellPixelToUv(snellUvToPixel(uv, size), size);
+  // x.valid: uv is on screen and size > 0
+  vec2 centre = x.interpolated ? uv : snellPixelToUv(SNELL_PIXEL_ON_SCREEN(uv, size), size);
   SnellViewPoint p = snellSurfaceUvZToView(s, centre, x.viewZ);
   if (!p.valid) {
     return r;

@@ -93,8 +93,9 @@ class Texture2D {
   Image& level(int lod) { return levels_.at(static_cast<std::size_t>(lod)); }
 
   // textureSize: zero for a missing level, as GL does.
+  // (The unsigned comparisons test both bounds at once: a negative int is huge.)
   ivec2 size(int lod) const {
-    if (lod < 0 || lod >= levelCount()) return ivec2(0);
+    if (static_cast<unsigned>(lod) >= levels_.size()) return ivec2(0);
     const Image& l = levels_[static_cast<std::size_t>(lod)];
     return ivec2(l.width, l.height);
   }
@@ -102,9 +103,11 @@ class Texture2D {
   // texelFetch. GL leaves out-of-range fetches undefined; here they return 0
   // (what robust-access drivers return), so a bug shows as "invalid", not a crash.
   vec4 fetch(ivec2 px, int lod) const {
-    if (lod < 0 || lod >= levelCount()) return vec4(0.0f);
+    if (static_cast<unsigned>(lod) >= levels_.size()) return vec4(0.0f);
     const Image& l = levels_[static_cast<std::size_t>(lod)];
-    if (px.x < 0 || px.y < 0 || px.x >= l.width || px.y >= l.height) return vec4(0.0f);
+    if (static_cast<unsigned>(px.x) >= static_cast<unsigned>(l.width) ||
+        static_cast<unsigned>(px.y) >= static_cast<unsigned>(l.height))
+      return vec4(0.0f);
     return l.at(px.x, px.y);
   }
 

@@ -111,7 +111,7 @@ SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, Sn
   if (size.x <= 0 || size.y <= 0) {
     return r;
   }
-  float d = SNELL_TEXEL_FETCH(depthTex, snellUvToPixel(uv, size), s.lod).x;
+  float d = SNELL_TEXEL_FETCH(depthTex, SNELL_PIXEL_ON_SCREEN(uv, size), s.lod).x;
   if (d == s.emptyDepth) {
     return r;
   }

@@ -44,7 +44,8 @@ SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SNEL
     return r;
   }
   ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
-  vec2 centre = x.interpolated ? uv : snellPixelToUv(snellUvToPixel(uv, size), size);
+  // x.valid: uv is on screen and size > 0
+  vec2 centre = x.interpolated ? uv : snellPixelToUv(SNELL_PIXEL_ON_SCREEN(uv, size), size);
   SnellViewPoint p = snellSurfaceUvZToView(s, centre, x.viewZ);
   if (!p.valid) {
     return r;
