@@ -552,6 +552,10 @@ contract:
     gives (0,0).
   - snellUvToPixel(snellPixelToUv(p, size), size) == p for every p inside the
     viewport (sizes up to 2^22).
+  - SNELL_PIXEL_ON_SCREEN(uv, size) (a macro) == snellUvToPixel(uv, size) for
+    uv in [0,1]^2 and 0 < size < 2^24, without the NaN test, the floor and the
+    lower clamp; undefined elsewhere (int() of NaN), so only a caller that has
+    just checked the domain uses it.
 source: OpenGL 4.5 core spec sec. 8.14.2 (texel coordinates u = s W), sec. 14.5
   (fragment centres at (i + 0.5, j + 0.5)).
 */
@@ -567,7 +571,8 @@ SNELL_FN vec2 snellPixelToUv(ivec2 px, ivec2 size) {
 }
 
 /* SNELL_PIXEL_ON_SCREEN(uv, size): snellUvToPixel(uv, size), the same texel,
-   for a uv already checked to lie in [0,1]^2 (so not NaN) and size > 0: there
+   for a uv already checked to lie in [0,1]^2 (so not NaN) and 0 < size < 2^24
+   (any texture size; above, float(size) is inexact): there
    the truncation is the floor and only uv == 1 needs the clamp, which saves the
    NaN test, the floor and the lower clamp per read. A macro, not a function,
    because it is undefined outside that domain (int() of NaN): only code that

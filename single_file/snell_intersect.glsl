@@ -202,8 +202,10 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
                 perspective (columns (a,0,0,0) (0,b,0,0) (c,d,e,-1) (0,0,f,0):
                 symmetric, off-centre and jittered frusta). The strategies then
                 project and reconstruct without the products with the zero
-                entries (intersect/surface_projection.glsl, the same results);
-                set it false if you give clipFromView another shape afterwards
+                entries (intersect/surface_projection.glsl: the same results up
+                to the sign of an exact zero); a surface filled in field by
+                field must set it (false is always correct), as must code
+                that gives clipFromView another shape afterwards
 contract (snellSampleSurface):
   - NEAREST: reads the texel containing uv (no filtering: filtering depth
     invents surfaces between foreground and background, Oliveira & Brauwers
@@ -405,6 +407,10 @@ contract:
     gives (0,0).
   - snellUvToPixel(snellPixelToUv(p, size), size) == p for every p inside the
     viewport (sizes up to 2^22).
+  - SNELL_PIXEL_ON_SCREEN(uv, size) (a macro) == snellUvToPixel(uv, size) for
+    uv in [0,1]^2 and 0 < size < 2^24, without the NaN test, the floor and the
+    lower clamp; undefined elsewhere (int() of NaN), so only a caller that has
+    just checked the domain uses it.
 source: OpenGL 4.5 core spec sec. 8.14.2 (texel coordinates u = s W), sec. 14.5
   (fragment centres at (i + 0.5, j + 0.5)).
 */
@@ -420,7 +426,8 @@ SNELL_FN vec2 snellPixelToUv(ivec2 px, ivec2 size) {
 }
 
 /* SNELL_PIXEL_ON_SCREEN(uv, size): snellUvToPixel(uv, size), the same texel,
-   for a uv already checked to lie in [0,1]^2 (so not NaN) and size > 0: there
+   for a uv already checked to lie in [0,1]^2 (so not NaN) and 0 < size < 2^24
+   (any texture size; above, float(size) is inexact): there
    the truncation is the floor and only uv == 1 needs the clamp, which saves the
    NaN test, the floor and the lower clamp per read. A macro, not a function,
    because it is undefined outside that domain (int() of NaN): only code that
@@ -732,14 +739,17 @@ contract:
   - surface.perspective false: exactly snellViewToUv(surface.clipFromView, pView)
     and snellUvZToView(surface.clipFromView, uv, viewZ).
   - surface.perspective true (snellDepthSurface sets it when clipFromView's
-    columns are (a,0,0,0) (0,b,0,0) (c,d,e,-1) (0,0,f,0), the shape of every
-    perspective, off-centre and jittered frustum included): the same
-    operations without the products with those zero entries, which for a
-    finite product add +-0 and for an infinite one make NaN. The results are
-    the general path's bit for bit, valid flags included, except for the sign
-    of a coordinate that is exactly zero (uv never is: it is 0.5 ndc + 0.5) and
-    of an exactly zero ndcZ; with +0 zero entries, as glm::perspective and
-    snellPerspective write them, the reconstruction is bit-exact.
+    columns are (a,0,0,0) (0,b,0,0) (c,d,e,-1) (0,0,f,0): the right-handed
+    perspective of glm::perspective*, glFrustum and snellPerspective, off-centre
+    and jittered ones included; any other matrix takes the general path): the
+    same operations without the products with those zero entries, which add
+    +-0 to a finite term and make a non-finite one NaN, and non-finite terms
+    are invalid either way. The valid flags and values are the general path's
+    (in C++ with -ffp-contract=off, bit for bit), except the sign of a
+    coordinate that is exactly zero (uv never is: it is 0.5 ndc + 0.5) and of
+    an exactly zero ndcZ; with +0 zero entries, as glm::perspective and
+    snellPerspective write them, the reconstruction is bit-exact. GPU
+    compilers may fold the kept zero products; the parity tolerances cover it.
   - the flag is the surface's promise: set it false after giving clipFromView
     another shape.
 source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC); the equations in
@@ -885,19 +895,21 @@ SNELL_FN SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface) s, vec
   vec4 c2 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 2);
   float nx = 2.0f * uv.x - 1.0f;
   float ny = 2.0f * uv.y - 1.0f;
-  // The general system's a01 and a10 are 0 - n * 0 = +0 for a finite n, and
-  // NaN for an infinite one (2 uv - 1 overflows), which makes it singular.
+  // 2 uv - 1 overflows for a huge uv; the general path then ends invalid
+  // (its a01 = c1.x - n c1.w is NaN), and so does this test, early.
   if (!SNELL_FINITE(nx) || !SNELL_FINITE(ny)) {
     return r;
   }
-  // c2.x - n c2.w with c2.w = -1 is c2.x + n; c3.x - n c3.w is +0.
+  // c2.x - n c2.w with c2.w = -1 is c2.x + n; c3.x - n c3.w is a zero (+0 when
+  // c3.x and c3.w are +0), added as +0.
   float b0 = -(viewZ * (c2.x + nx) + 0.0f);
   float b1 = -(viewZ * (c2.y + ny) + 0.0f);
   float det = c0.x * c1.y;
   if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
     return r;
   }
-  // The zero coefficients stay as products: 0 * b is NaN for an infinite b.
+  // The zero coefficients a01, a10 stay as products with +0: they decide the
+  // sign of an exactly zero result as in the general path.
   float x = (b0 * c1.y - 0.0f * b1) / det;
   float y = (c0.x * b1 - b0 * 0.0f) / det;
   if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {

@@ -1,5 +1,5 @@
 // The scene and ray set of the kernel study (issue 14, "Speed at the limit"):
-// benchmarks/flags/flag_study.cpp's analytic sphere (back faces of a unit
+// an analytic sphere (back faces of a unit
 // sphere at z = -5, 256x256, GL depth, emptyDepth 0, normals in a Linear-filtered
 // Texture2D) and its 20000 rays, built once; plus the depth min/max pyramid for
 // the depth-based plane. Both implementations read these very buffers: snell
@@ -20,7 +20,7 @@
 namespace kscene {
 
 constexpr int kW = 256;        // buffer size (square)
-constexpr int kRays = 20000;   // the ray set (flag_study's)
+constexpr int kRays = 20000;   // the ray set
 
 struct Ray {
   float o[3];  // view-space origin (z = -4)
@@ -46,7 +46,7 @@ inline void build(Scene& sc, bool withPyramid = true, bool withWide = true) {
   snell::Image depth(W, W, vec4(0.0f)), normal(W, W, vec4(0.0f));
   for (int y = 0; y < W; ++y)
     for (int x = 0; x < W; ++x) {
-      // back hemisphere of a unit sphere at z = -5 (analytic), GL depth (flag_study.cpp)
+      // back hemisphere of a unit sphere at z = -5 (analytic), GL depth
       vec2 ndc((x + 0.5f) / W * 2 - 1, (y + 0.5f) / W * 2 - 1);
       vec3 d = normalize(vec3(ndc.x * tan(radians(22.5f)), ndc.y * tan(radians(22.5f)), -1.0f));
       vec3 c(0, 0, -5);
@@ -65,7 +65,7 @@ inline void build(Scene& sc, bool withPyramid = true, bool withWide = true) {
   if (withPyramid) sc.pyramid = snell::snellBuildDepthPyramid(sc.depth, sc.surface);
 
   sc.rays.resize(kRays);
-  for (int i = 0; i < kRays; ++i) {  // flag_study.cpp's rays, same expressions
+  for (int i = 0; i < kRays; ++i) {
     float a = i * 0.61803f, r = 0.8f * ((i * 7919) % 1000) / 1000.0f;
     vec3 o(r * cos(a), r * sin(a), -4.0f);
     vec3 dir = normalize(vec3(-0.2f * o.x, -0.2f * o.y, -1.0f));

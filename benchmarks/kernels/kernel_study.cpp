@@ -72,7 +72,7 @@ Hit fromSnell(const snell::SnellHit& h) {
 glm::vec3 v3(const float* p) { return glm::vec3(p[0], p[1], p[2]); }
 
 // name, snell's call, the kernel's call (S: the scene, R: the ray). The parameters
-// are flag_study.cpp's (plane normal: normalLod 0; CBS: zNearest -4, zFarthest
+// are the flag study's (plane normal: normalLod 0; CBS: zNearest -4, zFarthest
 // -6.2, 5 steps), intersect_plane_bench.cpp's (depth plane: maxLod = the
 // pyramid's top level) and intersect_search_bench.cpp's (LinearMarch32x4:
 // maxDistance 5, 32 steps, 4 refinements; DdaMarchStride1: maxDistance 5,

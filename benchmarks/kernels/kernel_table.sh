@@ -2,8 +2,8 @@
 # snell vs minimal hand-written kernels (issue 14, "Speed at the limit"): for each
 # strategy of kernel_study.cpp, checks that the kernel gives snell's output bits
 # on every ray (fails loudly otherwise), counts instructions per ray with
-# callgrind (machine independent: (Ir(20000 rays) - Ir(0 rays)) / 20000, as
-# benchmarks/flags/flag_study.sh) and times both in one process (interleaved
+# callgrind (machine independent: (Ir(20000 rays) - Ir(0 rays)) / 20000) and
+# times both in one process (interleaved
 # rounds, median ns/ray), at -O2 -ffp-contract=off and at that plus
 # -march=x86-64-v3; prints a Markdown table. Fails when the callgrind binary's
 # ray loop is not instruction for instruction the one timed. Not part of the suite.

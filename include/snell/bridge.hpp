@@ -93,7 +93,9 @@ class Texture2D {
   Image& level(int lod) { return levels_.at(static_cast<std::size_t>(lod)); }
 
   // textureSize: zero for a missing level, as GL does.
-  // (The unsigned comparisons test both bounds at once: a negative int is huge.)
+  // (The unsigned comparisons test both bounds at once: a negative int is huge.
+  // Image's constructor keeps width and height positive; a default Image's
+  // zero size makes every texel out of range.)
   ivec2 size(int lod) const {
     if (static_cast<unsigned>(lod) >= levels_.size()) return ivec2(0);
     const Image& l = levels_[static_cast<std::size_t>(lod)];

@@ -128,18 +128,62 @@ TEST(SurfaceProjection, MatchesTheProjectionInDouble) {
   }
 }
 
-// With the flag cleared the general path runs, whatever the matrix.
+// Hostile free entries (NaN, +-Inf, huge, zero, denormal in a..f) and -0 in
+// the zero entries still pass the shape test; the fast path then agrees with
+// the general one on valid and on every value (up to the sign of a zero).
+TEST(SurfaceProjection, HostileEntriesAgreeWithTheGeneralPath) {
+  std::mt19937 rng(44);
+  std::uniform_real_distribution<float> s(-2.0f, 2.0f), logZ(-3.0f, 4.0f), uv(-0.3f, 1.3f), pick(0.0f, 1.0f);
+  const float hostile[] = {kNaN, kInf, -kInf, 0.0f, -0.0f, 1e-40f, 3e38f, -3e38f, 1e20f};
+  const int freeEntries[6][2] = {{0, 0}, {1, 1}, {2, 0}, {2, 1}, {2, 2}, {3, 2}};
+  const int zeroEntries[9][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 0}, {1, 2}, {1, 3}, {3, 0}, {3, 1}, {3, 3}};
+  auto same = [](float a, float b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+  int valid = 0;
+  for (int i = 0; i < 200000; ++i) {
+    glm::mat4 m = randomPerspective(rng, i);
+    if (pick(rng) < 0.5f) {
+      const int* e = freeEntries[i % 6];
+      m[e[0]][e[1]] = hostile[(i / 6) % 9];
+    }
+    if (pick(rng) < 0.3f) {
+      const int* z = zeroEntries[i % 9];
+      m[z[0]][z[1]] = -0.0f;
+    }
+    const SnellDepthSurface surf = snellDepthSurface(m, 0.1f, 100.0f, SNELL_DEPTH_GL, 0.0f);
+    ASSERT_TRUE(surf.perspective);
+    const float z = -std::pow(10.0f, logZ(rng));
+    glm::vec3 p(s(rng) * -z, s(rng) * -z, z);
+    if (pick(rng) < 0.1f) p[i % 3] = hostile[i % 9];
+    const glm::vec2 t(uv(rng), uv(rng));
+    const SnellScreenPoint a = snellSurfaceViewToUv(surf, p), b = snellViewToUv(m, p);
+    ASSERT_EQ(a.valid, b.valid) << i;
+    ASSERT_TRUE(same(a.uv.x, b.uv.x) && same(a.uv.y, b.uv.y) && same(a.ndcZ, b.ndcZ)) << i;
+    const SnellViewPoint c = snellSurfaceUvZToView(surf, t, z), d = snellUvZToView(m, t, z);
+    ASSERT_EQ(c.valid, d.valid) << i;
+    for (int k = 0; k < 3; ++k) ASSERT_TRUE(same(c.position[k], d.position[k])) << i << " " << k;
+    valid += a.valid && c.valid;
+  }
+  EXPECT_GT(valid, 80000);
+}
+
+// A surface whose matrix is changed to another shape must have its flag
+// cleared: then the general path runs; a stale flag would ignore the shear.
 TEST(SurfaceProjection, ClearedFlagRunsTheGeneralPath) {
-  glm::mat4 sheared = glm::perspective(1.0f, 1.3f, 0.1f, 100.0f);
+  SnellDepthSurface surf = snellDepthSurface(glm::perspective(1.0f, 1.3f, 0.1f, 100.0f), 0.1f, 100.0f,
+                                             SNELL_DEPTH_GL, 0.0f);
+  ASSERT_TRUE(surf.perspective);
+  glm::mat4 sheared = surf.clipFromView;
   sheared[1][0] = 0.2f;
-  SnellDepthSurface surf = snellDepthSurface(sheared, 0.1f, 100.0f, SNELL_DEPTH_GL, 0.0f);
-  ASSERT_FALSE(surf.perspective);
+  surf.clipFromView = sheared;
   const glm::vec3 p(0.3f, -0.4f, -2.0f);
+  const SnellScreenPoint stale = snellSurfaceViewToUv(surf, p);
+  surf.perspective = false;
   const SnellScreenPoint a = snellSurfaceViewToUv(surf, p), b = snellViewToUv(sheared, p);
   EXPECT_TRUE(a.valid && sameBits(a.uv.x, b.uv.x) && sameBits(a.uv.y, b.uv.y));
+  EXPECT_GT(std::fabs(stale.uv.x - b.uv.x), 1e-3f);  // what the flag is for
   const SnellViewPoint c = snellSurfaceUvZToView(surf, a.uv, p.z);
   ASSERT_TRUE(c.valid);
-  EXPECT_NEAR(c.position.x, p.x, 1e-5f);  // the shear is undone: the fast path would not
+  EXPECT_NEAR(c.position.x, p.x, 1e-5f);
   EXPECT_NEAR(c.position.y, p.y, 1e-5f);
 }
 

@@ -30,8 +30,10 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
                 perspective (columns (a,0,0,0) (0,b,0,0) (c,d,e,-1) (0,0,f,0):
                 symmetric, off-centre and jittered frusta). The strategies then
                 project and reconstruct without the products with the zero
-                entries (intersect/surface_projection.glsl, the same results);
-                set it false if you give clipFromView another shape afterwards
+                entries (intersect/surface_projection.glsl: the same results up
+                to the sign of an exact zero); a surface filled in field by
+                field must set it (false is always correct), as must code
+                that gives clipFromView another shape afterwards
 contract (snellSampleSurface):
   - NEAREST: reads the texel containing uv (no filtering: filtering depth
     invents surfaces between foreground and background, Oliveira & Brauwers
