@@ -863,6 +863,8 @@ options:
   SNELL_CAMERA_MAT4_COLUMNS(c0, c1, c2, c3)  a mat4 from four column vec4s in
                                  every language (GLSL/GLM constructors take
                                  columns, HLSL's take rows)
+  SNELL_CAMERA_MAT_COLUMN(m, i)  column i of a mat4 (its i-th basis image) in
+                                 every language, without a matrix product
 contract:
   - view space is right-handed; the camera sits at the origin and looks down -Z,
     so points in front of it have z < 0. "View distance" is -z_view (> 0 in front).
@@ -897,6 +899,13 @@ source: OpenGL 4.5 core spec sec. 13.6 (coordinate transformations, glDepthRange
 #  define SNELL_CAMERA_MAT4_COLUMNS(c0, c1, c2, c3) transpose(float4x4(c0, c1, c2, c3))
 #else
 #  define SNELL_CAMERA_MAT4_COLUMNS(c0, c1, c2, c3) mat4(c0, c1, c2, c3)
+#endif
+
+/* GLSL and GLM index a matrix's columns, HLSL its rows. */
+#if defined(SNELL_LANG_HLSL)
+#  define SNELL_CAMERA_MAT_COLUMN(m, i) (transpose(m)[i])
+#else
+#  define SNELL_CAMERA_MAT_COLUMN(m, i) ((m)[i])
 #endif
 
 #endif
@@ -1405,13 +1414,6 @@ source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC).
 
 
 
-/* Column i of a matrix (the matrix's i-th basis image) without a matrix product:
-   GLSL and GLM index columns, HLSL rows. */
-#if defined(SNELL_LANG_HLSL)
-#  define SNELL_CAMERA_MAT_COLUMN(m, i) (transpose(m)[i])
-#else
-#  define SNELL_CAMERA_MAT_COLUMN(m, i) ((m)[i])
-#endif
 
 SNELL_FN SnellViewPoint snellUvZToView(mat4 clipFromView, vec2 uv, float viewZ) {
   SnellViewPoint r;

@@ -108,6 +108,12 @@
 #  define SNELL_CAMERA_MAT4_COLUMNS(c0, c1, c2, c3) mat4(c0, c1, c2, c3)
 #endif
 
+#if defined(SNELL_LANG_HLSL)
+#  define SNELL_CAMERA_MAT_COLUMN(m, i) (transpose(m)[i])
+#else
+#  define SNELL_CAMERA_MAT_COLUMN(m, i) ((m)[i])
+#endif
+
 #endif
 
 #ifndef SNELL_CAMERA_LINEARIZE_DEPTH_GLSL
@@ -406,12 +412,6 @@ SNELL_FN SnellViewPoint snellUvDistanceToView(vec2 uv, float viewDistance, mat4 
 
 #ifndef SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
 #define SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
-
-#if defined(SNELL_LANG_HLSL)
-#  define SNELL_CAMERA_MAT_COLUMN(m, i) (transpose(m)[i])
-#else
-#  define SNELL_CAMERA_MAT_COLUMN(m, i) ((m)[i])
-#endif
 
 SNELL_FN SnellViewPoint snellUvZToView(mat4 clipFromView, vec2 uv, float viewZ) {
   SnellViewPoint r;

@@ -289,6 +289,8 @@ options:
   SNELL_CAMERA_MAT4_COLUMNS(c0, c1, c2, c3)  a mat4 from four column vec4s in
                                  every language (GLSL/GLM constructors take
                                  columns, HLSL's take rows)
+  SNELL_CAMERA_MAT_COLUMN(m, i)  column i of a mat4 (its i-th basis image) in
+                                 every language, without a matrix product
 contract:
   - view space is right-handed; the camera sits at the origin and looks down -Z,
     so points in front of it have z < 0. "View distance" is -z_view (> 0 in front).
@@ -323,6 +325,13 @@ source: OpenGL 4.5 core spec sec. 13.6 (coordinate transformations, glDepthRange
 #  define SNELL_CAMERA_MAT4_COLUMNS(c0, c1, c2, c3) transpose(float4x4(c0, c1, c2, c3))
 #else
 #  define SNELL_CAMERA_MAT4_COLUMNS(c0, c1, c2, c3) mat4(c0, c1, c2, c3)
+#endif
+
+/* GLSL and GLM index a matrix's columns, HLSL its rows. */
+#if defined(SNELL_LANG_HLSL)
+#  define SNELL_CAMERA_MAT_COLUMN(m, i) (transpose(m)[i])
+#else
+#  define SNELL_CAMERA_MAT_COLUMN(m, i) ((m)[i])
 #endif
 
 #endif
@@ -445,194 +454,7 @@ SNELL_FN ivec2 snellUvToPixel(vec2 uv, ivec2 size) {
 }
 
 #endif
-/*
-description: the inverse projection for a known view z: the view-space point
-  on the pixel ray of a uv at a given depth, without an inverse matrix (the
-  surface strategies reconstruct every depth texel through it).
-use: SnellViewPoint p = snellUvZToView(clipFromView, uv, viewZ);
-  uv            viewport uv ([0,1]^2, origin bottom-left)
-  viewZ         view-space z (< 0) of the wanted point
-  clipFromView  any projection with clip w = -z (perspective.glsl, glm::perspective*,
-                glFrustum, off-centre frusta); no inverse matrix is needed
-contract:
-  - the point p with p.z == viewZ whose projection has NDC xy =
-    2 uv - 1, from the 2x2 linear system clip.xy = ndc.xy clip.w (Cramer's rule on
-    the matrix columns). valid =
-    false, position (0,0,0), when an input is NaN/Inf, viewZ >= 0 or denormal, the
-    system is singular (|det| below the smallest normal float) or the result
-    overflows.
-source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC).
-*/
-#ifndef SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
-#define SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
 
-/*
-description: reconstruct the view-space position seen at a uv from a depth-buffer
-  value (snellUvDepthToView) or from a linear view distance (snellUvDistanceToView).
-use: SnellViewPoint p = snellUvDepthToView(uv, depthValue, viewFromClip, SNELL_DEPTH_GL);
-     SnellViewPoint p = snellUvDistanceToView(uv, viewDistance, viewFromClip);
-  viewFromClip  inverse of the projection (snellPerspectiveInverse, or your
-                engine's inverse projection matrix)
-  depthValue    the stored depth-buffer value ([0,1], window space), not NDC z
-  viewDistance  -z_view (> 0), e.g. snellLinearizeDepth(...) or a linear depth texture
-contract:
-  - snellUvDepthToView: ndc = (2 uv - 1, snellDepthToNdcZ(depthValue, convention)),
-    h = viewFromClip * vec4(ndc, 1), position = h.xyz / h.w. depthValue is clamped
-    to [0,1]; uv outside [0,1] is allowed (the point is off screen).
-  - snellUvDistanceToView: the point at z = -viewDistance on the ray from the eye
-    through uv (found by unprojecting NDC z = 0.5, a finite point in front of the
-    camera for every convention); position.z == -viewDistance exactly. Requires a
-    perspective projection (eye at the view-space origin).
-  - valid is true exactly when the result is finite and in front of the camera
-    (position.z < 0). It is false, with position (0,0,0), for NaN/Inf inputs, an
-    unknown convention, depth on the far plane of an infinite convention (depth 1
-    INFINITE_GL, depth 0 INFINITE_REVERSED: h.w = 0, the point is at infinity, e.g.
-    sky pixels), a zero/singular matrix (|h.w| below the smallest normal float),
-    viewDistance <= 0 or denormal (at or behind the camera) or a reconstruction at or behind the camera plane.
-source: OpenGL 4.5 core spec sec. 13.6, inverted; Oliveira & Brauwers 2007 sec.
-  3.2.1 (camera-space points from depth maps under perspective projection).
-*/
-#ifndef SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
-#define SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
-
-
-/*
-description: depth-buffer value <-> NDC z for a depth convention (the
-  glDepthRange / viewport depth transform with its default range).
-use: float zNdc = snellDepthToNdcZ(depthValue, SNELL_DEPTH_GL);
-     float depthValue = snellNdcZToDepth(zNdc, SNELL_DEPTH_GL);
-contract:
-  - SNELL_DEPTH_GL and SNELL_DEPTH_INFINITE_GL: z_ndc = 2 d - 1, d = 0.5 z_ndc + 0.5;
-    every other convention (ZERO_ONE, REVERSED, INFINITE_REVERSED, and unknown
-    values) has NDC z in [0,1] and stores it unchanged.
-  - inputs are clamped into their range first (depth [0,1]; NDC z [-1,1] or
-    [0,1]), which is what a depth buffer (or GL_DEPTH_CLAMP) does with them;
-    NaN is treated as the low end of the range. Results are always finite.
-source: OpenGL 4.5 core spec sec. 13.6.1 (z_w = (f - n)/2 z_d + (n + f)/2 with the
-  default glDepthRange(0,1)) and sec. 13.7 (glClipControl GL_ZERO_TO_ONE: z_w = z_d).
-*/
-#ifndef SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
-#define SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
-
-
-
-SNELL_FN float snellDepthToNdcZ(float depthValue, int convention) {
-  float d = isnan(depthValue) ? 0.0f : clamp(depthValue, 0.0f, 1.0f);
-  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
-    return 2.0f * d - 1.0f;
-  }
-  return d;
-}
-
-SNELL_FN float snellNdcZToDepth(float ndcZ, int convention) {
-  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
-    float z = isnan(ndcZ) ? -1.0f : clamp(ndcZ, -1.0f, 1.0f);
-    return 0.5f * z + 0.5f;
-  }
-  return isnan(ndcZ) ? 0.0f : clamp(ndcZ, 0.0f, 1.0f);
-}
-
-#endif
-
-struct SnellViewPoint {
-  vec3 position;
-  bool valid;
-};
-
-SNELL_FN SnellViewPoint snellUvDepthToView(vec2 uv, float depthValue, mat4 viewFromClip, int convention) {
-  SnellViewPoint r;
-  r.position = vec3(0.0f, 0.0f, 0.0f);
-  r.valid = false;
-  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || isnan(depthValue) || convention < 0 ||
-      convention >= SNELL_DEPTH_CONVENTION_COUNT) {
-    return r;
-  }
-  float zNdc = snellDepthToNdcZ(depthValue, convention);
-  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, zNdc, 1.0f));
-  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
-    return r;
-  }
-  vec3 p = vec3(h.x, h.y, h.z) / h.w;
-  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z) || !(p.z < 0.0f)) {
-    return r;
-  }
-  r.position = p;
-  r.valid = true;
-  return r;
-}
-
-SNELL_FN SnellViewPoint snellUvDistanceToView(vec2 uv, float viewDistance, mat4 viewFromClip) {
-  SnellViewPoint r;
-  r.position = vec3(0.0f, 0.0f, 0.0f);
-  r.valid = false;
-  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewDistance) ||
-      !(viewDistance >= SNELL_FLT_MIN)) {
-    return r;
-  }
-  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, 0.5f, 1.0f));
-  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
-    return r;
-  }
-  vec3 q = vec3(h.x, h.y, h.z) / h.w;
-  if (!SNELL_FINITE(q.x) || !SNELL_FINITE(q.y) || !SNELL_FINITE(q.z) || !(q.z < 0.0f)) {
-    return r;
-  }
-  float s = viewDistance / -q.z;
-  vec3 p = vec3(q.x * s, q.y * s, -viewDistance);
-  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y)) {
-    return r;
-  }
-  r.position = p;
-  r.valid = true;
-  return r;
-}
-
-#endif
-
-/* Column i of a matrix (the matrix's i-th basis image) without a matrix product:
-   GLSL and GLM index columns, HLSL rows. */
-#if defined(SNELL_LANG_HLSL)
-#  define SNELL_CAMERA_MAT_COLUMN(m, i) (transpose(m)[i])
-#else
-#  define SNELL_CAMERA_MAT_COLUMN(m, i) ((m)[i])
-#endif
-
-SNELL_FN SnellViewPoint snellUvZToView(mat4 clipFromView, vec2 uv, float viewZ) {
-  SnellViewPoint r;
-  r.position = vec3(0.0f, 0.0f, 0.0f);
-  r.valid = false;
-  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
-      !(viewZ <= -SNELL_FLT_MIN)) {
-    return r;
-  }
-  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
-  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
-  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
-  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
-  float nx = 2.0f * uv.x - 1.0f;
-  float ny = 2.0f * uv.y - 1.0f;
-  // x a00 + y a01 = b0,  x a10 + y a11 = b1
-  float a00 = c0.x - nx * c0.w;
-  float a01 = c1.x - nx * c1.w;
-  float a10 = c0.y - ny * c0.w;
-  float a11 = c1.y - ny * c1.w;
-  float b0 = -(viewZ * (c2.x - nx * c2.w) + (c3.x - nx * c3.w));
-  float b1 = -(viewZ * (c2.y - ny * c2.w) + (c3.y - ny * c3.w));
-  float det = a00 * a11 - a01 * a10;
-  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
-    return r;
-  }
-  float x = (b0 * a11 - a01 * b1) / det;
-  float y = (a00 * b1 - b0 * a10) / det;
-  if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
-    return r;
-  }
-  r.position = vec3(x, y, viewZ);
-  r.valid = true;
-  return r;
-}
-
-#endif
 
 #define SNELL_DEPTH_FILTER_NEAREST 0
 #define SNELL_DEPTH_FILTER_BILINEAR 1
@@ -845,7 +667,187 @@ SNELL_FN SnellScreenPoint snellViewToUv(mat4 clipFromView, vec3 pView) {
 }
 
 #endif
+/*
+description: the inverse projection for a known view z: the view-space point
+  on the pixel ray of a uv at a given depth, without an inverse matrix (the
+  surface strategies reconstruct every depth texel through it).
+use: SnellViewPoint p = snellUvZToView(clipFromView, uv, viewZ);
+  uv            viewport uv ([0,1]^2, origin bottom-left)
+  viewZ         view-space z (< 0) of the wanted point
+  clipFromView  any projection with clip w = -z (perspective.glsl, glm::perspective*,
+                glFrustum, off-centre frusta); no inverse matrix is needed
+contract:
+  - the point p with p.z == viewZ whose projection has NDC xy =
+    2 uv - 1, from the 2x2 linear system clip.xy = ndc.xy clip.w (Cramer's rule on
+    the matrix columns). valid =
+    false, position (0,0,0), when an input is NaN/Inf, viewZ >= 0 or denormal, the
+    system is singular (|det| below the smallest normal float) or the result
+    overflows.
+source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC).
+*/
+#ifndef SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
+#define SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
 
+
+/*
+description: reconstruct the view-space position seen at a uv from a depth-buffer
+  value (snellUvDepthToView) or from a linear view distance (snellUvDistanceToView).
+use: SnellViewPoint p = snellUvDepthToView(uv, depthValue, viewFromClip, SNELL_DEPTH_GL);
+     SnellViewPoint p = snellUvDistanceToView(uv, viewDistance, viewFromClip);
+  viewFromClip  inverse of the projection (snellPerspectiveInverse, or your
+                engine's inverse projection matrix)
+  depthValue    the stored depth-buffer value ([0,1], window space), not NDC z
+  viewDistance  -z_view (> 0), e.g. snellLinearizeDepth(...) or a linear depth texture
+contract:
+  - snellUvDepthToView: ndc = (2 uv - 1, snellDepthToNdcZ(depthValue, convention)),
+    h = viewFromClip * vec4(ndc, 1), position = h.xyz / h.w. depthValue is clamped
+    to [0,1]; uv outside [0,1] is allowed (the point is off screen).
+  - snellUvDistanceToView: the point at z = -viewDistance on the ray from the eye
+    through uv (found by unprojecting NDC z = 0.5, a finite point in front of the
+    camera for every convention); position.z == -viewDistance exactly. Requires a
+    perspective projection (eye at the view-space origin).
+  - valid is true exactly when the result is finite and in front of the camera
+    (position.z < 0). It is false, with position (0,0,0), for NaN/Inf inputs, an
+    unknown convention, depth on the far plane of an infinite convention (depth 1
+    INFINITE_GL, depth 0 INFINITE_REVERSED: h.w = 0, the point is at infinity, e.g.
+    sky pixels), a zero/singular matrix (|h.w| below the smallest normal float),
+    viewDistance <= 0 or denormal (at or behind the camera) or a reconstruction at or behind the camera plane.
+source: OpenGL 4.5 core spec sec. 13.6, inverted; Oliveira & Brauwers 2007 sec.
+  3.2.1 (camera-space points from depth maps under perspective projection).
+*/
+#ifndef SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
+#define SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
+
+
+/*
+description: depth-buffer value <-> NDC z for a depth convention (the
+  glDepthRange / viewport depth transform with its default range).
+use: float zNdc = snellDepthToNdcZ(depthValue, SNELL_DEPTH_GL);
+     float depthValue = snellNdcZToDepth(zNdc, SNELL_DEPTH_GL);
+contract:
+  - SNELL_DEPTH_GL and SNELL_DEPTH_INFINITE_GL: z_ndc = 2 d - 1, d = 0.5 z_ndc + 0.5;
+    every other convention (ZERO_ONE, REVERSED, INFINITE_REVERSED, and unknown
+    values) has NDC z in [0,1] and stores it unchanged.
+  - inputs are clamped into their range first (depth [0,1]; NDC z [-1,1] or
+    [0,1]), which is what a depth buffer (or GL_DEPTH_CLAMP) does with them;
+    NaN is treated as the low end of the range. Results are always finite.
+source: OpenGL 4.5 core spec sec. 13.6.1 (z_w = (f - n)/2 z_d + (n + f)/2 with the
+  default glDepthRange(0,1)) and sec. 13.7 (glClipControl GL_ZERO_TO_ONE: z_w = z_d).
+*/
+#ifndef SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
+#define SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
+
+
+
+SNELL_FN float snellDepthToNdcZ(float depthValue, int convention) {
+  float d = isnan(depthValue) ? 0.0f : clamp(depthValue, 0.0f, 1.0f);
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
+    return 2.0f * d - 1.0f;
+  }
+  return d;
+}
+
+SNELL_FN float snellNdcZToDepth(float ndcZ, int convention) {
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
+    float z = isnan(ndcZ) ? -1.0f : clamp(ndcZ, -1.0f, 1.0f);
+    return 0.5f * z + 0.5f;
+  }
+  return isnan(ndcZ) ? 0.0f : clamp(ndcZ, 0.0f, 1.0f);
+}
+
+#endif
+
+struct SnellViewPoint {
+  vec3 position;
+  bool valid;
+};
+
+SNELL_FN SnellViewPoint snellUvDepthToView(vec2 uv, float depthValue, mat4 viewFromClip, int convention) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || isnan(depthValue) || convention < 0 ||
+      convention >= SNELL_DEPTH_CONVENTION_COUNT) {
+    return r;
+  }
+  float zNdc = snellDepthToNdcZ(depthValue, convention);
+  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, zNdc, 1.0f));
+  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 p = vec3(h.x, h.y, h.z) / h.w;
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z) || !(p.z < 0.0f)) {
+    return r;
+  }
+  r.position = p;
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN SnellViewPoint snellUvDistanceToView(vec2 uv, float viewDistance, mat4 viewFromClip) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewDistance) ||
+      !(viewDistance >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, 0.5f, 1.0f));
+  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 q = vec3(h.x, h.y, h.z) / h.w;
+  if (!SNELL_FINITE(q.x) || !SNELL_FINITE(q.y) || !SNELL_FINITE(q.z) || !(q.z < 0.0f)) {
+    return r;
+  }
+  float s = viewDistance / -q.z;
+  vec3 p = vec3(q.x * s, q.y * s, -viewDistance);
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y)) {
+    return r;
+  }
+  r.position = p;
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+SNELL_FN SnellViewPoint snellUvZToView(mat4 clipFromView, vec2 uv, float viewZ) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
+      !(viewZ <= -SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
+  float nx = 2.0f * uv.x - 1.0f;
+  float ny = 2.0f * uv.y - 1.0f;
+  // x a00 + y a01 = b0,  x a10 + y a11 = b1
+  float a00 = c0.x - nx * c0.w;
+  float a01 = c1.x - nx * c1.w;
+  float a10 = c0.y - ny * c0.w;
+  float a11 = c1.y - ny * c1.w;
+  float b0 = -(viewZ * (c2.x - nx * c2.w) + (c3.x - nx * c3.w));
+  float b1 = -(viewZ * (c2.y - ny * c2.w) + (c3.y - ny * c3.w));
+  float det = a00 * a11 - a01 * a10;
+  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  float x = (b0 * a11 - a01 * b1) / det;
+  float y = (a00 * b1 - b0 * a10) / det;
+  if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
+    return r;
+  }
+  r.position = vec3(x, y, viewZ);
+  r.valid = true;
+  return r;
+}
+
+#endif
 
 
 SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, vec3 pView) {

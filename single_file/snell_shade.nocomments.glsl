@@ -111,6 +111,12 @@
 #  define SNELL_CAMERA_MAT4_COLUMNS(c0, c1, c2, c3) mat4(c0, c1, c2, c3)
 #endif
 
+#if defined(SNELL_LANG_HLSL)
+#  define SNELL_CAMERA_MAT_COLUMN(m, i) (transpose(m)[i])
+#else
+#  define SNELL_CAMERA_MAT_COLUMN(m, i) ((m)[i])
+#endif
+
 #endif
 
 #ifndef SNELL_PERTURB_SCALE
@@ -1003,130 +1009,6 @@ SNELL_FN ivec2 snellUvToPixel(vec2 uv, ivec2 size) {
 
 #endif
 
-#ifndef SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
-#define SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
-
-#ifndef SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
-#define SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
-
-#ifndef SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
-#define SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
-
-SNELL_FN float snellDepthToNdcZ(float depthValue, int convention) {
-  float d = isnan(depthValue) ? 0.0f : clamp(depthValue, 0.0f, 1.0f);
-  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
-    return 2.0f * d - 1.0f;
-  }
-  return d;
-}
-
-SNELL_FN float snellNdcZToDepth(float ndcZ, int convention) {
-  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
-    float z = isnan(ndcZ) ? -1.0f : clamp(ndcZ, -1.0f, 1.0f);
-    return 0.5f * z + 0.5f;
-  }
-  return isnan(ndcZ) ? 0.0f : clamp(ndcZ, 0.0f, 1.0f);
-}
-
-#endif
-
-struct SnellViewPoint {
-  vec3 position;
-  bool valid;
-};
-
-SNELL_FN SnellViewPoint snellUvDepthToView(vec2 uv, float depthValue, mat4 viewFromClip, int convention) {
-  SnellViewPoint r;
-  r.position = vec3(0.0f, 0.0f, 0.0f);
-  r.valid = false;
-  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || isnan(depthValue) || convention < 0 ||
-      convention >= SNELL_DEPTH_CONVENTION_COUNT) {
-    return r;
-  }
-  float zNdc = snellDepthToNdcZ(depthValue, convention);
-  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, zNdc, 1.0f));
-  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
-    return r;
-  }
-  vec3 p = vec3(h.x, h.y, h.z) / h.w;
-  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z) || !(p.z < 0.0f)) {
-    return r;
-  }
-  r.position = p;
-  r.valid = true;
-  return r;
-}
-
-SNELL_FN SnellViewPoint snellUvDistanceToView(vec2 uv, float viewDistance, mat4 viewFromClip) {
-  SnellViewPoint r;
-  r.position = vec3(0.0f, 0.0f, 0.0f);
-  r.valid = false;
-  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewDistance) ||
-      !(viewDistance >= SNELL_FLT_MIN)) {
-    return r;
-  }
-  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, 0.5f, 1.0f));
-  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
-    return r;
-  }
-  vec3 q = vec3(h.x, h.y, h.z) / h.w;
-  if (!SNELL_FINITE(q.x) || !SNELL_FINITE(q.y) || !SNELL_FINITE(q.z) || !(q.z < 0.0f)) {
-    return r;
-  }
-  float s = viewDistance / -q.z;
-  vec3 p = vec3(q.x * s, q.y * s, -viewDistance);
-  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y)) {
-    return r;
-  }
-  r.position = p;
-  r.valid = true;
-  return r;
-}
-
-#endif
-
-#if defined(SNELL_LANG_HLSL)
-#  define SNELL_CAMERA_MAT_COLUMN(m, i) (transpose(m)[i])
-#else
-#  define SNELL_CAMERA_MAT_COLUMN(m, i) ((m)[i])
-#endif
-
-SNELL_FN SnellViewPoint snellUvZToView(mat4 clipFromView, vec2 uv, float viewZ) {
-  SnellViewPoint r;
-  r.position = vec3(0.0f, 0.0f, 0.0f);
-  r.valid = false;
-  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
-      !(viewZ <= -SNELL_FLT_MIN)) {
-    return r;
-  }
-  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
-  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
-  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
-  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
-  float nx = 2.0f * uv.x - 1.0f;
-  float ny = 2.0f * uv.y - 1.0f;
-  float a00 = c0.x - nx * c0.w;
-  float a01 = c1.x - nx * c1.w;
-  float a10 = c0.y - ny * c0.w;
-  float a11 = c1.y - ny * c1.w;
-  float b0 = -(viewZ * (c2.x - nx * c2.w) + (c3.x - nx * c3.w));
-  float b1 = -(viewZ * (c2.y - ny * c2.w) + (c3.y - ny * c3.w));
-  float det = a00 * a11 - a01 * a10;
-  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
-    return r;
-  }
-  float x = (b0 * a11 - a01 * b1) / det;
-  float y = (a00 * b1 - b0 * a10) / det;
-  if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
-    return r;
-  }
-  r.position = vec3(x, y, viewZ);
-  r.valid = true;
-  return r;
-}
-
-#endif
-
 #define SNELL_DEPTH_FILTER_NEAREST 0
 #define SNELL_DEPTH_FILTER_BILINEAR 1
 
@@ -1355,6 +1237,124 @@ SNELL_FN SnellScreenPoint snellViewToUv(mat4 clipFromView, vec3 pView) {
 
 #ifndef SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
 #define SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
+
+#ifndef SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
+#define SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
+
+#ifndef SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
+#define SNELL_CAMERA_UV_DEPTH_TO_VIEW_GLSL
+
+#ifndef SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
+#define SNELL_CAMERA_DEPTH_TO_NDC_Z_GLSL
+
+SNELL_FN float snellDepthToNdcZ(float depthValue, int convention) {
+  float d = isnan(depthValue) ? 0.0f : clamp(depthValue, 0.0f, 1.0f);
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
+    return 2.0f * d - 1.0f;
+  }
+  return d;
+}
+
+SNELL_FN float snellNdcZToDepth(float ndcZ, int convention) {
+  if (convention == SNELL_DEPTH_GL || convention == SNELL_DEPTH_INFINITE_GL) {
+    float z = isnan(ndcZ) ? -1.0f : clamp(ndcZ, -1.0f, 1.0f);
+    return 0.5f * z + 0.5f;
+  }
+  return isnan(ndcZ) ? 0.0f : clamp(ndcZ, 0.0f, 1.0f);
+}
+
+#endif
+
+struct SnellViewPoint {
+  vec3 position;
+  bool valid;
+};
+
+SNELL_FN SnellViewPoint snellUvDepthToView(vec2 uv, float depthValue, mat4 viewFromClip, int convention) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || isnan(depthValue) || convention < 0 ||
+      convention >= SNELL_DEPTH_CONVENTION_COUNT) {
+    return r;
+  }
+  float zNdc = snellDepthToNdcZ(depthValue, convention);
+  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, zNdc, 1.0f));
+  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 p = vec3(h.x, h.y, h.z) / h.w;
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z) || !(p.z < 0.0f)) {
+    return r;
+  }
+  r.position = p;
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN SnellViewPoint snellUvDistanceToView(vec2 uv, float viewDistance, mat4 viewFromClip) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewDistance) ||
+      !(viewDistance >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec4 h = SNELL_MUL(viewFromClip, vec4(2.0f * uv.x - 1.0f, 2.0f * uv.y - 1.0f, 0.5f, 1.0f));
+  if (!SNELL_FINITE(h.w) || !(abs(h.w) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec3 q = vec3(h.x, h.y, h.z) / h.w;
+  if (!SNELL_FINITE(q.x) || !SNELL_FINITE(q.y) || !SNELL_FINITE(q.z) || !(q.z < 0.0f)) {
+    return r;
+  }
+  float s = viewDistance / -q.z;
+  vec3 p = vec3(q.x * s, q.y * s, -viewDistance);
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y)) {
+    return r;
+  }
+  r.position = p;
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+SNELL_FN SnellViewPoint snellUvZToView(mat4 clipFromView, vec2 uv, float viewZ) {
+  SnellViewPoint r;
+  r.position = vec3(0.0f, 0.0f, 0.0f);
+  r.valid = false;
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
+      !(viewZ <= -SNELL_FLT_MIN)) {
+    return r;
+  }
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
+  float nx = 2.0f * uv.x - 1.0f;
+  float ny = 2.0f * uv.y - 1.0f;
+  float a00 = c0.x - nx * c0.w;
+  float a01 = c1.x - nx * c1.w;
+  float a10 = c0.y - ny * c0.w;
+  float a11 = c1.y - ny * c1.w;
+  float b0 = -(viewZ * (c2.x - nx * c2.w) + (c3.x - nx * c3.w));
+  float b1 = -(viewZ * (c2.y - ny * c2.w) + (c3.y - ny * c3.w));
+  float det = a00 * a11 - a01 * a10;
+  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  float x = (b0 * a11 - a01 * b1) / det;
+  float y = (a00 * b1 - b0 * a10) / det;
+  if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
+    return r;
+  }
+  r.position = vec3(x, y, viewZ);
+  r.valid = true;
+  return r;
+}
+
+#endif
 
 SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, vec3 pView) {
   if (!s.perspective) {

@@ -19,15 +19,8 @@ source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC).
 #ifndef SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
 #define SNELL_CAMERA_UV_Z_TO_VIEW_GLSL
 #include "../prelude.glsl"
+#include "conventions.glsl"
 #include "uv_depth_to_view.glsl"
-
-/* Column i of a matrix (the matrix's i-th basis image) without a matrix product:
-   GLSL and GLM index columns, HLSL rows. */
-#if defined(SNELL_LANG_HLSL)
-#  define SNELL_CAMERA_MAT_COLUMN(m, i) (transpose(m)[i])
-#else
-#  define SNELL_CAMERA_MAT_COLUMN(m, i) ((m)[i])
-#endif
 
 SNELL_FN SnellViewPoint snellUvZToView(mat4 clipFromView, vec2 uv, float viewZ) {
   SnellViewPoint r;

@@ -55,7 +55,7 @@ source: Oliveira & Brauwers 2007 sec. 3.1 and Algorithm 2 ("invalid texels have
 #include "../prelude.glsl"
 #include "../camera/linearize_depth.glsl"
 #include "../camera/pixel_to_uv.glsl"
-#include "../camera/uv_z_to_view.glsl"
+#include "../camera/conventions.glsl"
 
 #define SNELL_DEPTH_FILTER_NEAREST 0
 #define SNELL_DEPTH_FILTER_BILINEAR 1
