@@ -71,13 +71,13 @@ void BM_SingleSample(benchmark::State& state) {
 void BM_PlaneNormal(benchmark::State& state) {
   const int it = static_cast<int>(state.range(0));
   runRays(state, [it](const Fixture& f, glm::vec3 o, glm::vec3 d) {
-    return snellIntersectPlaneNormal(o, d, f.scene.depth, f.normals, f.surface, 0.0f, it);
+    return snellIntersectPlaneNormal(o, d, f.scene.depth, f.normals, f.scene.depth, f.surface, 0.0f, it, false);
   });
 }
 void BM_PlaneDepth(benchmark::State& state) {
   const int it = static_cast<int>(state.range(0));
   runRays(state, [it](const Fixture& f, glm::vec3 o, glm::vec3 d) {
-    return snellIntersectPlaneDepth(o, d, f.pyramid, f.surface, f.pyramid.levelCount() - 1, it);
+    return snellIntersectPlaneDepth(o, d, f.pyramid, f.surface, f.pyramid.levelCount() - 1, it, false);
   });
 }
 

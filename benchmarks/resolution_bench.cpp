@@ -86,10 +86,10 @@ const std::vector<Named>& strategies() {
          return snell::snellIntersectSingleSample(r.origin, r.dir, f.scene.depth, f.surface);
        }},
       {"plane-normal-1", [](const Frame& f, const Ray& r) {
-         return snell::snellIntersectPlaneNormal(r.origin, r.dir, f.scene.depth, f.normals, f.surface, 0.0f, 1);
+         return snell::snellIntersectPlaneNormal(r.origin, r.dir, f.scene.depth, f.normals, f.scene.depth, f.surface, 0.0f, 1, false);
        }},
       {"plane-depth-1", [](const Frame& f, const Ray& r) {
-         return snell::snellIntersectPlaneDepth(r.origin, r.dir, f.pyramid, f.surface, f.pyramid.levelCount() - 1, 1);
+         return snell::snellIntersectPlaneDepth(r.origin, r.dir, f.pyramid, f.surface, f.pyramid.levelCount() - 1, 1, false);
        }},
       {"cbs-5", [](const Frame& f, const Ray& r) {
          return snell::snellConservativeBinarySearch(r.origin, r.dir, f.scene.depth, f.surface, f.range.first,

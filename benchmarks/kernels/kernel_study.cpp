@@ -86,11 +86,11 @@ glm::vec3 v3(const float* p) { return glm::vec3(p[0], p[1], p[2]); }
 
 KS_STRATEGY(single_sample, snell::snellIntersectSingleSample(v3(R.o), v3(R.d), S.depth, S.surface),
             kern::singleSample(S.cam, R.o, R.d))
-KS_STRATEGY(plane_normal_0, snell::snellIntersectPlaneNormal(v3(R.o), v3(R.d), S.depth, S.normal, S.surface, 0.0f, 0),
+KS_STRATEGY(plane_normal_0, snell::snellIntersectPlaneNormal(v3(R.o), v3(R.d), S.depth, S.normal, S.depth, S.surface, 0.0f, 0, false),
             kern::planeNormal<0>(S.cam, R.o, R.d))
-KS_STRATEGY(plane_normal_1, snell::snellIntersectPlaneNormal(v3(R.o), v3(R.d), S.depth, S.normal, S.surface, 0.0f, 1),
+KS_STRATEGY(plane_normal_1, snell::snellIntersectPlaneNormal(v3(R.o), v3(R.d), S.depth, S.normal, S.depth, S.surface, 0.0f, 1, false),
             kern::planeNormal<1>(S.cam, R.o, R.d))
-KS_STRATEGY(plane_normal_2, snell::snellIntersectPlaneNormal(v3(R.o), v3(R.d), S.depth, S.normal, S.surface, 0.0f, 2),
+KS_STRATEGY(plane_normal_2, snell::snellIntersectPlaneNormal(v3(R.o), v3(R.d), S.depth, S.normal, S.depth, S.surface, 0.0f, 2, false),
             kern::planeNormal<2>(S.cam, R.o, R.d))
 KS_STRATEGY(cbs_5, snell::snellConservativeBinarySearch(v3(R.o), v3(R.d), S.depth, S.surface, -4.0f, -6.2f, 5),
             kern::cbs<5>(S.cam, R.o, R.d, -4.0f, -6.2f))
@@ -100,13 +100,13 @@ KS_STRATEGY(dda_1,
             snell::snellDdaMarch(v3(R.o), v3(R.d), S.depth, S.surface, 5.0f, SNELL_DDA_THICKNESS, 1.0f, 1024),
             kern::ddaMarch(S.cam, R.o, R.d, 5.0f, 1.0f, 1024))
 KS_STRATEGY(plane_depth_0,
-            snell::snellIntersectPlaneDepth(v3(R.o), v3(R.d), S.pyramid, S.surface, S.pyramid.levelCount() - 1, 0),
+            snell::snellIntersectPlaneDepth(v3(R.o), v3(R.d), S.pyramid, S.surface, S.pyramid.levelCount() - 1, 0, false),
             kern::planeDepth<0>(S.cam, R.o, R.d, S.cam.levels - 1))
 KS_STRATEGY(plane_depth_1,
-            snell::snellIntersectPlaneDepth(v3(R.o), v3(R.d), S.pyramid, S.surface, S.pyramid.levelCount() - 1, 1),
+            snell::snellIntersectPlaneDepth(v3(R.o), v3(R.d), S.pyramid, S.surface, S.pyramid.levelCount() - 1, 1, false),
             kern::planeDepth<1>(S.cam, R.o, R.d, S.cam.levels - 1))
 KS_STRATEGY(plane_depth_2,
-            snell::snellIntersectPlaneDepth(v3(R.o), v3(R.d), S.pyramid, S.surface, S.pyramid.levelCount() - 1, 2),
+            snell::snellIntersectPlaneDepth(v3(R.o), v3(R.d), S.pyramid, S.surface, S.pyramid.levelCount() - 1, 2, false),
             kern::planeDepth<2>(S.cam, R.o, R.d, S.cam.levels - 1))
 
 // The measured loop (not inlined, so callgrind_annotate shows it as one function).

@@ -1,6 +1,6 @@
 // Registrations of the plane-family intersect/ parity cases (cases/plane.glsl):
 // hit, depth surface, surface point, single sample, the two plane strategies
-// with refinement, and the depth pyramid reduction.
+// with refinement and the normal plane's far start, and the depth pyramid reduction.
 //
 // Textures: two analytic scenes of tests/support/depth_scenes.hpp at 160x120
 // (sphereBack, GL convention, a back-face buffer; silhouette, reversed Z, an
@@ -141,7 +141,8 @@ std::vector<ParityIO> rayInputs(std::uint32_t seed, bool unitDir) {
     in.v[0] = glm::vec4(r.o, float(which));
     in.v[1] = glm::vec4(r.d, float(iterations));
     in.v[2] = matrixEntries(sc);
-    in.v[3] = glm::vec4(normalLod, float(maxLod), 0.0f, 0.0f);
+    // z: every other ray 1 (the plane normal's far start; no draw from g, so the inputs are as before)
+    in.v[3] = glm::vec4(normalLod, float(maxLod), float(i % 2), 0.0f);
     v.push_back(in);
   }
   return v;
@@ -356,6 +357,11 @@ SNELL_PARITY_CASE({"snellHitOnSurface", "plane.glsl", "caseSnellHitOnSurface", h
 SNELL_PARITY_CASE({"snellPlaneHit", "plane.glsl", "caseSnellPlaneHit", planeHitInputs,
                    [](const ParityIO& in) { return run(caseSnellPlaneHit, in); }, kHitDiscrete, 10,
                    {1e-5f, 1e-5f}, textures(), buildTextures});
+// Two pyramid fetches chosen by comparisons of a projected point: the level and the texel
+// compare exactly (fetches, valid), the plane hit with the single sample's tolerance.
+SNELL_PARITY_CASE({"snellPlaneFarStart", "plane.glsl", "caseSnellPlaneFarStart", [] { return rayInputs(613, false); },
+                   [](const ParityIO& in) { return run(caseSnellPlaneFarStart, in); }, 0x0028, 6, {1e-4f, 1e-4f},
+                   textures(), buildTextures});
 SNELL_PARITY_CASE({"snellIntersectPlaneNormal", "plane.glsl", "caseSnellIntersectPlaneNormal",
                    [] { return rayInputs(610, false); },
                    [](const ParityIO& in) { return run(caseSnellIntersectPlaneNormal, in); }, kHitDiscrete, 10,

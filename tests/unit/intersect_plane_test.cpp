@@ -93,9 +93,9 @@ Stats evaluate(const DepthScene& sc, const Texture2D& normals, const Texture2D& 
   const SnellDepthSurface s = sc.surface();
   for (const TestRay& r : rays) {
     const SnellHit h = m == Method::Normal
-                           ? snellIntersectPlaneNormal(glm::vec3(r.o), glm::vec3(r.d), sc.depth, normals, s, normalLod, iterations)
+                           ? snellIntersectPlaneNormal(glm::vec3(r.o), glm::vec3(r.d), sc.depth, normals, sc.depth, s, normalLod, iterations, false)
                            : snellIntersectPlaneDepth(glm::vec3(r.o), glm::vec3(r.d), pyramid, s, pyramid.levelCount() - 1,
-                                                      iterations);
+                                                      iterations, false);
     ++st.total;
     st.fetches += h.fetches;
     if (!h.valid) continue;
@@ -155,7 +155,7 @@ TEST(IntersectPlane, NormalMethodFetchCount) {
   const std::vector<TestRay> rays = planeRays(sc, 200, 3);
   for (int it = -2; it <= 10; ++it)
     for (const TestRay& r : rays) {
-      const SnellHit h = snellIntersectPlaneNormal(glm::vec3(r.o), glm::vec3(r.d), sc.depth, sc.normals, sc.surface(), 0.0f, it);
+      const SnellHit h = snellIntersectPlaneNormal(glm::vec3(r.o), glm::vec3(r.d), sc.depth, sc.normals, sc.depth, sc.surface(), 0.0f, it, false);
       ASSERT_TRUE(h.valid);
       const int n = std::min(std::max(it, 0), SNELL_PLANE_MAX_ITERATIONS);
       EXPECT_EQ(h.fetches, 2 * (n + 1) + 1);
@@ -169,7 +169,7 @@ TEST(IntersectPlane, DepthMethodFetchCountWithinDocumentedBounds) {
   for (int it = 0; it <= 3; ++it)
     for (const TestRay& r : rays) {
       const SnellHit h = snellIntersectPlaneDepth(glm::vec3(r.o), glm::vec3(r.d), pyramid, sc.surface(),
-                                                  pyramid.levelCount() - 1, it);
+                                                  pyramid.levelCount() - 1, it, false);
       EXPECT_LE(h.fetches, 6 * (it + 1) + 1);
       if (h.valid) {
         EXPECT_GE(h.fetches, 3 * (it + 1) + 1);
@@ -178,7 +178,7 @@ TEST(IntersectPlane, DepthMethodFetchCountWithinDocumentedBounds) {
   // One-level texture, ray along the pixel ray (span 0): exactly B, C, D + the final lookup per plane.
   const DepthScene pl = snell_test::slantedPlane(64, 64);
   const glm::vec3 o = glm::vec3(pl.pixelRay({0.5, 0.5}) * 2.0);
-  const SnellHit h = snellIntersectPlaneDepth(o, o, pl.depth, pl.surface(), 0, 0);
+  const SnellHit h = snellIntersectPlaneDepth(o, o, pl.depth, pl.surface(), 0, 0, false);
   ASSERT_TRUE(h.valid);
   EXPECT_EQ(h.fetches, 3 + 1);
 }
@@ -198,8 +198,8 @@ TEST(IntersectPlane, WorksOnTheOpaqueSceneBuffers) {
     const auto ref = sc.referenceHit(o, d);
     if (!ref || sc.project(*ref).x < 0.72) continue;
     ++total;
-    const SnellHit hn = snellIntersectPlaneNormal(glm::vec3(o), glm::vec3(d), sc.depth, sc.normals, sc.surface(), 0.0f, 1);
-    const SnellHit hd = snellIntersectPlaneDepth(glm::vec3(o), glm::vec3(d), pyramid, sc.surface(), 0, 1);
+    const SnellHit hn = snellIntersectPlaneNormal(glm::vec3(o), glm::vec3(d), sc.depth, sc.normals, sc.depth, sc.surface(), 0.0f, 1, false);
+    const SnellHit hd = snellIntersectPlaneDepth(glm::vec3(o), glm::vec3(d), pyramid, sc.surface(), 0, 1, false);
     if (hn.valid && hd.valid && glm::length(glm::dvec3(hn.position) - *ref) < 1e-3 &&
         glm::length(glm::dvec3(hd.position) - *ref) < 1e-3)
       ++good;
@@ -221,8 +221,8 @@ TEST(IntersectPlane, BadInputsAreInvalidAndFinite) {
   const SnellDepthSurface s = sc.surface();
   const glm::vec3 o(0.3f, -0.2f, -3.9f), d(0.0f, 0.0f, -1.0f);
   auto both = [&](glm::vec3 oo, glm::vec3 dd, const Texture2D& depth, const Texture2D& pyr, int expectFetches) {
-    const SnellHit a = snellIntersectPlaneNormal(oo, dd, depth, sc.normals, s, 0.0f, 2);
-    const SnellHit b = snellIntersectPlaneDepth(oo, dd, pyr, s, pyr.levelCount() - 1, 2);
+    const SnellHit a = snellIntersectPlaneNormal(oo, dd, depth, sc.normals, depth, s, 0.0f, 2, false);
+    const SnellHit b = snellIntersectPlaneDepth(oo, dd, pyr, s, pyr.levelCount() - 1, 2, false);
     expectMiss(a);
     expectMiss(b);
     if (expectFetches >= 0) {
@@ -231,8 +231,8 @@ TEST(IntersectPlane, BadInputsAreInvalidAndFinite) {
     }
   };
   // Sanity: the good ray hits.
-  ASSERT_TRUE(snellIntersectPlaneNormal(o, d, sc.depth, sc.normals, s, 0.0f, 2).valid);
-  ASSERT_TRUE(snellIntersectPlaneDepth(o, d, pyramid, s, pyramid.levelCount() - 1, 2).valid);
+  ASSERT_TRUE(snellIntersectPlaneNormal(o, d, sc.depth, sc.normals, sc.depth, s, 0.0f, 2, false).valid);
+  ASSERT_TRUE(snellIntersectPlaneDepth(o, d, pyramid, s, pyramid.levelCount() - 1, 2, false).valid);
   both(glm::vec3(kNaN, 0.0f, -3.0f), d, sc.depth, pyramid, 0);
   both(o, glm::vec3(0.0f, kInf, -1.0f), sc.depth, pyramid, 0);
   both(o, glm::vec3(0.0f), sc.depth, pyramid, 0);
@@ -245,7 +245,7 @@ TEST(IntersectPlane, BadInputsAreInvalidAndFinite) {
   // Leaving the screen: steep sideways ray, the plane hit projects off screen.
   {
     const SnellHit a = snellIntersectPlaneNormal(glm::vec3(2.0f, -0.2f, -5.5f), glm::vec3(1.0f, 0.0f, -0.02f), sc.depth,
-                                                 sc.normals, s, 0.0f, 0);
+                                                 sc.normals, sc.depth, s, 0.0f, 0, false);
     expectMiss(a);
   }
   // Empty buffers.
@@ -267,7 +267,7 @@ TEST(IntersectPlane, RaysTowardsTheCameraUseThePlaneAhead) {
   const glm::dvec3 d = glm::normalize(glm::dvec3(-1.0, -1.0, 0.05));  // n = (0.35, 0.45, 1): heads into the plane
   const auto ref = sc.referenceHit(o, d);
   ASSERT_TRUE(ref.has_value());
-  const SnellHit h = snellIntersectPlaneNormal(glm::vec3(o), glm::vec3(d), sc.depth, sc.normals, sc.surface(), 0.0f, 1);
+  const SnellHit h = snellIntersectPlaneNormal(glm::vec3(o), glm::vec3(d), sc.depth, sc.normals, sc.depth, sc.surface(), 0.0f, 1, false);
   ASSERT_TRUE(h.valid);
   EXPECT_LT(glm::length(glm::dvec3(h.position) - *ref), 1e-4);
 }

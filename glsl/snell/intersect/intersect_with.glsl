@@ -42,7 +42,11 @@ options (strategy ids, the values of SnellIntersectOptions.strategy):
                   reads depth: intersect/depth_surface.glsl; it replaces the
                   surface's depthFilter field)
   PLANE_NORMAL, PLANE_DEPTH  planeIterations = SNELL_PLANE_ITERATIONS
-                  (refinements after the first plane)
+                  (refinements after the first plane), planeFarStart =
+                  SNELL_PLANE_FAR_START != 0 (true: on a closed surface the
+                  first plane may start at the farthest back face the pyramid
+                  holds under the ray, intersect/plane_far_start.glsl; false:
+                  the poster's first plane)
   PLANE_NORMAL    planeNormalLod = 0 (the normal texture's level)
   PLANE_DEPTH     planeMaxLod = -1 (the coarsest depth mip: the pyramid's top
                   level, snellTextureTopLod)
@@ -62,10 +66,10 @@ contract:
     stored too, and answered with a miss) and every field's default above.
   - snellIntersectWith, by o.strategy:
     SINGLE: snellIntersectSingleSample(origin, dir, depthTex, surface).
-    PLANE_NORMAL: snellIntersectPlaneNormal(.., normalTex, surface,
-    o.planeNormalLod, o.planeIterations).
+    PLANE_NORMAL: snellIntersectPlaneNormal(.., normalTex, pyramidTex, surface,
+    o.planeNormalLod, o.planeIterations, o.planeFarStart).
     PLANE_DEPTH: snellIntersectPlaneDepth(origin, dir, pyramidTex, surface,
-    maxLod, o.planeIterations), maxLod = o.planeMaxLod, or
+    maxLod, o.planeIterations, o.planeFarStart), maxLod = o.planeMaxLod, or
     snellTextureTopLod(pyramidTex) when o.planeMaxLod < 0.
     CBS / BINARY / LINEAR_BINARY: the range is snellDepthRangeFromPyramid(
     pyramidTex) (1 fetch, counted in h.fetches) or o.range; an invalid range is
@@ -120,6 +124,7 @@ struct SnellIntersectOptions {
   int depthFilter;
   int planeIterations;
   float planeNormalLod;
+  bool planeFarStart;
   int planeMaxLod;
   int cbsSteps;
   int binarySteps;
@@ -141,6 +146,7 @@ SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
   o.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
   o.planeIterations = SNELL_PLANE_ITERATIONS;
   o.planeNormalLod = 0.0f;
+  o.planeFarStart = SNELL_PLANE_FAR_START != 0;
   o.planeMaxLod = -1;
   o.cbsSteps = SNELL_CBS_STEPS;
   o.binarySteps = SNELL_BINARY_SEARCH_STEPS;
@@ -166,11 +172,11 @@ SNELL_FN SnellHit snellIntersectWith(vec3 origin, vec3 dir, SNELL_TEX2D depthTex
     return snellIntersectSingleSample(origin, dir, depthTex, surface);
   }
   if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_PLANE_NORMAL) && strategy == SNELL_STRATEGY_PLANE_NORMAL) {
-    return snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, surface, o.planeNormalLod, o.planeIterations);
+    return snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, pyramidTex, surface, o.planeNormalLod, o.planeIterations, o.planeFarStart);
   }
   if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_PLANE_DEPTH) && strategy == SNELL_STRATEGY_PLANE_DEPTH) {
     int maxLod = o.planeMaxLod >= 0 ? o.planeMaxLod : snellTextureTopLod(pyramidTex);
-    return snellIntersectPlaneDepth(origin, dir, pyramidTex, surface, maxLod, o.planeIterations);
+    return snellIntersectPlaneDepth(origin, dir, pyramidTex, surface, maxLod, o.planeIterations, o.planeFarStart);
   }
   if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_LINEAR_MARCH) && strategy == SNELL_STRATEGY_LINEAR_MARCH) {
     return snellLinearMarch(origin, dir, depthTex, surface, o.marchMaxDistance, o.marchSteps, o.marchBisections);

@@ -7,7 +7,7 @@ description: Mayer & Assarsson's planar approximation, method 2 (depth-based):
   all read at the mip level whose texels span the region the points cover.
   Optional refinement as in plane_normal.glsl.
 use: SnellHit h = snellIntersectPlaneDepth(origin, dir, depthMips, surface, maxLod,
-                                           SNELL_PLANE_ITERATIONS);
+                                           SNELL_PLANE_ITERATIONS, true);
   origin, dir  view-space ray (origin z < 0; dir any length)
   depthMips    a depth texture whose level L holds, in .x, a depth value
                representative of each 2^L x 2^L block, emptyDepth where the block
@@ -17,6 +17,10 @@ use: SnellHit h = snellIntersectPlaneDepth(origin, dir, depthMips, surface, maxL
   surface      its camera and conventions; surface.lod is the finest level read
   maxLod       the coarsest level that exists (and may be read)
   iterations   refinement iterations, clamped to [0, SNELL_PLANE_MAX_ITERATIONS]
+  farStart     true: on a closed surface (surface.closed), once B0 was read, the
+               first plane's hit is the nearer of the one below and the far
+               start's (intersect/plane_far_start.glsl; depthMips must then be
+               the min/max pyramid: it reads its .z and .w); false: the poster's
 options:
   SNELL_PLANE_DEPTH_MAX_SPAN_LOD  the level chosen is at most surface.lod + this (6)
 contract (one plane, built around a reference point Q on the ray: Q = W for the
@@ -39,7 +43,10 @@ contract (one plane, built around a reference point Q on the ray: Q = W for the
     SNELL_PLANE_FACING_FALLBACK 1 (default), when B was read but C or D is
     empty, the three points are degenerate, or the ray does not meet their plane
     ahead of W, the plane through B facing the camera is used instead:
-    P = snellRayPlane(W, dir, B, B) (plane_refine.glsl). After N refinements the
+    P = snellRayPlane(W, dir, B, B) (plane_refine.glsl). With farStart and a
+    valid far start F for the first plane (B0 read), P_0 = F.position when
+    the plane of B, C, D is not met or meets the ray further than F (before the
+    facing fallback, as in plane_normal.glsl). After N refinements the
     hit is snellHitOnSurface(P_N) (position on the ray, valid when the surface
     exists at its projection).
   - exact (up to float rounding) on a planar surface at every level whose
@@ -47,7 +54,8 @@ contract (one plane, built around a reference point Q on the ray: Q = W for the
     levels for power-of-two sizes and fully covered blocks (window depth is
     affine in screen space over a plane, so a block mean is its centre value).
   - fetches per plane 3..6 (1 for B0, 1 for B when L > surface.lod, 1-2 each for
-    C and D), plus 1 final lookup; on failure the reads issued so far.
+    C and D), plus the far start's 0-2 for the first plane, plus 1 final
+    lookup; on failure the reads issued so far.
   - valid = false (snellHitMiss, finite): origin/dir NaN/Inf, |dir|^2 below 1e-30
     or overflowing, W at or behind the camera plane (fetches 0); B0 or B empty or
     off screen; C or D empty after the fallback, a degenerate plane, the ray
@@ -57,7 +65,8 @@ contract (one plane, built around a reference point Q on the ray: Q = W for the
     plane_normal.glsl.
 source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
   "Method 2: Depth-based" ("sample all three points using the mipmap level that
-  encompasses the entire region these three points span") and step 5.
+  encompasses the entire region these three points span") and step 5; the
+  far start is snell's (plane_far_start.glsl).
 */
 #ifndef SNELL_INTERSECT_PLANE_DEPTH_GLSL
 #define SNELL_INTERSECT_PLANE_DEPTH_GLSL
@@ -71,6 +80,7 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 #include "surface_projection.glsl"
 #include "surface_point.glsl"
 #include "plane_refine.glsl"
+#include "plane_far_start.glsl"
 
 #ifndef SNELL_PLANE_DEPTH_MAX_SPAN_LOD
 #  define SNELL_PLANE_DEPTH_MAX_SPAN_LOD 6
@@ -166,7 +176,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
 }
 
 SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D depthMips, SNELL_IN(SnellDepthSurface) s,
-                                           int maxLod, int iterations) {
+                                           int maxLod, int iterations, bool farStart) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
@@ -190,6 +200,15 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
     // An unbuilt plane has a zero normal, so the ray misses it; its facing plane exists
     // only when B was read (position 0, the camera, gives no plane either).
     SnellRayPlaneHit ph = snellRayPlane(origin, dir, pl.position, pl.normal);
+    if (k == 0 && farStart && dot(pl.position, pl.position) > 0.0f) {
+      SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, depthMips, s);
+      fetches += f.fetches;
+      if (f.valid && (!ph.valid || f.t < ph.t)) {
+        ph.t = f.t;
+        ph.position = f.position;
+        ph.valid = true;
+      }
+    }
 #if SNELL_PLANE_FACING_FALLBACK
     if (!ph.valid) {
       ph = snellRayPlane(origin, dir, pl.position, pl.position);

@@ -1,13 +1,13 @@
 /* Parity cases for the intersect/ functions of the plane family: hit.glsl,
    depth_surface.glsl, surface_point.glsl, single_sample.glsl, plane_refine.glsl,
-   plane_normal.glsl, plane_depth.glsl, depth_pyramid.glsl.
+   plane_far_start.glsl, plane_normal.glsl, plane_depth.glsl, depth_pyramid.glsl.
    Two analytic scenes (tests/support/depth_scenes.hpp) as textures:
      A = sphereBack 160x120, SNELL_DEPTH_GL, emptyDepth 0 (a back-face buffer)
      B = silhouette 160x120, SNELL_DEPTH_REVERSED, emptyDepth 0 (an opaque buffer
          with many empty texels)
    Ray cases: a = (origin, scene 0/1), b = (dir, iterations), c = the projection's
    four entries (A, B, C, D: columns (A,0,0,0) (0,B,0,0) (0,0,C,-1) (0,0,D,0)),
-   d = (normalLod, maxLod, -, -). The matrix travels as numbers so both builds use
+   d = (normalLod, maxLod, farStart / open surface, -). The matrix travels as numbers so both builds use
    the same floats (tan() differs between drivers). Hits leave as
    a = (uv, valid, fetches), b = (position, 0), c = (texel x, texel y at level 0). */
 #include "snell/intersect.glsl"
@@ -181,14 +181,34 @@ SNELL_FN SnellParityOut caseSnellPlaneHit(vec4 a, vec4 b, vec4 c, vec4 d) {
   return planeParityHit(snellPlaneHit(p, planeUv, planeDepthA, s, int(b.w)));
 }
 
+/* d.z > 0.5: farStart (every other ray) */
 SNELL_FN SnellParityOut caseSnellIntersectPlaneNormal(vec4 a, vec4 b, vec4 c, vec4 d) {
   SnellDepthSurface s = planeParitySurface(a.w, c);
   vec3 o = vec3(a.x, a.y, a.z);
   vec3 v = vec3(b.x, b.y, b.z);
+  bool farStart = d.z > 0.5f;
   if (a.w > 0.5f) {
-    return planeParityHit(snellIntersectPlaneNormal(o, v, planeDepthB, planeNormalB, s, d.x, int(b.w)));
+    return planeParityHit(snellIntersectPlaneNormal(o, v, planeDepthB, planeNormalB, planePyramidB, s, d.x, int(b.w), farStart));
   }
-  return planeParityHit(snellIntersectPlaneNormal(o, v, planeDepthA, planeNormalA, s, d.x, int(b.w)));
+  return planeParityHit(snellIntersectPlaneNormal(o, v, planeDepthA, planeNormalA, planePyramidA, s, d.x, int(b.w), farStart));
+}
+
+/* The origin's own projection as originUv; scene B with d.z > 0.5 is an open
+   surface (no far start). Out a = (position, valid), b = (t, fetches, 0, 0). */
+SNELL_FN SnellParityOut caseSnellPlaneFarStart(vec4 a, vec4 b, vec4 c, vec4 d) {
+  SnellDepthSurface s = planeParitySurface(a.w, c);
+  vec3 o = vec3(a.x, a.y, a.z);
+  vec3 v = vec3(b.x, b.y, b.z);
+  vec2 uv = snellSurfaceViewToUv(s, o).uv;
+  SnellFarPlane f;
+  if (a.w > 0.5f) {
+    s.closed = !(d.z > 0.5f);
+    f = snellPlaneFarStart(o, v, uv, planePyramidB, s);
+  } else {
+    f = snellPlaneFarStart(o, v, uv, planePyramidA, s);
+  }
+  return planeParityOut(vec4(f.position.x, f.position.y, f.position.z, planeParityFlag(f.valid)),
+                        vec4(f.t, float(f.fetches), 0.0f, 0.0f));
 }
 
 /* a = (q, scene), b = (unit dir, -), d.y = maxLod; out a = (B, valid), b = (normal, fetches) */
@@ -211,9 +231,9 @@ SNELL_FN SnellParityOut caseSnellIntersectPlaneDepth(vec4 a, vec4 b, vec4 c, vec
   vec3 o = vec3(a.x, a.y, a.z);
   vec3 v = vec3(b.x, b.y, b.z);
   if (a.w > 0.5f) {
-    return planeParityHit(snellIntersectPlaneDepth(o, v, planePyramidB, s, int(d.y), int(b.w)));
+    return planeParityHit(snellIntersectPlaneDepth(o, v, planePyramidB, s, int(d.y), int(b.w), d.z > 0.5f));
   }
-  return planeParityHit(snellIntersectPlaneDepth(o, v, planePyramidA, s, int(d.y), int(b.w)));
+  return planeParityHit(snellIntersectPlaneDepth(o, v, planePyramidA, s, int(d.y), int(b.w), d.z > 0.5f));
 }
 
 /* a = (depthValue, zNear, zFar, convention), b.x = emptyDepth; out a = texel */
