@@ -2142,13 +2142,252 @@ SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SNEL
 
 #endif
 /*
+description: the far start of the plane strategies on a closed surface (an
+  object's back faces): a constant-depth plane at the farthest back-face
+  distance that the depth min/max pyramid holds over the ray's way across the
+  screen, a second candidate for the first plane next to Mayer & Assarsson's
+  (built at B_0, the point behind the ray origin). snellIntersectPlaneNormal
+  and snellIntersectPlaneDepth take the nearer of the two.
+use: SnellFarPlane f = snellPlaneFarStart(origin, dir, originUv, pyramidTex, surface);
+     if (f.valid && (!tangent.valid || f.t < tangent.t)) { ... f.position ... }
+  origin, dir  the view-space ray (dir any length; t in units of |dir|)
+  originUv     the origin's projection (snellSurfaceViewToUv(surface, origin).uv)
+  pyramidTex   the surface's depth min/max pyramid (intersect/depth_pyramid.glsl
+               layout, z = farthest view distance, w = coverage), full mip chain
+  surface      the depth surface the pyramid was built from
+options:
+  SNELL_PLANE_FAR_START  1 (default): SnellIntersectOptions.planeFarStart is
+                         true by default (intersect/intersect_with.glsl), for both
+                         plane strategies; 0: false
+contract:
+  - step 1 (1 fetch): the top level's texel (0, 0): z_all, the farthest
+    distance of the whole buffer. The ray meets the plane z = -z_all at G
+    (snellRayPlane); its projection g.
+  - step 2 (1 fetch): the level L whose texels are the smallest at least as
+    wide as the ray's way from originUv to g (D = |g - originUv| in level-0
+    texels; L = the least L with 2^L >= D, at most the top level), its texel
+    containing the way's midpoint (clamped to the buffer): z_L. The result is
+    the ray's hit on the plane z = -z_L: t, position, valid, fetches 2.
+  - invalid (t = 0, position 0): surface.closed false or originUv not finite
+    (no fetch); the top
+    texel empty (w <= 0) or its z not finite and positive (1 fetch); the ray
+    not meeting z = -z_all ahead of origin (a ray towards the camera or one
+    already beyond the object) or G at or behind the camera (1 fetch); the
+    level texel empty or its z not finite and positive (2 fetches).
+  - why it helps: on a convex object the tangent plane at B_0 lies beyond the
+    exit, and near the silhouette the refracted ray, bent inwards, meets it
+    far away or never (the facing fallback of plane_refine.glsl then starts at
+    B_0's depth, next to the origin, and the refinement crawls). No exit lies
+    deeper than the farthest back face under the ray's way: where the level's
+    texel holds the whole way, the far plane is at or beyond the exit (a
+    quarter of a sphere's refracted rays in the unit test, all of them at or
+    beyond); elsewhere it is an estimate. The plane strategies take the nearer
+    of the two candidates.
+  - the level loop compares with powers of two (no log2), so C++ and the GPU
+    pick the same level.
+source: the search range of Oliveira & Brauwers 2007 (sec. 3.2: "Zmax", the
+  min/max reduction) used as a plane of Mayer & Assarsson's method
+  ("Constant-Time Light Refraction Simulation", step 2; "a more blurred mip
+  level gives a more complete representation of the scene for drastic
+  refraction effects"); snell's own combination.
+*/
+#ifndef SNELL_INTERSECT_PLANE_FAR_START_GLSL
+#define SNELL_INTERSECT_PLANE_FAR_START_GLSL
+
+
+
+
+/*
+description: the depth range [zNearest, zFarthest] the texture-space searches
+  (conservative binary search, binary, linear+binary) walk, from the two
+  sources Oliveira & Brauwers name: the top level of the depth min/max pyramid
+  (their 2nd pass, exact for the buffer) or the object's bounding box (their
+  suggested speed-up: no reduction pass, a looser range). Plus the top mip
+  level of a texture, which the range and the depth-based plane need.
+use: SnellDepthRange r = snellDepthRangeFromPyramid(pyramidTex);
+     SnellDepthRange r = snellDepthRangeFromBox(viewFromObject, boxMin, boxMax);
+     int top = snellTextureTopLod(tex);
+  pyramidTex      a depth min/max pyramid (intersect/depth_pyramid.glsl layout:
+                  y nearest, z farthest view distance, w coverage), all levels
+  viewFromObject  object-to-view transform (camera at the origin looking down -Z)
+  boxMin, boxMax  the object-space axis-aligned bounding box
+options:
+  SNELL_DEPTH_RANGE_MARGIN  relative widening of the pyramid range (1e-3f):
+                            zNearest * (1 - m), zFarthest * (1 + m), so a
+                            fronto-parallel surface (Zmin == Zmax, which the
+                            searches reject) still gets a range and the
+                            surface lies strictly inside it
+contract:
+  - snellTextureTopLod: floor(log2(max(width, height))) of level 0 (the last
+    level of a full GL mip chain); 0 for a 1x1 or size-0 texture.
+  - snellDepthRangeFromPyramid: one SNELL_TEXEL_FETCH of texel (0, 0) at the
+    top level; valid when its coverage w > 0 and 0 < y <= z are finite;
+    zNearest = -y (1 - margin), zFarthest = -z (1 + margin). Invalid (all 0)
+    for an empty buffer.
+  - snellDepthRangeFromBox: the 8 corners transformed by viewFromObject
+    (w = 1 assumed: an affine transform); zNearest = the largest corner z,
+    zFarthest = the smallest, no fetch. Valid when every corner z is finite
+    and zFarthest < 0; a box reaching to or behind the camera plane gets
+    zNearest = -FLT_MIN (the searches then start at the ray origin). A flat box
+    facing the camera (zNearest == zFarthest) is widened by
+    SNELL_DEPTH_RANGE_MARGIN as for the pyramid. Invalid: all 0.
+source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
+  Objects", I3D 2007, sec. 3 (2nd pass: min/max reduction) and sec. 6
+  ("using the limits of the object's bounding box as Zmin and Zmax").
+*/
+#ifndef SNELL_INTERSECT_DEPTH_RANGE_GLSL
+#define SNELL_INTERSECT_DEPTH_RANGE_GLSL
+
+
+
+#ifndef SNELL_DEPTH_RANGE_MARGIN
+#  define SNELL_DEPTH_RANGE_MARGIN 1e-3f
+#endif
+
+struct SnellDepthRange {
+  float zNearest;
+  float zFarthest;
+  bool valid;
+};
+
+SNELL_FN SnellDepthRange snellDepthRangeInvalid() {
+  SnellDepthRange r;
+  r.zNearest = 0.0f;
+  r.zFarthest = 0.0f;
+  r.valid = false;
+  return r;
+}
+
+SNELL_FN int snellTextureTopLod(SNELL_TEX2D tex) {
+  ivec2 size = SNELL_TEXTURE_SIZE(tex, 0);
+  int m = max(size.x, size.y);
+  int lod = 0;
+  for (int i = 0; i < 31; ++i) {
+    if (m <= 1) {
+      break;
+    }
+    m = m / 2;
+    lod = lod + 1;
+  }
+  return lod;
+}
+
+/* Oliveira & Brauwers 2007, sec. 3, 2nd pass: the top level of the min/max reduction */
+SNELL_FN SnellDepthRange snellDepthRangeFromPyramid(SNELL_TEX2D pyramidTex) {
+  int top = snellTextureTopLod(pyramidTex);
+  vec4 t = SNELL_TEXEL_FETCH(pyramidTex, ivec2(0, 0), top);
+  if (!(t.w > 0.0f) || !(t.y > 0.0f) || !(t.z >= t.y) || !SNELL_FINITE(t.z)) {
+    return snellDepthRangeInvalid();
+  }
+  SnellDepthRange r;
+  r.zNearest = -t.y * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
+  r.zFarthest = -t.z * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
+  r.valid = true;
+  return r;
+}
+
+/* Oliveira & Brauwers 2007, sec. 6: the bounding box as Zmin, Zmax */
+SNELL_FN SnellDepthRange snellDepthRangeFromBox(mat4 viewFromObject, vec3 boxMin, vec3 boxMax) {
+  float zNearest = -SNELL_FLT_MAX;
+  float zFarthest = SNELL_FLT_MAX;
+  for (int i = 0; i < 8; ++i) {
+    float x = (i == 1 || i == 3 || i == 5 || i == 7) ? boxMax.x : boxMin.x;
+    float y = (i == 2 || i == 3 || i == 6 || i == 7) ? boxMax.y : boxMin.y;
+    float z = i >= 4 ? boxMax.z : boxMin.z;
+    vec4 p = SNELL_MUL(viewFromObject, vec4(x, y, z, 1.0f));
+    if (!SNELL_FINITE(p.z)) {
+      return snellDepthRangeInvalid();
+    }
+    zNearest = max(zNearest, p.z);
+    zFarthest = min(zFarthest, p.z);
+  }
+  if (!(zFarthest < 0.0f)) {
+    return snellDepthRangeInvalid();
+  }
+  SnellDepthRange r;
+  r.zNearest = min(zNearest, -SNELL_FLT_MIN);
+  r.zFarthest = zFarthest;
+  if (!(r.zFarthest < r.zNearest)) {
+    r.zNearest = r.zNearest * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
+    r.zFarthest = r.zFarthest * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
+  }
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+
+/* 1 (default): snellIntersectOptions sets planeFarStart (the plane
+   strategies' far start on closed surfaces); 0: the poster's first plane. */
+#ifndef SNELL_PLANE_FAR_START
+#  define SNELL_PLANE_FAR_START 1
+#endif
+
+struct SnellFarPlane {
+  float t;
+  vec3 position;
+  bool valid;
+  int fetches;
+};
+
+SNELL_FN SnellFarPlane snellPlaneFarStart(vec3 origin, vec3 dir, vec2 originUv, SNELL_TEX2D pyramidTex,
+                                          SNELL_IN(SnellDepthSurface) s) {
+  SnellFarPlane f;
+  f.t = 0.0f;
+  f.position = vec3(0.0f, 0.0f, 0.0f);
+  f.valid = false;
+  f.fetches = 0;
+  if (!s.closed || !SNELL_FINITE(originUv.x) || !SNELL_FINITE(originUv.y)) {
+    return f;
+  }
+  int top = snellTextureTopLod(pyramidTex);
+  vec4 whole = SNELL_TEXEL_FETCH(pyramidTex, ivec2(0, 0), top);
+  f.fetches = 1;
+  if (!(whole.w > 0.0f) || !(whole.z > 0.0f) || !SNELL_FINITE(whole.z)) {
+    return f;
+  }
+  vec3 facing = vec3(0.0f, 0.0f, 1.0f);
+  SnellRayPlaneHit g = snellRayPlane(origin, dir, vec3(0.0f, 0.0f, -whole.z), facing);
+  SnellScreenPoint gp = snellSurfaceViewToUv(s, g.position);
+  if (!g.valid || !gp.valid) {
+    return f;
+  }
+  vec2 size0 = vec2(SNELL_TEXTURE_SIZE(pyramidTex, 0));
+  vec2 way = (gp.uv - originUv) * size0;
+  float d = sqrt(dot(way, way));
+  int level = 0;
+  for (int k = 0; k < 31; ++k) {
+    // !(<) also ends the loop for a NaN way, at level 0
+    if (level >= top || !(float(1 << level) < d)) {
+      break;
+    }
+    level += 1;
+  }
+  vec2 mid = clamp(0.5f * (gp.uv + originUv), vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  ivec2 sizeL = SNELL_TEXTURE_SIZE(pyramidTex, level);
+  ivec2 px = min(ivec2(mid * vec2(sizeL)), sizeL - ivec2(1, 1));
+  vec4 under = SNELL_TEXEL_FETCH(pyramidTex, px, level);
+  f.fetches = 2;
+  if (!(under.w > 0.0f) || !(under.z > 0.0f) || !SNELL_FINITE(under.z)) {
+    return f;
+  }
+  SnellRayPlaneHit h = snellRayPlane(origin, dir, vec3(0.0f, 0.0f, -under.z), facing);
+  f.t = h.t;
+  f.position = h.position;
+  f.valid = h.valid;
+  return f;
+}
+
+#endif
+/*
 description: Mayer & Assarsson's planar approximation, method 1 (normal-based):
   the depth and normal stored behind the ray origin define a plane; the ray is
   intersected with it, the intersection projected and the buffers sampled
   there; optionally the plane is rebuilt at that sample and the ray
   re-intersected, N times (step 5). Constant time for a fixed N.
-use: SnellHit h = snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, surface,
-                                            normalLod, SNELL_PLANE_ITERATIONS);
+use: SnellHit h = snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, pyramidTex,
+                                            surface, normalLod, SNELL_PLANE_ITERATIONS, true);
   origin     view-space ray start W (z < 0): front-face point (back-face buffer)
              or exit point (opaque scene buffer)
   dir        ray direction (any length)
@@ -2157,8 +2396,14 @@ use: SnellHit h = snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, su
              depthTex texel for texel at level 0; it may be mipmapped and filtered
              (Mayer & Assarsson: "a more blurred mip level gives a more complete
              representation of the scene for drastic refraction effects")
+  pyramidTex depthTex's min/max pyramid (intersect/depth_pyramid.glsl), read by
+             the far start only (any texture when farStart is false)
   normalLod  the level normals are read at (SNELL_SAMPLE_LOD, the texture's filters)
   iterations refinement iterations, clamped to [0, SNELL_PLANE_MAX_ITERATIONS]
+  farStart   true: on a closed surface (surface.closed, an object's back faces),
+             plane 0's hit is the nearer of the poster's (below) and the far
+             start's (intersect/plane_far_start.glsl: the farthest back face the
+             pyramid holds under the ray's way); false: the poster's method
 contract:
   - plane k (k = 0 .. N): uv_0 = projection of W, uv_k = projection of P_(k-1);
     B_k = snellSurfacePoint(depthTex, uv_k, surface) (texel centre point),
@@ -2167,7 +2412,10 @@ contract:
     meet that plane ahead of W and SNELL_PLANE_FACING_FALLBACK is 1 (default),
     P_k = snellRayPlane(W, dir, B_k, B_k): the plane through B_k facing the
     camera (normal along the line of sight through B_k), see plane_refine.glsl.
-    The hit is
+    With farStart and a valid far start F (snellPlaneFarStart) at k = 0,
+    P_0 = F.position when the plane at B_0 (with its fallback) is invalid or
+    meets the ray further than F (F.t < t); refinements are unchanged. The
+    hit is
     snellPlaneHit(P_N): position P_N (on the ray), uv its projection, valid
     when the surface exists there. A refinement step that cannot build its plane
     (B_k empty or off screen, ray parallel) stops the refinement at P_(k-1).
@@ -2178,19 +2426,20 @@ contract:
   - exact (up to float rounding) for a planar surface with exact normals, for
     every N >= 0: every plane is the surface's plane.
   - fetches = 2 (N + 1) + 1 on success (a depth and a normal read per plane,
-    one final depth read); on failure the reads issued so far (lookups at an
-    off-screen uv included).
+    one final depth read), plus the far start's (0-2, with farStart); on
+    failure the reads issued so far (lookups at an off-screen uv included).
   - rays towards the camera are accepted: the plane is intersected wherever it
     lies ahead of W (t >= 0).
   - valid = false (snellHitMiss, finite): origin/dir NaN/Inf, |dir|^2 below 1e-30
     or overflowing, W at or behind the camera plane (fetches 0); B_k empty or off
     screen; for the first plane: n_k zero/NaN, the ray parallel to it or the
     plane behind W (snellRayPlane invalid), and with the fallback also the
-    facing plane (a ray that does not go deeper than B_0); P behind the camera or off
+    facing plane (a ray that does not go deeper than B_0), and no far start;
+    P behind the camera or off
     screen; the final sample empty with SNELL_PLANE_HOLD 0.
 source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
   steps 1-5 and "Method 1: Normal-based"; plane intersection in
-  optics/ray_plane.glsl.
+  optics/ray_plane.glsl; the far start is snell's (plane_far_start.glsl).
 */
 #ifndef SNELL_INTERSECT_PLANE_NORMAL_GLSL
 #define SNELL_INTERSECT_PLANE_NORMAL_GLSL
@@ -2204,8 +2453,10 @@ source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
 
 
 
+
 SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
-                                            SNELL_IN(SnellDepthSurface) s, float normalLod, int iterations) {
+                                            SNELL_TEX2D pyramidTex, SNELL_IN(SnellDepthSurface) s, float normalLod,
+                                            int iterations, bool farStart) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
@@ -2242,6 +2493,15 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     vec4 nt = SNELL_SAMPLE_LOD(normalTex, b.uv, normalLod);
     fetches += 1;
     SnellRayPlaneHit ph = snellRayPlane(origin, dir, b.position, vec3(nt.x, nt.y, nt.z));
+    if (k == 0 && farStart) {
+      SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, pyramidTex, s);
+      fetches += f.fetches;
+      if (f.valid && (!ph.valid || f.t < ph.t)) {
+        ph.t = f.t;
+        ph.position = f.position;
+        ph.valid = true;
+      }
+    }
 #if SNELL_PLANE_FACING_FALLBACK
     if (!ph.valid) {
       ph = snellRayPlane(origin, dir, b.position, b.position);
@@ -2269,7 +2529,7 @@ description: Mayer & Assarsson's planar approximation, method 2 (depth-based):
   all read at the mip level whose texels span the region the points cover.
   Optional refinement as in plane_normal.glsl.
 use: SnellHit h = snellIntersectPlaneDepth(origin, dir, depthMips, surface, maxLod,
-                                           SNELL_PLANE_ITERATIONS);
+                                           SNELL_PLANE_ITERATIONS, true);
   origin, dir  view-space ray (origin z < 0; dir any length)
   depthMips    a depth texture whose level L holds, in .x, a depth value
                representative of each 2^L x 2^L block, emptyDepth where the block
@@ -2279,6 +2539,10 @@ use: SnellHit h = snellIntersectPlaneDepth(origin, dir, depthMips, surface, maxL
   surface      its camera and conventions; surface.lod is the finest level read
   maxLod       the coarsest level that exists (and may be read)
   iterations   refinement iterations, clamped to [0, SNELL_PLANE_MAX_ITERATIONS]
+  farStart     true: on a closed surface (surface.closed), once B0 was read, the
+               first plane's hit is the nearer of the one below and the far
+               start's (intersect/plane_far_start.glsl; depthMips must then be
+               the min/max pyramid: it reads its .z and .w); false: the poster's
 options:
   SNELL_PLANE_DEPTH_MAX_SPAN_LOD  the level chosen is at most surface.lod + this (6)
 contract (one plane, built around a reference point Q on the ray: Q = W for the
@@ -2301,7 +2565,10 @@ contract (one plane, built around a reference point Q on the ray: Q = W for the
     SNELL_PLANE_FACING_FALLBACK 1 (default), when B was read but C or D is
     empty, the three points are degenerate, or the ray does not meet their plane
     ahead of W, the plane through B facing the camera is used instead:
-    P = snellRayPlane(W, dir, B, B) (plane_refine.glsl). After N refinements the
+    P = snellRayPlane(W, dir, B, B) (plane_refine.glsl). With farStart and a
+    valid far start F for the first plane (B0 read), P_0 = F.position when
+    the plane of B, C, D is not met or meets the ray further than F (before the
+    facing fallback, as in plane_normal.glsl). After N refinements the
     hit is snellHitOnSurface(P_N) (position on the ray, valid when the surface
     exists at its projection).
   - exact (up to float rounding) on a planar surface at every level whose
@@ -2309,7 +2576,8 @@ contract (one plane, built around a reference point Q on the ray: Q = W for the
     levels for power-of-two sizes and fully covered blocks (window depth is
     affine in screen space over a plane, so a block mean is its centre value).
   - fetches per plane 3..6 (1 for B0, 1 for B when L > surface.lod, 1-2 each for
-    C and D), plus 1 final lookup; on failure the reads issued so far.
+    C and D), plus the far start's 0-2 for the first plane, plus 1 final
+    lookup; on failure the reads issued so far.
   - valid = false (snellHitMiss, finite): origin/dir NaN/Inf, |dir|^2 below 1e-30
     or overflowing, W at or behind the camera plane (fetches 0); B0 or B empty or
     off screen; C or D empty after the fallback, a degenerate plane, the ray
@@ -2319,10 +2587,12 @@ contract (one plane, built around a reference point Q on the ray: Q = W for the
     plane_normal.glsl.
 source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
   "Method 2: Depth-based" ("sample all three points using the mipmap level that
-  encompasses the entire region these three points span") and step 5.
+  encompasses the entire region these three points span") and step 5; the
+  far start is snell's (plane_far_start.glsl).
 */
 #ifndef SNELL_INTERSECT_PLANE_DEPTH_GLSL
 #define SNELL_INTERSECT_PLANE_DEPTH_GLSL
+
 
 
 
@@ -2428,7 +2698,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
 }
 
 SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D depthMips, SNELL_IN(SnellDepthSurface) s,
-                                           int maxLod, int iterations) {
+                                           int maxLod, int iterations, bool farStart) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
@@ -2452,6 +2722,15 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
     // An unbuilt plane has a zero normal, so the ray misses it; its facing plane exists
     // only when B was read (position 0, the camera, gives no plane either).
     SnellRayPlaneHit ph = snellRayPlane(origin, dir, pl.position, pl.normal);
+    if (k == 0 && farStart && dot(pl.position, pl.position) > 0.0f) {
+      SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, depthMips, s);
+      fetches += f.fetches;
+      if (f.valid && (!ph.valid || f.t < ph.t)) {
+        ph.t = f.t;
+        ph.position = f.position;
+        ph.valid = true;
+      }
+    }
 #if SNELL_PLANE_FACING_FALLBACK
     if (!ph.valid) {
       ph = snellRayPlane(origin, dir, pl.position, pl.position);
@@ -2572,125 +2851,7 @@ SNELL_FN vec4 snellDepthMinMaxReduce(SNELL_TEX2D pyramidTex, int lod, ivec2 px, 
 }
 
 #endif
-/*
-description: the depth range [zNearest, zFarthest] the texture-space searches
-  (conservative binary search, binary, linear+binary) walk, from the two
-  sources Oliveira & Brauwers name: the top level of the depth min/max pyramid
-  (their 2nd pass, exact for the buffer) or the object's bounding box (their
-  suggested speed-up: no reduction pass, a looser range). Plus the top mip
-  level of a texture, which the range and the depth-based plane need.
-use: SnellDepthRange r = snellDepthRangeFromPyramid(pyramidTex);
-     SnellDepthRange r = snellDepthRangeFromBox(viewFromObject, boxMin, boxMax);
-     int top = snellTextureTopLod(tex);
-  pyramidTex      a depth min/max pyramid (intersect/depth_pyramid.glsl layout:
-                  y nearest, z farthest view distance, w coverage), all levels
-  viewFromObject  object-to-view transform (camera at the origin looking down -Z)
-  boxMin, boxMax  the object-space axis-aligned bounding box
-options:
-  SNELL_DEPTH_RANGE_MARGIN  relative widening of the pyramid range (1e-3f):
-                            zNearest * (1 - m), zFarthest * (1 + m), so a
-                            fronto-parallel surface (Zmin == Zmax, which the
-                            searches reject) still gets a range and the
-                            surface lies strictly inside it
-contract:
-  - snellTextureTopLod: floor(log2(max(width, height))) of level 0 (the last
-    level of a full GL mip chain); 0 for a 1x1 or size-0 texture.
-  - snellDepthRangeFromPyramid: one SNELL_TEXEL_FETCH of texel (0, 0) at the
-    top level; valid when its coverage w > 0 and 0 < y <= z are finite;
-    zNearest = -y (1 - margin), zFarthest = -z (1 + margin). Invalid (all 0)
-    for an empty buffer.
-  - snellDepthRangeFromBox: the 8 corners transformed by viewFromObject
-    (w = 1 assumed: an affine transform); zNearest = the largest corner z,
-    zFarthest = the smallest, no fetch. Valid when every corner z is finite
-    and zFarthest < 0; a box reaching to or behind the camera plane gets
-    zNearest = -FLT_MIN (the searches then start at the ray origin). A flat box
-    facing the camera (zNearest == zFarthest) is widened by
-    SNELL_DEPTH_RANGE_MARGIN as for the pyramid. Invalid: all 0.
-source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
-  Objects", I3D 2007, sec. 3 (2nd pass: min/max reduction) and sec. 6
-  ("using the limits of the object's bounding box as Zmin and Zmax").
-*/
-#ifndef SNELL_INTERSECT_DEPTH_RANGE_GLSL
-#define SNELL_INTERSECT_DEPTH_RANGE_GLSL
 
-
-
-#ifndef SNELL_DEPTH_RANGE_MARGIN
-#  define SNELL_DEPTH_RANGE_MARGIN 1e-3f
-#endif
-
-struct SnellDepthRange {
-  float zNearest;
-  float zFarthest;
-  bool valid;
-};
-
-SNELL_FN SnellDepthRange snellDepthRangeInvalid() {
-  SnellDepthRange r;
-  r.zNearest = 0.0f;
-  r.zFarthest = 0.0f;
-  r.valid = false;
-  return r;
-}
-
-SNELL_FN int snellTextureTopLod(SNELL_TEX2D tex) {
-  ivec2 size = SNELL_TEXTURE_SIZE(tex, 0);
-  int m = max(size.x, size.y);
-  int lod = 0;
-  for (int i = 0; i < 31; ++i) {
-    if (m <= 1) {
-      break;
-    }
-    m = m / 2;
-    lod = lod + 1;
-  }
-  return lod;
-}
-
-/* Oliveira & Brauwers 2007, sec. 3, 2nd pass: the top level of the min/max reduction */
-SNELL_FN SnellDepthRange snellDepthRangeFromPyramid(SNELL_TEX2D pyramidTex) {
-  int top = snellTextureTopLod(pyramidTex);
-  vec4 t = SNELL_TEXEL_FETCH(pyramidTex, ivec2(0, 0), top);
-  if (!(t.w > 0.0f) || !(t.y > 0.0f) || !(t.z >= t.y) || !SNELL_FINITE(t.z)) {
-    return snellDepthRangeInvalid();
-  }
-  SnellDepthRange r;
-  r.zNearest = -t.y * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
-  r.zFarthest = -t.z * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
-  r.valid = true;
-  return r;
-}
-
-/* Oliveira & Brauwers 2007, sec. 6: the bounding box as Zmin, Zmax */
-SNELL_FN SnellDepthRange snellDepthRangeFromBox(mat4 viewFromObject, vec3 boxMin, vec3 boxMax) {
-  float zNearest = -SNELL_FLT_MAX;
-  float zFarthest = SNELL_FLT_MAX;
-  for (int i = 0; i < 8; ++i) {
-    float x = (i == 1 || i == 3 || i == 5 || i == 7) ? boxMax.x : boxMin.x;
-    float y = (i == 2 || i == 3 || i == 6 || i == 7) ? boxMax.y : boxMin.y;
-    float z = i >= 4 ? boxMax.z : boxMin.z;
-    vec4 p = SNELL_MUL(viewFromObject, vec4(x, y, z, 1.0f));
-    if (!SNELL_FINITE(p.z)) {
-      return snellDepthRangeInvalid();
-    }
-    zNearest = max(zNearest, p.z);
-    zFarthest = min(zFarthest, p.z);
-  }
-  if (!(zFarthest < 0.0f)) {
-    return snellDepthRangeInvalid();
-  }
-  SnellDepthRange r;
-  r.zNearest = min(zNearest, -SNELL_FLT_MIN);
-  r.zFarthest = zFarthest;
-  if (!(r.zFarthest < r.zNearest)) {
-    r.zNearest = r.zNearest * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
-    r.zFarthest = r.zFarthest * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
-  }
-  r.valid = true;
-  return r;
-}
-
-#endif
 /*
 description: the ray segment the texture-space searches walk (conservative
   binary search, binary search, linear+binary search): the part of a view-space
@@ -3467,7 +3628,11 @@ options (strategy ids, the values of SnellIntersectOptions.strategy):
                   reads depth: intersect/depth_surface.glsl; it replaces the
                   surface's depthFilter field)
   PLANE_NORMAL, PLANE_DEPTH  planeIterations = SNELL_PLANE_ITERATIONS
-                  (refinements after the first plane)
+                  (refinements after the first plane), planeFarStart =
+                  SNELL_PLANE_FAR_START != 0 (true: on a closed surface the
+                  first plane may start at the farthest back face the pyramid
+                  holds under the ray, intersect/plane_far_start.glsl; false:
+                  the poster's first plane)
   PLANE_NORMAL    planeNormalLod = 0 (the normal texture's level)
   PLANE_DEPTH     planeMaxLod = -1 (the coarsest depth mip: the pyramid's top
                   level, snellTextureTopLod)
@@ -3487,10 +3652,10 @@ contract:
     stored too, and answered with a miss) and every field's default above.
   - snellIntersectWith, by o.strategy:
     SINGLE: snellIntersectSingleSample(origin, dir, depthTex, surface).
-    PLANE_NORMAL: snellIntersectPlaneNormal(.., normalTex, surface,
-    o.planeNormalLod, o.planeIterations).
+    PLANE_NORMAL: snellIntersectPlaneNormal(.., normalTex, pyramidTex, surface,
+    o.planeNormalLod, o.planeIterations, o.planeFarStart).
     PLANE_DEPTH: snellIntersectPlaneDepth(origin, dir, pyramidTex, surface,
-    maxLod, o.planeIterations), maxLod = o.planeMaxLod, or
+    maxLod, o.planeIterations, o.planeFarStart), maxLod = o.planeMaxLod, or
     snellTextureTopLod(pyramidTex) when o.planeMaxLod < 0.
     CBS / BINARY / LINEAR_BINARY: the range is snellDepthRangeFromPyramid(
     pyramidTex) (1 fetch, counted in h.fetches) or o.range; an invalid range is
@@ -3545,6 +3710,7 @@ struct SnellIntersectOptions {
   int depthFilter;
   int planeIterations;
   float planeNormalLod;
+  bool planeFarStart;
   int planeMaxLod;
   int cbsSteps;
   int binarySteps;
@@ -3566,6 +3732,7 @@ SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
   o.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
   o.planeIterations = SNELL_PLANE_ITERATIONS;
   o.planeNormalLod = 0.0f;
+  o.planeFarStart = SNELL_PLANE_FAR_START != 0;
   o.planeMaxLod = -1;
   o.cbsSteps = SNELL_CBS_STEPS;
   o.binarySteps = SNELL_BINARY_SEARCH_STEPS;
@@ -3591,11 +3758,11 @@ SNELL_FN SnellHit snellIntersectWith(vec3 origin, vec3 dir, SNELL_TEX2D depthTex
     return snellIntersectSingleSample(origin, dir, depthTex, surface);
   }
   if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_PLANE_NORMAL) && strategy == SNELL_STRATEGY_PLANE_NORMAL) {
-    return snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, surface, o.planeNormalLod, o.planeIterations);
+    return snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, pyramidTex, surface, o.planeNormalLod, o.planeIterations, o.planeFarStart);
   }
   if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_PLANE_DEPTH) && strategy == SNELL_STRATEGY_PLANE_DEPTH) {
     int maxLod = o.planeMaxLod >= 0 ? o.planeMaxLod : snellTextureTopLod(pyramidTex);
-    return snellIntersectPlaneDepth(origin, dir, pyramidTex, surface, maxLod, o.planeIterations);
+    return snellIntersectPlaneDepth(origin, dir, pyramidTex, surface, maxLod, o.planeIterations, o.planeFarStart);
   }
   if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_LINEAR_MARCH) && strategy == SNELL_STRATEGY_LINEAR_MARCH) {
     return snellLinearMarch(origin, dir, depthTex, surface, o.marchMaxDistance, o.marchSteps, o.marchBisections);
@@ -4850,6 +5017,11 @@ presets (back slot / exit slot):
                                    refinement iterations / the same
   snellPresetPlaneDepth(n)         Mayer & Assarsson, depth-based plane (depth
                                    mips = the pyramid), n iterations / the same
+                                   (both plane presets keep planeFarStart's
+                                   default, true: the far start of
+                                   intersect/plane_far_start.glsl on the closed
+                                   back faces; set it false in both slots for
+                                   the poster's method)
   snellPresetSingleSample()        the single-sample (GPU Gems) baseline / the same
   snellPresetLinearMarch()         screen-space ray march, view-space steps +
                                    bisection / the same

@@ -1182,11 +1182,153 @@ SNELL_FN SnellHit snellPlaneHit(vec3 p, vec2 planeUv, SNELL_TEX2D depthTex, SNEL
 
 #endif
 
+#ifndef SNELL_INTERSECT_PLANE_FAR_START_GLSL
+#define SNELL_INTERSECT_PLANE_FAR_START_GLSL
+
+#ifndef SNELL_INTERSECT_DEPTH_RANGE_GLSL
+#define SNELL_INTERSECT_DEPTH_RANGE_GLSL
+
+#ifndef SNELL_DEPTH_RANGE_MARGIN
+#  define SNELL_DEPTH_RANGE_MARGIN 1e-3f
+#endif
+
+struct SnellDepthRange {
+  float zNearest;
+  float zFarthest;
+  bool valid;
+};
+
+SNELL_FN SnellDepthRange snellDepthRangeInvalid() {
+  SnellDepthRange r;
+  r.zNearest = 0.0f;
+  r.zFarthest = 0.0f;
+  r.valid = false;
+  return r;
+}
+
+SNELL_FN int snellTextureTopLod(SNELL_TEX2D tex) {
+  ivec2 size = SNELL_TEXTURE_SIZE(tex, 0);
+  int m = max(size.x, size.y);
+  int lod = 0;
+  for (int i = 0; i < 31; ++i) {
+    if (m <= 1) {
+      break;
+    }
+    m = m / 2;
+    lod = lod + 1;
+  }
+  return lod;
+}
+
+SNELL_FN SnellDepthRange snellDepthRangeFromPyramid(SNELL_TEX2D pyramidTex) {
+  int top = snellTextureTopLod(pyramidTex);
+  vec4 t = SNELL_TEXEL_FETCH(pyramidTex, ivec2(0, 0), top);
+  if (!(t.w > 0.0f) || !(t.y > 0.0f) || !(t.z >= t.y) || !SNELL_FINITE(t.z)) {
+    return snellDepthRangeInvalid();
+  }
+  SnellDepthRange r;
+  r.zNearest = -t.y * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
+  r.zFarthest = -t.z * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
+  r.valid = true;
+  return r;
+}
+
+SNELL_FN SnellDepthRange snellDepthRangeFromBox(mat4 viewFromObject, vec3 boxMin, vec3 boxMax) {
+  float zNearest = -SNELL_FLT_MAX;
+  float zFarthest = SNELL_FLT_MAX;
+  for (int i = 0; i < 8; ++i) {
+    float x = (i == 1 || i == 3 || i == 5 || i == 7) ? boxMax.x : boxMin.x;
+    float y = (i == 2 || i == 3 || i == 6 || i == 7) ? boxMax.y : boxMin.y;
+    float z = i >= 4 ? boxMax.z : boxMin.z;
+    vec4 p = SNELL_MUL(viewFromObject, vec4(x, y, z, 1.0f));
+    if (!SNELL_FINITE(p.z)) {
+      return snellDepthRangeInvalid();
+    }
+    zNearest = max(zNearest, p.z);
+    zFarthest = min(zFarthest, p.z);
+  }
+  if (!(zFarthest < 0.0f)) {
+    return snellDepthRangeInvalid();
+  }
+  SnellDepthRange r;
+  r.zNearest = min(zNearest, -SNELL_FLT_MIN);
+  r.zFarthest = zFarthest;
+  if (!(r.zFarthest < r.zNearest)) {
+    r.zNearest = r.zNearest * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
+    r.zFarthest = r.zFarthest * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
+  }
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+#ifndef SNELL_PLANE_FAR_START
+#  define SNELL_PLANE_FAR_START 1
+#endif
+
+struct SnellFarPlane {
+  float t;
+  vec3 position;
+  bool valid;
+  int fetches;
+};
+
+SNELL_FN SnellFarPlane snellPlaneFarStart(vec3 origin, vec3 dir, vec2 originUv, SNELL_TEX2D pyramidTex,
+                                          SNELL_IN(SnellDepthSurface) s) {
+  SnellFarPlane f;
+  f.t = 0.0f;
+  f.position = vec3(0.0f, 0.0f, 0.0f);
+  f.valid = false;
+  f.fetches = 0;
+  if (!s.closed || !SNELL_FINITE(originUv.x) || !SNELL_FINITE(originUv.y)) {
+    return f;
+  }
+  int top = snellTextureTopLod(pyramidTex);
+  vec4 whole = SNELL_TEXEL_FETCH(pyramidTex, ivec2(0, 0), top);
+  f.fetches = 1;
+  if (!(whole.w > 0.0f) || !(whole.z > 0.0f) || !SNELL_FINITE(whole.z)) {
+    return f;
+  }
+  vec3 facing = vec3(0.0f, 0.0f, 1.0f);
+  SnellRayPlaneHit g = snellRayPlane(origin, dir, vec3(0.0f, 0.0f, -whole.z), facing);
+  SnellScreenPoint gp = snellSurfaceViewToUv(s, g.position);
+  if (!g.valid || !gp.valid) {
+    return f;
+  }
+  vec2 size0 = vec2(SNELL_TEXTURE_SIZE(pyramidTex, 0));
+  vec2 way = (gp.uv - originUv) * size0;
+  float d = sqrt(dot(way, way));
+  int level = 0;
+  for (int k = 0; k < 31; ++k) {
+    if (level >= top || !(float(1 << level) < d)) {
+      break;
+    }
+    level += 1;
+  }
+  vec2 mid = clamp(0.5f * (gp.uv + originUv), vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  ivec2 sizeL = SNELL_TEXTURE_SIZE(pyramidTex, level);
+  ivec2 px = min(ivec2(mid * vec2(sizeL)), sizeL - ivec2(1, 1));
+  vec4 under = SNELL_TEXEL_FETCH(pyramidTex, px, level);
+  f.fetches = 2;
+  if (!(under.w > 0.0f) || !(under.z > 0.0f) || !SNELL_FINITE(under.z)) {
+    return f;
+  }
+  SnellRayPlaneHit h = snellRayPlane(origin, dir, vec3(0.0f, 0.0f, -under.z), facing);
+  f.t = h.t;
+  f.position = h.position;
+  f.valid = h.valid;
+  return f;
+}
+
+#endif
+
 #ifndef SNELL_INTERSECT_PLANE_NORMAL_GLSL
 #define SNELL_INTERSECT_PLANE_NORMAL_GLSL
 
 SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, SNELL_TEX2D normalTex,
-                                            SNELL_IN(SnellDepthSurface) s, float normalLod, int iterations) {
+                                            SNELL_TEX2D pyramidTex, SNELL_IN(SnellDepthSurface) s, float normalLod,
+                                            int iterations, bool farStart) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
@@ -1223,6 +1365,15 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     vec4 nt = SNELL_SAMPLE_LOD(normalTex, b.uv, normalLod);
     fetches += 1;
     SnellRayPlaneHit ph = snellRayPlane(origin, dir, b.position, vec3(nt.x, nt.y, nt.z));
+    if (k == 0 && farStart) {
+      SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, pyramidTex, s);
+      fetches += f.fetches;
+      if (f.valid && (!ph.valid || f.t < ph.t)) {
+        ph.t = f.t;
+        ph.position = f.position;
+        ph.valid = true;
+      }
+    }
 #if SNELL_PLANE_FACING_FALLBACK
     if (!ph.valid) {
       ph = snellRayPlane(origin, dir, b.position, b.position);
@@ -1337,7 +1488,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
 }
 
 SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D depthMips, SNELL_IN(SnellDepthSurface) s,
-                                           int maxLod, int iterations) {
+                                           int maxLod, int iterations, bool farStart) {
   float len2 = dot(dir, dir);
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(len2) || !(len2 >= 1e-30f)) {
@@ -1359,6 +1510,15 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
     SnellDepthPlane pl = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
     fetches += pl.fetches;
     SnellRayPlaneHit ph = snellRayPlane(origin, dir, pl.position, pl.normal);
+    if (k == 0 && farStart && dot(pl.position, pl.position) > 0.0f) {
+      SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, depthMips, s);
+      fetches += f.fetches;
+      if (f.valid && (!ph.valid || f.t < ph.t)) {
+        ph.t = f.t;
+        ph.position = f.position;
+        ph.valid = true;
+      }
+    }
 #if SNELL_PLANE_FACING_FALLBACK
     if (!ph.valid) {
       ph = snellRayPlane(origin, dir, pl.position, pl.position);
@@ -1424,84 +1584,6 @@ SNELL_FN vec4 snellDepthMinMaxReduce(SNELL_TEX2D pyramidTex, int lod, ivec2 px, 
     return vec4(emptyDepth, 0.0f, 0.0f, 0.0f);
   }
   return vec4(sum / float(valid), nearest, farthest, coverage / float(max(children, 1)));
-}
-
-#endif
-
-#ifndef SNELL_INTERSECT_DEPTH_RANGE_GLSL
-#define SNELL_INTERSECT_DEPTH_RANGE_GLSL
-
-#ifndef SNELL_DEPTH_RANGE_MARGIN
-#  define SNELL_DEPTH_RANGE_MARGIN 1e-3f
-#endif
-
-struct SnellDepthRange {
-  float zNearest;
-  float zFarthest;
-  bool valid;
-};
-
-SNELL_FN SnellDepthRange snellDepthRangeInvalid() {
-  SnellDepthRange r;
-  r.zNearest = 0.0f;
-  r.zFarthest = 0.0f;
-  r.valid = false;
-  return r;
-}
-
-SNELL_FN int snellTextureTopLod(SNELL_TEX2D tex) {
-  ivec2 size = SNELL_TEXTURE_SIZE(tex, 0);
-  int m = max(size.x, size.y);
-  int lod = 0;
-  for (int i = 0; i < 31; ++i) {
-    if (m <= 1) {
-      break;
-    }
-    m = m / 2;
-    lod = lod + 1;
-  }
-  return lod;
-}
-
-SNELL_FN SnellDepthRange snellDepthRangeFromPyramid(SNELL_TEX2D pyramidTex) {
-  int top = snellTextureTopLod(pyramidTex);
-  vec4 t = SNELL_TEXEL_FETCH(pyramidTex, ivec2(0, 0), top);
-  if (!(t.w > 0.0f) || !(t.y > 0.0f) || !(t.z >= t.y) || !SNELL_FINITE(t.z)) {
-    return snellDepthRangeInvalid();
-  }
-  SnellDepthRange r;
-  r.zNearest = -t.y * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
-  r.zFarthest = -t.z * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
-  r.valid = true;
-  return r;
-}
-
-SNELL_FN SnellDepthRange snellDepthRangeFromBox(mat4 viewFromObject, vec3 boxMin, vec3 boxMax) {
-  float zNearest = -SNELL_FLT_MAX;
-  float zFarthest = SNELL_FLT_MAX;
-  for (int i = 0; i < 8; ++i) {
-    float x = (i == 1 || i == 3 || i == 5 || i == 7) ? boxMax.x : boxMin.x;
-    float y = (i == 2 || i == 3 || i == 6 || i == 7) ? boxMax.y : boxMin.y;
-    float z = i >= 4 ? boxMax.z : boxMin.z;
-    vec4 p = SNELL_MUL(viewFromObject, vec4(x, y, z, 1.0f));
-    if (!SNELL_FINITE(p.z)) {
-      return snellDepthRangeInvalid();
-    }
-    zNearest = max(zNearest, p.z);
-    zFarthest = min(zFarthest, p.z);
-  }
-  if (!(zFarthest < 0.0f)) {
-    return snellDepthRangeInvalid();
-  }
-  SnellDepthRange r;
-  r.zNearest = min(zNearest, -SNELL_FLT_MIN);
-  r.zFarthest = zFarthest;
-  if (!(r.zFarthest < r.zNearest)) {
-    r.zNearest = r.zNearest * (1.0f - SNELL_DEPTH_RANGE_MARGIN);
-    r.zFarthest = r.zFarthest * (1.0f + SNELL_DEPTH_RANGE_MARGIN);
-  }
-  r.valid = true;
-  return r;
 }
 
 #endif
@@ -1956,6 +2038,7 @@ struct SnellIntersectOptions {
   int depthFilter;
   int planeIterations;
   float planeNormalLod;
+  bool planeFarStart;
   int planeMaxLod;
   int cbsSteps;
   int binarySteps;
@@ -1977,6 +2060,7 @@ SNELL_FN SnellIntersectOptions snellIntersectOptions(int strategy) {
   o.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
   o.planeIterations = SNELL_PLANE_ITERATIONS;
   o.planeNormalLod = 0.0f;
+  o.planeFarStart = SNELL_PLANE_FAR_START != 0;
   o.planeMaxLod = -1;
   o.cbsSteps = SNELL_CBS_STEPS;
   o.binarySteps = SNELL_BINARY_SEARCH_STEPS;
@@ -2002,11 +2086,11 @@ SNELL_FN SnellHit snellIntersectWith(vec3 origin, vec3 dir, SNELL_TEX2D depthTex
     return snellIntersectSingleSample(origin, dir, depthTex, surface);
   }
   if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_PLANE_NORMAL) && strategy == SNELL_STRATEGY_PLANE_NORMAL) {
-    return snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, surface, o.planeNormalLod, o.planeIterations);
+    return snellIntersectPlaneNormal(origin, dir, depthTex, normalTex, pyramidTex, surface, o.planeNormalLod, o.planeIterations, o.planeFarStart);
   }
   if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_PLANE_DEPTH) && strategy == SNELL_STRATEGY_PLANE_DEPTH) {
     int maxLod = o.planeMaxLod >= 0 ? o.planeMaxLod : snellTextureTopLod(pyramidTex);
-    return snellIntersectPlaneDepth(origin, dir, pyramidTex, surface, maxLod, o.planeIterations);
+    return snellIntersectPlaneDepth(origin, dir, pyramidTex, surface, maxLod, o.planeIterations, o.planeFarStart);
   }
   if (SNELL_INTERSECT_HAS(SNELL_STRATEGY_LINEAR_MARCH) && strategy == SNELL_STRATEGY_LINEAR_MARCH) {
     return snellLinearMarch(origin, dir, depthTex, surface, o.marchMaxDistance, o.marchSteps, o.marchBisections);

@@ -8,6 +8,7 @@
 #include "intersect/single_sample.glsl"
 #include "intersect/hit_on_surface.glsl"
 #include "intersect/plane_refine.glsl"
+#include "intersect/plane_far_start.glsl"
 #include "intersect/plane_normal.glsl"
 #include "intersect/plane_depth.glsl"
 #include "intersect/depth_pyramid.glsl"

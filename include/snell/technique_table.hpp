@@ -70,12 +70,15 @@ inline std::string snellDescribeIntersect(const SnellIntersectOptions& o) {
     if (!d.empty() && d.back() == '.') d.pop_back();
     return d;
   };
+  const std::string farStart = o.planeFarStart ? ", far start on closed surfaces" : "";
   const std::string range = o.rangeSource == SNELL_RANGE_EXPLICIT ? "range from a bounding box" : "range from the pyramid";
   switch (o.strategy) {
     case SNELL_STRATEGY_SINGLE: return "single sample";
-    case SNELL_STRATEGY_PLANE_NORMAL: return "normal plane, " + count(o.planeIterations, " iteration", " iterations");
+    case SNELL_STRATEGY_PLANE_NORMAL:
+      return "normal plane, " + count(o.planeIterations, " iteration", " iterations") + farStart;
     case SNELL_STRATEGY_PLANE_DEPTH:
-      return "depth plane (depth mips = the min/max pyramid), " + count(o.planeIterations, " iteration", " iterations");
+      return "depth plane (depth mips = the min/max pyramid), " + count(o.planeIterations, " iteration", " iterations") +
+             farStart;
     case SNELL_STRATEGY_CBS: return "conservative binary search, " + count(o.cbsSteps, " step", " steps") + ", " + range;
     case SNELL_STRATEGY_BINARY: return "binary search, " + count(o.binarySteps, " step", " steps") + ", " + range;
     case SNELL_STRATEGY_LINEAR_BINARY:

@@ -145,7 +145,8 @@ std::string markdownTable(const LabResult& r) {
          "(its exit point or its hit on the scene outside the buffers or hidden behind a nearer surface), " + fmt("%.3g", r.boundBufferMse) +
          " elsewhere (buffer resolution, depth and normal reads).\n";
     s += "- the technique itself: \"own error\" is its MSE against the bound's image; \"x bound\" is its MSE vs the "
-         "two-interface reference over the bound's (1.00x: as good as any image-space method with these buffers).\n";
+         "two-interface reference over the bound's (1.00x: as good as any image-space method with these buffers; "
+         "a plane method, which also reads the normals, can land slightly below).\n";
   }
   s += "\nunshaded: object pixels the technique's front-face pass did not cover (they show the scene behind). "
        "invalid: pixels that fell back (no back-face or exit hit: environment along the ray). Time: the refraction "

@@ -21,6 +21,11 @@ presets (back slot / exit slot):
                                    refinement iterations / the same
   snellPresetPlaneDepth(n)         Mayer & Assarsson, depth-based plane (depth
                                    mips = the pyramid), n iterations / the same
+                                   (both plane presets keep planeFarStart's
+                                   default, true: the far start of
+                                   intersect/plane_far_start.glsl on the closed
+                                   back faces; set it false in both slots for
+                                   the poster's method)
   snellPresetSingleSample()        the single-sample (GPU Gems) baseline / the same
   snellPresetLinearMarch()         screen-space ray march, view-space steps +
                                    bisection / the same
