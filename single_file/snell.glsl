@@ -2413,9 +2413,9 @@ contract:
     P_k = snellRayPlane(W, dir, B_k, B_k): the plane through B_k facing the
     camera (normal along the line of sight through B_k), see plane_refine.glsl.
     With farStart and a valid far start F (snellPlaneFarStart) at k = 0,
-    P_0 = F.position when the plane at B_0 (with its fallback) is invalid or
-    meets the ray further than F (F.t < t); refinements are unchanged. The
-    hit is
+    P_0 = F.position when the plane at B_0 is not met or meets the ray further
+    than F (F.t < t); the facing fallback then applies only when neither is
+    met; refinements are unchanged. The hit is
     snellPlaneHit(P_N): position P_N (on the ray), uv its projection, valid
     when the surface exists there. A refinement step that cannot build its plane
     (B_k empty or off screen, ray parallel) stops the refinement at P_(k-1).
@@ -2424,7 +2424,9 @@ contract:
     (plane_refine.glsl): rim rays of convex objects keep their bend instead of
     being dropped.
   - exact (up to float rounding) for a planar surface with exact normals, for
-    every N >= 0: every plane is the surface's plane.
+    every N >= 0 (farStart false or an open surface) or N >= 1 (with the far
+    start: plane 0 may be the far plane, and the first refinement returns to
+    the surface's plane): every other plane is the surface's plane.
   - fetches = 2 (N + 1) + 1 on success (a depth and a normal read per plane,
     one final depth read), plus the far start's (0-2, with farStart); on
     failure the reads issued so far (lookups at an off-screen uv included).
@@ -2571,7 +2573,8 @@ contract (one plane, built around a reference point Q on the ray: Q = W for the
     facing fallback, as in plane_normal.glsl). After N refinements the
     hit is snellHitOnSurface(P_N) (position on the ray, valid when the surface
     exists at its projection).
-  - exact (up to float rounding) on a planar surface at every level whose
+  - exact (up to float rounding) on a planar surface (with the far start:
+    for N >= 1, as in plane_normal.glsl) at every level whose
     texels hold the depth at their centre: level 0 always; the pyramid's mean
     levels for power-of-two sizes and fully covered blocks (window depth is
     affine in screen space over a plane, so a block mean is its centre value).

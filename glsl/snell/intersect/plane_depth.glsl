@@ -49,7 +49,8 @@ contract (one plane, built around a reference point Q on the ray: Q = W for the
     facing fallback, as in plane_normal.glsl). After N refinements the
     hit is snellHitOnSurface(P_N) (position on the ray, valid when the surface
     exists at its projection).
-  - exact (up to float rounding) on a planar surface at every level whose
+  - exact (up to float rounding) on a planar surface (with the far start:
+    for N >= 1, as in plane_normal.glsl) at every level whose
     texels hold the depth at their centre: level 0 always; the pyramid's mean
     levels for power-of-two sizes and fully covered blocks (window depth is
     affine in screen space over a plane, so a block mean is its centre value).
