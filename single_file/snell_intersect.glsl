@@ -1208,11 +1208,12 @@ contract:
   - step 2 (1 fetch): the level L whose texels are the smallest at least as
     wide as the ray's way from originUv to g (D = |g - originUv| in level-0
     texels; L = the least L with 2^L >= D, at most the top level), its texel
-    containing the way's midpoint (clamped to the buffer): z_L. The result is
+    at the way's midpoint m (clamped to [0,1]^2): min(int(m * size_L),
+    size_L - 1), as a nearest read at level L picks it: z_L. The result is
     the ray's hit on the plane z = -z_L: t, position, valid, fetches 2.
   - invalid (t = 0, position 0): surface.closed false or originUv not finite
-    (no fetch); the top
-    texel empty (w <= 0) or its z not finite and positive (1 fetch); the ray
+    (no fetch); the top texel empty (w <= 0) or its z not finite and
+    positive (1 fetch); the ray
     not meeting z = -z_all ahead of origin (a ray towards the camera or one
     already beyond the object) or G at or behind the camera (1 fetch); the
     level texel empty or its z not finite and positive (2 fetches).
