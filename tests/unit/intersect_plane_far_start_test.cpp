@@ -13,10 +13,10 @@
 #include <cstdio>
 #include <cmath>
 #include <limits>
-#include <random>
 #include <vector>
 
 #include "support/depth_scenes.hpp"
+#include "support/search_rays.hpp"
 
 namespace {
 
@@ -24,8 +24,6 @@ using namespace snell;
 using snell_test::DepthScene;
 
 constexpr int kW = 160, kH = 120;
-const glm::dvec3 kCentre(0.3, -0.2, -6.0);
-constexpr double kRadius = 2.2;
 
 const DepthScene& scene() {
   static const DepthScene s = snell_test::sphereBack(kW, kH, SNELL_DEPTH_GL);
@@ -73,29 +71,18 @@ std::vector<std::vector<std::vector<double>>> farthestPyramid(const DepthScene& 
   return levels;
 }
 
-struct Ray {
-  glm::dvec3 o, d;
-};
-
-// Refracted rays entering the sphere through its front face (eta 1/1.1 .. 1/1.6).
-std::vector<Ray> sphereRays(const DepthScene& sc, int count) {
-  std::mt19937 rng(2026);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<Ray> rays;
-  while (int(rays.size()) < count) {
-    const glm::dvec3 q = sc.pixelRay({u(rng), u(rng)});
-    const double a = glm::dot(q, q), b = -2.0 * glm::dot(q, kCentre), c = glm::dot(kCentre, kCentre) - kRadius * kRadius;
-    const double disc = b * b - 4 * a * c;
-    if (disc < 0.0) continue;
-    const glm::dvec3 w = (-b - std::sqrt(disc)) / (2.0 * a) * q, n = (w - kCentre) / kRadius, i = glm::normalize(q);
-    const double eta = 1.0 / (1.1 + 0.5 * u(rng)), ci = -glm::dot(i, n), k = 1.0 - eta * eta * (1.0 - ci * ci);
-    rays.push_back({w, eta * i + (eta * ci - std::sqrt(k)) * n});
+// Refracted rays through the front of the sphere (tests/support/search_rays.hpp), at four IORs.
+std::vector<snell_search_test::Ray> sphereRays(const DepthScene& sc) {
+  std::vector<snell_search_test::Ray> rays;
+  for (double ior : {1.1, 1.3, 1.5, 1.6}) {
+    const auto some = snell_search_test::sphereRefractedRays(sc, 1000, 2026u, ior);
+    rays.insert(rays.end(), some.begin(), some.end());
   }
   return rays;
 }
 
 // The ray's t where it reaches view distance v (z = -v).
-double tAtDistance(const Ray& r, double v) { return (-v - r.o.z) / r.d.z; }
+double tAtDistance(glm::dvec3 o, glm::dvec3 d, double v) { return (-v - o.z) / d.z; }
 
 TEST(IntersectPlaneFarStart, PlaneAtTheFarthestBackFaceUnderTheRaysWay) {
   const DepthScene& sc = scene();
@@ -107,14 +94,14 @@ TEST(IntersectPlaneFarStart, PlaneAtTheFarthestBackFaceUnderTheRaysWay) {
   const auto columns = coverage(kW), rows = coverage(kH);
   ASSERT_EQ(columns.size(), far.size());
   int checked = 0, ambiguous = 0, beyondExit = 0, withExit = 0, inside = 0, insideBeyond = 0;
-  for (const Ray& r : sphereRays(sc, 4000)) {
-    const glm::vec3 o(r.o), d(r.d);
+  for (const snell_search_test::Ray& r : sphereRays(sc)) {
+    const glm::vec3 o = r.origin, d = r.dir;
     const glm::vec2 uv0 = snellSurfaceViewToUv(s, o).uv;
     const SnellFarPlane f = snellPlaneFarStart(o, d, uv0, pyramid, s);
     // The independent computation, in double from the float origin and direction.
-    const Ray rf{glm::dvec3(o), glm::dvec3(d)};
+    const glm::dvec3 od(o), dd(d);
     const double zAll = far[size_t(top)][0][0];
-    const glm::dvec2 g = sc.project(rf.o + tAtDistance(rf, zAll) * rf.d);
+    const glm::dvec2 g = sc.project(od + tAtDistance(od, dd, zAll) * dd);
     const double way = glm::length((g - glm::dvec2(uv0)) * glm::dvec2(kW, kH));
     int level = 0;
     while (level < top && std::ldexp(1.0, level) < way) ++level;
@@ -130,7 +117,7 @@ TEST(IntersectPlaneFarStart, PlaneAtTheFarthestBackFaceUnderTheRaysWay) {
     const int px = std::min(int(mid.x), lw - 1), py = std::min(int(mid.y), lh - 1);
     const double zL = far[size_t(level)][size_t(py)][size_t(px)];
     ASSERT_GT(zL, 0.0);
-    const double t = tAtDistance(rf, zL);
+    const double t = tAtDistance(od, dd, zL);
     ASSERT_TRUE(f.valid) << "ray " << checked;
     EXPECT_EQ(f.fetches, 2);
     EXPECT_NEAR(f.t, t, 2e-4 * std::max(1.0, t)) << "level " << level << " texel " << px << "," << py;
@@ -138,7 +125,7 @@ TEST(IntersectPlaneFarStart, PlaneAtTheFarthestBackFaceUnderTheRaysWay) {
     ++checked;
     // Where the footprint holds the ray's whole way, no exit lies deeper than the plane (on this convex
     // sphere; up to the texel-centre sampling of the pyramid); elsewhere the plane is an estimate.
-    if (const auto exit = sc.referenceHit(r.o, r.d)) {
+    if (const auto exit = sc.referenceHit(od, dd)) {
       const bool beyond = double(f.position.z) <= exit->z + 0.02;
       const glm::ivec2 cx = columns[size_t(level)][size_t(px)], cy = rows[size_t(level)][size_t(py)];
       const auto holds = [&](glm::dvec2 uv) {
