@@ -1,4 +1,4 @@
-// Registrations of the camera/ parity cases (see parity_registry.hpp).
+// The camera/ parity and property cases (see parity_case.hpp).
 //
 // Tolerances: 1e-5 relative (with a small absolute floor) unless stated. The
 // GLSL may evaluate x/y as x * (1/y) (2.5 ulp allowed), tan() with its own
@@ -10,28 +10,13 @@
 #include <cmath>
 #include <limits>
 
-#include "parity_registry.hpp"
-
-namespace parity_camera {
-using namespace snell;
-using snell::gpu::SnellParityOut;
-// Every entry takes four vec4s; most use fewer, and the common subset has no
-// way to mark a parameter unused.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#include "cases/camera.glsl"
-#pragma GCC diagnostic pop
-}  // namespace parity_camera
+#include "parity_case.hpp"
 
 namespace {
 using snell_parity::InputGen;
 using snell_parity::ParityIO;
 
 constexpr int kInputs = 12000;
-
-ParityIO run(snell::gpu::SnellParityOut (*entry)(glm::vec4, glm::vec4, glm::vec4, glm::vec4), const ParityIO& in) {
-  return snell::gpu::toParityIO(entry(in.v[0], in.v[1], in.v[2], in.v[3]));
-}
 
 // A depth convention as an integral float: mostly valid, sometimes unknown.
 float convention(InputGen& g) {
@@ -321,79 +306,153 @@ std::vector<ParityIO> texRayInputs(std::uint32_t seed) {
 
 }  // namespace
 
-using parity_camera::caseSnellClipToNdc;
-using parity_camera::caseSnellDelinearizeDepth;
-using parity_camera::caseSnellDepthToNdcZ;
-using parity_camera::caseSnellLinearizeDepth;
-using parity_camera::caseSnellNdcZToDepth;
-using parity_camera::caseSnellPerspective;
-using parity_camera::caseSnellPerspectiveInverse;
-using parity_camera::caseSnellPerspectiveWithDepth;
-using parity_camera::caseSnellPixelToUv;
-using parity_camera::caseSnellTexRayAlpha;
-using parity_camera::caseSnellTexRaySetup;
-using parity_camera::caseSnellTexRayUv;
-using parity_camera::caseSnellUvDepthToView;
-using parity_camera::caseSnellUvDistanceToView;
-using parity_camera::caseSnellUvToPixel;
-using parity_camera::caseSnellViewToClip;
-using parity_camera::caseSnellViewToUv;
+namespace parity_camera {
+using namespace snell;
+using snell_parity::CaseExtras;
+#include "cases/camera.glsl"
+#define SNELL_PARITY_FILE "camera.glsl"
+
+// A camera: (fovy, aspect, zNear, zFar) in one vec4, built into a matrix the
+// same way on both sides. A matrix leaves as its four columns.
+#define CAMERA_COLUMNS_OUT(check) \
+  (vec4, column0, 0, check)(vec4, column1, 4, check)(vec4, column2, 8, check)(vec4, column3, 12, check)
 
 // Depth maps: every sum adds positive terms (no cancellation), a few ulp apart.
-SNELL_PARITY_CASE({"snellLinearizeDepth", "camera.glsl", "caseSnellLinearizeDepth", linearizeInputs,
-                   [](const ParityIO& in) { return run(caseSnellLinearizeDepth, in); }, 0, 1, {1e-6f, 1e-5f}});
-SNELL_PARITY_CASE({"snellDelinearizeDepth", "camera.glsl", "caseSnellDelinearizeDepth", delinearizeInputs,
-                   [](const ParityIO& in) { return run(caseSnellDelinearizeDepth, in); }, 0, 1, {1e-6f, 1e-5f}});
-SNELL_PARITY_CASE({"snellDepthToNdcZ", "camera.glsl", "caseSnellDepthToNdcZ",
-                   [] { return ndcInputs(303, -0.2f, 1.2f); },
-                   [](const ParityIO& in) { return run(caseSnellDepthToNdcZ, in); }, 0, 1, {1e-6f, 1e-6f}});
-SNELL_PARITY_CASE({"snellNdcZToDepth", "camera.glsl", "caseSnellNdcZToDepth",
-                   [] { return ndcInputs(304, -1.2f, 1.2f); },
-                   [](const ParityIO& in) { return run(caseSnellNdcZToDepth, in); }, 0, 1, {1e-6f, 1e-6f}});
+SNELL_PARITY_CASE(snellLinearizeDepth, linearizeInputs,
+                  (float, depthValue, 0)(float, zNear, 1)(float, zFar, 2)(int, convention, 3),
+                  (float, distance, 0, within(1e-6f, 1e-5f)),
+                  {},
+                  distance = snellLinearizeDepth(depthValue, zNear, zFar, convention);)
+SNELL_PARITY_CASE(snellDelinearizeDepth, delinearizeInputs,
+                  (float, distance, 0)(float, zNear, 1)(float, zFar, 2)(int, convention, 3),
+                  (float, depthValue, 0, within(1e-6f, 1e-5f)),
+                  {},
+                  depthValue = snellDelinearizeDepth(distance, zNear, zFar, convention);)
+SNELL_PARITY_CASE(snellDepthToNdcZ, [] { return ndcInputs(303, -0.2f, 1.2f); },
+                  (float, depthValue, 0)(int, convention, 1),
+                  (float, ndcZ, 0, within(1e-6f, 1e-6f)),
+                  {},
+                  ndcZ = snellDepthToNdcZ(depthValue, convention);)
+SNELL_PARITY_CASE(snellNdcZToDepth, [] { return ndcInputs(304, -1.2f, 1.2f); },
+                  (float, ndcZ, 0)(int, convention, 1),
+                  (float, depthValue, 0, within(1e-6f, 1e-6f)),
+                  {},
+                  depthValue = snellNdcZToDepth(ndcZ, convention);)
+
 // Matrices: tan() on the GPU is its own polynomial; 1e-5 relative covers it.
-SNELL_PARITY_CASE({"snellPerspective", "camera.glsl", "caseSnellPerspective", [] { return perspectiveInputs(305); },
-                   [](const ParityIO& in) { return run(caseSnellPerspective, in); }, 0, 16, {1e-6f, 1e-5f}});
-SNELL_PARITY_CASE({"snellPerspectiveWithDepth", "camera.glsl", "caseSnellPerspectiveWithDepth",
-                   [] { return perspectiveInputs(315); },
-                   [](const ParityIO& in) { return run(caseSnellPerspectiveWithDepth, in); }, 0, 16, {1e-6f, 1e-5f}});
-SNELL_PARITY_CASE({"snellPerspectiveInverse", "camera.glsl", "caseSnellPerspectiveInverse",
-                   [] { return perspectiveInputs(325); },
-                   [](const ParityIO& in) { return run(caseSnellPerspectiveInverse, in); }, 0, 16, {1e-6f, 1e-5f}});
+SNELL_PARITY_CASE(snellPerspective, [] { return perspectiveInputs(305); },
+                  (float, fovy, 0)(float, aspect, 1)(float, zNear, 2)(float, zFar, 3),
+                  CAMERA_COLUMNS_OUT(within(1e-6f, 1e-5f)),
+                  {},
+                  CAMERA_PARITY_SET_COLUMNS(snellPerspective(fovy, aspect, zNear, zFar));)
+SNELL_PARITY_CASE(snellPerspectiveWithDepth, [] { return perspectiveInputs(315); },
+                  (float, fovy, 0)(float, aspect, 1)(float, zNear, 2)(float, zFar, 3)(int, convention, 4),
+                  CAMERA_COLUMNS_OUT(within(1e-6f, 1e-5f)),
+                  {},
+                  CAMERA_PARITY_SET_COLUMNS(snellPerspectiveWithDepth(fovy, aspect, zNear, zFar, convention));)
+SNELL_PARITY_CASE(snellPerspectiveInverse, [] { return perspectiveInputs(325); },
+                  (float, fovy, 0)(float, aspect, 1)(float, zNear, 2)(float, zFar, 3)(int, convention, 4),
+                  CAMERA_COLUMNS_OUT(within(1e-6f, 1e-5f)),
+                  {},
+                  CAMERA_PARITY_SET_COLUMNS(snellPerspectiveInverse(fovy, aspect, zNear, zFar, convention));)
+
 // clip.z = C z + D sums terms of opposite sign (zero at z = -2fn/(f+n)); with fma
 // contraction on the GPU the absolute error is an ulp of the terms (|D| <= ~60
 // here: 4e-6), hence the 1e-5 floor. Hostile points are finite here: the
 // function documents NaN/Inf propagation only.
-SNELL_PARITY_CASE({"snellViewToClip", "camera.glsl", "caseSnellViewToClip", [] { return viewPointInputs(309, false); },
-                   [](const ParityIO& in) { return run(caseSnellViewToClip, in); }, 0, 4, {1e-5f, 1e-5f}});
-// Flags exact (bit 3); ndc of tiny w is clamped to +-FLT_MAX on both sides.
-SNELL_PARITY_CASE({"snellClipToNdc", "camera.glsl", "caseSnellClipToNdc", clipInputs,
-                   [](const ParityIO& in) { return run(caseSnellClipToNdc, in); }, 0x8, 4, {1e-6f, 1e-5f}});
+SNELL_PARITY_CASE(snellViewToClip, [] { return viewPointInputs(309, false); },
+                  (vec4, camera, 0)(int, convention, 4)(vec3, pView, 8),
+                  (vec4, clip, 0, within(1e-5f, 1e-5f)),
+                  CaseExtras().unchecked({"clip"}, "camera/view_to_clip.glsl: 'clipFromView * vec4(pView, 1), nothing "
+                                                   "else: no check, NaN and Inf propagate as the matrix product makes "
+                                                   "them' (snellClipToNdc is the checked step)"),
+                  clip = snellViewToClip(cameraParityMatrix(camera, convention), pView);)
+// ndc of tiny w is clamped to +-FLT_MAX on both sides.
+SNELL_PARITY_CASE(snellClipToNdc, clipInputs,
+                  (vec4, clip, 0),
+                  (vec3, ndc, 0, within(1e-6f, 1e-5f))(bool, valid, 3, exact),
+                  {},
+                  SnellNdc n = snellClipToNdc(clip);
+                  ndc = n.ndc;
+                  valid = n.valid;)
 // ndcZ inherits the C z + D cancellation (divided by w >= near): abs 1e-5.
-SNELL_PARITY_CASE({"snellViewToUv", "camera.glsl", "caseSnellViewToUv", [] { return viewPointInputs(310, true); },
-                   [](const ParityIO& in) { return run(caseSnellViewToUv, in); }, 0x8, 4, {1e-5f, 1e-5f}});
-SNELL_PARITY_CASE({"snellPixelToUv", "camera.glsl", "caseSnellPixelToUv", pixelToUvInputs,
-                   [](const ParityIO& in) { return run(caseSnellPixelToUv, in); }, 0, 2, {0.0f, 1e-6f}});
+SNELL_PARITY_CASE(snellViewToUv, [] { return viewPointInputs(310, true); },
+                  (vec4, camera, 0)(int, convention, 4)(vec3, pView, 8),
+                  (vec2, uv, 0, within(1e-5f, 1e-5f))(float, ndcZ, 2, within(1e-5f, 1e-5f))(bool, valid, 3, exact),
+                  {},
+                  SnellScreenPoint sp = snellViewToUv(cameraParityMatrix(camera, convention), pView);
+                  uv = sp.uv;
+                  ndcZ = sp.ndcZ;
+                  valid = sp.valid;)
+SNELL_PARITY_CASE(snellPixelToUv, pixelToUvInputs,
+                  (ivec2, px, 0)(ivec2, size, 2),
+                  (vec2, uv, 0, within(0.0f, 1e-6f)),
+                  {},
+                  uv = snellPixelToUv(px, size);)
 // Pixels are discrete: exact (uv * size is one correctly rounded product on both sides).
-SNELL_PARITY_CASE({"snellUvToPixel", "camera.glsl", "caseSnellUvToPixel", uvToPixelInputs,
-                   [](const ParityIO& in) { return run(caseSnellUvToPixel, in); }, 0x3, 2, {0.0f, 0.0f}});
+SNELL_PARITY_CASE(snellUvToPixel, uvToPixelInputs,
+                  (vec2, uv, 0)(ivec2, size, 2),
+                  (ivec2, px, 0, exact),
+                  {},
+                  px = snellUvToPixel(uv, size);)
 // Reconstruction through viewFromClip computes w = (zc + C wc)/D, which cancels:
 // the relative error is ~ulp(1) * distance/zNear (GPU fma contraction changes
 // the rounding). Cameras here keep far/near <= 200, so 1e-4 relative covers it.
-SNELL_PARITY_CASE({"snellUvDepthToView", "camera.glsl", "caseSnellUvDepthToView",
-                   [] { return uvDepthInputs(311, false); },
-                   [](const ParityIO& in) { return run(caseSnellUvDepthToView, in); }, 0x8, 4, {1e-5f, 1e-4f}});
-SNELL_PARITY_CASE({"snellUvDistanceToView", "camera.glsl", "caseSnellUvDistanceToView",
-                   [] { return uvDepthInputs(312, true); },
-                   [](const ParityIO& in) { return run(caseSnellUvDistanceToView, in); }, 0x8, 4, {1e-5f, 1e-5f}});
+SNELL_PARITY_CASE(snellUvDepthToView, [] { return uvDepthInputs(311, false); },
+                  (vec4, camera, 0)(int, convention, 4)(vec2, uv, 5)(float, depthValue, 7),
+                  (vec3, position, 0, within(1e-5f, 1e-4f))(bool, valid, 3, exact),
+                  {},
+                  mat4 inv = snellPerspectiveInverse(camera.x, camera.y, camera.z, camera.w, convention);
+                  SnellViewPoint p = snellUvDepthToView(uv, depthValue, inv, convention);
+                  position = p.position;
+                  valid = p.valid;)
+SNELL_PARITY_CASE(snellUvDistanceToView, [] { return uvDepthInputs(312, true); },
+                  (vec4, camera, 0)(int, convention, 4)(vec2, uv, 5)(float, distance, 7),
+                  (vec3, position, 0, within(1e-5f, 1e-5f))(bool, valid, 3, exact),
+                  {},
+                  mat4 inv = snellPerspectiveInverse(camera.x, camera.y, camera.z, camera.w, convention);
+                  SnellViewPoint p = snellUvDistanceToView(uv, distance, inv);
+                  position = p.position;
+                  valid = p.valid;)
+
+// The texture-space ray cases' inputs: a camera, the ray (P1, T1), the
+// scene's nearest and farthest depths and a point's depth pz.
+#define CAMERA_TEX_RAY_IN \
+  (vec4, camera, 0)(vec3, p1, 4)(float, zNearest, 7)(vec3, t1, 8)(float, zFarthest, 11)(int, convention, 12)(float, pz, 13)
+
 // S, E = P1 + l T1 (eqs. 3-4) may be fma-contracted on the GPU: the absolute error
 // is an ulp of |l T1| (<= ~100 here: 8e-6), and dt = t'e - t's cancels: abs 1e-4.
-SNELL_PARITY_CASE({"snellTexRaySetup", "camera.glsl", "caseSnellTexRaySetup", [] { return texRayInputs(313); },
-                   [](const ParityIO& in) { return run(caseSnellTexRaySetup, in); }, 0x8, 13, {1e-4f, 1e-5f}});
+SNELL_PARITY_CASE(snellTexRaySetup, [] { return texRayInputs(313); },
+                  CAMERA_TEX_RAY_IN,
+                  (vec3, s, 0, within(1e-4f, 1e-5f))(bool, valid, 3, exact)(vec3, e, 4, within(1e-4f, 1e-5f))
+                  (float, k1, 7, within(1e-4f, 1e-5f))(vec2, ts, 8, within(1e-4f, 1e-5f))
+                  (vec2, dt, 10, within(1e-4f, 1e-5f))(float, k2, 12, within(1e-4f, 1e-5f)),
+                  {},
+                  SnellTexRay r = cameraParityTexRay(camera, convention, p1, t1, zNearest, zFarthest);
+                  s = r.s;
+                  valid = r.valid;
+                  e = r.e;
+                  k1 = r.k1;
+                  ts = r.ts;
+                  dt = r.dt;
+                  k2 = r.k2;)
 // alpha = ((S.z - pz)/pz) (k1 k2): no cancellation (S.z - pz is exact near S.z).
-SNELL_PARITY_CASE({"snellTexRayAlpha", "camera.glsl", "caseSnellTexRayAlpha", [] { return texRayInputs(314); },
-                   [](const ParityIO& in) { return run(caseSnellTexRayAlpha, in); }, 0x2, 2, {1e-5f, 1e-5f}});
+SNELL_PARITY_CASE(snellTexRayAlpha, [] { return texRayInputs(314); },
+                  CAMERA_TEX_RAY_IN,
+                  (float, alpha, 0, within(1e-5f, 1e-5f))(bool, valid, 1, exact),
+                  {},
+                  SnellTexRay r = cameraParityTexRay(camera, convention, p1, t1, zNearest, zFarthest);
+                  alpha = snellTexRayAlpha(r, pz);
+                  valid = r.valid;)
 // uv = t's + alpha dt inherits t's and dt of the setup: abs 1e-4 as there. For pz
 // near the eye alpha is huge (1e17 for pz = -1e-30) and multiplies the rounding
 // of dt = t'e - t's, a cancelling difference: relative 1e-4 (seen: 1.5e-5).
-SNELL_PARITY_CASE({"snellTexRayUv", "camera.glsl", "caseSnellTexRayUv", [] { return texRayInputs(316); },
-                   [](const ParityIO& in) { return run(caseSnellTexRayUv, in); }, 0x4, 3, {1e-4f, 1e-4f}});
+SNELL_PARITY_CASE(snellTexRayUv, [] { return texRayInputs(316); },
+                  CAMERA_TEX_RAY_IN,
+                  (vec2, uv, 0, within(1e-4f, 1e-4f))(bool, valid, 2, exact),
+                  {},
+                  SnellTexRay r = cameraParityTexRay(camera, convention, p1, t1, zNearest, zFarthest);
+                  uv = snellTexRayUv(r, pz);
+                  valid = r.valid;)
+
+}  // namespace parity_camera

@@ -2,17 +2,12 @@
 // SNELL_TEXTURE_SIZE): GL's sampler against snell::Texture2D.
 #include <snell/bridge.hpp>
 
-#include "parity_registry.hpp"
+#include "parity_case.hpp"
 
 namespace parity_hooks {
 using namespace snell;
-using snell::gpu::SnellParityOut;
 Texture2D parityTexNearest, parityTexLinear, parityTexTrilinear, parityTexMipNearest, parityTexMagLinear;
-// Case entries share one signature, so most leave some inputs unused.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
 #include "cases/hooks.glsl"
-#pragma GCC diagnostic pop
 }  // namespace parity_hooks
 
 namespace {
@@ -91,10 +86,6 @@ std::vector<ParityIO> magLinearInputs() {
   return v;
 }
 
-ParityIO run(SnellParityOut (*entry)(glm::vec4, glm::vec4, glm::vec4, glm::vec4), const ParityIO& in) {
-  return snell::gpu::toParityIO(entry(in.v[0], in.v[1], in.v[2], in.v[3]));
-}
-
 std::vector<snell::gpu::ParityTexture> allTextures() {
   return {{"parityTexNearest", &parityTexNearest},
           {"parityTexLinear", &parityTexLinear},
@@ -104,17 +95,38 @@ std::vector<snell::gpu::ParityTexture> allTextures() {
 }
 }  // namespace
 
+namespace parity_hooks {
+#define SNELL_PARITY_FILE "hooks.glsl"
+using snell_parity::CaseExtras;
+
 // Nearest reads and fetches select texels: exact. Filtered reads: llvmpipe
 // computes bilinear weights in reduced fixed-point precision, hence the tolerance.
-SNELL_PARITY_CASE({"SNELL_TEXEL_FETCH_and_SIZE", "hooks.glsl", "caseHookNearest", hookInputs,
-                   [](const ParityIO& in) { return run(caseHookNearest, in); }, 0x3FF, 10, {0.0f, 0.0f},
-                   allTextures(), buildTextures});
-SNELL_PARITY_CASE({"SNELL_SAMPLE_LOD", "hooks.glsl", "caseHookLinear", hookInputs,
-                   [](const ParityIO& in) { return run(caseHookLinear, in); }, 0, 4, {1e-4f, 1e-4f}, allTextures(),
-                   buildTextures});
-SNELL_PARITY_CASE({"SNELL_SAMPLE_LOD_mipmaps", "hooks.glsl", "caseHookMipmaps", hookInputs,
-                   [](const ParityIO& in) { return run(caseHookMipmaps, in); }, 0x00F0, 8, {1e-4f, 1e-4f},
-                   allTextures(), buildTextures});
-SNELL_PARITY_CASE({"SNELL_SAMPLE_LOD_mag_linear", "hooks.glsl", "caseHookMagLinear", magLinearInputs,
-                   [](const ParityIO& in) { return run(caseHookMagLinear, in); }, 0, 4, {1e-4f, 1e-4f},
-                   allTextures(), buildTextures});
+SNELL_PARITY_CASE(SNELL_TEXEL_FETCH_and_SIZE, hookInputs,
+                  (vec2, uv, 0)(float, lod, 2)(ivec2, texel, 4)(int, level, 6),
+                  (vec4, nearest, 0, exact)(vec4, fetched, 4, exact)(ivec2, size, 8, exact),
+                  CaseExtras().sampling(allTextures(), buildTextures),
+                  nearest = SNELL_SAMPLE_LOD(parityTexNearest, uv, lod);
+                  fetched = SNELL_TEXEL_FETCH(parityTexMipNearest, texel, level);
+                  size = SNELL_TEXTURE_SIZE(parityTexMipNearest, level);)
+
+SNELL_PARITY_CASE(SNELL_SAMPLE_LOD, hookInputs,
+                  (vec2, uv, 0)(float, lod, 2),
+                  (vec4, bilinear, 0, within(1e-4f, 1e-4f)),
+                  CaseExtras().sampling(allTextures(), buildTextures),
+                  bilinear = SNELL_SAMPLE_LOD(parityTexLinear, uv, lod);)
+
+SNELL_PARITY_CASE(SNELL_SAMPLE_LOD_mipmaps, hookInputs,
+                  (vec2, uv, 0)(float, lod, 2),
+                  (vec4, trilinear, 0, within(1e-4f, 1e-4f))(vec4, mipNearest, 4, exact),
+                  CaseExtras().sampling(allTextures(), buildTextures),
+                  trilinear = SNELL_SAMPLE_LOD(parityTexTrilinear, uv, lod);
+                  mipNearest = SNELL_SAMPLE_LOD(parityTexMipNearest, uv, lod);)
+
+// mag LINEAR with min NEAREST_MIPMAP_*: the spec switches to minification at
+// lod c = 0.5, llvmpipe at 0; the inputs avoid lod in (0, 0.5] (see bridge.hpp).
+SNELL_PARITY_CASE(SNELL_SAMPLE_LOD_mag_linear, magLinearInputs,
+                  (vec2, uv, 0)(float, lod, 2),
+                  (vec4, filtered, 0, within(1e-4f, 1e-4f)),
+                  CaseExtras().sampling(allTextures(), buildTextures),
+                  filtered = SNELL_SAMPLE_LOD(parityTexMagLinear, uv, lod);)
+}  // namespace parity_hooks

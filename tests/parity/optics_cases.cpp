@@ -1,26 +1,13 @@
-// Registrations of the optics/ parity cases (see parity_registry.hpp).
+// The optics/ parity and property cases (see parity_case.hpp): one
+// description per public function. cases/optics.glsl holds nothing but the
+// family's include.
 #include <snell/optics.hpp>
 
-#include "parity_registry.hpp"
-
-namespace parity_optics {
-using namespace snell;
-using snell::gpu::SnellParityOut;
-// Every entry takes four vec4s; most use fewer, and the common subset has no
-// way to mark a parameter unused.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#include "cases/optics.glsl"
-#pragma GCC diagnostic pop
-}  // namespace parity_optics
+#include "parity_case.hpp"
 
 namespace {
 using snell_parity::InputGen;
 using snell_parity::ParityIO;
-
-ParityIO run(snell::gpu::SnellParityOut (*entry)(glm::vec4, glm::vec4, glm::vec4, glm::vec4), const ParityIO& in) {
-  return snell::gpu::toParityIO(entry(in.v[0], in.v[1], in.v[2], in.v[3]));
-}
 
 std::vector<ParityIO> safeNormalizeInputs() {
   InputGen g(11);
@@ -452,63 +439,138 @@ std::vector<ParityIO> rayPlaneInputs() {
 }
 }  // namespace
 
-SNELL_PARITY_CASE({"snellSafeNormalize", "optics.glsl", "caseSnellSafeNormalize", safeNormalizeInputs,
-                   [](const ParityIO& in) { return run(parity_optics::caseSnellSafeNormalize, in); }, 0, 3,
-                   {1e-6f, 1e-6f}});
-SNELL_PARITY_CASE({"snellRefract", "optics.glsl", "caseSnellRefract", refractInputs,
-                   [](const ParityIO& in) { return run(parity_optics::caseSnellRefract, in); }, 0x30, 6,
-                   {1e-5f, 1e-5f}});
+namespace parity_optics {
+using namespace snell;
+using snell_parity::CaseExtras;
+#include "cases/optics.glsl"
+#define SNELL_PARITY_FILE "optics.glsl"
+
+SNELL_PARITY_CASE(snellSafeNormalize, safeNormalizeInputs,
+                  (vec3, v, 0),
+                  (vec3, n, 0, within(1e-6f, 1e-6f)),
+                  {},
+                  n = snellSafeNormalize(v);)
+
+SNELL_PARITY_CASE(snellRefract, refractInputs,
+                  (vec3, incident, 0)(float, eta, 3)(vec3, normal, 4)(int, policy, 7),
+                  (vec3, direction, 0, within(1e-5f, 1e-5f))(bool, tir, 4, exact)(bool, valid, 5, exact),
+                  {},
+                  SnellRefraction r = snellRefract(incident, normal, eta, policy);
+                  direction = r.direction;
+                  tir = r.tir;
+                  valid = r.valid;)
 
 // Same operations on both sides; 1e-5 leaves room for the GPU compiler's FMA
 // contraction and reassociation.
-SNELL_PARITY_CASE({"snellApproxRefract", "optics.glsl", "caseSnellApproxRefract", approxRefractInputs,
-                   [](const ParityIO& in) { return run(parity_optics::caseSnellApproxRefract, in); }, 0, 3,
-                   {1e-5f, 1e-5f}});
-// abs 1e-4: near (not at: see fresnelCos) the critical angle, cos_t = sqrt(cos_t^2)
-// magnifies a one-ulp difference in cos_t^2 by up to ~150.
-SNELL_PARITY_CASE({"snellFresnelDielectric", "optics.glsl", "caseSnellFresnelDielectric", fresnelDielectricInputs,
-                   [](const ParityIO& in) { return run(parity_optics::caseSnellFresnelDielectric, in); }, 0, 4,
-                   {1e-4f, 1e-5f}});
-SNELL_PARITY_CASE({"snellFresnelSchlick", "optics.glsl", "caseSnellFresnelSchlick", fresnelSchlickInputs,
-                   [](const ParityIO& in) { return run(parity_optics::caseSnellFresnelSchlick, in); }, 0, 4,
-                   {1e-5f, 1e-5f}});
-// rel 1e-4: GPU pow() is exp2(y * log2(x)) with polynomial exp2/log2 (llvmpipe),
-// whose relative error grows with |y log2 x|; powers reach 1e3 here.
-SNELL_PARITY_CASE({"snellFresnelBiasPower", "optics.glsl", "caseSnellFresnelBiasPower", fresnelBiasPowerInputs,
-                   [](const ParityIO& in) { return run(parity_optics::caseSnellFresnelBiasPower, in); }, 0, 4,
-                   {1e-5f, 1e-4f}});
-SNELL_PARITY_CASE({"snellFresnelCubic", "optics.glsl", "caseSnellFresnelCubic", fresnelCubicInputs,
-                   [](const ParityIO& in) { return run(parity_optics::caseSnellFresnelCubic, in); }, 0, 2,
-                   {1e-5f, 1e-5f}});
-SNELL_PARITY_CASE({"snellIorToEta", "optics.glsl", "caseSnellIorToEta", [] { return iorInputs(26); },
-                   [](const ParityIO& in) { return run(parity_optics::caseSnellIorToEta, in); }, 0, 4,
-                   {1e-6f, 1e-5f}});
-SNELL_PARITY_CASE({"snellIorToF0", "optics.glsl", "caseSnellIorToF0", [] { return iorInputs(33); },
-                   [](const ParityIO& in) { return run(parity_optics::caseSnellIorToF0, in); }, 0, 4,
-                   {1e-6f, 1e-5f}});
-SNELL_PARITY_CASE({"snellIceNormalBlend", "optics.glsl", "caseSnellIceNormalBlend", iceNormalBlendInputs,
-                   [](const ParityIO& in) { return run(parity_optics::caseSnellIceNormalBlend, in); }, 0, 8,
-                   {1e-5f, 1e-5f}});
+SNELL_PARITY_CASE(snellApproxRefract, approxRefractInputs,
+                  (vec3, incident, 0)(float, factor, 3)(vec3, normal, 4),
+                  (vec3, direction, 0, within(1e-5f, 1e-5f)),
+                  {},
+                  direction = snellApproxRefract(incident, normal, factor);)
+
+// Four evaluations per input. abs 1e-4: near (not at: see fresnelCos) the
+// critical angle, cos_t = sqrt(cos_t^2) magnifies a one-ulp difference in
+// cos_t^2 by up to ~150.
+SNELL_PARITY_CASE(snellFresnelDielectric, fresnelDielectricInputs,
+                  (float, cos0, 0)(float, eta0, 1)(float, cos1, 2)(float, eta1, 3)
+                  (float, cos2, 4)(float, eta2, 5)(float, cos3, 6)(float, eta3, 7),
+                  (vec4, f, 0, within(1e-4f, 1e-5f)),
+                  {},
+                  f = vec4(snellFresnelDielectric(cos0, eta0), snellFresnelDielectric(cos1, eta1),
+                           snellFresnelDielectric(cos2, eta2), snellFresnelDielectric(cos3, eta3));)
+
+// (cosI, f0) pairs, four evaluations per input.
+SNELL_PARITY_CASE(snellFresnelSchlick, fresnelSchlickInputs,
+                  (float, cos0, 0)(float, f00, 1)(float, cos1, 2)(float, f01, 3)
+                  (float, cos2, 4)(float, f02, 5)(float, cos3, 6)(float, f03, 7),
+                  (vec4, f, 0, within(1e-5f, 1e-5f)),
+                  {},
+                  f = vec4(snellFresnelSchlick(cos0, f00), snellFresnelSchlick(cos1, f01), snellFresnelSchlick(cos2, f02),
+                           snellFresnelSchlick(cos3, f03));)
+
+// (nDotL, bias, power) triples, four evaluations per input. rel 1e-4: GPU
+// pow() is exp2(y * log2(x)) with polynomial exp2/log2 (llvmpipe), whose
+// relative error grows with |y log2 x|; powers reach 1e3 here.
+SNELL_PARITY_CASE(snellFresnelBiasPower, fresnelBiasPowerInputs,
+                  (vec3, t0, 0)(vec3, t1, 4)(vec3, t2, 8)(vec3, t3, 12),
+                  (vec4, f, 0, within(1e-5f, 1e-4f)),
+                  {},
+                  f = vec4(snellFresnelBiasPower(t0.x, t0.y, t0.z), snellFresnelBiasPower(t1.x, t1.y, t1.z),
+                           snellFresnelBiasPower(t2.x, t2.y, t2.z), snellFresnelBiasPower(t3.x, t3.y, t3.z));)
+
+// (eye, normal) pairs, two evaluations per input.
+SNELL_PARITY_CASE(snellFresnelCubic, fresnelCubicInputs,
+                  (vec3, eye0, 0)(vec3, normal0, 4)(vec3, eye1, 8)(vec3, normal1, 12),
+                  (float, f0, 0, within(1e-5f, 1e-5f))(float, f1, 1, within(1e-5f, 1e-5f)),
+                  {},
+                  f0 = snellFresnelCubic(eye0, normal0);
+                  f1 = snellFresnelCubic(eye1, normal1);)
+
+// (iorIncident, iorTransmitted) pairs, four evaluations per input.
+SNELL_PARITY_CASE(snellIorToEta, [] { return iorInputs(26); },
+                  (vec2, p0, 0)(vec2, p1, 2)(vec2, p2, 4)(vec2, p3, 6),
+                  (vec4, eta, 0, within(1e-6f, 1e-5f)),
+                  {},
+                  eta = vec4(snellIorToEta(p0.x, p0.y), snellIorToEta(p1.x, p1.y), snellIorToEta(p2.x, p2.y),
+                             snellIorToEta(p3.x, p3.y));)
+
+SNELL_PARITY_CASE(snellIorToF0, [] { return iorInputs(33); },
+                  (vec2, p0, 0)(vec2, p1, 2)(vec2, p2, 4)(vec2, p3, 6),
+                  (vec4, f0, 0, within(1e-6f, 1e-5f)),
+                  {},
+                  f0 = vec4(snellIorToF0(p0.x, p0.y), snellIorToF0(p1.x, p1.y), snellIorToF0(p2.x, p2.y),
+                            snellIorToF0(p3.x, p3.y));)
+
+// Both overloads: the explicit weight and SNELL_ICE_NORMAL_BLEND's.
+SNELL_PARITY_CASE(snellIceNormalBlend, iceNormalBlendInputs,
+                  (vec3, front, 0)(float, weight, 3)(vec3, back, 4),
+                  (vec3, blended, 0, within(1e-5f, 1e-5f))(vec3, blendedDefault, 4, within(1e-5f, 1e-5f)),
+                  {},
+                  blended = snellIceNormalBlend(front, back, weight);
+                  blendedDefault = snellIceNormalBlend(front, back);)
+
 // rel 1e-4: GPU exp() is exp2(x * log2(e)) with a polynomial exp2 (llvmpipe);
 // results down to exp(-50) carry the rounding of the scaled argument.
-SNELL_PARITY_CASE({"snellBeerLambert", "optics.glsl", "caseSnellBeerLambert", beerLambertInputs,
-                   [](const ParityIO& in) { return run(parity_optics::caseSnellBeerLambert, in); }, 0, 3,
-                   {1e-6f, 1e-4f}});
-// The asin series is plain arithmetic on both sides; the inputs' normalization
-// (inversesqrt) may differ by an ulp, ~1e-7 rad.
-SNELL_PARITY_CASE({"snellAngleBetween", "optics.glsl", "caseSnellAngleBetween", angleBetweenInputs,
-                   [](const ParityIO& in) { return run(parity_optics::caseSnellAngleBetween, in); }, 0, 2,
-                   {1e-5f, 1e-5f}});
-SNELL_PARITY_CASE({"snellWymanDistance", "optics.glsl", "caseSnellWymanDistance", wymanDistanceInputs,
-                   [](const ParityIO& in) { return run(parity_optics::caseSnellWymanDistance, in); }, 0, 4,
-                   {1e-5f, 1e-5f}});
+SNELL_PARITY_CASE(snellBeerLambert, beerLambertInputs,
+                  (vec3, absorption, 0)(float, distance, 3),
+                  (vec3, transmittance, 0, within(1e-6f, 1e-4f)),
+                  {},
+                  transmittance = snellBeerLambert(absorption, distance);)
+
+// Two evaluations per input. The asin series is plain arithmetic on both
+// sides; the inputs' normalization (inversesqrt) may differ by an ulp, ~1e-7 rad.
+SNELL_PARITY_CASE(snellAngleBetween, angleBetweenInputs,
+                  (vec3, u0, 0)(vec3, v0, 4)(vec3, u1, 8)(vec3, v1, 12),
+                  (float, angle0, 0, within(1e-5f, 1e-5f))(float, angle1, 1, within(1e-5f, 1e-5f)),
+                  {},
+                  angle0 = snellAngleBetween(u0, v0);
+                  angle1 = snellAngleBetween(u1, v1);)
+
+// (thetaT, thetaI, dV, dN), four evaluations per input.
+SNELL_PARITY_CASE(snellWymanDistance, wymanDistanceInputs,
+                  (vec4, q0, 0)(vec4, q1, 4)(vec4, q2, 8)(vec4, q3, 12),
+                  (vec4, d, 0, within(1e-5f, 1e-5f)),
+                  {},
+                  d = vec4(snellWymanDistance(q0.x, q0.y, q0.z, q0.w), snellWymanDistance(q1.x, q1.y, q1.z, q1.w),
+                           snellWymanDistance(q2.x, q2.y, q2.z, q2.w), snellWymanDistance(q3.x, q3.y, q3.z, q3.w));)
+
 // abs 2e-4: the angle ratio's error (~1e-7 rad / theta_i, theta_i >= 0.01) times
 // |dV - dN| <= 10.
-SNELL_PARITY_CASE({"snellWymanDistanceVec", "optics.glsl", "caseSnellWymanDistanceVec", wymanDistanceVecInputs,
-                   [](const ParityIO& in) { return run(parity_optics::caseSnellWymanDistanceVec, in); }, 0, 1,
-                   {2e-4f, 1e-5f}});
+SNELL_PARITY_CASE(snellWymanDistanceVec, wymanDistanceVecInputs,
+                  (vec3, incident, 0)(float, dV, 3)(vec3, normal, 4)(float, dN, 7)(vec3, refracted, 8),
+                  (float, d, 0, within(2e-4f, 1e-5f)),
+                  {},
+                  d = snellWymanDistanceVec(incident, normal, refracted, dV, dN);)
+
 // 1e-4: t = dot(p0 - o, n) / dot(d, n) with |cos| down to 1e-2 loses ~2 digits
-// to cancellation in the denominator; valid (output 4) compares exactly.
-SNELL_PARITY_CASE({"snellRayPlane", "optics.glsl", "caseSnellRayPlane", rayPlaneInputs,
-                   [](const ParityIO& in) { return run(parity_optics::caseSnellRayPlane, in); }, 0x10, 5,
-                   {1e-4f, 1e-4f}});
+// to cancellation in the denominator.
+SNELL_PARITY_CASE(snellRayPlane, rayPlaneInputs,
+                  (vec3, origin, 0)(vec3, direction, 4)(vec3, planePoint, 8)(vec3, planeNormal, 12),
+                  (float, t, 0, within(1e-4f, 1e-4f))(vec3, position, 1, within(1e-4f, 1e-4f))(bool, valid, 4, exact),
+                  {},
+                  SnellRayPlaneHit h = snellRayPlane(origin, direction, planePoint, planeNormal);
+                  t = h.t;
+                  position = h.position;
+                  valid = h.valid;)
+
+}  // namespace parity_optics

@@ -1,19 +1,17 @@
 // Registry of parity cases: one per public GLSL function, each running that
-// function on llvmpipe and in the C++ build over the same inputs.
-//
-// A case lives in two places:
-//  - tests/parity/cases/<family>.glsl: `SnellParityOut caseSnellFoo(vec4 a, vec4 b,
-//    vec4 c, vec4 d)`, written in the common subset, unpacking its arguments from
-//    the four input vec4s and packing results into the four output vec4s (bools
-//    as 0.0f / 1.0f). The same text is compiled for the GPU and, inside a C++
-//    namespace, for the CPU.
-//  - tests/parity/<family>_cases.cpp: SNELL_PARITY_CASE(...) registration with
-//    an input generator (>= 10,000 inputs, edge cases included) and tolerances.
+// function on llvmpipe and in the C++ build over the same inputs, and the
+// property tests' list of functions. A case is described once, in
+// tests/parity/<family>_cases.cpp, with SNELL_PARITY_CASE (parity_case.hpp):
+// named inputs and outputs, each output exact or with its tolerance, the
+// body in the common subset, an input generator (>= 10,000 inputs, edge cases
+// included) and the contract's exceptions by name. Helpers, textures and
+// macros a family's cases share live in tests/parity/cases/<family>.glsl.
 #pragma once
 
 #include <snell/gpu/parity.hpp>
 
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <random>
 #include <string>
@@ -23,24 +21,45 @@ namespace snell_parity {
 
 using snell::gpu::ParityIO;
 
-struct Tolerance {
-  float abs = 1e-5f;  // |gpu - cpu| <= abs + rel * |cpu| for continuous outputs
-  float rel = 1e-5f;
+// How an output float is compared (snell::gpu::ParityOutput): exactly, or
+// within |gpu - cpu| <= abs + rel * |cpu|.
+struct Check {
+  bool exact;
+  float abs, rel;
+};
+namespace checks {
+inline constexpr Check exact{true, 0.0f, 0.0f};
+constexpr Check within(float abs, float rel) { return Check{false, abs, rel}; }
+}  // namespace checks
+
+// A documented exception to "every output is finite" (the property tests): a
+// non-finite value in one of the input floats `passThroughInputs` (bit k: input
+// v[k/4][k%4]; a value the function uses "as given") excuses the output floats
+// `outputs`; `always`: those outputs are never checked.
+struct ContractException {
+  std::uint16_t passThroughInputs;
+  std::uint16_t outputs;
+  bool always;
+  std::string reason;
 };
 
+// A registered case, built from its description by describeCase()
+// (parity_case.hpp): never written by hand.
 struct CaseSpec {
-  std::string function;     // the public GLSL function, e.g. "snellRefract"
-  std::string glslFile;     // case file under tests/parity/cases, e.g. "optics.glsl"
-  std::string entry;        // GLSL entry, "caseSnellRefract"
+  std::string function;    // the public GLSL function, e.g. "snellRefract"
+  std::string glslFile;    // the family's helper file under tests/parity/cases, e.g. "optics.glsl"
+  std::string entry;       // the generated GLSL entry, "caseSnellRefract"
+  std::string entrySource; // its text, appended after glslFile
   std::function<std::vector<ParityIO>()> inputs;
   std::function<ParityIO(const ParityIO&)> cpu;  // the C++ build of the same entry
-  std::uint16_t discrete = 0;  // bit k: output float k (v[k/4][k%4]) compared exactly
-  int outputs = 16;            // how many output floats are meaningful
-  Tolerance tol;
+  std::vector<snell::gpu::ParityOutput> outputs;  // the described output floats
+  std::string inputNames[16];                     // the input float names ("" unused)
   // Textures the case samples: GLSL uniforms bound on the GPU, the same
   // snell::Texture2D objects read by the C++ build. setup() fills them first.
   std::vector<snell::gpu::ParityTexture> textures = {};
   std::function<void()> setup = {};
+  std::vector<ContractException> exceptions = {};
+  std::string layoutError;  // non-empty: the description is wrong (the manifest test fails)
 };
 
 // Every case file registers into this one list, whichever executable links them
@@ -48,6 +67,22 @@ struct CaseSpec {
 inline std::vector<CaseSpec>& registry() {
   static std::vector<CaseSpec> cases;
   return cases;
+}
+
+// FNV-1a over every bit of every float of `ios`: the parity runs print it for the
+// inputs, the C++ results and the GPU results, so a change meant to alter no
+// result (a case rewritten, a runner refactored) is proved not to by diffing
+// two runs' logs.
+inline std::uint64_t ioDigest(const std::vector<ParityIO>& ios) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (const ParityIO& io : ios)
+    for (int k = 0; k < 16; ++k) {
+      const float x = io.v[k / 4][k % 4];
+      std::uint32_t bits;
+      std::memcpy(&bits, &x, sizeof bits);
+      for (int b = 0; b < 4; ++b) h = (h ^ ((bits >> (8 * b)) & 0xFFu)) * 1099511628211ull;
+    }
+  return h;
 }
 
 struct Registrar {
@@ -84,9 +119,3 @@ class InputGen {
 };
 
 }  // namespace snell_parity
-
-#define SNELL_PARITY_CAT2(a, b) a##b
-#define SNELL_PARITY_CAT(a, b) SNELL_PARITY_CAT2(a, b)
-// SNELL_PARITY_CASE({ "snellFoo", "optics.glsl", "caseSnellFoo", gen, cpu, discreteMask, outputs, tol });
-#define SNELL_PARITY_CASE(...) \
-  static ::snell_parity::Registrar SNELL_PARITY_CAT(snellParityRegistrar, __LINE__)(::snell_parity::CaseSpec __VA_ARGS__)

@@ -1,4 +1,4 @@
-// Registrations of the plane-family intersect/ parity cases (cases/plane.glsl):
+// The plane-family intersect/ parity and property cases (see parity_case.hpp):
 // hit, depth surface, surface point, single sample, the two plane strategies
 // with refinement and the normal plane's far start, and the depth pyramid reduction.
 //
@@ -19,17 +19,13 @@
 #include <cmath>
 #include <limits>
 
-#include "parity_registry.hpp"
+#include "parity_case.hpp"
 #include "support/depth_scenes.hpp"
 
 namespace parity_plane {
 using namespace snell;
-using snell::gpu::SnellParityOut;
 Texture2D planeDepthA, planeNormalA, planePyramidA, planeDepthB, planeNormalB, planePyramidB;
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
 #include "cases/plane.glsl"
-#pragma GCC diagnostic pop
 }  // namespace parity_plane
 
 namespace {
@@ -66,11 +62,6 @@ void buildTextures() {
 std::vector<snell::gpu::ParityTexture> textures() {
   return {{"planeDepthA", &planeDepthA},   {"planeNormalA", &planeNormalA}, {"planePyramidA", &planePyramidA},
           {"planeDepthB", &planeDepthB},   {"planeNormalB", &planeNormalB}, {"planePyramidB", &planePyramidB}};
-}
-
-ParityIO run(SnellParityOut (*entry)(glm::vec4, glm::vec4, glm::vec4, glm::vec4), const ParityIO& in) {
-  buildTextures();
-  return snell::gpu::toParityIO(entry(in.v[0], in.v[1], in.v[2], in.v[3]));
 }
 
 glm::vec4 matrixEntries(const snell_test::DepthScene& s) {
@@ -323,58 +314,248 @@ std::vector<ParityIO> reduceInputs() {
   return v;
 }
 
-// Hit outputs: 0-1 uv, 2 valid, 3 fetches, 4-6 position, 8-9 texel.
-constexpr std::uint16_t kHitDiscrete = 0x030C;
 }  // namespace
 
-SNELL_PARITY_CASE({"snellHitMiss", "plane.glsl", "caseSnellHitMiss", hitMissInputs,
-                   [](const ParityIO& in) { return run(caseSnellHitMiss, in); }, 0x03FF, 10, {0.0f, 0.0f}});
-SNELL_PARITY_CASE({"snellDepthSurface", "plane.glsl", "caseSnellDepthSurface", surfaceInputs,
-                   [](const ParityIO& in) { return run(caseSnellDepthSurface, in); }, 0x0FFF, 12, {0.0f, 0.0f}});
+namespace parity_plane {
+#define SNELL_PARITY_FILE "plane.glsl"
+using snell_parity::CaseExtras;
+
+CaseExtras sampling() { return CaseExtras().sampling(textures(), buildTextures); }
+
+// A hit (PLANE_PARITY_SET_HIT): uv and position with the case's tolerance; the
+// valid flag, fetch count and level-0 texel exactly.
+#define PLANE_HIT_OUT(check) \
+  (vec2, uv, 0, check)(bool, valid, 2, exact)(int, fetches, 3, exact)(vec3, position, 4, check)(ivec2, texel, 8, exact)
+// A ray case's inputs: origin and scene (false: A, true: B), direction and
+// iteration count, the projection's four entries, normalLod, maxLod and
+// farStart (the far start case: scene B's surface is open).
+#define PLANE_RAY_IN                                                                                         \
+  (vec3, origin, 0)(bool, sceneB, 3)(vec3, dir, 4)(int, iterations, 7)(vec4, entries, 8)(float, normalLod, 12) \
+  (int, maxLod, 13)(bool, farStart, 14)
+
+SNELL_PARITY_CASE(snellHitMiss, hitMissInputs,
+                  (int, missFetches, 0),
+                  PLANE_HIT_OUT(exact),
+                  {},
+                  PLANE_PARITY_SET_HIT(snellHitMiss(missFetches));)
+
+SNELL_PARITY_CASE(snellDepthSurface, surfaceInputs,
+                  (vec4, entries, 8)(float, zNear, 12)(float, zFar, 13)(int, convention, 14)(float, emptyDepth, 15),
+                  (vec4, storedEntries, 0, exact)(float, storedNear, 4, exact)(float, storedFar, 5, exact)
+                  (int, storedConvention, 6, exact)(float, storedEmpty, 7, exact)(int, lod, 8, exact)
+                  (float, m23, 9, exact)(float, zeroSum0, 10, exact)(float, zeroSum1, 11, exact),
+                  CaseExtras().passThrough({"entries", "zNear", "zFar", "convention", "emptyDepth"},
+                                           {"storedEntries", "storedNear", "storedFar", "storedConvention",
+                                            "storedEmpty", "lod", "m23", "zeroSum0", "zeroSum1"},
+                                           "a plain constructor: the case packs back the matrix and (zNear, zFar, "
+                                           "convention, emptyDepth) it stores"),
+                  SnellDepthSurface s = snellDepthSurface(planeParityMatrix(entries), zNear, zFar, convention, emptyDepth);
+                  vec4 c0 = SNELL_MUL(s.clipFromView, vec4(1.0f, 0.0f, 0.0f, 0.0f));
+                  vec4 c1 = SNELL_MUL(s.clipFromView, vec4(0.0f, 1.0f, 0.0f, 0.0f));
+                  vec4 c2 = SNELL_MUL(s.clipFromView, vec4(0.0f, 0.0f, 1.0f, 0.0f));
+                  vec4 c3 = SNELL_MUL(s.clipFromView, vec4(0.0f, 0.0f, 0.0f, 1.0f));
+                  storedEntries = vec4(c0.x, c1.y, c2.z, c3.z);
+                  storedNear = s.zNear;
+                  storedFar = s.zFar;
+                  storedConvention = s.convention;
+                  storedEmpty = s.emptyDepth;
+                  lod = s.lod;
+                  m23 = c2.w;
+                  zeroSum0 = c0.y + c0.z + c0.w + c1.x + c1.z + c1.w;
+                  zeroSum1 = c2.x + c2.y + c3.x + c3.y + c3.w;)
+
 // One fetch and a linearization (a division: GL may use x * (1/y), 2.5 ulp).
-SNELL_PARITY_CASE({"snellSampleSurface", "plane.glsl", "caseSnellSampleSurface", [] { return uvInputs(607, true); },
-                   [](const ParityIO& in) { return run(caseSnellSampleSurface, in); }, 0x0002, 2, {1e-5f, 1e-5f},
-                   textures(), buildTextures});
-// Cramer's rule: a handful of products and two divisions.
-SNELL_PARITY_CASE({"snellUvZToView", "plane.glsl", "caseSnellUvZToView", uvZInputs,
-                   [](const ParityIO& in) { return run(caseSnellUvZToView, in); }, 0x0008, 4, {1e-5f, 1e-5f}});
-SNELL_PARITY_CASE({"snellSurfaceViewToUv", "plane.glsl", "caseSnellSurfaceViewToUv", surfaceViewToUvInputs,
-                   [](const ParityIO& in) { return run(caseSnellSurfaceViewToUv, in); }, 0x0018, 5, {1e-5f, 1e-5f}});
-SNELL_PARITY_CASE({"snellSurfaceUvZToView", "plane.glsl", "caseSnellSurfaceUvZToView", surfaceUvZInputs,
-                   [](const ParityIO& in) { return run(caseSnellSurfaceUvZToView, in); }, 0x0018, 5, {1e-5f, 1e-5f}});
-SNELL_PARITY_CASE({"snellSurfacePoint", "plane.glsl", "caseSnellSurfacePoint", [] { return uvInputs(608, false); },
-                   [](const ParityIO& in) { return run(caseSnellSurfacePoint, in); }, 0x0038, 6, {1e-5f, 1e-5f},
-                   textures(), buildTextures});
+// lod > 0 reads the pyramid.
+SNELL_PARITY_CASE(snellSampleSurface, [] { return uvInputs(607, true); },
+                  (vec2, uv, 0)(bool, sceneB, 3)(int, depthFilter, 6)(int, lod, 7)(vec4, entries, 8),
+                  (float, viewZ, 0, within(1e-5f, 1e-5f))(bool, valid, 1, exact),
+                  sampling(),
+                  SnellDepthSurface s = planeParitySurface(sceneB, entries);
+                  s.lod = lod;
+                  s.depthFilter = depthFilter;
+                  SnellSurfaceSample x;
+                  if (sceneB) {
+                    x = s.lod > 0 ? snellSampleSurface(planePyramidB, uv, s) : snellSampleSurface(planeDepthB, uv, s);
+                  } else {
+                    x = s.lod > 0 ? snellSampleSurface(planePyramidA, uv, s) : snellSampleSurface(planeDepthA, uv, s);
+                  }
+                  viewZ = x.viewZ;
+                  valid = x.valid;)
+
+// Cramer's rule: a handful of products and two divisions. (m20, m21): the
+// off-centre terms.
+SNELL_PARITY_CASE(snellUvZToView, uvZInputs,
+                  (vec2, uv, 0)(float, viewZ, 2)(vec2, offCentre, 4)(vec4, entries, 8),
+                  (vec3, position, 0, within(1e-5f, 1e-5f))(bool, valid, 3, exact),
+                  {},
+                  mat4 m = SNELL_CAMERA_MAT4_COLUMNS(vec4(entries.x, 0.0f, 0.0f, 0.0f), vec4(0.0f, entries.y, 0.0f, 0.0f),
+                                                     vec4(offCentre.x, offCentre.y, entries.z, -1.0f),
+                                                     vec4(0.0f, 0.0f, entries.w, 0.0f));
+                  SnellViewPoint p = snellUvZToView(m, uv, viewZ);
+                  position = p.position;
+                  valid = p.valid;)
+
+// The surface's own projection (surface_projection.glsl): shape = (m20, m21)
+// off-centre terms and m10, a shear that makes the matrix general; clearFlag
+// clears the perspective flag snellDepthSurface set (output `perspective`).
+SNELL_PARITY_CASE(snellSurfaceViewToUv, surfaceViewToUvInputs,
+                  (vec3, pView, 0)(bool, clearFlag, 3)(vec3, shape, 4)(vec4, entries, 8),
+                  (vec2, uv, 0, within(1e-5f, 1e-5f))(float, ndcZ, 2, within(1e-5f, 1e-5f))(bool, valid, 3, exact)
+                  (bool, perspective, 4, exact),
+                  {},
+                  SnellDepthSurface s = planeParityShapedSurface(shape, entries);
+                  perspective = s.perspective;
+                  if (clearFlag) {
+                    s.perspective = false;
+                  }
+                  SnellScreenPoint sp = snellSurfaceViewToUv(s, pView);
+                  uv = sp.uv;
+                  ndcZ = sp.ndcZ;
+                  valid = sp.valid;)
+SNELL_PARITY_CASE(snellSurfaceUvZToView, surfaceUvZInputs,
+                  (vec2, uv, 0)(float, viewZ, 2)(bool, clearFlag, 3)(vec3, shape, 4)(vec4, entries, 8),
+                  (vec3, position, 0, within(1e-5f, 1e-5f))(bool, valid, 3, exact)(bool, perspective, 4, exact),
+                  {},
+                  SnellDepthSurface s = planeParityShapedSurface(shape, entries);
+                  perspective = s.perspective;
+                  if (clearFlag) {
+                    s.perspective = false;
+                  }
+                  SnellViewPoint p = snellSurfaceUvZToView(s, uv, viewZ);
+                  position = p.position;
+                  valid = p.valid;)
+
+// The point's uv is its texel centre: exact.
+SNELL_PARITY_CASE(snellSurfacePoint, [] { return uvInputs(608, false); },
+                  (vec2, uv, 0)(bool, sceneB, 3)(vec4, entries, 8),
+                  (vec3, position, 0, within(1e-5f, 1e-5f))(bool, valid, 3, exact)(vec2, texelUv, 4, exact),
+                  sampling(),
+                  SnellDepthSurface s = planeParitySurface(sceneB, entries);
+                  SnellSurfacePoint p;
+                  if (sceneB) {
+                    p = snellSurfacePoint(planeDepthB, uv, s);
+                  } else {
+                    p = snellSurfacePoint(planeDepthA, uv, s);
+                  }
+                  position = p.position;
+                  valid = p.valid;
+                  texelUv = p.uv;)
+
 // Positions: 1e-4 relative (plane intersections amplify ulp differences of the
 // reconstruction by 1/cos of the ray-plane angle); the texel must be the same.
-SNELL_PARITY_CASE({"snellIntersectSingleSample", "plane.glsl", "caseSnellIntersectSingleSample",
-                   [] { return rayInputs(609, false); },
-                   [](const ParityIO& in) { return run(caseSnellIntersectSingleSample, in); }, kHitDiscrete, 10,
-                   {1e-4f, 1e-4f}, textures(), buildTextures});
-SNELL_PARITY_CASE({"snellHitOnSurface", "plane.glsl", "caseSnellHitOnSurface", hitOnSurfaceInputs,
-                   [](const ParityIO& in) { return run(caseSnellHitOnSurface, in); }, kHitDiscrete, 10,
-                   {1e-5f, 1e-5f}, textures(), buildTextures});
-SNELL_PARITY_CASE({"snellPlaneHit", "plane.glsl", "caseSnellPlaneHit", planeHitInputs,
-                   [](const ParityIO& in) { return run(caseSnellPlaneHit, in); }, kHitDiscrete, 10,
-                   {1e-5f, 1e-5f}, textures(), buildTextures});
+SNELL_PARITY_CASE(snellIntersectSingleSample, [] { return rayInputs(609, false); },
+                  PLANE_RAY_IN,
+                  PLANE_HIT_OUT(within(1e-4f, 1e-4f)),
+                  sampling(),
+                  SnellDepthSurface s = planeParitySurface(sceneB, entries);
+                  if (sceneB) {
+                    PLANE_PARITY_SET_HIT(snellIntersectSingleSample(origin, dir, planeDepthB, s));
+                  } else {
+                    PLANE_PARITY_SET_HIT(snellIntersectSingleSample(origin, dir, planeDepthA, s));
+                  })
+SNELL_PARITY_CASE(snellHitOnSurface, hitOnSurfaceInputs,
+                  (vec3, p, 0)(bool, sceneB, 3)(int, fetchesSoFar, 7)(vec4, entries, 8),
+                  PLANE_HIT_OUT(within(1e-5f, 1e-5f)),
+                  sampling(),
+                  SnellDepthSurface s = planeParitySurface(sceneB, entries);
+                  if (sceneB) {
+                    PLANE_PARITY_SET_HIT(snellHitOnSurface(p, planeDepthB, s, fetchesSoFar));
+                  } else {
+                    PLANE_PARITY_SET_HIT(snellHitOnSurface(p, planeDepthA, s, fetchesSoFar));
+                  })
+SNELL_PARITY_CASE(snellPlaneHit, planeHitInputs,
+                  (vec3, p, 0)(bool, sceneB, 3)(int, fetchesSoFar, 7)(vec4, entries, 8)(vec2, planeUv, 12),
+                  PLANE_HIT_OUT(within(1e-5f, 1e-5f)),
+                  sampling(),
+                  SnellDepthSurface s = planeParitySurface(sceneB, entries);
+                  if (sceneB) {
+                    PLANE_PARITY_SET_HIT(snellPlaneHit(p, planeUv, planeDepthB, s, fetchesSoFar));
+                  } else {
+                    PLANE_PARITY_SET_HIT(snellPlaneHit(p, planeUv, planeDepthA, s, fetchesSoFar));
+                  })
 // Two pyramid fetches chosen by comparisons of a projected point: the level and the texel
 // compare exactly (fetches, valid), the plane hit with the single sample's tolerance.
-SNELL_PARITY_CASE({"snellPlaneFarStart", "plane.glsl", "caseSnellPlaneFarStart", [] { return rayInputs(613, false); },
-                   [](const ParityIO& in) { return run(caseSnellPlaneFarStart, in); }, 0x0028, 6, {1e-4f, 1e-4f},
-                   textures(), buildTextures});
-SNELL_PARITY_CASE({"snellIntersectPlaneNormal", "plane.glsl", "caseSnellIntersectPlaneNormal",
-                   [] { return rayInputs(610, false); },
-                   [](const ParityIO& in) { return run(caseSnellIntersectPlaneNormal, in); }, kHitDiscrete, 10,
-                   {1e-4f, 1e-4f}, textures(), buildTextures});
-SNELL_PARITY_CASE({"snellDepthPlaneAt", "plane.glsl", "caseSnellDepthPlaneAt", [] { return rayInputs(611, true); },
-                   [](const ParityIO& in) { return run(caseSnellDepthPlaneAt, in); }, 0x0088, 8, {1e-4f, 1e-4f},
-                   textures(), buildTextures});
-SNELL_PARITY_CASE({"snellIntersectPlaneDepth", "plane.glsl", "caseSnellIntersectPlaneDepth",
-                   [] { return rayInputs(612, false); },
-                   [](const ParityIO& in) { return run(caseSnellIntersectPlaneDepth, in); }, kHitDiscrete, 10,
-                   {1e-4f, 1e-4f}, textures(), buildTextures});
-SNELL_PARITY_CASE({"snellDepthPyramidBase", "plane.glsl", "caseSnellDepthPyramidBase", pyramidBaseInputs,
-                   [](const ParityIO& in) { return run(caseSnellDepthPyramidBase, in); }, 0x0009, 4, {1e-5f, 1e-5f}});
-SNELL_PARITY_CASE({"snellDepthMinMaxReduce", "plane.glsl", "caseSnellDepthMinMaxReduce", reduceInputs,
-                   [](const ParityIO& in) { return run(caseSnellDepthMinMaxReduce, in); }, 0x000F, 4, {0.0f, 0.0f},
-                   textures(), buildTextures});
+// The origin's own projection is originUv; farStart on scene B makes its surface open.
+SNELL_PARITY_CASE(snellPlaneFarStart, [] { return rayInputs(613, false); },
+                  PLANE_RAY_IN,
+                  (vec3, position, 0, within(1e-4f, 1e-4f))(bool, valid, 3, exact)(float, t, 4, within(1e-4f, 1e-4f))
+                  (int, fetches, 5, exact),
+                  sampling(),
+                  SnellDepthSurface s = planeParitySurface(sceneB, entries);
+                  vec2 originUv = snellSurfaceViewToUv(s, origin).uv;
+                  SnellFarPlane f;
+                  if (sceneB) {
+                    s.closed = !farStart;
+                    f = snellPlaneFarStart(origin, dir, originUv, planePyramidB, s);
+                  } else {
+                    f = snellPlaneFarStart(origin, dir, originUv, planePyramidA, s);
+                  }
+                  position = f.position;
+                  valid = f.valid;
+                  t = f.t;
+                  fetches = f.fetches;)
+SNELL_PARITY_CASE(snellIntersectPlaneNormal, [] { return rayInputs(610, false); },
+                  PLANE_RAY_IN,
+                  PLANE_HIT_OUT(within(1e-4f, 1e-4f)),
+                  sampling(),
+                  SnellDepthSurface s = planeParitySurface(sceneB, entries);
+                  if (sceneB) {
+                    PLANE_PARITY_SET_HIT(snellIntersectPlaneNormal(origin, dir, planeDepthB, planeNormalB, planePyramidB, s,
+                                                                   normalLod, iterations, farStart));
+                  } else {
+                    PLANE_PARITY_SET_HIT(snellIntersectPlaneNormal(origin, dir, planeDepthA, planeNormalA, planePyramidA, s,
+                                                                   normalLod, iterations, farStart));
+                  })
+// dir is a unit vector here.
+SNELL_PARITY_CASE(snellDepthPlaneAt, [] { return rayInputs(611, true); },
+                  PLANE_RAY_IN,
+                  (vec3, position, 0, within(1e-4f, 1e-4f))(bool, valid, 3, exact)(vec3, normal, 4, within(1e-4f, 1e-4f))
+                  (int, fetches, 7, exact),
+                  sampling(),
+                  SnellDepthSurface s = planeParitySurface(sceneB, entries);
+                  SnellDepthPlane p;
+                  if (sceneB) {
+                    p = snellDepthPlaneAt(origin, dir, planePyramidB, s, maxLod);
+                  } else {
+                    p = snellDepthPlaneAt(origin, dir, planePyramidA, s, maxLod);
+                  }
+                  position = p.position;
+                  valid = p.valid;
+                  normal = p.normal;
+                  fetches = p.fetches;)
+SNELL_PARITY_CASE(snellIntersectPlaneDepth, [] { return rayInputs(612, false); },
+                  PLANE_RAY_IN,
+                  PLANE_HIT_OUT(within(1e-4f, 1e-4f)),
+                  sampling(),
+                  SnellDepthSurface s = planeParitySurface(sceneB, entries);
+                  if (sceneB) {
+                    PLANE_PARITY_SET_HIT(snellIntersectPlaneDepth(origin, dir, planePyramidB, s, maxLod, iterations, farStart));
+                  } else {
+                    PLANE_PARITY_SET_HIT(snellIntersectPlaneDepth(origin, dir, planePyramidA, s, maxLod, iterations, farStart));
+                  })
+// The texel's mean depth value and coverage exactly; nearest / farthest
+// distances (a linearization) within 1e-5.
+SNELL_PARITY_CASE(snellDepthPyramidBase, pyramidBaseInputs,
+                  (float, depthValue, 0)(float, zNear, 1)(float, zFar, 2)(int, convention, 3)(float, emptyDepth, 4),
+                  (float, meanDepth, 0, exact)(vec2, nearFar, 1, within(1e-5f, 1e-5f))(float, coverage, 3, exact),
+                  CaseExtras().passThrough({"emptyDepth"}, {"meanDepth"},
+                                           "intersect/depth_pyramid.glsl: an invalid texel is vec4(emptyDepth, 0, 0, "
+                                           "0), the emptyDepth given"),
+                  SnellDepthSurface s = snellDepthSurface(planeParityMatrix(vec4(1.0f, 1.0f, -1.0f, -1.0f)), zNear, zFar,
+                                                          convention, emptyDepth);
+                  vec4 texel = snellDepthPyramidBase(depthValue, s);
+                  meanDepth = texel.x;
+                  nearFar = vec2(texel.y, texel.z);
+                  coverage = texel.w;)
+// Min/max select, the mean a sum in fixed order and one division: exact.
+SNELL_PARITY_CASE(snellDepthMinMaxReduce, reduceInputs,
+                  (ivec2, px, 0)(int, lod, 2)(bool, sceneB, 3),
+                  (vec4, texel, 0, exact),
+                  sampling(),
+                  if (sceneB) {
+                    texel = snellDepthMinMaxReduce(planePyramidB, lod, px, 0.0f);
+                  } else {
+                    texel = snellDepthMinMaxReduce(planePyramidA, lod, px, 0.0f);
+                  })
+
+}  // namespace parity_plane

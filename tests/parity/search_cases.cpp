@@ -15,18 +15,14 @@
 #include <stdexcept>
 #include <utility>
 
-#include "parity_registry.hpp"
+#include "parity_case.hpp"
 #include "support/depth_scenes.hpp"
 #include "support/search_rays.hpp"
 
 namespace parity_search {
 using namespace snell;
-using snell::gpu::SnellParityOut;
 Texture2D searchTexSphere, searchTexSilhouette;
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
 #include "cases/search.glsl"
-#pragma GCC diagnostic pop
 }  // namespace parity_search
 
 namespace {
@@ -138,54 +134,156 @@ std::vector<ParityIO> rayInputs(Kind kind, std::uint32_t seed) {
   return v;
 }
 
-ParityIO run(snell::gpu::SnellParityOut (*entry)(glm::vec4, glm::vec4, glm::vec4, glm::vec4), const ParityIO& in) {
-  return snell::gpu::toParityIO(entry(in.v[0], in.v[1], in.v[2], in.v[3]));
-}
-
-// valid (2), fetches (3), texel x (7), texel y (8).
-constexpr std::uint16_t kHitDiscrete = (1u << 2) | (1u << 3) | (1u << 7) | (1u << 8);
-}  // namespace
-
-SNELL_PARITY_CASE({"snellSearchSegment", "search.glsl", "caseSnellSearchSegment",
-                   [] { return rayInputs(Kind::Segment, 41); },
-                   [](const ParityIO& in) { return run(parity_search::caseSnellSearchSegment, in); }, 1u << 3, 13,
-                   {1e-5f, 1e-5f}, textures(), setupTextures});
-SNELL_PARITY_CASE({"snellConservativeBinarySearch", "search.glsl", "caseSnellConservativeBinarySearch",
-                   [] { return rayInputs(Kind::Search, 42); },
-                   [](const ParityIO& in) { return run(parity_search::caseSnellConservativeBinarySearch, in); },
-                   kHitDiscrete, 9, {1e-5f, 1e-5f}, textures(), setupTextures});
-SNELL_PARITY_CASE({"snellBinarySearch", "search.glsl", "caseSnellBinarySearch",
-                   [] { return rayInputs(Kind::Search, 43); },
-                   [](const ParityIO& in) { return run(parity_search::caseSnellBinarySearch, in); }, kHitDiscrete, 9,
-                   {1e-5f, 1e-5f}, textures(), setupTextures});
 // Brackets: mostly sub-intervals of [0, 1] (the linear search's steps, the whole segment), some reversed,
 // outside [0, 1] or NaN (clamped / returned as given).
-SNELL_PARITY_CASE({"snellBisectTexRay", "search.glsl", "caseSnellBisectTexRay",
-                   [] {
-                     std::vector<ParityIO> v = rayInputs(Kind::Search, 47);
-                     InputGen g(48);
-                     for (ParityIO& in : v) {
-                       float lo = g.chance(0.3f) ? 0.0f : g.uniform(0.0f, 0.9f);
-                       float hi = g.chance(0.3f) ? 1.0f : g.uniform(lo, 1.0f);
-                       if (g.chance(0.05f)) std::swap(lo, hi);
-                       if (g.chance(0.03f)) lo = g.hostile();
-                       if (g.chance(0.03f)) hi = g.hostile();
-                       in.v[1].w = lo;
-                       in.v[2].z = hi;
-                       if (in.v[0].w < 0.0f) in.v[0].w = 3.0f;  // no #define-default overload here
-                     }
-                     return v;
-                   },
-                   [](const ParityIO& in) { return run(parity_search::caseSnellBisectTexRay, in); }, kHitDiscrete, 9,
-                   {1e-5f, 1e-5f}, textures(), setupTextures});
-SNELL_PARITY_CASE({"snellLinearBinarySearch", "search.glsl", "caseSnellLinearBinarySearch",
-                   [] { return rayInputs(Kind::LinearSearch, 44); },
-                   [](const ParityIO& in) { return run(parity_search::caseSnellLinearBinarySearch, in); },
-                   kHitDiscrete, 9, {1e-5f, 1e-5f}, textures(), setupTextures});
-SNELL_PARITY_CASE({"snellLinearMarch", "search.glsl", "caseSnellLinearMarch",
-                   [] { return rayInputs(Kind::LinearMarch, 45); },
-                   [](const ParityIO& in) { return run(parity_search::caseSnellLinearMarch, in); }, kHitDiscrete, 9,
-                   {1e-5f, 1e-5f}, textures(), setupTextures});
-SNELL_PARITY_CASE({"snellDdaMarch", "search.glsl", "caseSnellDdaMarch", [] { return rayInputs(Kind::Dda, 46); },
-                   [](const ParityIO& in) { return run(parity_search::caseSnellDdaMarch, in); }, kHitDiscrete, 9,
-                   {1e-5f, 1e-5f}, textures(), setupTextures});
+std::vector<ParityIO> bisectInputs() {
+  std::vector<ParityIO> v = rayInputs(Kind::Search, 47);
+  InputGen g(48);
+  for (ParityIO& in : v) {
+    float lo = g.chance(0.3f) ? 0.0f : g.uniform(0.0f, 0.9f);
+    float hi = g.chance(0.3f) ? 1.0f : g.uniform(lo, 1.0f);
+    if (g.chance(0.05f)) std::swap(lo, hi);
+    if (g.chance(0.03f)) lo = g.hostile();
+    if (g.chance(0.03f)) hi = g.hostile();
+    in.v[1].w = lo;
+    in.v[2].z = hi;
+    if (in.v[0].w < 0.0f) in.v[0].w = 3.0f;  // no #define-default overload here
+  }
+  return v;
+}
+}  // namespace
+
+namespace parity_search {
+#define SNELL_PARITY_FILE "search.glsl"
+using snell_parity::CaseExtras;
+
+CaseExtras sampling() { return CaseExtras().sampling(textures(), setupTextures); }
+
+// A ray case's inputs: the ray, three per-strategy options (option1 < 0 selects
+// the overload with the #define defaults), the search range (zNearest is the
+// DDA's thickness), the scene (false: sphereBack, true: silhouette) and the
+// projection's four entries.
+#define SEARCH_RAY_IN                                                                                          \
+  (vec3, origin, 0)(float, option1, 3)(vec3, dir, 4)(float, option2, 7)(float, zNearest, 8)(float, zFarthest, 9) \
+  (float, option3, 10)(bool, sceneB, 11)(vec4, entries, 12)
+// A hit (SEARCH_PARITY_SET_HIT): valid, fetches and the level-0 texel exactly,
+// uv and position within 1e-5 (relative, with a 1e-5 absolute floor).
+#define SEARCH_HIT_OUT                                                                                         \
+  (vec2, uv, 0, within(1e-5f, 1e-5f))(bool, valid, 2, exact)(int, fetches, 3, exact)                           \
+  (vec3, position, 4, within(1e-5f, 1e-5f))(ivec2, texel, 7, exact)
+
+SNELL_PARITY_CASE(snellSearchSegment, [] { return rayInputs(Kind::Segment, 41); },
+                  SEARCH_RAY_IN,
+                  (vec3, s, 0, within(1e-5f, 1e-5f))(bool, valid, 3, exact)(vec3, e, 4, within(1e-5f, 1e-5f))
+                  (float, k1, 7, within(1e-5f, 1e-5f))(vec2, ts, 8, within(1e-5f, 1e-5f))
+                  (vec2, dt, 10, within(1e-5f, 1e-5f))(float, k2, 12, within(1e-5f, 1e-5f)),
+                  sampling(),
+                  SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, searchParityMatrix(entries));
+                  s = r.s;
+                  valid = r.valid;
+                  e = r.e;
+                  k1 = r.k1;
+                  ts = r.ts;
+                  dt = r.dt;
+                  k2 = r.k2;)
+// option1 = steps.
+SNELL_PARITY_CASE(snellConservativeBinarySearch, [] { return rayInputs(Kind::Search, 42); },
+                  SEARCH_RAY_IN,
+                  SEARCH_HIT_OUT,
+                  sampling(),
+                  SnellDepthSurface s = searchParitySurface(sceneB, entries);
+                  if (sceneB) {
+                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
+                                              ? snellConservativeBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest)
+                                              : snellConservativeBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest,
+                                                                              int(option1)));
+                  } else {
+                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
+                                              ? snellConservativeBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest)
+                                              : snellConservativeBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest,
+                                                                              int(option1)));
+                  })
+// option1 = steps.
+SNELL_PARITY_CASE(snellBinarySearch, [] { return rayInputs(Kind::Search, 43); },
+                  SEARCH_RAY_IN,
+                  SEARCH_HIT_OUT,
+                  sampling(),
+                  SnellDepthSurface s = searchParitySurface(sceneB, entries);
+                  if (sceneB) {
+                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
+                                              ? snellBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest)
+                                              : snellBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest,
+                                                                  int(option1)));
+                  } else {
+                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
+                                              ? snellBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest)
+                                              : snellBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest,
+                                                                  int(option1)));
+                  })
+// option1 = steps, option2 = lo, option3 = hi; the hit so far is a miss (its uv
+// and position mark "not moved").
+SNELL_PARITY_CASE(snellBisectTexRay, bisectInputs,
+                  SEARCH_RAY_IN,
+                  SEARCH_HIT_OUT,
+                  sampling(),
+                  SnellDepthSurface s = searchParitySurface(sceneB, entries);
+                  SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, s.clipFromView);
+                  SnellHit h = snellHitMiss(0);
+                  if (r.valid) {
+                    h = sceneB ? snellBisectTexRay(r, searchTexSilhouette, s, option2, option3, int(option1), h)
+                               : snellBisectTexRay(r, searchTexSphere, s, option2, option3, int(option1), h);
+                  }
+                  SEARCH_PARITY_SET_HIT(h);)
+// option1 = linearSteps, option2 = binarySteps.
+SNELL_PARITY_CASE(snellLinearBinarySearch, [] { return rayInputs(Kind::LinearSearch, 44); },
+                  SEARCH_RAY_IN,
+                  SEARCH_HIT_OUT,
+                  sampling(),
+                  SnellDepthSurface s = searchParitySurface(sceneB, entries);
+                  if (sceneB) {
+                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
+                                              ? snellLinearBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest)
+                                              : snellLinearBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest,
+                                                                        int(option1), int(option2)));
+                  } else {
+                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
+                                              ? snellLinearBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest)
+                                              : snellLinearBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest,
+                                                                        int(option1), int(option2)));
+                  })
+// option1 = steps, option2 = refineSteps, option3 = maxDistance.
+SNELL_PARITY_CASE(snellLinearMarch, [] { return rayInputs(Kind::LinearMarch, 45); },
+                  SEARCH_RAY_IN,
+                  SEARCH_HIT_OUT,
+                  sampling(),
+                  SnellDepthSurface s = searchParitySurface(sceneB, entries);
+                  if (sceneB) {
+                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
+                                              ? snellLinearMarch(origin, dir, searchTexSilhouette, s)
+                                              : snellLinearMarch(origin, dir, searchTexSilhouette, s, option3, int(option1),
+                                                                 int(option2)));
+                  } else {
+                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
+                                              ? snellLinearMarch(origin, dir, searchTexSphere, s)
+                                              : snellLinearMarch(origin, dir, searchTexSphere, s, option3, int(option1),
+                                                                 int(option2)));
+                  })
+// option1 = steps, option2 = stride, option3 = maxDistance, zNearest = thickness.
+SNELL_PARITY_CASE(snellDdaMarch, [] { return rayInputs(Kind::Dda, 46); },
+                  SEARCH_RAY_IN,
+                  SEARCH_HIT_OUT,
+                  sampling(),
+                  SnellDepthSurface s = searchParitySurface(sceneB, entries);
+                  if (sceneB) {
+                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
+                                              ? snellDdaMarch(origin, dir, searchTexSilhouette, s)
+                                              : snellDdaMarch(origin, dir, searchTexSilhouette, s, option3, zNearest, option2,
+                                                              int(option1)));
+                  } else {
+                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
+                                              ? snellDdaMarch(origin, dir, searchTexSphere, s)
+                                              : snellDdaMarch(origin, dir, searchTexSphere, s, option3, zNearest, option2,
+                                                              int(option1)));
+                  })
+
+}  // namespace parity_search

@@ -1,21 +1,16 @@
-// Registrations of the parity cases for the Sousa / water / glass / ice /
-// refractive-texture-map / dispersion / roughness functions of glsl/snell/shade
-// (see parity_registry.hpp). Cases that sample read three textures built here:
-// a LINEAR scene colour with Sousa's mask in alpha, a LINEAR reflection map and
-// a NEAREST depth buffer.
+// The shade/ parity and property cases (see parity_case.hpp): one description
+// per public function of the Sousa / water / glass / ice / refractive-texture-map
+// / dispersion / roughness functions of glsl/snell/shade. Cases that sample
+// read three textures built here: a LINEAR scene colour with Sousa's mask in
+// alpha, a LINEAR reflection map and a NEAREST depth buffer (declared as
+// uniforms in cases/shade.glsl).
 #include <snell/shade.hpp>
 
-#include "parity_registry.hpp"
+#include "parity_case.hpp"
 
 namespace parity_shade {
-using namespace snell;
-using snell::gpu::SnellParityOut;
-Texture2D parityShadeScene, parityShadeReflection, parityShadeDepth;
-// Every entry takes four vec4s; most use fewer.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#include "cases/shade.glsl"
-#pragma GCC diagnostic pop
+// The C++ side of cases/shade.glsl's texture uniforms.
+snell::Texture2D parityShadeScene, parityShadeReflection, parityShadeDepth;
 }  // namespace parity_shade
 
 namespace {
@@ -25,16 +20,10 @@ using glm::vec4;
 using snell::Filter;
 using snell::Image;
 using snell::Texture2D;
-using snell::gpu::SnellParityOut;
 using snell_parity::InputGen;
 using snell_parity::ParityIO;
-using namespace parity_shade;
 
 const float kNaN = std::numeric_limits<float>::quiet_NaN();
-
-ParityIO run(SnellParityOut (*entry)(vec4, vec4, vec4, vec4), const ParityIO& in) {
-  return snell::gpu::toParityIO(entry(in.v[0], in.v[1], in.v[2], in.v[3]));
-}
 
 // Non-power-of-two G-buffers. The scene's alpha is 0 inside three discs (the
 // refractive meshes of Sousa's mask) and 1 elsewhere; colours vary smoothly
@@ -53,9 +42,9 @@ void buildTextures() {
       depth.at(x, y) = vec4(static_cast<float>((bx * 7 + by * 3) % 11) / 10.0f, 0.0f, 0.0f, 1.0f);
     }
   for (vec4& t : refl.texels) t = vec4(g.uniform(0, 1), g.uniform(0, 1), g.uniform(0, 1), g.uniform(0, 1));
-  parityShadeScene = Texture2D(scene, Filter::Linear);
-  parityShadeReflection = Texture2D(refl, Filter::Linear);
-  parityShadeDepth = Texture2D(depth, Filter::Nearest);
+  parity_shade::parityShadeScene = Texture2D(scene, Filter::Linear);
+  parity_shade::parityShadeReflection = Texture2D(refl, Filter::Linear);
+  parity_shade::parityShadeDepth = Texture2D(depth, Filter::Nearest);
 }
 
 std::vector<snell::gpu::ParityTexture> shadeTextures() {
@@ -486,60 +475,267 @@ std::vector<ParityIO> roughnessInputs() {
   }
   return v;
 }
-
-#define SHADE_CPU(entry) [](const ParityIO& in) { return run(parity_shade::entry, in); }
-
 }  // namespace
+
+namespace parity_shade {
+using namespace snell;
+using snell_parity::CaseExtras;
+#include "cases/shade.glsl"
+#define SNELL_PARITY_FILE "shade.glsl"
 
 // Tolerances: 1e-6 for pure arithmetic; 1e-4 (abs and rel) where LINEAR
 // texture reads enter (llvmpipe's bilinear weights, as in the hook cases) or
 // GPU pow() (snellFresnelBiasPower's exp2/log2 polynomials); 1e-5 for
 // normalized directions (inversesqrt).
-SNELL_PARITY_CASE({"snellUnpackBump", "shade.glsl", "caseSnellUnpackBump", unpackBumpInputs,
-                   SHADE_CPU(caseSnellUnpackBump), 0, 3, {1e-6f, 1e-6f}});
-SNELL_PARITY_CASE({"snellPerturbUv", "shade.glsl", "caseSnellPerturbUv", [] { return perturbInputs(620); },
-                   SHADE_CPU(caseSnellPerturbUv), 0, 2, {1e-6f, 1e-6f}});
-SNELL_PARITY_CASE({"snellPerturbSample", "shade.glsl", "caseSnellPerturbSample", [] { return perturbInputs(621); },
-                   SHADE_CPU(caseSnellPerturbSample), 0, 4, {1e-4f, 1e-4f}, shadeTextures(), buildTextures});
-SNELL_PARITY_CASE({"snellScreenEdgeFade", "shade.glsl", "caseSnellScreenEdgeFade", edgeFadeInputs,
-                   SHADE_CPU(caseSnellScreenEdgeFade), 0, 1, {1e-5f, 1e-5f}});
-SNELL_PARITY_CASE({"snellRefractionMaskBlend", "shade.glsl", "caseSnellRefractionMaskBlend", maskBlendInputs,
-                   SHADE_CPU(caseSnellRefractionMaskBlend), 0, 4, {1e-6f, 1e-6f}});
-SNELL_PARITY_CASE({"snellRefractionMasked", "shade.glsl", "caseSnellRefractionMasked",
-                   [] { return perturbInputs(622); }, SHADE_CPU(caseSnellRefractionMasked), 0, 4, {1e-4f, 1e-4f},
-                   shadeTextures(), buildTextures});
-SNELL_PARITY_CASE({"snellRefractionDepthAccept", "shade.glsl", "caseSnellRefractionDepthAccept", depthAcceptInputs,
-                   SHADE_CPU(caseSnellRefractionDepthAccept), 0xF, 4, {0.0f, 0.0f}});
-SNELL_PARITY_CASE({"snellRefractionMaskedDepth", "shade.glsl", "caseSnellRefractionMaskedDepth", maskedDepthInputs,
-                   SHADE_CPU(caseSnellRefractionMaskedDepth), 0, 4, {1e-4f, 1e-4f}, shadeTextures(),
-                   buildTextures});
-SNELL_PARITY_CASE({"snellWaterParams", "shade.glsl", "caseSnellWaterParams", noInputs,
-                   SHADE_CPU(caseSnellWaterParams), 0x7FFF, 15, {0.0f, 0.0f}});
-SNELL_PARITY_CASE({"snellWaterBumpAverage", "shade.glsl", "caseSnellWaterBumpAverage", bumpAverageInputs,
-                   SHADE_CPU(caseSnellWaterBumpAverage), 0, 3, {1e-5f, 1e-5f}});
-SNELL_PARITY_CASE({"snellWater", "shade.glsl", "caseSnellWater", waterInputs, SHADE_CPU(caseSnellWater), 0, 4,
-                   {1e-4f, 1e-4f}, shadeTextures(), buildTextures});
-SNELL_PARITY_CASE({"snellWaterCompose", "shade.glsl", "caseSnellWaterCompose", waterComposeInputs,
-                   SHADE_CPU(caseSnellWaterCompose), 0, 4, {1e-5f, 1e-5f}});
-SNELL_PARITY_CASE({"snellGlass", "shade.glsl", "caseSnellGlass", glassInputs, SHADE_CPU(caseSnellGlass), 0, 4,
-                   {1e-4f, 1e-4f}, shadeTextures(), buildTextures});
-SNELL_PARITY_CASE({"snellIce", "shade.glsl", "caseSnellIce", iceInputs, SHADE_CPU(caseSnellIce), 0x80, 8,
-                   {1e-5f, 1e-5f}});
-SNELL_PARITY_CASE({"snellIceCompose", "shade.glsl", "caseSnellIceCompose", iceComposeInputs,
-                   SHADE_CPU(caseSnellIceCompose), 0, 4, {1e-6f, 1e-6f}});
-SNELL_PARITY_CASE({"snellIceCrackKeep", "shade.glsl", "caseSnellIceCrackKeep", crackInputs,
-                   SHADE_CPU(caseSnellIceCrackKeep), 0xF, 4, {0.0f, 0.0f}});
-SNELL_PARITY_CASE({"snellRefractiveTextureMapParams", "shade.glsl", "caseSnellRefractiveTextureMapParams",
-                   rtmParamsInputs, SHADE_CPU(caseSnellRefractiveTextureMapParams), 0x3FF, 10, {0.0f, 0.0f}});
-SNELL_PARITY_CASE({"snellRefractiveTextureMapAxis", "shade.glsl", "caseSnellRefractiveTextureMapAxis",
-                   rtmAxisInputs, SHADE_CPU(caseSnellRefractiveTextureMapAxis), 0, 4, {1e-6f, 1e-6f}});
-// 1e-4: the hit moves by t * (error of the normalized direction); t reaches a
-// few tens of units here.
-SNELL_PARITY_CASE({"snellRefractiveTextureMap", "shade.glsl", "caseSnellRefractiveTextureMap", rtmInputs,
-                   SHADE_CPU(caseSnellRefractiveTextureMap), 0x1800, 13, {1e-4f, 1e-4f}});
-SNELL_PARITY_CASE({"snellDispersionIors", "shade.glsl", "caseSnellDispersionIors", dispersionIorsInputs,
-                   SHADE_CPU(caseSnellDispersionIors), 0, 16, {1e-6f, 1e-6f}});
-SNELL_PARITY_CASE({"snellDispersionRefract", "shade.glsl", "caseSnellDispersionRefract", dispersionRefractInputs,
-                   SHADE_CPU(caseSnellDispersionRefract), 0x3000, 14, {1e-5f, 1e-5f}});
-SNELL_PARITY_CASE({"snellRoughnessToLod", "shade.glsl", "caseSnellRoughnessToLod", roughnessInputs,
-                   SHADE_CPU(caseSnellRoughnessToLod), 0, 4, {1e-6f, 1e-6f}});
+
+SNELL_PARITY_CASE(snellUnpackBump, unpackBumpInputs,
+                  (vec3, texel, 0),
+                  (vec3, n, 0, within(1e-6f, 1e-6f)),
+                  CaseExtras().passThrough({"texel"}, {"n"},
+                                           "shade/perturb.glsl: 'snellUnpackBump(t) = 2 t - 1, nothing else: NaN "
+                                           "propagates'"),
+                  n = snellUnpackBump(texel);)
+
+// Both overloads: the explicit scale, and the default one when useDefault.
+SNELL_PARITY_CASE(snellPerturbUv, [] { return perturbInputs(620); },
+                  (vec2, uv, 0)(vec2, bump, 2)(float, scale, 4)(bool, useDefault, 5),
+                  (vec2, perturbed, 0, within(1e-6f, 1e-6f)),
+                  {},
+                  perturbed = useDefault ? snellPerturbUv(uv, bump) : snellPerturbUv(uv, bump, scale);)
+
+SNELL_PARITY_CASE(snellPerturbSample, [] { return perturbInputs(621); },
+                  (vec2, uv, 0)(vec2, bump, 2)(float, scale, 4),
+                  (vec4, color, 0, within(1e-4f, 1e-4f)),
+                  CaseExtras().sampling(shadeTextures(), buildTextures),
+                  color = snellPerturbSample(parityShadeScene, uv, bump, scale);)
+
+// Both overloads: the explicit width, and the default one when useDefault.
+SNELL_PARITY_CASE(snellScreenEdgeFade, edgeFadeInputs,
+                  (vec2, uv, 0)(float, width, 2)(bool, useDefault, 3),
+                  (float, fade, 0, within(1e-5f, 1e-5f)),
+                  {},
+                  fade = useDefault ? snellScreenEdgeFade(uv) : snellScreenEdgeFade(uv, width);)
+
+SNELL_PARITY_CASE(snellRefractionMaskBlend, maskBlendInputs,
+                  (vec4, refrA, 0)(vec4, refrB, 4),
+                  (vec4, blended, 0, within(1e-6f, 1e-6f)),
+                  CaseExtras().passThrough({"refrA.x", "refrA.y", "refrA.z", "refrB"}, {"blended"},
+                                           "shade/refraction_mask.glsl: 'Colours are blended as given (NaN colours "
+                                           "propagate)'; the mask alpha (input 3) is checked"),
+                  blended = snellRefractionMaskBlend(refrA, refrB);)
+
+SNELL_PARITY_CASE(snellRefractionMasked, [] { return perturbInputs(622); },
+                  (vec2, uv, 0)(vec2, bump, 2)(float, scale, 4),
+                  (vec4, color, 0, within(1e-4f, 1e-4f)),
+                  CaseExtras().sampling(shadeTextures(), buildTextures),
+                  color = snellRefractionMasked(parityShadeScene, uv, bump, scale);)
+
+// (sceneDepth, surfaceDepth, convention) triples, four evaluations per input.
+SNELL_PARITY_CASE(snellRefractionDepthAccept, depthAcceptInputs,
+                  (vec2, depths0, 0)(int, convention0, 2)(vec2, depths1, 4)(int, convention1, 6)
+                  (vec2, depths2, 8)(int, convention2, 10)(vec2, depths3, 12)(int, convention3, 14),
+                  (bool, accept0, 0, exact)(bool, accept1, 1, exact)(bool, accept2, 2, exact)(bool, accept3, 3, exact),
+                  {},
+                  accept0 = snellRefractionDepthAccept(depths0.x, depths0.y, convention0);
+                  accept1 = snellRefractionDepthAccept(depths1.x, depths1.y, convention1);
+                  accept2 = snellRefractionDepthAccept(depths2.x, depths2.y, convention2);
+                  accept3 = snellRefractionDepthAccept(depths3.x, depths3.y, convention3);)
+
+SNELL_PARITY_CASE(snellRefractionMaskedDepth, maskedDepthInputs,
+                  (vec2, uv, 0)(vec2, bump, 2)(float, scale, 4)(float, surfaceDepth, 5)(int, convention, 6),
+                  (vec4, color, 0, within(1e-4f, 1e-4f)),
+                  CaseExtras().sampling(shadeTextures(), buildTextures),
+                  color = snellRefractionMaskedDepth(parityShadeScene, parityShadeDepth, uv, bump, scale, surfaceDepth,
+                                                     convention);)
+
+// No input: every field of the defaults.
+SNELL_PARITY_CASE(snellWaterParams, noInputs,
+                  /* no inputs */,
+                  (vec3, refractionBumpScale, 0, exact)(vec3, reflectionBumpScale, 3, exact)
+                  (float, fresnelBias, 6, exact)(float, fresnelPower, 7, exact)(float, deepDistance, 8, exact)
+                  (vec3, waterColor, 9, exact)(vec3, deepColor, 12, exact),
+                  {},
+                  SnellWaterParams p = snellWaterParams();
+                  refractionBumpScale = p.refractionBumpScale;
+                  reflectionBumpScale = p.reflectionBumpScale;
+                  fresnelBias = p.fresnelBias;
+                  fresnelPower = p.fresnelPower;
+                  deepDistance = p.deepDistance;
+                  waterColor = p.waterColor;
+                  deepColor = p.deepColor;)
+
+// The four bump texels.
+SNELL_PARITY_CASE(snellWaterBumpAverage, bumpAverageInputs,
+                  (vec3, t0, 0)(vec3, t1, 4)(vec3, t2, 8)(vec3, t3, 12),
+                  (vec3, n, 0, within(1e-5f, 1e-5f)),
+                  {},
+                  n = snellWaterBumpAverage(t0, t1, t2, t3);)
+
+// The defaults, or (custom) the given fresnel bias and power, deep distance and
+// refraction bump scale.
+SNELL_PARITY_CASE(snellWater, waterInputs,
+                  (vec2, uv, 0)(float, viewDistance, 2)(bool, custom, 3)(vec3, bumpNormal, 4)(vec3, eye, 8)
+                  (float, fresnelBias, 12)(float, fresnelPower, 13)(float, deepDistance, 14)(float, bumpScale, 15),
+                  (vec4, color, 0, within(1e-4f, 1e-4f)),
+                  CaseExtras().sampling(shadeTextures(), buildTextures),
+                  SnellWaterParams p = snellWaterParams();
+                  if (custom) {
+                    p.fresnelBias = fresnelBias;
+                    p.fresnelPower = fresnelPower;
+                    p.deepDistance = deepDistance;
+                    p.refractionBumpScale = vec3(bumpScale, bumpScale, 1.0f);
+                  }
+                  color = snellWater(parityShadeScene, parityShadeReflection, uv, bumpNormal, eye, viewDistance, p);)
+
+SNELL_PARITY_CASE(snellWaterCompose, waterComposeInputs,
+                  (vec4, reflection, 0)(vec4, refraction, 4)(vec3, bumpNormal, 8)(float, viewDistance, 11)
+                  (vec3, eye, 12),
+                  (vec4, color, 0, within(1e-5f, 1e-5f)),
+                  CaseExtras().passThrough({"reflection", "refraction"}, {"color.x", "color.y", "color.z"},
+                                           "shade/water.glsl: 'Colours (parameters and texels) are used as given'; "
+                                           "snellWaterCompose composes the given reflection (a) and refraction (b); "
+                                           "the normal, eye and distance are checked"),
+                  color = snellWaterCompose(reflection, refraction, bumpNormal, eye, viewDistance, snellWaterParams());)
+
+SNELL_PARITY_CASE(snellGlass, glassInputs,
+                  (vec2, uv, 0)(vec3, bumpTexel, 4)(vec3, eye, 8)(vec4, diffuse, 12),
+                  (vec4, color, 0, within(1e-4f, 1e-4f)),
+                  CaseExtras()
+                      .sampling(shadeTextures(), buildTextures)
+                      .passThrough({"diffuse.w"}, {"color.w"},
+                                   "shade/glass.glsl: 'Other colours (texels, diffuse.a) are used as given'"),
+                  color = snellGlass(parityShadeScene, parityShadeReflection, uv, bumpTexel, diffuse, eye);)
+
+// Both overloads: the given blend weight and eta, or (useDefaults) the defaults.
+SNELL_PARITY_CASE(snellIce, iceInputs,
+                  (vec3, eye, 0)(float, weight, 3)(vec3, frontNormal, 4)(float, eta, 7)(vec3, backNormal, 8)
+                  (bool, useDefaults, 11),
+                  (vec3, refracted, 0, within(1e-5f, 1e-5f))(float, fresnel, 3, within(1e-5f, 1e-5f))
+                  (vec3, reflected, 4, within(1e-5f, 1e-5f))(bool, valid, 7, exact),
+                  {},
+                  SnellIce s = useDefaults ? snellIce(eye, frontNormal, backNormal)
+                                           : snellIce(eye, frontNormal, backNormal, weight, eta);
+                  refracted = s.refracted;
+                  fresnel = s.fresnel;
+                  reflected = s.reflected;
+                  valid = s.valid;)
+
+SNELL_PARITY_CASE(snellIceCompose, iceComposeInputs,
+                  (vec4, reflection, 0)(vec4, refraction, 4)(float, fresnel, 8),
+                  (vec4, color, 0, within(1e-6f, 1e-6f)),
+                  CaseExtras().passThrough({"reflection", "refraction"}, {"color"},
+                                           "shade/ice.glsl: a mix of the two given colours (reflection a, "
+                                           "refraction b); the fresnel weight is checked"),
+                  color = snellIceCompose(reflection, refraction, fresnel);)
+
+// (crackDepth, frontDepth, backDepth, convention) quadruples, four evaluations
+// per input.
+SNELL_PARITY_CASE(snellIceCrackKeep, crackInputs,
+                  (vec3, depths0, 0)(int, convention0, 3)(vec3, depths1, 4)(int, convention1, 7)
+                  (vec3, depths2, 8)(int, convention2, 11)(vec3, depths3, 12)(int, convention3, 15),
+                  (bool, keep0, 0, exact)(bool, keep1, 1, exact)(bool, keep2, 2, exact)(bool, keep3, 3, exact),
+                  {},
+                  keep0 = snellIceCrackKeep(depths0.x, depths0.y, depths0.z, convention0);
+                  keep1 = snellIceCrackKeep(depths1.x, depths1.y, depths1.z, convention1);
+                  keep2 = snellIceCrackKeep(depths2.x, depths2.y, depths2.z, convention2);
+                  keep3 = snellIceCrackKeep(depths3.x, depths3.y, depths3.z, convention3);)
+
+// Every field the constructor stores.
+SNELL_PARITY_CASE(snellRefractiveTextureMapParams, rtmParamsInputs,
+                  (vec2, givenMin, 0)(vec2, givenMax, 2)(float, givenRestY, 4)(float, givenDepth, 5)
+                  (float, givenFactor, 6),
+                  (vec2, extentMin, 0, exact)(vec2, extentMax, 2, exact)(float, restY, 4, exact)
+                  (float, depth, 5, exact)(float, refractionFactor, 6, exact)(int, policy, 7, exact)
+                  (float, uvMin, 8, exact)(float, uvMax, 9, exact),
+                  CaseExtras().passThrough({"givenMin", "givenMax", "givenRestY", "givenDepth", "givenFactor"},
+                                           {"extentMin", "extentMax", "restY", "depth", "refractionFactor"},
+                                           "a plain constructor: the case packs back the extents, restY, depth "
+                                           "and factor it stores (uvMin/uvMax, which it sanitizes, are checked)"),
+                  SnellRefractiveTextureMapParams p =
+                      snellRefractiveTextureMapParams(givenMin, givenMax, givenRestY, givenDepth, givenFactor);
+                  extentMin = p.extentMin;
+                  extentMax = p.extentMax;
+                  restY = p.restY;
+                  depth = p.depth;
+                  refractionFactor = p.refractionFactor;
+                  policy = p.policy;
+                  uvMin = p.uvMin;
+                  uvMax = p.uvMax;)
+
+// (x, lo, hi) triples, four evaluations per input.
+SNELL_PARITY_CASE(snellRefractiveTextureMapAxis, rtmAxisInputs,
+                  (vec3, q0, 0)(vec3, q1, 4)(vec3, q2, 8)(vec3, q3, 12),
+                  (vec4, axis, 0, within(1e-6f, 1e-6f)),
+                  {},
+                  axis = vec4(snellRefractiveTextureMapAxis(q0.x, q0.y, q0.z),
+                              snellRefractiveTextureMapAxis(q1.x, q1.y, q1.z),
+                              snellRefractiveTextureMapAxis(q2.x, q2.y, q2.z),
+                              snellRefractiveTextureMapAxis(q3.x, q3.y, q3.z));)
+
+// Four policies/intervals: the constructor's (CLAMP [0, 1]), SHRINK [0.1, 0.9],
+// CLAMP with swapped bounds (0.8, 0.3), SHRINK with (NaN, 2) (-> [0, 1]); the
+// position and flags of the first. 1e-4: the hit moves by t * (error of the
+// normalized direction); t reaches a few tens of units here.
+SNELL_PARITY_CASE(snellRefractiveTextureMap, rtmInputs,
+                  (vec3, vertex, 0)(float, factor, 3)(vec3, normal, 4)(float, depth, 7)(vec3, eye, 8)
+                  (float, restY, 11)(vec2, extentMin, 12)(vec2, extentMax, 14),
+                  (vec2, uvClamp, 0, within(1e-4f, 1e-4f))(vec2, uvShrink, 2, within(1e-4f, 1e-4f))
+                  (vec2, uvSwapped, 4, within(1e-4f, 1e-4f))(vec2, uvNaN, 6, within(1e-4f, 1e-4f))
+                  (vec3, position, 8, within(1e-4f, 1e-4f))(bool, valid, 11, exact)(bool, inRange, 12, exact),
+                  {},
+                  SnellRefractiveTextureMapParams p =
+                      snellRefractiveTextureMapParams(extentMin, extentMax, restY, depth, factor);
+                  SnellRefractiveTextureMapHit h1 = snellRefractiveTextureMap(vertex, normal, eye, p);
+                  p.policy = SNELL_RTM_SHRINK;
+                  p.uvMin = 0.1f;
+                  p.uvMax = 0.9f;
+                  SnellRefractiveTextureMapHit h2 = snellRefractiveTextureMap(vertex, normal, eye, p);
+                  p.policy = SNELL_RTM_CLAMP;
+                  p.uvMin = 0.8f;
+                  p.uvMax = 0.3f;
+                  SnellRefractiveTextureMapHit h3 = snellRefractiveTextureMap(vertex, normal, eye, p);
+                  p.policy = SNELL_RTM_SHRINK;
+                  p.uvMin = uintBitsToFloat(0x7fc00000u);  // quiet NaN
+                  p.uvMax = 2.0f;
+                  SnellRefractiveTextureMapHit h4 = snellRefractiveTextureMap(vertex, normal, eye, p);
+                  uvClamp = h1.uv;
+                  uvShrink = h2.uv;
+                  uvSwapped = h3.uv;
+                  uvNaN = h4.uv;
+                  position = h1.position;
+                  valid = h1.valid;
+                  inRange = h1.inRange;)
+
+// (iorD, abbe) pairs, four evaluations per input.
+SNELL_PARITY_CASE(snellDispersionIors, dispersionIorsInputs,
+                  (vec2, p0, 0)(vec2, p1, 2)(vec2, p2, 4)(vec2, p3, 6),
+                  (vec3, iors0, 0, within(1e-6f, 1e-6f))(vec3, iors1, 4, within(1e-6f, 1e-6f))
+                  (vec3, iors2, 8, within(1e-6f, 1e-6f))(vec3, iors3, 12, within(1e-6f, 1e-6f)),
+                  {},
+                  iors0 = snellDispersionIors(p0.x, p0.y);
+                  iors1 = snellDispersionIors(p1.x, p1.y);
+                  iors2 = snellDispersionIors(p2.x, p2.y);
+                  iors3 = snellDispersionIors(p3.x, p3.y);)
+
+SNELL_PARITY_CASE(snellDispersionRefract, dispersionRefractInputs,
+                  (vec3, incident, 0)(float, iorOutside, 3)(vec3, normal, 4)(int, policy, 7)(vec3, iors, 8),
+                  (vec3, red, 0, within(1e-5f, 1e-5f))(vec3, green, 4, within(1e-5f, 1e-5f))
+                  (vec3, blue, 8, within(1e-5f, 1e-5f))(bool, tir, 12, exact)(bool, valid, 13, exact),
+                  {},
+                  SnellDispersion s = snellDispersionRefract(incident, normal, iorOutside, iors, policy);
+                  red = s.red;
+                  green = s.green;
+                  blue = s.blue;
+                  tir = s.tir;
+                  valid = s.valid;)
+
+// (roughness, levels) pairs, four evaluations per input.
+SNELL_PARITY_CASE(snellRoughnessToLod, roughnessInputs,
+                  (float, roughness0, 0)(int, levels0, 1)(float, roughness1, 2)(int, levels1, 3)
+                  (float, roughness2, 4)(int, levels2, 5)(float, roughness3, 6)(int, levels3, 7),
+                  (vec4, lod, 0, within(1e-6f, 1e-6f)),
+                  {},
+                  lod = vec4(snellRoughnessToLod(roughness0, levels0), snellRoughnessToLod(roughness1, levels1),
+                             snellRoughnessToLod(roughness2, levels2), snellRoughnessToLod(roughness3, levels3));)
+
+}  // namespace parity_shade

@@ -1,8 +1,11 @@
-// Registrations of the two-interface refraction parity cases (cases/technique.glsl):
+// The two-interface refraction parity and property cases (see parity_case.hpp):
 // environment helpers, depth ranges, options and presets, the strategy dispatcher,
-// the path trace, the exit slot and the full shaded technique.
+// the path trace, the exit slot and the full shaded technique. cases/technique.glsl
+// holds the textures, the ray cases' options (techOptions), the options cases'
+// packing (TECH_OPTIONS_OUT) and techImagePixel (tests/gpu/technique_image_test.cpp).
 //
-// Textures: the technique test scene (tests/support/technique_scene.hpp) at 96x96.
+// Textures: the technique test scene (tests/support/technique_scene.hpp) at 96x96;
+// every case binds them all.
 // Rays: >= 12,000 per case: front-face points and normals of random pixels of the
 // glass sphere (exact, double, rounded to float) with random presets, steps, IOR,
 // d_N, exit modes, fallbacks, dispersion, TIR policies and roughness; 3-10% hostile.
@@ -16,19 +19,15 @@
 #include <cmath>
 #include <limits>
 
-#include "parity_registry.hpp"
+#include "parity_case.hpp"
 #include "support/technique_scene.hpp"
 
 namespace parity_technique {
 using namespace snell;
-using snell::gpu::SnellParityOut;
 Texture2D techBackDepth, techBackNormal, techBackPyramid, techSceneDepth, techSceneNormal, techScenePyramid, techFrontDepth,
     techFrontNormal,
     techSceneColor, techEnv;
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
 #include "cases/technique.glsl"
-#pragma GCC diagnostic pop
 }  // namespace parity_technique
 
 namespace {
@@ -69,10 +68,8 @@ std::vector<snell::gpu::ParityTexture> textures() {
           {"techFrontDepth", &techFrontDepth},     {"techFrontNormal", &techFrontNormal}};
 }
 
-ParityIO run(SnellParityOut (*entry)(glm::vec4, glm::vec4, glm::vec4, glm::vec4), const ParityIO& in) {
-  buildTextures();
-  return snell::gpu::toParityIO(entry(in.v[0], in.v[1], in.v[2], in.v[3]));
-}
+// Every case: the scene's textures, built before the generator and the C++ build run.
+snell_parity::CaseExtras techExtras() { return snell_parity::CaseExtras().sampling(textures(), buildTextures); }
 
 glm::vec4 matrixEntries() {
   const glm::mat4& m = scene().back.clipFromView;
@@ -219,46 +216,297 @@ std::vector<ParityIO> boxInputs() {
   }
   return v;
 }
-
-constexpr snell_parity::Tolerance kExact{0.0f, 0.0f};
-constexpr snell_parity::Tolerance kColor{1e-4f, 1e-4f};
-// Hit: 0-1 uv, 2 valid, 3 fetches, 4-6 position.
-constexpr std::uint16_t kHitDiscrete = 0x000C;
 }  // namespace
 
-#define TECH_CASE(FN, ENTRY, GEN, DISCRETE, OUTPUTS, TOL)                                                     \
-  SNELL_PARITY_CASE({#FN, "technique.glsl", "case" #ENTRY, GEN,                                                \
-                     [](const ParityIO& in) { return run(case##ENTRY, in); }, DISCRETE, OUTPUTS, TOL, textures(), \
-                     buildTextures})
+namespace parity_technique {
+#define SNELL_PARITY_FILE "technique.glsl"
+
+// The options cases' 16 floats (TECH_OPTIONS_OUT in cases/technique.glsl): per slot the strategy, the counts
+// (techPackCounts) and the flags, then tirPolicy, ior, dispersion, reflection and four sums (techOptionSums).
+// All exact but `reflection`, whose check is given.
+#define TECH_OPTIONS_OUTPUTS(REFLECTION)                                                                           \
+  (int, backStrategy, 0, exact)(vec2, backCounts, 1, exact)(float, backFlags, 3, exact)                            \
+  (int, exitStrategy, 4, exact)(vec2, exitCounts, 5, exact)(float, exitFlags, 7, exact)                            \
+  (int, tirPolicy, 8, exact)(float, ior, 9, exact)(int, dispersion, 10, exact)(bool, reflection, 11, REFLECTION)   \
+  (vec4, sums, 12, exact)
+#define TECH_OPTIONS_EXACT TECH_OPTIONS_OUTPUTS(exact)
+
+// The ray cases' inputs after the ray (floats 0-2, 4-6): the technique (techPreset), its steps, the
+// projection's entries, the IOR, d_N, the mode bits (techOptions) and the roughness.
+#define TECH_RAY_INPUTS(ORIGIN, DIRECTION)                                                                           \
+  (vec3, ORIGIN, 0)(int, preset, 3)(vec3, DIRECTION, 4)(int, steps, 7)(vec4, projection, 8)(float, ior, 12)         \
+  (float, dN, 13)(int, modes, 14)(float, roughness, 15)
 
 // Pure arithmetic: the cube face and flags exact, coordinates to rounding.
-TECH_CASE(snellCubeFaceUv, SnellCubeFaceUv, [] { return directionInputs(804, false); }, 0x0009, 4, (snell_parity::Tolerance{1e-6f, 1e-6f}));
-TECH_CASE(snellAtan2, SnellAtan2, atanInputs, 0x0000, 1, (snell_parity::Tolerance{1e-6f, 1e-6f}));
-TECH_CASE(snellEquirectUv, SnellEquirectUv, [] { return directionInputs(805, false); }, 0x0000, 2, (snell_parity::Tolerance{1e-6f, 1e-6f}));
-TECH_CASE(snellSampleEquirect, SnellSampleEquirect, [] { return directionInputs(806, true); }, 0x0000, 4, kColor);
-TECH_CASE(snellDepthRangeInvalid, SnellDepthRangeInvalid, [] { return smallIntInputs(807, 0, 5); }, 0x000F, 4, kExact);
-TECH_CASE(snellTextureTopLod, SnellTextureTopLod, [] { return smallIntInputs(808, 0, 2); }, 0x0001, 1, kExact);
-TECH_CASE(snellDepthRangeFromPyramid, SnellDepthRangeFromPyramid, [] { return smallIntInputs(809, 0, 1); }, 0x0004, 3, (snell_parity::Tolerance{1e-6f, 1e-6f}));
-TECH_CASE(snellDepthRangeFromBox, SnellDepthRangeFromBox, boxInputs, 0x0004, 3, (snell_parity::Tolerance{1e-5f, 1e-5f}));
-TECH_CASE(snellIntersectOptions, SnellIntersectOptions, [] { return smallIntInputs(810, -1, 10); }, 0xFFFF, 16, kExact);
-TECH_CASE(snellTechniqueOptions, SnellTechniqueOptions, [] { return smallIntInputs(811, 0, 1); }, 0xFFFF, 16, kExact);
-TECH_CASE(snellTechniquePresetSlots, SnellTechniquePresetSlots, [] { return smallIntInputs(812, -1, 10); }, 0xFFFF, 16, kExact);
-TECH_CASE(snellPresetDir, SnellPresetDir, [] { return smallIntInputs(813, 0, 1); }, 0xFFFF, 16, kExact);
-TECH_CASE(snellPresetDirBounds, SnellPresetDirBounds, boundsInputs, 0xF7FF, 16, (snell_parity::Tolerance{1e-5f, 1e-5f}));
-TECH_CASE(snellPresetIsr, SnellPresetIsr, [] { return smallIntInputs(814, 0, 1); }, 0xFFFF, 16, kExact);
-TECH_CASE(snellPresetPlaneNormal, SnellPresetPlaneNormal, [] { return smallIntInputs(815, -2, 12); }, 0xFFFF, 16, kExact);
-TECH_CASE(snellPresetPlaneDepth, SnellPresetPlaneDepth, [] { return smallIntInputs(816, -2, 12); }, 0xFFFF, 16, kExact);
-TECH_CASE(snellPresetSingleSample, SnellPresetSingleSample, [] { return smallIntInputs(817, 0, 1); }, 0xFFFF, 16, kExact);
-TECH_CASE(snellPresetLinearMarch, SnellPresetLinearMarch, [] { return smallIntInputs(818, 0, 1); }, 0xFFFF, 16, kExact);
-TECH_CASE(snellPresetDdaMarch, SnellPresetDdaMarch, [] { return smallIntInputs(819, 0, 1); }, 0xFFFF, 16, kExact);
-TECH_CASE(snellPresetImageSpaceBound, SnellPresetImageSpaceBound, [] { return smallIntInputs(825, 0, 1); }, 0xFFFF, 16, kExact);
+SNELL_PARITY_CASE(snellCubeFaceUv, [] { return directionInputs(804, false); },
+                  (vec3, direction, 0),
+                  (int, face, 0, exact)(vec2, uv, 1, within(1e-6f, 1e-6f))(bool, valid, 3, exact),
+                  techExtras(),
+                  SnellCubeFace f = snellCubeFaceUv(direction);
+                  face = f.face;
+                  uv = f.uv;
+                  valid = f.valid;)
+
+SNELL_PARITY_CASE(snellAtan2, atanInputs,
+                  (float, y, 0)(float, x, 1),
+                  (float, angle, 0, within(1e-6f, 1e-6f)),
+                  techExtras(),
+                  angle = snellAtan2(y, x);)
+
+SNELL_PARITY_CASE(snellEquirectUv, [] { return directionInputs(805, false); },
+                  (vec3, direction, 0),
+                  (vec2, uv, 0, within(1e-6f, 1e-6f)),
+                  techExtras(),
+                  uv = snellEquirectUv(direction);)
+
+SNELL_PARITY_CASE(snellSampleEquirect, [] { return directionInputs(806, true); },
+                  (vec3, direction, 0)(float, lod, 3),
+                  (vec4, color, 0, within(1e-4f, 1e-4f)),
+                  techExtras(),
+                  color = snellSampleEquirect(techEnv, direction, lod);)
+
+// The function takes nothing; the case echoes its input a.x in output 3.
+SNELL_PARITY_CASE(snellDepthRangeInvalid, [] { return smallIntInputs(807, 0, 5); },
+                  (float, echoIn, 0),
+                  (float, zNearest, 0, exact)(float, zFarthest, 1, exact)(bool, valid, 2, exact)
+                  (float, echoOut, 3, exact),
+                  techExtras().passThrough({"echoIn"}, {"echoOut"},
+                                           "the case echoes its input a.x in output 3 (not the function's)"),
+                  SnellDepthRange r = snellDepthRangeInvalid();
+                  zNearest = r.zNearest;
+                  zFarthest = r.zFarthest;
+                  valid = r.valid;
+                  echoOut = echoIn;)
+
+// which: 0 the back pyramid, 1 the environment, 2 the scene colour.
+SNELL_PARITY_CASE(snellTextureTopLod, [] { return smallIntInputs(808, 0, 2); },
+                  (int, which, 0),
+                  (int, lod, 0, exact),
+                  techExtras(),
+                  lod = which == 0 ? snellTextureTopLod(techBackPyramid)
+                                   : (which == 1 ? snellTextureTopLod(techEnv) : snellTextureTopLod(techSceneColor));)
+
+SNELL_PARITY_CASE(snellDepthRangeFromPyramid, [] { return smallIntInputs(809, 0, 1); },
+                  (bool, toScene, 0),
+                  (float, zNearest, 0, within(1e-6f, 1e-6f))(float, zFarthest, 1, within(1e-6f, 1e-6f))
+                  (bool, valid, 2, exact),
+                  techExtras(),
+                  SnellDepthRange r = toScene ? snellDepthRangeFromPyramid(techScenePyramid)
+                                              : snellDepthRangeFromPyramid(techBackPyramid);
+                  zNearest = r.zNearest;
+                  zFarthest = r.zFarthest;
+                  valid = r.valid;)
+
+// A box seen through a rotation about z by (cos, sin), a scale and a translation.
+SNELL_PARITY_CASE(snellDepthRangeFromBox, boxInputs,
+                  (vec3, translation, 0)(float, scale, 3)(vec3, boxMin, 4)(vec3, boxMax, 8)(vec2, rotation, 12),
+                  (float, zNearest, 0, within(1e-5f, 1e-5f))(float, zFarthest, 1, within(1e-5f, 1e-5f))
+                  (bool, valid, 2, exact),
+                  techExtras(),
+                  mat4 m = SNELL_CAMERA_MAT4_COLUMNS(vec4(scale * rotation.x, scale * rotation.y, 0.0f, 0.0f),
+                                                     vec4(-scale * rotation.y, scale * rotation.x, 0.0f, 0.0f),
+                                                     vec4(0.0f, 0.0f, scale, 0.0f),
+                                                     vec4(translation.x, translation.y, translation.z, 1.0f));
+                  SnellDepthRange r = snellDepthRangeFromBox(m, boxMin, boxMax);
+                  zNearest = r.zNearest;
+                  zFarthest = r.zFarthest;
+                  valid = r.valid;)
+
+// The options and presets, packed by TECH_OPTIONS_OUT: every count, flag and setting exact.
+SNELL_PARITY_CASE(snellIntersectOptions, [] { return smallIntInputs(810, -1, 10); },
+                  (int, strategy, 0),
+                  TECH_OPTIONS_EXACT,
+                  techExtras(),
+                  SnellTechniqueOptions o = snellTechniqueOptions();
+                  o.back = snellIntersectOptions(strategy);
+                  TECH_OPTIONS_OUT(o))
+
+SNELL_PARITY_CASE(snellTechniqueOptions, [] { return smallIntInputs(811, 0, 1); },
+                  /* no inputs */,
+                  TECH_OPTIONS_EXACT,
+                  techExtras(),
+                  SnellTechniqueOptions o = snellTechniqueOptions();
+                  TECH_OPTIONS_OUT(o))
+
+SNELL_PARITY_CASE(snellTechniquePresetSlots, [] { return smallIntInputs(812, -1, 10); },
+                  (int, backSlot, 0)(int, exitSlot, 1),
+                  TECH_OPTIONS_EXACT,
+                  techExtras(),
+                  SnellTechniqueOptions o = snellTechniquePresetSlots(backSlot, exitSlot);
+                  TECH_OPTIONS_OUT(o))
+
+SNELL_PARITY_CASE(snellPresetDir, [] { return smallIntInputs(813, 0, 1); },
+                  /* no inputs */,
+                  TECH_OPTIONS_EXACT,
+                  techExtras(),
+                  SnellTechniqueOptions o = snellPresetDir();
+                  TECH_OPTIONS_OUT(o))
+
+// `reflection` (float 11) within 1e-5 and the other floats exact, as this case has compared them so far.
+SNELL_PARITY_CASE(snellPresetDirBounds, boundsInputs,
+                  (float, zNearest, 0)(float, zFarthest, 1),
+                  TECH_OPTIONS_OUTPUTS(within(1e-5f, 1e-5f)),
+                  techExtras().passThrough({"zNearest", "zFarthest"}, {"sums.x", "sums.y"},
+                                           "a preset constructor: stores the bounds it is given (outputs 12-13)"),
+                  SnellTechniqueOptions o = snellPresetDirBounds(zNearest, zFarthest);
+                  TECH_OPTIONS_OUT(o))
+
+SNELL_PARITY_CASE(snellPresetIsr, [] { return smallIntInputs(814, 0, 1); },
+                  /* no inputs */,
+                  TECH_OPTIONS_EXACT,
+                  techExtras(),
+                  SnellTechniqueOptions o = snellPresetIsr();
+                  TECH_OPTIONS_OUT(o))
+
+SNELL_PARITY_CASE(snellPresetPlaneNormal, [] { return smallIntInputs(815, -2, 12); },
+                  (int, iterations, 0),
+                  TECH_OPTIONS_EXACT,
+                  techExtras(),
+                  SnellTechniqueOptions o = snellPresetPlaneNormal(iterations);
+                  TECH_OPTIONS_OUT(o))
+
+SNELL_PARITY_CASE(snellPresetPlaneDepth, [] { return smallIntInputs(816, -2, 12); },
+                  (int, iterations, 0),
+                  TECH_OPTIONS_EXACT,
+                  techExtras(),
+                  SnellTechniqueOptions o = snellPresetPlaneDepth(iterations);
+                  TECH_OPTIONS_OUT(o))
+
+SNELL_PARITY_CASE(snellPresetSingleSample, [] { return smallIntInputs(817, 0, 1); },
+                  /* no inputs */,
+                  TECH_OPTIONS_EXACT,
+                  techExtras(),
+                  SnellTechniqueOptions o = snellPresetSingleSample();
+                  TECH_OPTIONS_OUT(o))
+
+SNELL_PARITY_CASE(snellPresetLinearMarch, [] { return smallIntInputs(818, 0, 1); },
+                  /* no inputs */,
+                  TECH_OPTIONS_EXACT,
+                  techExtras(),
+                  SnellTechniqueOptions o = snellPresetLinearMarch();
+                  TECH_OPTIONS_OUT(o))
+
+SNELL_PARITY_CASE(snellPresetDdaMarch, [] { return smallIntInputs(819, 0, 1); },
+                  /* no inputs */,
+                  TECH_OPTIONS_EXACT,
+                  techExtras(),
+                  SnellTechniqueOptions o = snellPresetDdaMarch();
+                  TECH_OPTIONS_OUT(o))
+
+SNELL_PARITY_CASE(snellPresetImageSpaceBound, [] { return smallIntInputs(825, 0, 1); },
+                  /* no inputs */,
+                  TECH_OPTIONS_EXACT,
+                  techExtras(),
+                  SnellTechniqueOptions o = snellPresetImageSpaceBound();
+                  TECH_OPTIONS_OUT(o))
+
 // Every id of the technique table and a few outside it.
-TECH_CASE(snellTechniquePreset, SnellTechniquePreset, [] { return smallIntInputs(824, -2, SNELL_TECHNIQUE_COUNT + 2); }, 0xFFFF, 16, kExact);
-// Searches and marches through the sphere's back faces and the painting plane.
-TECH_CASE(snellIntersectWith, SnellIntersectWith, [] { return dispatchInputs(820); }, kHitDiscrete, 7, (snell_parity::Tolerance{1e-4f, 1e-4f}));
-// Path flags (float 11) and fetches (3) exact.
-TECH_CASE(snellTwoInterfaceTrace, SnellTwoInterfaceTrace, [] { return techniqueInputs(821); }, 0x0808, 15, (snell_parity::Tolerance{1e-4f, 1e-4f}));
-// Fetches (3), hit valid (6), fellBack (7) exact; colours 1e-4.
-TECH_CASE(snellTwoInterfaceExit, SnellTwoInterfaceExit, [] { return exitInputs(822); }, 0x00C8, 11, (snell_parity::Tolerance{1e-4f, 1e-4f}));
-// Fetches (3), flags (7) and the reflection hit (15) exact; colour, directions, points, fresnel 1e-4.
-TECH_CASE(snellTwoInterfaceRefraction, SnellTwoInterfaceRefraction, [] { return techniqueInputs(823); }, 0x8088, 16, (snell_parity::Tolerance{1e-4f, 1e-4f}));
+SNELL_PARITY_CASE(snellTechniquePreset, [] { return smallIntInputs(824, -2, SNELL_TECHNIQUE_COUNT + 2); },
+                  (int, id, 0),
+                  TECH_OPTIONS_EXACT,
+                  techExtras(),
+                  SnellTechniqueOptions o = snellTechniquePreset(id);
+                  TECH_OPTIONS_OUT(o))
+
+// Searches and marches through the sphere's back faces and the painting plane: the strategy, its main count
+// (iterations, steps, linear steps), to the scene or the back faces, an explicit range or the pyramid's.
+SNELL_PARITY_CASE(snellIntersectWith, [] { return dispatchInputs(820); },
+                  (vec3, origin, 0)(int, strategy, 3)(vec3, direction, 4)(int, count, 7)(vec4, projection, 8)
+                  (bool, toScene, 12)(bool, explicitRange, 13),
+                  (vec2, uv, 0, within(1e-4f, 1e-4f))(bool, valid, 2, exact)(int, fetches, 3, exact)
+                  (vec3, position, 4, within(1e-4f, 1e-4f)),
+                  techExtras(),
+                  SnellIntersectOptions o = snellIntersectOptions(strategy);
+                  o.planeIterations = count;
+                  o.cbsSteps = count;
+                  if (o.strategy == SNELL_STRATEGY_BINARY) {
+                    o.binarySteps = count;
+                  }
+                  o.linearSteps = count;
+                  o.marchSteps = count;
+                  o.ddaSteps = count;
+                  if (explicitRange) {
+                    o.rangeSource = SNELL_RANGE_EXPLICIT;
+                    o.range.zNearest = -3.8f;
+                    o.range.zFarthest = -12.0f;
+                    o.range.valid = true;
+                  }
+                  SnellHit h;
+                  if (toScene) {
+                    h = snellIntersectWith(origin, direction, techSceneDepth, techSceneNormal, techScenePyramid,
+                                           techSceneSurface(projection), o);
+                  } else {
+                    h = snellIntersectWith(origin, direction, techBackDepth, techBackNormal, techBackPyramid,
+                                           techBackSurface(projection), o);
+                  }
+                  uv = h.uv;
+                  valid = h.valid;
+                  fetches = h.fetches;
+                  position = h.position;)
+
+// Path flags and fetches exact. flags: hit + 2 tir + 4 fellBack + 8 valid.
+SNELL_PARITY_CASE(snellTwoInterfaceTrace, [] { return techniqueInputs(821); },
+                  TECH_RAY_INPUTS(entryPoint, entryNormal),
+                  (vec3, exitDirection, 0, within(1e-4f, 1e-4f))(int, fetches, 3, exact)
+                  (vec3, exitPoint, 4, within(1e-4f, 1e-4f))(float, pathLength, 7, within(1e-4f, 1e-4f))
+                  (vec3, exitNormal, 8, within(1e-4f, 1e-4f))(float, flags, 11, exact)
+                  (vec2, exitUv, 12, within(1e-4f, 1e-4f))(float, entryDirectionZ, 14, within(1e-4f, 1e-4f)),
+                  techExtras(),
+                  SnellTechniqueOptions o = techOptions(preset, steps, ior, modes, roughness);
+                  SnellTwoInterfacePath p = snellTwoInterfaceTrace(entryPoint, entryNormal, snellIorToEta(1.0f, o.ior),
+                                                                   dN, techBackDepth, techBackNormal, techBackPyramid,
+                                                                   techBackSurface(projection), o);
+                  exitDirection = p.exitDirection;
+                  fetches = p.fetches;
+                  exitPoint = p.exitPoint;
+                  pathLength = p.pathLength;
+                  exitNormal = p.exitNormal;
+                  flags = techFlag(p.hit) + 2.0f * techFlag(p.tir) + 4.0f * techFlag(p.fellBack) +
+                          8.0f * techFlag(p.valid);
+                  exitUv = p.exitUv;
+                  entryDirectionZ = p.entryDirection.z;)
+
+// Exit rays from back-face points (d_N unused). Fetches, hit valid, fellBack exact; colours 1e-4.
+SNELL_PARITY_CASE(snellTwoInterfaceExit, [] { return exitInputs(822); },
+                  TECH_RAY_INPUTS(origin, direction),
+                  (vec3, color, 0, within(1e-4f, 1e-4f))(int, fetches, 3, exact)(vec2, hitUv, 4, within(1e-4f, 1e-4f))
+                  (bool, hitValid, 6, exact)(bool, fellBack, 7, exact)(vec3, hitPosition, 8, within(1e-4f, 1e-4f)),
+                  techExtras(),
+                  SnellTechniqueOptions o = techOptions(preset, steps, ior, modes, roughness);
+                  SnellTwoInterfaceExit e = snellTwoInterfaceExit(origin, direction, techSceneDepth, techSceneNormal,
+                                                                  techScenePyramid, techSceneColor,
+                                                                  techSceneSurface(projection), techEnv, o);
+                  color = e.color;
+                  fetches = e.fetches;
+                  hitUv = e.hit.uv;
+                  hitValid = e.hit.valid;
+                  fellBack = e.fellBack;
+                  hitPosition = e.hit.position;)
+
+// Fetches, flags and the reflection hit exact; colour, directions, points, fresnel 1e-4. flags: backHit +
+// 2 fellBack + 4 tir + 8 exit hit valid.
+SNELL_PARITY_CASE(snellTwoInterfaceRefraction, [] { return techniqueInputs(823); },
+                  TECH_RAY_INPUTS(entryPoint, entryNormal),
+                  (vec3, color, 0, within(1e-4f, 1e-4f))(int, fetches, 3, exact)
+                  (vec3, exitDirection, 4, within(1e-4f, 1e-4f))(float, flags, 7, exact)
+                  (vec3, exitPoint, 8, within(1e-4f, 1e-4f))(float, pathLength, 11, within(1e-4f, 1e-4f))
+                  (vec2, exitUv, 12, within(1e-4f, 1e-4f))(float, fresnel, 14, within(1e-4f, 1e-4f))
+                  (bool, reflectionHit, 15, exact),
+                  techExtras(),
+                  SnellTechniqueOptions o = techOptions(preset, steps, ior, modes, roughness);
+                  SnellTwoInterfaceResult t = snellTwoInterfaceRefraction(
+                      entryPoint, entryNormal, dN, techBackDepth, techBackNormal, techBackPyramid,
+                      techBackSurface(projection), techSceneDepth, techSceneNormal, techScenePyramid, techSceneColor,
+                      techSceneSurface(projection), techEnv, o);
+                  color = t.color;
+                  fetches = t.fetches;
+                  exitDirection = t.exitDirection;
+                  flags = techFlag(t.backHit) + 2.0f * techFlag(t.fellBack) + 4.0f * techFlag(t.tir) +
+                          8.0f * techFlag(t.exitHit.valid);
+                  exitPoint = t.exitPoint;
+                  pathLength = t.pathLength;
+                  exitUv = t.exitHit.uv;
+                  fresnel = t.fresnel;
+                  reflectionHit = t.reflectionHit.valid;)
+
+}  // namespace parity_technique

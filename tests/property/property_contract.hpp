@@ -10,8 +10,9 @@
 //
 // The generic contract every snell function documents in its header block:
 // every output is finite (invalid results are flagged and carry finite
-// numbers, e.g. snellHitMiss). The few documented exceptions are listed in
-// exceptions() below, each with the contract sentence that allows it.
+// numbers, e.g. snellHitMiss). The few documented exceptions are part of each
+// case's description (CaseExtras::passThrough / unchecked in
+// tests/parity/*_cases.cpp), each with the contract sentence that allows it.
 #pragma once
 
 #include <cmath>
@@ -29,59 +30,6 @@ namespace snell_parity::property {
 
 inline float comp(const ParityIO& io, int k) { return io.v[k / 4][k % 4]; }
 inline float& comp(ParityIO& io, int k) { return io.v[k / 4][k % 4]; }
-
-// Documented exceptions to "every output is finite". An exception names the
-// input floats (bit k: input v[k/4][k%4]) that a function uses "as given"
-// (colours passed through, by contract): when one of them is not finite, the
-// outputs in `outputs` are not checked for that input. Every other output is.
-// always: the outputs are never checked (the contract allows overflow too).
-struct Exception {
-  std::uint16_t passThroughInputs;
-  std::uint16_t outputs;
-  bool always;
-  const char* reason;
-};
-inline const std::map<std::string, Exception>& exceptions() {
-  static const std::map<std::string, Exception> m = {
-      {"snellViewToClip",
-       {0xFFFF, 0x000F, true,
-        "camera/view_to_clip.glsl: 'clipFromView * vec4(pView, 1), nothing else: no check, NaN and Inf "
-        "propagate as the matrix product makes them' (snellClipToNdc is the checked step)"}},
-      {"snellUnpackBump",
-       {0x0007, 0x0007, false, "shade/perturb.glsl: 'snellUnpackBump(t) = 2 t - 1, nothing else: NaN propagates'"}},
-      {"snellRefractionMaskBlend",
-       {0x00F7, 0x000F, false,
-        "shade/refraction_mask.glsl: 'Colours are blended as given (NaN colours propagate)'; the mask alpha "
-        "(input 3) is checked"}},
-      {"snellIceCompose",
-       {0x00FF, 0x000F, false,
-        "shade/ice.glsl: a mix of the two given colours (reflection a, refraction b); the fresnel weight is "
-        "checked"}},
-      {"snellWaterCompose",
-       {0x00FF, 0x0007, false,
-        "shade/water.glsl: 'Colours (parameters and texels) are used as given'; snellWaterCompose composes the "
-        "given reflection (a) and refraction (b); the normal, eye and distance are checked"}},
-      {"snellGlass", {0x8000, 0x0008, false, "shade/glass.glsl: 'Other colours (texels, diffuse.a) are used as given'"}},
-      {"snellDepthSurface",
-       {0xFF00, 0xFFFF, false,
-        "a plain constructor: the case packs back the matrix and (zNear, zFar, convention, emptyDepth) it stores"}},
-      {"snellRefractiveTextureMapParams",
-       {0x00FF, 0x007F, false,
-        "a plain constructor: the case packs back the extents, restY, depth and factor it stores (uvMin/uvMax, "
-        "which it sanitizes, are checked)"}},
-      {"snellDepthRangeInvalid", {0x0001, 0x0008, false, "the case echoes its input a.x in output 3 (not the function's)"}},
-      {"snellPresetDirBounds",
-       {0x0003, 0x3000, false, "a preset constructor: stores the bounds it is given (outputs 12-13)"}},
-      {"snellDepthPyramidBase",
-       {0x0010, 0x0001, false,
-        "intersect/depth_pyramid.glsl: an invalid texel is vec4(emptyDepth, 0, 0, 0), the emptyDepth given"}},
-  };
-  return m;
-}
-inline const Exception* exceptionFor(const std::string& function) {
-  const auto it = exceptions().find(function);
-  return it == exceptions().end() ? nullptr : &it->second;
-}
 
 // Violations found by the first run (issue 7) and not yet triaged: each is
 // either a documented pass-through (a constructor or colour used "as given", to
@@ -160,30 +108,35 @@ inline std::string formatIO(const ParityIO& io) {
 }
 
 // Outputs (bit k: output float k) of `out` that break the contract for input
-// `in`: not finite, among the first `outputs`, and not excused by `e`
-// (exceptionFor(function), or null). *exempt tells whether `e` excused any.
-inline std::uint16_t contractViolations(const Exception* e, int outputs, const ParityIO& in, const ParityIO& out,
-                                        bool* exempt) {
+// `in`: a described output that is not finite and not excused by one of the
+// case's exceptions. *exempt tells whether an exception excused any.
+inline std::uint16_t contractViolations(const CaseSpec& spec, const ParityIO& in, const ParityIO& out, bool* exempt) {
   std::uint16_t skip = 0;
-  if (e) {
-    if (e->always) skip = e->outputs;
-    for (int k = 0; k < 16 && !skip; ++k)
-      if ((e->passThroughInputs >> k & 1u) && !std::isfinite(comp(in, k))) skip = e->outputs;
+  for (const ContractException& e : spec.exceptions) {
+    bool applies = e.always;
+    for (int k = 0; k < 16 && !applies; ++k)
+      if ((e.passThroughInputs >> k & 1u) && !std::isfinite(comp(in, k))) applies = true;
+    if (applies) skip = static_cast<std::uint16_t>(skip | e.outputs);
   }
   *exempt = skip != 0;
   std::uint16_t bad = 0;
-  for (int k = 0; k < outputs; ++k)
-    if (!(skip >> k & 1u) && !std::isfinite(comp(out, k))) bad = static_cast<std::uint16_t>(bad | 1u << k);
+  for (const snell::gpu::ParityOutput& o : spec.outputs)
+    if (!(skip >> o.index & 1u) && !std::isfinite(comp(out, o.index)))
+      bad = static_cast<std::uint16_t>(bad | 1u << o.index);
   return bad;
 }
 
-// The 16 output floats' bits, chained through splitmix64 from the input's index.
+// The 16 output floats' bits (every NaN as one), chained through splitmix64
+// from the input's index.
 inline std::uint64_t outputDigest(std::uint64_t index, const ParityIO& out) {
   std::uint64_t h = splitmix64(index * kGolden);
   for (int k = 0; k < 16; ++k) {
     std::uint32_t bits;
     const float x = comp(out, k);
     std::memcpy(&bits, &x, sizeof bits);
+    // One NaN: which NaN operand a commutative operation propagates is the
+    // compiler's choice of operand order, not a result.
+    if (std::isnan(x)) bits = 0x7FC00000u;
     h = splitmix64(h ^ bits);
   }
   return h;
@@ -200,11 +153,11 @@ struct Tally {
   std::string first;
 
   // Checks input #index against the contract; returns its violating outputs.
-  std::uint16_t add(const Exception* e, int outputs, std::uint64_t index, const ParityIO& in, const ParityIO& out) {
+  std::uint16_t add(const CaseSpec& spec, std::uint64_t index, const ParityIO& in, const ParityIO& out) {
     ++inputs;
     digest += outputDigest(index, out);
     bool ex = false;
-    const std::uint16_t bad = contractViolations(e, outputs, in, out, &ex);
+    const std::uint16_t bad = contractViolations(spec, in, out, &ex);
     if (ex) ++exempt;
     if (bad) {
       for (int k = 0; k < 16; ++k)

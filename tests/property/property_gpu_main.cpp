@@ -72,18 +72,17 @@ class PropertyGpuTest : public ::testing::Test {
     snell::gpu::Context ctx(kBackend);
     const std::vector<ParityIO> gpu =
         snell::gpu::runParityGpu(ctx, {kRoot / "glsl", kRoot / "tests" / "parity" / "cases"}, spec_->glslFile,
-                                 spec_->entry, inputs, spec_->textures);
+                                 spec_->entry, inputs, spec_->textures, spec_->entrySource);
     ASSERT_EQ(gpu.size(), inputs.size());
 
-    const property::Exception* e = property::exceptionFor(spec_->function);
     Tally onGpu, onCpu;
     std::uint64_t gpuOnly = 0, cpuOnly = 0;
     std::string firstGpuOnly;
     for (std::size_t j = 0; j < inputs.size(); ++j) {
       const std::uint64_t index = base.size() + j;
       const ParityIO cpu = spec_->cpu(inputs[j]);
-      const bool g = onGpu.add(e, spec_->outputs, index, inputs[j], gpu[j]) != 0;
-      const bool c = onCpu.add(e, spec_->outputs, index, inputs[j], cpu) != 0;
+      const bool g = onGpu.add(*spec_, index, inputs[j], gpu[j]) != 0;
+      const bool c = onCpu.add(*spec_, index, inputs[j], cpu) != 0;
       if (g && !c && gpuOnly++ == 0)
         firstGpuOnly = "input #" + std::to_string(index) + ": " + property::formatIO(inputs[j]) +
                        "\n  gpu output: " + property::formatIO(gpu[j]) + "\n  cpu output: " + property::formatIO(cpu);

@@ -52,10 +52,9 @@ std::size_t inputCount(const CaseSpec& spec) {
 
 Tally runChunk(const CaseSpec& spec, const std::vector<ParityIO>& base, std::uint64_t begin, std::uint64_t end) {
   Tally t;
-  const property::Exception* e = property::exceptionFor(spec.function);
   for (std::uint64_t i = begin; i < end; ++i) {
     const ParityIO in = property::propertyInput(base, i);
-    t.add(e, spec.outputs, i, in, spec.cpu(in));
+    t.add(spec, i, in, spec.cpu(in));
   }
   return t;
 }

@@ -81,7 +81,10 @@ inline std::string parityCallAndStore(const std::string& entry) {
 }  // namespace detail
 
 // The generated compute shader. `in`/`out` are GLSL keywords, hence the names.
-inline std::string parityShaderSource(const std::string& caseFile, const std::string& entry) {
+// `entrySource`, if given, is appended after the case file (a generated entry
+// that calls what the case file declares).
+inline std::string parityShaderSource(const std::string& caseFile, const std::string& entry,
+                                      const std::string& entrySource = {}) {
   std::string s;
   s += "#version 450 core\n";
   s += "layout(local_size_x = " + std::to_string(kParityLocalSize) + ") in;\n";
@@ -90,6 +93,7 @@ inline std::string parityShaderSource(const std::string& caseFile, const std::st
   s += "uniform int snellParityCount;\n";
   s += "struct SnellParityOut { vec4 a; vec4 b; vec4 c; vec4 d; };\n";
   s += "#include \"" + caseFile + "\"\n";
+  s += entrySource;
   s += "void main() {\n";
   s += "  uint i = gl_GlobalInvocationID.x;\n";
   s += "  if (i >= uint(snellParityCount)) return;\n";
@@ -154,11 +158,12 @@ std::vector<ParityIO> dispatchParity(const GlApi& gl, const Program& program, co
 inline std::vector<ParityIO> runParityGpu(const Context& ctx, const std::vector<std::filesystem::path>& searchPaths,
                                           const std::string& caseFile, const std::string& entry,
                                           const std::vector<ParityIO>& inputs,
-                                          const std::vector<ParityTexture>& textures = {}) {
+                                          const std::vector<ParityTexture>& textures = {},
+                                          const std::string& entrySource = {}) {
   ctx.makeCurrent();
   const GlApi& gl = ctx.gl();
   const FlatSource src =
-      flattenGlslSource(parityShaderSource(caseFile, entry), "<parity " + entry + ">", searchPaths);
+      flattenGlslSource(parityShaderSource(caseFile, entry, entrySource), "<parity " + entry + ">", searchPaths);
   const Program program = Program::compute(gl, src);
 
   const std::vector<Texture> uploaded = detail::uploadParityTextures(gl, textures, "runParityGpu");
@@ -195,48 +200,57 @@ inline std::string formatIO(const ParityIO& io) {
 }
 }  // namespace detail
 
-// Discrete outputs (bit k of discreteMask: output float k) must be equal,
-// NaN == NaN. Continuous ones pass if |g - c| <= absTol + relTol * |c|; a NaN
-// or infinity on either side must be matched exactly (NaN by NaN, inf by the
-// same inf). `inputs`, if given, are printed with the first mismatch.
+// How one output float is compared: `exact` (equal, NaN == NaN) or within
+// |gpu - cpu| <= abs + rel * |cpu|; a NaN or infinity on either side must be
+// matched exactly (NaN by NaN, inf by the same inf). `name` labels a mismatch.
+struct ParityOutput {
+  int index;  // float index: v[index / 4][index % 4]
+  std::string name;
+  bool exact = false;
+  float abs = 0.0f, rel = 0.0f;
+};
+
+// Compares the listed output floats of every case. `inputs`, if given, are
+// printed with the first mismatch.
 inline ParityReport compareParity(const std::vector<ParityIO>& gpu, const std::vector<ParityIO>& cpu,
-                                  std::uint16_t discreteMask, int outputs, float absTol, float relTol,
+                                  const std::vector<ParityOutput>& outputs,
                                   const std::vector<ParityIO>* inputs = nullptr) {
   if (gpu.size() != cpu.size())
     throw std::invalid_argument("compareParity: " + std::to_string(gpu.size()) + " GPU results but " +
                                 std::to_string(cpu.size()) + " CPU results");
-  if (outputs < 0 || outputs > 16) throw std::invalid_argument("compareParity: outputs must be in 0..16");
+  for (const ParityOutput& o : outputs)
+    if (o.index < 0 || o.index > 15) throw std::invalid_argument("compareParity: output index must be in 0..15");
   if (inputs && inputs->size() != gpu.size())
     throw std::invalid_argument("compareParity: inputs and results differ in count");
   ParityReport r;
   r.cases = gpu.size();
   for (std::size_t i = 0; i < gpu.size(); ++i) {
     bool caseBad = false;
-    for (int k = 0; k < outputs; ++k) {
+    for (const ParityOutput& o : outputs) {
+      const int k = o.index;
       const float g = gpu[i].v[k / 4][k % 4];
       const float c = cpu[i].v[k / 4][k % 4];
-      const bool discrete = (discreteMask >> k) & 1u;
       bool good;
       std::string why;
       if (std::isnan(g) || std::isnan(c)) {
         good = std::isnan(g) && std::isnan(c);
-      } else if (discrete || std::isinf(g) || std::isinf(c)) {
+      } else if (o.exact || std::isinf(g) || std::isinf(c)) {
         good = g == c;
       } else {
         const float diff = std::fabs(g - c);
-        const float tol = absTol + relTol * std::fabs(c);
+        const float tol = o.abs + o.rel * std::fabs(c);
         good = diff <= tol;
         r.maxAbs = std::max(r.maxAbs, diff);
-        if (std::fabs(c) > absTol) r.maxRel = std::max(r.maxRel, diff / std::fabs(c));
+        if (std::fabs(c) > o.abs) r.maxRel = std::max(r.maxRel, diff / std::fabs(c));
         why = " (|diff| " + detail::formatFloat(diff) + " > tol " + detail::formatFloat(tol) + ")";
       }
       if (good) continue;
       if (!caseBad && r.firstMismatch == SIZE_MAX) {
         r.firstMismatch = i;
-        r.firstMismatchText = "case " + std::to_string(i) + ", output " + std::to_string(k) + " (v[" +
-                              std::to_string(k / 4) + "]." + "xyzw"[k % 4] + ", " +
-                              (discrete ? "discrete" : "continuous") + "): gpu " + detail::formatFloat(g) +
-                              ", cpu " + detail::formatFloat(c) + why;
+        r.firstMismatchText = "case " + std::to_string(i) + ", output " + std::to_string(k) +
+                              (o.name.empty() ? std::string() : " '" + o.name + "'") + " (v[" +
+                              std::to_string(k / 4) + "]." + "xyzw"[k % 4] + ", " + (o.exact ? "exact" : "continuous") +
+                              "): gpu " + detail::formatFloat(g) + ", cpu " + detail::formatFloat(c) + why;
         if (inputs) r.firstMismatchText += "; inputs " + detail::formatIO((*inputs)[i]);
         r.firstMismatchText += "; gpu outputs " + detail::formatIO(gpu[i]) + ", cpu outputs " + detail::formatIO(cpu[i]);
       }
@@ -245,6 +259,17 @@ inline ParityReport compareParity(const std::vector<ParityIO>& gpu, const std::v
     if (caseBad) ++r.mismatches;
   }
   return r;
+}
+
+// The first `outputs` floats, those of bit k of `discreteMask` exactly, the
+// others within absTol + relTol * |cpu|.
+inline ParityReport compareParity(const std::vector<ParityIO>& gpu, const std::vector<ParityIO>& cpu,
+                                  std::uint16_t discreteMask, int outputs, float absTol, float relTol,
+                                  const std::vector<ParityIO>* inputs = nullptr) {
+  if (outputs < 0 || outputs > 16) throw std::invalid_argument("compareParity: outputs must be in 0..16");
+  std::vector<ParityOutput> list;
+  for (int k = 0; k < outputs; ++k) list.push_back({k, std::string(), ((discreteMask >> k) & 1u) != 0, absTol, relTol});
+  return compareParity(gpu, cpu, list, inputs);
 }
 
 }  // namespace snell::gpu
