@@ -596,6 +596,19 @@ void writeOutputs(const fs::path& out, const References& refs, const std::vector
 
 }  // namespace
 
+// The guard band in texels per side: the fraction asked for, grown until both buffer sides are multiples
+// of 32 where that is possible: the depth pyramid's levels then halve exactly for five levels (odd sizes
+// drop a texel row per level, which shifts the coarse levels the depth-based plane reads).
+namespace {
+int guardBandMargin(double fraction, int width, int height) {
+  int margin = static_cast<int>(std::lround(fraction * std::max(width, height)));
+  if (margin > 0)
+    for (int m = margin; m < margin + 32; ++m)
+      if ((width + 2 * m) % 32 == 0 && (height + 2 * m) % 32 == 0) return m;
+  return margin;
+}
+}  // namespace
+
 LabResult runLab(const LabOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const std::vector<const SnellTechniqueInfo*> techniques = selectTechniques(options);
@@ -617,16 +630,7 @@ LabResult runLab(const LabOptions& options) {
   // the frame is static. Their read-back buffers are what the C++ side shades from.
   std::vector<int> ids;
   for (const SnellTechniqueInfo* t : techniques) ids.push_back(t->id);
-  // The margin asked for, grown until both buffer sides are multiples of 32 where that is possible: the
-  // depth pyramid's levels then halve exactly for five levels (odd sizes drop a texel row per level, which
-  // shifts the coarse levels the depth-based plane reads).
-  int margin = static_cast<int>(std::lround(options.guardBand * std::max(result.width, result.height)));
-  if (margin > 0)
-    for (int m = margin; m < margin + 32; ++m)
-      if ((result.width + 2 * m) % 32 == 0 && (result.height + 2 * m) % 32 == 0) {
-        margin = m;
-        break;
-      }
+  const int margin = guardBandMargin(options.guardBand, result.width, result.height);
   result.guardBand = margin;
   ShadeConstants k = shadeConstants(frame, margin);
   k.normalFilter = options.normalFilter;

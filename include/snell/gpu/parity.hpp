@@ -249,7 +249,7 @@ inline ParityReport compareParity(const std::vector<ParityIO>& gpu, const std::v
         r.firstMismatch = i;
         r.firstMismatchText = "case " + std::to_string(i) + ", output " + std::to_string(k) +
                               (o.name.empty() ? std::string() : " '" + o.name + "'") + " (v[" +
-                              std::to_string(k / 4) + "]." + "xyzw"[k % 4] + ", " + (o.exact ? "exact" : "continuous") +
+                              std::to_string(k / 4) + "]." + "xyzw"[k % 4] + ", " + (o.exact ? "discrete" : "continuous") +
                               "): gpu " + detail::formatFloat(g) + ", cpu " + detail::formatFloat(c) + why;
         if (inputs) r.firstMismatchText += "; inputs " + detail::formatIO((*inputs)[i]);
         r.firstMismatchText += "; gpu outputs " + detail::formatIO(gpu[i]) + ", cpu outputs " + detail::formatIO(cpu[i]);
