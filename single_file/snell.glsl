@@ -77,6 +77,19 @@ contract: macros only.
 #    define SNELL_FN
 #  endif
 #endif
+/* SNELL_FN_INLINE: SNELL_FN for the small functions every strategy calls per
+   step (projection, reconstruction, depth read): C++ asks the compiler to
+   inline them (GCC/Clang always_inline, MSVC __forceinline), which g++'s
+   heuristics otherwise decline for some callers; GLSL/HLSL: SNELL_FN. */
+#ifndef SNELL_FN_INLINE
+#  if defined(SNELL_LANG_CXX) && (defined(__GNUC__) || defined(__clang__))
+#    define SNELL_FN_INLINE inline __attribute__((always_inline))
+#  elif defined(SNELL_LANG_CXX) && defined(_MSC_VER)
+#    define SNELL_FN_INLINE __forceinline
+#  else
+#    define SNELL_FN_INLINE SNELL_FN
+#  endif
+#endif
 
 /* SNELL_PRECISE before a local declaration: its value is computed exactly as
    written (no fused multiply-add), so GPU and C++ agree to the last bit where a
@@ -110,6 +123,15 @@ contract: macros only.
    one invocation's lod for a whole SIMD batch when lod varies per invocation. */
 #    define SNELL_TEXTURE_SIZE(tex, lod) max(textureSize(tex, 0) >> (lod), ivec2(1, 1))
 #  endif
+#endif
+
+/* SNELL_TEXEL_FETCH_IN_LEVEL(tex, px, lod): SNELL_TEXEL_FETCH for a texel the
+   caller has already placed inside level lod (0 <= lod, px inside the size
+   SNELL_TEXTURE_SIZE gave, which is > 0). GLSL/HLSL: SNELL_TEXEL_FETCH (any
+   hook included); C++: Texture2D::fetchInLevel, without fetch's level and
+   bounds tests. */
+#ifndef SNELL_TEXEL_FETCH_IN_LEVEL
+#  define SNELL_TEXEL_FETCH_IN_LEVEL(tex, px, lod) SNELL_TEXEL_FETCH(tex, px, lod)
 #endif
 
 /* SNELL_IN(T) name: a read-only parameter of struct type T. GLSL and HLSL pass
@@ -812,10 +834,8 @@ SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, 
   if (dot(n, n) == 0.0f || !(dirLen2 > 1e-30f) || !(dirLen2 < SNELL_FLT_MAX)) {
     return h;
   }
-  // abs(x) <= FLT_MAX is false for NaN and +-inf.
-  if (!(abs(origin.x) <= SNELL_FLT_MAX) || !(abs(origin.y) <= SNELL_FLT_MAX) ||
-      !(abs(origin.z) <= SNELL_FLT_MAX) || !(abs(planePoint.x) <= SNELL_FLT_MAX) ||
-      !(abs(planePoint.y) <= SNELL_FLT_MAX) || !(abs(planePoint.z) <= SNELL_FLT_MAX)) {
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(planePoint.x) || !SNELL_FINITE(planePoint.y) || !SNELL_FINITE(planePoint.z)) {
     return h;
   }
   float denom = dot(dir, n);
@@ -827,7 +847,7 @@ SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, 
     return h;
   }
   vec3 p = origin + t * dir;
-  if (!(abs(p.x) <= SNELL_FLT_MAX) || !(abs(p.y) <= SNELL_FLT_MAX) || !(abs(p.z) <= SNELL_FLT_MAX)) {
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z)) {
     return h;
   }
   h.t = t;
@@ -953,7 +973,7 @@ source: the window depth of glm::perspective / perspectiveZO / infinitePerspecti
 
 
 
-SNELL_FN float snellLinearizeDepth(float depthValue, float zNear, float zFar, int convention) {
+SNELL_FN_INLINE float snellLinearizeDepth(float depthValue, float zNear, float zFar, int convention) {
   bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
   if (isnan(depthValue) || !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
     return 0.0f;
@@ -1518,7 +1538,7 @@ struct SnellTexRay {
   bool valid;
 };
 
-SNELL_FN SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, float zFarthest, mat4 clipFromView) {
+SNELL_FN_INLINE SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, float zFarthest, mat4 clipFromView) {
   SnellTexRay r;
   r.s = vec3(0.0f, 0.0f, 0.0f);
   r.e = vec3(0.0f, 0.0f, 0.0f);
@@ -1721,9 +1741,11 @@ SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, flo
   return s;
 }
 
-/* The surface by value, not SNELL_IN: g++ inlines this read into every loop
-   that way, and measured slower by reference (benchmarks/kernels). */
-SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
+/* SNELL_FN_INLINE: C++ inlines this read into every strategy and loop (by
+   value, g++ inlined it only in some and left a copy of the surface per call
+   elsewhere; by reference and always inlined it is cheaper in all,
+   benchmarks/kernels). */
+SNELL_FN_INLINE SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, SNELL_IN(SnellDepthSurface) s) {
   SnellSurfaceSample r;
   r.viewZ = 0.0f;
   r.valid = false;
@@ -1736,7 +1758,8 @@ SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, Sn
   if (size.x <= 0 || size.y <= 0) {
     return r;
   }
-  float d = SNELL_TEXEL_FETCH(depthTex, SNELL_PIXEL_ON_SCREEN(uv, size), s.lod).x;
+  // size > 0: s.lod is a level; uv in [0,1]^2: the texel is inside it.
+  float d = SNELL_TEXEL_FETCH_IN_LEVEL(depthTex, SNELL_PIXEL_ON_SCREEN(uv, size), s.lod).x;
   if (d == s.emptyDepth) {
     return r;
   }
@@ -1808,7 +1831,7 @@ source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC); the equations in
 
 
 
-SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, vec3 pView) {
+SNELL_FN_INLINE SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, vec3 pView) {
   if (!s.perspective) {
     return snellViewToUv(s.clipFromView, pView);
   }
@@ -1826,20 +1849,21 @@ SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, ve
   float cy = c1.y * pView.y + c2.y * pView.z;
   float cz = c2.z * pView.z + c3.z;
   float cw = -pView.z;
-  if (!SNELL_FINITE(cx) || !SNELL_FINITE(cy) || !SNELL_FINITE(cz) || !SNELL_FINITE(cw) ||
-      !(cw >= SNELL_FLT_MIN)) {
+  // No test of cw = -pView.z for +inf: a non-finite pView.z makes cz non-finite
+  // (c2.z pView.z is +-inf, or NaN when c2.z is 0 or NaN), and NaN fails >=.
+  if (!SNELL_FINITE(cx) || !SNELL_FINITE(cy) || !SNELL_FINITE(cz) || !(cw >= SNELL_FLT_MIN)) {
     return r;
   }
-  vec3 q = vec3(cx, cy, cz) / cw;
-  vec3 ndc = clamp(q, vec3(-SNELL_FLT_MAX, -SNELL_FLT_MAX, -SNELL_FLT_MAX),
-                   vec3(SNELL_FLT_MAX, SNELL_FLT_MAX, SNELL_FLT_MAX));
-  r.uv = vec2(ndc.x, ndc.y) * 0.5f + 0.5f;
-  r.ndcZ = ndc.z;
+  // Per component (the same operations as a vec3 clamp; C++ inlines them).
+  float ndcX = clamp(cx / cw, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+  float ndcY = clamp(cy / cw, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+  r.uv = vec2(ndcX, ndcY) * 0.5f + 0.5f;
+  r.ndcZ = clamp(cz / cw, -SNELL_FLT_MAX, SNELL_FLT_MAX);
   r.valid = true;
   return r;
 }
 
-SNELL_FN SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface) s, vec2 uv, float viewZ) {
+SNELL_FN_INLINE SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface) s, vec2 uv, float viewZ) {
   if (!s.perspective) {
     return snellUvZToView(s.clipFromView, uv, viewZ);
   }
@@ -1917,7 +1941,7 @@ struct SnellSurfacePoint {
   bool valid;
 };
 
-SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SNELL_IN(SnellDepthSurface) s) {
+SNELL_FN_INLINE SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SNELL_IN(SnellDepthSurface) s) {
   SnellSurfacePoint r;
   r.position = vec3(0.0f, 0.0f, 0.0f);
   r.uv = vec2(0.0f, 0.0f);
@@ -2893,7 +2917,7 @@ source: Oliveira & Brauwers 2007, sec. 3.2.1, eqs. 3-4 (S and E), Figure 5
 
 
 
-SNELL_FN SnellTexRay snellSearchSegment(vec3 origin, vec3 dir, float zNearest, float zFarthest, mat4 clipFromView) {
+SNELL_FN_INLINE SnellTexRay snellSearchSegment(vec3 origin, vec3 dir, float zNearest, float zFarthest, mat4 clipFromView) {
   SnellTexRay bad;
   bad.s = vec3(0.0f, 0.0f, 0.0f);
   bad.e = vec3(0.0f, 0.0f, 0.0f);

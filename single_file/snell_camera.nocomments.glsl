@@ -38,6 +38,16 @@
 #  endif
 #endif
 
+#ifndef SNELL_FN_INLINE
+#  if defined(SNELL_LANG_CXX) && (defined(__GNUC__) || defined(__clang__))
+#    define SNELL_FN_INLINE inline __attribute__((always_inline))
+#  elif defined(SNELL_LANG_CXX) && defined(_MSC_VER)
+#    define SNELL_FN_INLINE __forceinline
+#  else
+#    define SNELL_FN_INLINE SNELL_FN
+#  endif
+#endif
+
 #ifndef SNELL_PRECISE
 #  if defined(SNELL_LANG_HLSL)
 #    define SNELL_PRECISE precise
@@ -65,6 +75,10 @@
 
 #    define SNELL_TEXTURE_SIZE(tex, lod) max(textureSize(tex, 0) >> (lod), ivec2(1, 1))
 #  endif
+#endif
+
+#ifndef SNELL_TEXEL_FETCH_IN_LEVEL
+#  define SNELL_TEXEL_FETCH_IN_LEVEL(tex, px, lod) SNELL_TEXEL_FETCH(tex, px, lod)
 #endif
 
 #ifndef SNELL_IN
@@ -119,7 +133,7 @@
 #ifndef SNELL_CAMERA_LINEARIZE_DEPTH_GLSL
 #define SNELL_CAMERA_LINEARIZE_DEPTH_GLSL
 
-SNELL_FN float snellLinearizeDepth(float depthValue, float zNear, float zFar, int convention) {
+SNELL_FN_INLINE float snellLinearizeDepth(float depthValue, float zNear, float zFar, int convention) {
   bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
   if (isnan(depthValue) || !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
     return 0.0f;
@@ -462,7 +476,7 @@ struct SnellTexRay {
   bool valid;
 };
 
-SNELL_FN SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, float zFarthest, mat4 clipFromView) {
+SNELL_FN_INLINE SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, float zFarthest, mat4 clipFromView) {
   SnellTexRay r;
   r.s = vec3(0.0f, 0.0f, 0.0f);
   r.e = vec3(0.0f, 0.0f, 0.0f);

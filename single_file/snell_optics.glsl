@@ -74,6 +74,19 @@ contract: macros only.
 #    define SNELL_FN
 #  endif
 #endif
+/* SNELL_FN_INLINE: SNELL_FN for the small functions every strategy calls per
+   step (projection, reconstruction, depth read): C++ asks the compiler to
+   inline them (GCC/Clang always_inline, MSVC __forceinline), which g++'s
+   heuristics otherwise decline for some callers; GLSL/HLSL: SNELL_FN. */
+#ifndef SNELL_FN_INLINE
+#  if defined(SNELL_LANG_CXX) && (defined(__GNUC__) || defined(__clang__))
+#    define SNELL_FN_INLINE inline __attribute__((always_inline))
+#  elif defined(SNELL_LANG_CXX) && defined(_MSC_VER)
+#    define SNELL_FN_INLINE __forceinline
+#  else
+#    define SNELL_FN_INLINE SNELL_FN
+#  endif
+#endif
 
 /* SNELL_PRECISE before a local declaration: its value is computed exactly as
    written (no fused multiply-add), so GPU and C++ agree to the last bit where a
@@ -107,6 +120,15 @@ contract: macros only.
    one invocation's lod for a whole SIMD batch when lod varies per invocation. */
 #    define SNELL_TEXTURE_SIZE(tex, lod) max(textureSize(tex, 0) >> (lod), ivec2(1, 1))
 #  endif
+#endif
+
+/* SNELL_TEXEL_FETCH_IN_LEVEL(tex, px, lod): SNELL_TEXEL_FETCH for a texel the
+   caller has already placed inside level lod (0 <= lod, px inside the size
+   SNELL_TEXTURE_SIZE gave, which is > 0). GLSL/HLSL: SNELL_TEXEL_FETCH (any
+   hook included); C++: Texture2D::fetchInLevel, without fetch's level and
+   bounds tests. */
+#ifndef SNELL_TEXEL_FETCH_IN_LEVEL
+#  define SNELL_TEXEL_FETCH_IN_LEVEL(tex, px, lod) SNELL_TEXEL_FETCH(tex, px, lod)
 #endif
 
 /* SNELL_IN(T) name: a read-only parameter of struct type T. GLSL and HLSL pass
@@ -809,10 +831,8 @@ SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, 
   if (dot(n, n) == 0.0f || !(dirLen2 > 1e-30f) || !(dirLen2 < SNELL_FLT_MAX)) {
     return h;
   }
-  // abs(x) <= FLT_MAX is false for NaN and +-inf.
-  if (!(abs(origin.x) <= SNELL_FLT_MAX) || !(abs(origin.y) <= SNELL_FLT_MAX) ||
-      !(abs(origin.z) <= SNELL_FLT_MAX) || !(abs(planePoint.x) <= SNELL_FLT_MAX) ||
-      !(abs(planePoint.y) <= SNELL_FLT_MAX) || !(abs(planePoint.z) <= SNELL_FLT_MAX)) {
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(planePoint.x) || !SNELL_FINITE(planePoint.y) || !SNELL_FINITE(planePoint.z)) {
     return h;
   }
   float denom = dot(dir, n);
@@ -824,7 +844,7 @@ SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, 
     return h;
   }
   vec3 p = origin + t * dir;
-  if (!(abs(p.x) <= SNELL_FLT_MAX) || !(abs(p.y) <= SNELL_FLT_MAX) || !(abs(p.z) <= SNELL_FLT_MAX)) {
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z)) {
     return h;
   }
   h.t = t;

@@ -38,6 +38,16 @@
 #  endif
 #endif
 
+#ifndef SNELL_FN_INLINE
+#  if defined(SNELL_LANG_CXX) && (defined(__GNUC__) || defined(__clang__))
+#    define SNELL_FN_INLINE inline __attribute__((always_inline))
+#  elif defined(SNELL_LANG_CXX) && defined(_MSC_VER)
+#    define SNELL_FN_INLINE __forceinline
+#  else
+#    define SNELL_FN_INLINE SNELL_FN
+#  endif
+#endif
+
 #ifndef SNELL_PRECISE
 #  if defined(SNELL_LANG_HLSL)
 #    define SNELL_PRECISE precise
@@ -65,6 +75,10 @@
 
 #    define SNELL_TEXTURE_SIZE(tex, lod) max(textureSize(tex, 0) >> (lod), ivec2(1, 1))
 #  endif
+#endif
+
+#ifndef SNELL_TEXEL_FETCH_IN_LEVEL
+#  define SNELL_TEXEL_FETCH_IN_LEVEL(tex, px, lod) SNELL_TEXEL_FETCH(tex, px, lod)
 #endif
 
 #ifndef SNELL_IN
@@ -406,9 +420,8 @@ SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, 
   if (dot(n, n) == 0.0f || !(dirLen2 > 1e-30f) || !(dirLen2 < SNELL_FLT_MAX)) {
     return h;
   }
-  if (!(abs(origin.x) <= SNELL_FLT_MAX) || !(abs(origin.y) <= SNELL_FLT_MAX) ||
-      !(abs(origin.z) <= SNELL_FLT_MAX) || !(abs(planePoint.x) <= SNELL_FLT_MAX) ||
-      !(abs(planePoint.y) <= SNELL_FLT_MAX) || !(abs(planePoint.z) <= SNELL_FLT_MAX)) {
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(planePoint.x) || !SNELL_FINITE(planePoint.y) || !SNELL_FINITE(planePoint.z)) {
     return h;
   }
   float denom = dot(dir, n);
@@ -420,7 +433,7 @@ SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, 
     return h;
   }
   vec3 p = origin + t * dir;
-  if (!(abs(p.x) <= SNELL_FLT_MAX) || !(abs(p.y) <= SNELL_FLT_MAX) || !(abs(p.z) <= SNELL_FLT_MAX)) {
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z)) {
     return h;
   }
   h.t = t;

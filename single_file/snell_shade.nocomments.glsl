@@ -38,6 +38,16 @@
 #  endif
 #endif
 
+#ifndef SNELL_FN_INLINE
+#  if defined(SNELL_LANG_CXX) && (defined(__GNUC__) || defined(__clang__))
+#    define SNELL_FN_INLINE inline __attribute__((always_inline))
+#  elif defined(SNELL_LANG_CXX) && defined(_MSC_VER)
+#    define SNELL_FN_INLINE __forceinline
+#  else
+#    define SNELL_FN_INLINE SNELL_FN
+#  endif
+#endif
+
 #ifndef SNELL_PRECISE
 #  if defined(SNELL_LANG_HLSL)
 #    define SNELL_PRECISE precise
@@ -65,6 +75,10 @@
 
 #    define SNELL_TEXTURE_SIZE(tex, lod) max(textureSize(tex, 0) >> (lod), ivec2(1, 1))
 #  endif
+#endif
+
+#ifndef SNELL_TEXEL_FETCH_IN_LEVEL
+#  define SNELL_TEXEL_FETCH_IN_LEVEL(tex, px, lod) SNELL_TEXEL_FETCH(tex, px, lod)
 #endif
 
 #ifndef SNELL_IN
@@ -583,9 +597,8 @@ SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, 
   if (dot(n, n) == 0.0f || !(dirLen2 > 1e-30f) || !(dirLen2 < SNELL_FLT_MAX)) {
     return h;
   }
-  if (!(abs(origin.x) <= SNELL_FLT_MAX) || !(abs(origin.y) <= SNELL_FLT_MAX) ||
-      !(abs(origin.z) <= SNELL_FLT_MAX) || !(abs(planePoint.x) <= SNELL_FLT_MAX) ||
-      !(abs(planePoint.y) <= SNELL_FLT_MAX) || !(abs(planePoint.z) <= SNELL_FLT_MAX)) {
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(planePoint.x) || !SNELL_FINITE(planePoint.y) || !SNELL_FINITE(planePoint.z)) {
     return h;
   }
   float denom = dot(dir, n);
@@ -597,7 +610,7 @@ SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, 
     return h;
   }
   vec3 p = origin + t * dir;
-  if (!(abs(p.x) <= SNELL_FLT_MAX) || !(abs(p.y) <= SNELL_FLT_MAX) || !(abs(p.z) <= SNELL_FLT_MAX)) {
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z)) {
     return h;
   }
   h.t = t;
@@ -926,7 +939,7 @@ SNELL_FN SnellHit snellHitMiss(int fetches) {
 #ifndef SNELL_CAMERA_LINEARIZE_DEPTH_GLSL
 #define SNELL_CAMERA_LINEARIZE_DEPTH_GLSL
 
-SNELL_FN float snellLinearizeDepth(float depthValue, float zNear, float zFar, int convention) {
+SNELL_FN_INLINE float snellLinearizeDepth(float depthValue, float zNear, float zFar, int convention) {
   bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
   if (isnan(depthValue) || !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
     return 0.0f;
@@ -1050,7 +1063,7 @@ SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, flo
   return s;
 }
 
-SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
+SNELL_FN_INLINE SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, SNELL_IN(SnellDepthSurface) s) {
   SnellSurfaceSample r;
   r.viewZ = 0.0f;
   r.valid = false;
@@ -1062,7 +1075,7 @@ SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, Sn
   if (size.x <= 0 || size.y <= 0) {
     return r;
   }
-  float d = SNELL_TEXEL_FETCH(depthTex, SNELL_PIXEL_ON_SCREEN(uv, size), s.lod).x;
+  float d = SNELL_TEXEL_FETCH_IN_LEVEL(depthTex, SNELL_PIXEL_ON_SCREEN(uv, size), s.lod).x;
   if (d == s.emptyDepth) {
     return r;
   }
@@ -1356,7 +1369,7 @@ SNELL_FN SnellViewPoint snellUvZToView(mat4 clipFromView, vec2 uv, float viewZ) 
 
 #endif
 
-SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, vec3 pView) {
+SNELL_FN_INLINE SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, vec3 pView) {
   if (!s.perspective) {
     return snellViewToUv(s.clipFromView, pView);
   }
@@ -1372,20 +1385,18 @@ SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, ve
   float cy = c1.y * pView.y + c2.y * pView.z;
   float cz = c2.z * pView.z + c3.z;
   float cw = -pView.z;
-  if (!SNELL_FINITE(cx) || !SNELL_FINITE(cy) || !SNELL_FINITE(cz) || !SNELL_FINITE(cw) ||
-      !(cw >= SNELL_FLT_MIN)) {
+  if (!SNELL_FINITE(cx) || !SNELL_FINITE(cy) || !SNELL_FINITE(cz) || !(cw >= SNELL_FLT_MIN)) {
     return r;
   }
-  vec3 q = vec3(cx, cy, cz) / cw;
-  vec3 ndc = clamp(q, vec3(-SNELL_FLT_MAX, -SNELL_FLT_MAX, -SNELL_FLT_MAX),
-                   vec3(SNELL_FLT_MAX, SNELL_FLT_MAX, SNELL_FLT_MAX));
-  r.uv = vec2(ndc.x, ndc.y) * 0.5f + 0.5f;
-  r.ndcZ = ndc.z;
+  float ndcX = clamp(cx / cw, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+  float ndcY = clamp(cy / cw, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+  r.uv = vec2(ndcX, ndcY) * 0.5f + 0.5f;
+  r.ndcZ = clamp(cz / cw, -SNELL_FLT_MAX, SNELL_FLT_MAX);
   r.valid = true;
   return r;
 }
 
-SNELL_FN SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface) s, vec2 uv, float viewZ) {
+SNELL_FN_INLINE SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface) s, vec2 uv, float viewZ) {
   if (!s.perspective) {
     return snellUvZToView(s.clipFromView, uv, viewZ);
   }
@@ -1431,7 +1442,7 @@ struct SnellSurfacePoint {
   bool valid;
 };
 
-SNELL_FN SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SNELL_IN(SnellDepthSurface) s) {
+SNELL_FN_INLINE SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 uv, SNELL_IN(SnellDepthSurface) s) {
   SnellSurfacePoint r;
   r.position = vec3(0.0f, 0.0f, 0.0f);
   r.uv = vec2(0.0f, 0.0f);
@@ -1837,7 +1848,7 @@ struct SnellTexRay {
   bool valid;
 };
 
-SNELL_FN SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, float zFarthest, mat4 clipFromView) {
+SNELL_FN_INLINE SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, float zFarthest, mat4 clipFromView) {
   SnellTexRay r;
   r.s = vec3(0.0f, 0.0f, 0.0f);
   r.e = vec3(0.0f, 0.0f, 0.0f);
@@ -1904,7 +1915,7 @@ SNELL_FN vec2 snellTexRayUv(SnellTexRay r, float pz) {
 #ifndef SNELL_INTERSECT_SEARCH_SEGMENT_GLSL
 #define SNELL_INTERSECT_SEARCH_SEGMENT_GLSL
 
-SNELL_FN SnellTexRay snellSearchSegment(vec3 origin, vec3 dir, float zNearest, float zFarthest, mat4 clipFromView) {
+SNELL_FN_INLINE SnellTexRay snellSearchSegment(vec3 origin, vec3 dir, float zNearest, float zFarthest, mat4 clipFromView) {
   SnellTexRay bad;
   bad.s = vec3(0.0f, 0.0f, 0.0f);
   bad.e = vec3(0.0f, 0.0f, 0.0f);

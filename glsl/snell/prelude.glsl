@@ -42,6 +42,19 @@ contract: macros only; no function is defined here.
 #    define SNELL_FN
 #  endif
 #endif
+/* SNELL_FN_INLINE: SNELL_FN for the small functions every strategy calls per
+   step (projection, reconstruction, depth read): C++ asks the compiler to
+   inline them (GCC/Clang always_inline, MSVC __forceinline), which g++'s
+   heuristics otherwise decline for some callers; GLSL/HLSL: SNELL_FN. */
+#ifndef SNELL_FN_INLINE
+#  if defined(SNELL_LANG_CXX) && (defined(__GNUC__) || defined(__clang__))
+#    define SNELL_FN_INLINE inline __attribute__((always_inline))
+#  elif defined(SNELL_LANG_CXX) && defined(_MSC_VER)
+#    define SNELL_FN_INLINE __forceinline
+#  else
+#    define SNELL_FN_INLINE SNELL_FN
+#  endif
+#endif
 
 /* SNELL_PRECISE before a local declaration: its value is computed exactly as
    written (no fused multiply-add), so GPU and C++ agree to the last bit where a
@@ -75,6 +88,15 @@ contract: macros only; no function is defined here.
    one invocation's lod for a whole SIMD batch when lod varies per invocation. */
 #    define SNELL_TEXTURE_SIZE(tex, lod) max(textureSize(tex, 0) >> (lod), ivec2(1, 1))
 #  endif
+#endif
+
+/* SNELL_TEXEL_FETCH_IN_LEVEL(tex, px, lod): SNELL_TEXEL_FETCH for a texel the
+   caller has already placed inside level lod (0 <= lod, px inside the size
+   SNELL_TEXTURE_SIZE gave, which is > 0). GLSL/HLSL: SNELL_TEXEL_FETCH (any
+   hook included); C++: Texture2D::fetchInLevel, without fetch's level and
+   bounds tests. */
+#ifndef SNELL_TEXEL_FETCH_IN_LEVEL
+#  define SNELL_TEXEL_FETCH_IN_LEVEL(tex, px, lod) SNELL_TEXEL_FETCH(tex, px, lod)
 #endif
 
 /* SNELL_IN(T) name: a read-only parameter of struct type T. GLSL and HLSL pass

@@ -19,7 +19,7 @@ if ! diff <(sed -n "/^$(printf '%s' "$marker" | sed 's/[][\/.*^$]/\\&/g')\$/,\$p
 fi
 rm -f /tmp/api_doc_diff.$$
 missing=""
-for name in $(cd "$root/glsl" && perl -0777 -ne 's{/\*.*?\*/}{}gs; s{//[^\n]*}{}g; print "$1\n" while /^SNELL_FN\s+[^{;(]*?\b(snell\w+)\s*\(/mg' $(find snell -name '*.glsl')) \
+for name in $(cd "$root/glsl" && perl -0777 -ne 's{/\*.*?\*/}{}gs; s{//[^\n]*}{}g; print "$1\n" while /^SNELL_FN(?:_INLINE)?\s+[^{;(]*?\b(snell\w+)\s*\(/mg' $(find snell -name '*.glsl')) \
             Image Texture2D TextureCube snellBuildDepthPyramid snellBuildNormalMips computeWymanDn \
             snellTechniqueTable snellFindTechnique snellDescribeTechnique snellDescribeIntersect \
             Context flattenGlslFile flattenGlslSource mapInfoLog Program DepthPyramidPass compareFrames runParityGpu runParityHlsl; do

@@ -185,7 +185,7 @@ bool isHookCase(const std::string& name) { return name.rfind("SNELL_", 0) == 0; 
 // family (the folder under glsl/snell: optics, camera, intersect, shade).
 std::map<std::string, std::string> publicGlslFunctionFamilies() {
   std::map<std::string, std::string> names;
-  const std::regex fn(R"(SNELL_FN\s+\w+\s+(snell\w+)\s*\()");
+  const std::regex fn(R"(SNELL_FN(?:_INLINE)?\s+\w+\s+(snell\w+)\s*\()");
   const fs::path base = kRoot / "glsl" / "snell";
   for (const auto& entry : fs::recursive_directory_iterator(base)) {
     if (entry.path().extension() != ".glsl") continue;

@@ -15,7 +15,7 @@ for family in optics camera intersect shade; do
   for f in $(find "snell/$family" -name '*.glsl' | sort); do
     sigs=$(perl -0777 -ne '
       s{/\*.*?\*/}{}gs; s{//[^\n]*}{}g;
-      while (/^SNELL_FN\s+([^{;]*?\bsnell\w+\s*\((?:[^()]|\([^()]*\))*\))/mg) { my $s = $1; $s =~ s/\s+/ /g; print "$s\n"; }' "$f")
+      while (/^SNELL_FN(?:_INLINE)?\s+([^{;]*?\bsnell\w+\s*\((?:[^()]|\([^()]*\))*\))/mg) { my $s = $1; $s =~ s/\s+/ /g; print "$s\n"; }' "$f")
     [ -n "$sigs" ] || continue
     desc=$(perl -0777 -ne 'if (m{/\*\s*\ndescription:\s*(.*?)\n(?:[a-z]+:|\*/)}s) { my $d = $1; $d =~ s/\s+/ /g; print $d; }' "$f")
     echo

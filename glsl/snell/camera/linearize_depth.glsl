@@ -42,7 +42,7 @@ source: the window depth of glm::perspective / perspectiveZO / infinitePerspecti
 #include "../prelude.glsl"
 #include "conventions.glsl"
 
-SNELL_FN float snellLinearizeDepth(float depthValue, float zNear, float zFar, int convention) {
+SNELL_FN_INLINE float snellLinearizeDepth(float depthValue, float zNear, float zFar, int convention) {
   bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
   if (isnan(depthValue) || !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
     return 0.0f;

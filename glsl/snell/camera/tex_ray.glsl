@@ -65,7 +65,7 @@ struct SnellTexRay {
   bool valid;
 };
 
-SNELL_FN SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, float zFarthest, mat4 clipFromView) {
+SNELL_FN_INLINE SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, float zFarthest, mat4 clipFromView) {
   SnellTexRay r;
   r.s = vec3(0.0f, 0.0f, 0.0f);
   r.e = vec3(0.0f, 0.0f, 0.0f);

@@ -98,9 +98,11 @@ SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, flo
   return s;
 }
 
-/* The surface by value, not SNELL_IN: g++ inlines this read into every loop
-   that way, and measured slower by reference (benchmarks/kernels). */
-SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, SnellDepthSurface s) {
+/* SNELL_FN_INLINE: C++ inlines this read into every strategy and loop (by
+   value, g++ inlined it only in some and left a copy of the surface per call
+   elsewhere; by reference and always inlined it is cheaper in all,
+   benchmarks/kernels). */
+SNELL_FN_INLINE SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, SNELL_IN(SnellDepthSurface) s) {
   SnellSurfaceSample r;
   r.viewZ = 0.0f;
   r.valid = false;
@@ -113,7 +115,8 @@ SNELL_FN SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, Sn
   if (size.x <= 0 || size.y <= 0) {
     return r;
   }
-  float d = SNELL_TEXEL_FETCH(depthTex, SNELL_PIXEL_ON_SCREEN(uv, size), s.lod).x;
+  // size > 0: s.lod is a level; uv in [0,1]^2: the texel is inside it.
+  float d = SNELL_TEXEL_FETCH_IN_LEVEL(depthTex, SNELL_PIXEL_ON_SCREEN(uv, size), s.lod).x;
   if (d == s.emptyDepth) {
     return r;
   }

@@ -35,7 +35,7 @@ source: Oliveira & Brauwers 2007, sec. 3.2.1, eqs. 3-4 (S and E), Figure 5
 #include "../camera/conventions.glsl"
 #include "../camera/tex_ray.glsl"
 
-SNELL_FN SnellTexRay snellSearchSegment(vec3 origin, vec3 dir, float zNearest, float zFarthest, mat4 clipFromView) {
+SNELL_FN_INLINE SnellTexRay snellSearchSegment(vec3 origin, vec3 dir, float zNearest, float zFarthest, mat4 clipFromView) {
   SnellTexRay bad;
   bad.s = vec3(0.0f, 0.0f, 0.0f);
   bad.e = vec3(0.0f, 0.0f, 0.0f);

@@ -31,7 +31,7 @@ source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC); the equations in
 #include "../camera/uv_z_to_view.glsl"
 #include "depth_surface.glsl"
 
-SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, vec3 pView) {
+SNELL_FN_INLINE SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, vec3 pView) {
   if (!s.perspective) {
     return snellViewToUv(s.clipFromView, pView);
   }
@@ -49,20 +49,21 @@ SNELL_FN SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, ve
   float cy = c1.y * pView.y + c2.y * pView.z;
   float cz = c2.z * pView.z + c3.z;
   float cw = -pView.z;
-  if (!SNELL_FINITE(cx) || !SNELL_FINITE(cy) || !SNELL_FINITE(cz) || !SNELL_FINITE(cw) ||
-      !(cw >= SNELL_FLT_MIN)) {
+  // No test of cw = -pView.z for +inf: a non-finite pView.z makes cz non-finite
+  // (c2.z pView.z is +-inf, or NaN when c2.z is 0 or NaN), and NaN fails >=.
+  if (!SNELL_FINITE(cx) || !SNELL_FINITE(cy) || !SNELL_FINITE(cz) || !(cw >= SNELL_FLT_MIN)) {
     return r;
   }
-  vec3 q = vec3(cx, cy, cz) / cw;
-  vec3 ndc = clamp(q, vec3(-SNELL_FLT_MAX, -SNELL_FLT_MAX, -SNELL_FLT_MAX),
-                   vec3(SNELL_FLT_MAX, SNELL_FLT_MAX, SNELL_FLT_MAX));
-  r.uv = vec2(ndc.x, ndc.y) * 0.5f + 0.5f;
-  r.ndcZ = ndc.z;
+  // Per component (the same operations as a vec3 clamp; C++ inlines them).
+  float ndcX = clamp(cx / cw, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+  float ndcY = clamp(cy / cw, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+  r.uv = vec2(ndcX, ndcY) * 0.5f + 0.5f;
+  r.ndcZ = clamp(cz / cw, -SNELL_FLT_MAX, SNELL_FLT_MAX);
   r.valid = true;
   return r;
 }
 
-SNELL_FN SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface) s, vec2 uv, float viewZ) {
+SNELL_FN_INLINE SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface) s, vec2 uv, float viewZ) {
   if (!s.perspective) {
     return snellUvZToView(s.clipFromView, uv, viewZ);
   }

@@ -46,10 +46,8 @@ SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, 
   if (dot(n, n) == 0.0f || !(dirLen2 > 1e-30f) || !(dirLen2 < SNELL_FLT_MAX)) {
     return h;
   }
-  // abs(x) <= FLT_MAX is false for NaN and +-inf.
-  if (!(abs(origin.x) <= SNELL_FLT_MAX) || !(abs(origin.y) <= SNELL_FLT_MAX) ||
-      !(abs(origin.z) <= SNELL_FLT_MAX) || !(abs(planePoint.x) <= SNELL_FLT_MAX) ||
-      !(abs(planePoint.y) <= SNELL_FLT_MAX) || !(abs(planePoint.z) <= SNELL_FLT_MAX)) {
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(planePoint.x) || !SNELL_FINITE(planePoint.y) || !SNELL_FINITE(planePoint.z)) {
     return h;
   }
   float denom = dot(dir, n);
@@ -61,7 +59,7 @@ SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, 
     return h;
   }
   vec3 p = origin + t * dir;
-  if (!(abs(p.x) <= SNELL_FLT_MAX) || !(abs(p.y) <= SNELL_FLT_MAX) || !(abs(p.z) <= SNELL_FLT_MAX)) {
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z)) {
     return h;
   }
   h.t = t;
