@@ -25,11 +25,16 @@ use: GLSL: `#include "snell/prelude.glsl"` after your `#version` line (and, on E
   after `precision highp float; precision highp sampler2D;`).
 options:
   SNELL_FN             qualifier before every function (C++: inline; else empty)
+  SNELL_FN_INLINE      the qualifier of the small helpers every strategy calls per
+                       step (C++: SNELL_FN plus always_inline; else SNELL_FN)
   SNELL_TEX2D          type of a texture parameter (GLSL sampler2D, C++ const
                        snell::Texture2D&, HLSL Texture2D<float4>)
   SNELL_TEXEL_FETCH(tex, px, lod)  vec4 at integer texel px (ivec2) of mip lod;
                        callers clamp px into the level first (GL leaves
                        out-of-range fetches undefined)
+  SNELL_TEXEL_FETCH_IN_LEVEL(tex, px, lod)  the same for a texel the caller has
+                       placed inside an existing level (default: SNELL_TEXEL_FETCH;
+                       C++: Texture2D::fetchInLevel, without fetch's range tests)
   SNELL_SAMPLE_LOD(tex, uv, lod)   vec4 filtered by the texture's own
                        filter state at explicit mip level lod (float)
   SNELL_TEXTURE_SIZE(tex, lod)     ivec2 size of mip level lod (0 <= lod < levels;
@@ -76,11 +81,12 @@ contract: macros only.
 #endif
 /* SNELL_FN_INLINE: SNELL_FN for the small functions every strategy calls per
    step (projection, reconstruction, depth read): C++ asks the compiler to
-   inline them (GCC/Clang always_inline, MSVC __forceinline), which g++'s
-   heuristics otherwise decline for some callers; GLSL/HLSL: SNELL_FN. */
+   inline them (GCC/Clang: SNELL_FN plus always_inline, so a redefined SNELL_FN
+   still applies; MSVC __forceinline), which g++'s heuristics otherwise decline
+   for some callers; GLSL/HLSL: SNELL_FN. */
 #ifndef SNELL_FN_INLINE
 #  if defined(SNELL_LANG_CXX) && (defined(__GNUC__) || defined(__clang__))
-#    define SNELL_FN_INLINE inline __attribute__((always_inline))
+#    define SNELL_FN_INLINE SNELL_FN __attribute__((always_inline))
 #  elif defined(SNELL_LANG_CXX) && defined(_MSC_VER)
 #    define SNELL_FN_INLINE __forceinline
 #  else

@@ -40,7 +40,7 @@
 
 #ifndef SNELL_FN_INLINE
 #  if defined(SNELL_LANG_CXX) && (defined(__GNUC__) || defined(__clang__))
-#    define SNELL_FN_INLINE inline __attribute__((always_inline))
+#    define SNELL_FN_INLINE SNELL_FN __attribute__((always_inline))
 #  elif defined(SNELL_LANG_CXX) && defined(_MSC_VER)
 #    define SNELL_FN_INLINE __forceinline
 #  else

@@ -46,11 +46,16 @@ use: GLSL: `#include "snell/prelude.glsl"` after your `#version` line (and, on E
   after `precision highp float; precision highp sampler2D;`).
 options:
   SNELL_FN             qualifier before every function (C++: inline; else empty)
+  SNELL_FN_INLINE      the qualifier of the small helpers every strategy calls per
+                       step (C++: SNELL_FN plus always_inline; else SNELL_FN)
   SNELL_TEX2D          type of a texture parameter (GLSL sampler2D, C++ const
                        snell::Texture2D&, HLSL Texture2D<float4>)
   SNELL_TEXEL_FETCH(tex, px, lod)  vec4 at integer texel px (ivec2) of mip lod;
                        callers clamp px into the level first (GL leaves
                        out-of-range fetches undefined)
+  SNELL_TEXEL_FETCH_IN_LEVEL(tex, px, lod)  the same for a texel the caller has
+                       placed inside an existing level (default: SNELL_TEXEL_FETCH;
+                       C++: Texture2D::fetchInLevel, without fetch's range tests)
   SNELL_SAMPLE_LOD(tex, uv, lod)   vec4 filtered by the texture's own
                        filter state at explicit mip level lod (float)
   SNELL_TEXTURE_SIZE(tex, lod)     ivec2 size of mip level lod (0 <= lod < levels;
@@ -97,11 +102,12 @@ contract: macros only.
 #endif
 /* SNELL_FN_INLINE: SNELL_FN for the small functions every strategy calls per
    step (projection, reconstruction, depth read): C++ asks the compiler to
-   inline them (GCC/Clang always_inline, MSVC __forceinline), which g++'s
-   heuristics otherwise decline for some callers; GLSL/HLSL: SNELL_FN. */
+   inline them (GCC/Clang: SNELL_FN plus always_inline, so a redefined SNELL_FN
+   still applies; MSVC __forceinline), which g++'s heuristics otherwise decline
+   for some callers; GLSL/HLSL: SNELL_FN. */
 #ifndef SNELL_FN_INLINE
 #  if defined(SNELL_LANG_CXX) && (defined(__GNUC__) || defined(__clang__))
-#    define SNELL_FN_INLINE inline __attribute__((always_inline))
+#    define SNELL_FN_INLINE SNELL_FN __attribute__((always_inline))
 #  elif defined(SNELL_LANG_CXX) && defined(_MSC_VER)
 #    define SNELL_FN_INLINE __forceinline
 #  else
@@ -1901,7 +1907,8 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
 contract (snellSampleSurface):
   - NEAREST: reads the texel containing uv (no filtering: filtering depth
     invents surfaces between foreground and background, Oliveira & Brauwers
-    2007 sec. 3.1) at level lod through SNELL_TEXEL_FETCH, red channel, and
+    2007 sec. 3.1) at level lod through SNELL_TEXEL_FETCH (SNELL_TEXEL_FETCH_IN_LEVEL:
+    the same hook in GLSL and HLSL; in C++ without fetch's range tests), red channel, and
     costs one fetch. BILINEAR: the four texels (clamped to the edge) through
     SNELL_TEXEL_FETCH, counted as one fetch (one textureGather in a shader that
     has it); valid as NEAREST is (the texel containing uv decides);
@@ -2139,7 +2146,8 @@ SNELL_FN_INLINE SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2
   if (size.x <= 0 || size.y <= 0) {
     return r;
   }
-  // size > 0: s.lod is a level; uv in [0,1]^2: the texel is inside it.
+  // size > 0 (C++: s.lod is one of the texture's levels) and uv in [0,1]^2:
+  // the texel is inside the level (SNELL_TEXEL_FETCH_IN_LEVEL's precondition).
   float d = SNELL_TEXEL_FETCH_IN_LEVEL(depthTex, SNELL_PIXEL_ON_SCREEN(uv, size), s.lod).x;
   if (d == s.emptyDepth) {
     return r;

@@ -90,8 +90,6 @@ struct CaseExtras {
     return *this;
   }
 };
-inline CaseExtras extras() { return {}; }
-
 
 // Components of a case type (0: not a case type).
 inline int caseTypeWidth(const std::string& type) {
@@ -209,8 +207,28 @@ inline CaseSpec describeCase(const char* function, const char* caseFile,
   };
   for (const CaseExtras::NamedException& e : extras.exceptions)
     c.exceptions.push_back({mask(e.passThroughInputs, inNames), mask(e.outputs, outNames), e.always, e.reason});
-  c.entrySource = caseEntrySource(c.entry, ins, outs, body);
+  for (const CaseVar& v : outs) {
+    const std::string t = v.type;
+    if (!v.check.exact && (t == "bool" || t == "int" || t == "ivec2"))
+      error += std::string("output ") + v.name + ": a " + t + " is compared exactly, not within a tolerance; ";
+    if (!v.check.exact && !(v.check.abs >= 0.0f && v.check.rel >= 0.0f))
+      error += std::string("output ") + v.name + ": tolerances must be >= 0; ";
+  }
+  for (const std::vector<CaseVar>* vars : {&ins, &outs})
+    for (const CaseVar& v : *vars)
+      if (std::string(v.name).rfind("parity", 0) == 0)
+        error += std::string(v.name) + ": names starting with 'parity' belong to the generated entry; ";
+  for (const CaseExtras::NamedException& e : extras.exceptions)
+    if (!e.always && e.passThroughInputs.empty()) error += "a pass-through exception names no input; ";
   c.layoutError = error;
+  if (!error.empty()) {
+    // Nothing is generated from a wrong layout (it could index past the 16
+    // floats): the case runs as all zeros and the manifest test names the error.
+    c.cpu = [](const ParityIO&) { return ParityIO{}; };
+    c.outputs.clear();
+    return c;
+  }
+  c.entrySource = caseEntrySource(c.entry, ins, outs, body);
   return c;
 }
 

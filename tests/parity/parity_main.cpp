@@ -18,6 +18,7 @@
 #include <set>
 #include <sstream>
 
+#include "parity_case.hpp"
 #include "parity_registry.hpp"
 
 namespace snell_parity {
@@ -77,6 +78,7 @@ class ParityTest : public ::testing::Test {
   // hlsl: run the case file through the HLSL bridge instead of as GLSL.
   ParityTest(const CaseSpec* spec, Backend backend, bool hlsl = false) : spec_(spec), backend_(backend), hlsl_(hlsl) {}
   void TestBody() override {
+    ASSERT_TRUE(spec_->layoutError.empty()) << spec_->function << "'s description: " << spec_->layoutError;
     if (spec_->setup) spec_->setup();
     const std::vector<ParityIO> inputs = spec_->inputs();
     ASSERT_GE(inputs.size(), 1000u) << "a parity case needs many inputs";
@@ -253,6 +255,40 @@ TEST(ParityManifest, EveryPublicGlslFunctionHasAnHlslEntryAndRun) {
   }
   for (const CaseSpec& c : registry())
     EXPECT_TRUE(hlslRegistered().count(c.function)) << "parity case " << c.function << " has no HLSL run";
+}
+
+// The layout check itself: each wrong description is reported (and nothing is
+// generated from it), a right one is not.
+TEST(ParityManifest, WrongLayoutsAreReportedNotGenerated) {
+  using snell_parity::CaseVar;
+  using snell_parity::checks::exact;
+  using snell_parity::checks::within;
+  auto zeros = [](const ParityIO&) { return ParityIO{}; };
+  auto none = [] { return std::vector<ParityIO>(); };
+  auto layout = [&](std::vector<CaseVar> ins, std::vector<CaseVar> outs, snell_parity::CaseExtras extras = {}) {
+    return snell_parity::describeCase("snellTest", "optics.glsl", none, +zeros, std::move(ins), std::move(outs), "",
+                                      std::move(extras));
+  };
+  const CaseSpec good = layout({{"vec3", "v", 0}}, {{"vec3", "n", 13, within(1e-6f, 0.0f)}});
+  EXPECT_TRUE(good.layoutError.empty()) << good.layoutError;
+  EXPECT_EQ(good.outputs.size(), 3u);
+  EXPECT_NE(good.entrySource.find("vec3 v = vec3(parityA.x, parityA.y, parityA.z);"), std::string::npos) << good.entrySource;
+  const std::vector<CaseSpec> bad = {
+      layout({{"vec3", "v", 0}}, {{"vec3", "n", 14, exact}}),                    // past float 15
+      layout({{"vec3", "v", -1}}, {{"float", "n", 0, exact}}),                   // before float 0
+      layout({{"vec3", "v", 0}, {"float", "w", 2}}, {{"float", "n", 0, exact}}), // two inputs on float 2
+      layout({{"mat3", "m", 0}}, {{"float", "n", 0, exact}}),                    // not a case type
+      layout({{"float", "x", 0}}, {{"bool", "valid", 0, within(1e-5f, 1e-5f)}}), // a flag within a tolerance
+      layout({{"float", "x", 0}}, {{"float", "n", 0, within(-1.0f, 0.0f)}}),     // a negative tolerance
+      layout({{"float", "parityA", 0}}, {{"float", "n", 0, exact}}),             // a generated name
+      layout({{"float", "x", 0}}, {{"float", "n", 0, exact}},
+             snell_parity::CaseExtras().passThrough({"y"}, {"n"}, "names no input of the case")),
+  };
+  for (std::size_t i = 0; i < bad.size(); ++i) {
+    EXPECT_FALSE(bad[i].layoutError.empty()) << "bad description " << i;
+    EXPECT_TRUE(bad[i].entrySource.empty()) << "bad description " << i;
+    EXPECT_TRUE(bad[i].outputs.empty()) << "bad description " << i;
+  }
 }
 
 // Every description lays its inputs and outputs out on distinct floats of

@@ -223,13 +223,12 @@ namespace parity_technique {
 
 // The options cases' 16 floats (TECH_OPTIONS_OUT in cases/technique.glsl): per slot the strategy, the counts
 // (techPackCounts) and the flags, then tirPolicy, ior, dispersion, reflection and four sums (techOptionSums).
-// All exact but `reflection`, whose check is given.
-#define TECH_OPTIONS_OUTPUTS(REFLECTION)                                                                           \
+// All exact.
+#define TECH_OPTIONS_EXACT                                                                                         \
   (int, backStrategy, 0, exact)(vec2, backCounts, 1, exact)(float, backFlags, 3, exact)                            \
   (int, exitStrategy, 4, exact)(vec2, exitCounts, 5, exact)(float, exitFlags, 7, exact)                            \
-  (int, tirPolicy, 8, exact)(float, ior, 9, exact)(int, dispersion, 10, exact)(bool, reflection, 11, REFLECTION)   \
+  (int, tirPolicy, 8, exact)(float, ior, 9, exact)(int, dispersion, 10, exact)(bool, reflection, 11, exact)        \
   (vec4, sums, 12, exact)
-#define TECH_OPTIONS_EXACT TECH_OPTIONS_OUTPUTS(exact)
 
 // The ray cases' inputs after the ray (floats 0-2, 4-6): the technique (techPreset), its steps, the
 // projection's entries, the IOR, d_N, the mode bits (techOptions) and the roughness.
@@ -342,10 +341,11 @@ SNELL_PARITY_CASE(snellPresetDir, [] { return smallIntInputs(813, 0, 1); },
                   SnellTechniqueOptions o = snellPresetDir();
                   TECH_OPTIONS_OUT(o))
 
-// `reflection` (float 11) within 1e-5 and the other floats exact, as this case has compared them so far.
+// Every float exact (the old mask compared the `reflection` flag, float 11, within 1e-5: a slip, a flag
+// is 0 or 1).
 SNELL_PARITY_CASE(snellPresetDirBounds, boundsInputs,
                   (float, zNearest, 0)(float, zFarthest, 1),
-                  TECH_OPTIONS_OUTPUTS(within(1e-5f, 1e-5f)),
+                  TECH_OPTIONS_EXACT,
                   techExtras().passThrough({"zNearest", "zFarthest"}, {"sums.x", "sums.y"},
                                            "a preset constructor: stores the bounds it is given (outputs 12-13)"),
                   SnellTechniqueOptions o = snellPresetDirBounds(zNearest, zFarthest);

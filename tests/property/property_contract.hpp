@@ -33,7 +33,8 @@ inline float& comp(ParityIO& io, int k) { return io.v[k / 4][k % 4]; }
 
 // Violations found by the first run (issue 7) and not yet triaged: each is
 // either a documented pass-through (a constructor or colour used "as given", to
-// move to exceptions() with its contract sentence) or a bug to fix in
+// describe in the case with CaseExtras::passThrough or unchecked and its
+// contract sentence) or a bug to fix in
 // glsl/snell. Listed here so the suites stay green while they are worked on;
 // the counts are still printed, and any function NOT listed fails on its
 // first non-finite output, on the CPU and on the GPU alike. Remove an entry

@@ -37,7 +37,8 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
 contract (snellSampleSurface):
   - NEAREST: reads the texel containing uv (no filtering: filtering depth
     invents surfaces between foreground and background, Oliveira & Brauwers
-    2007 sec. 3.1) at level lod through SNELL_TEXEL_FETCH, red channel, and
+    2007 sec. 3.1) at level lod through SNELL_TEXEL_FETCH (SNELL_TEXEL_FETCH_IN_LEVEL:
+    the same hook in GLSL and HLSL; in C++ without fetch's range tests), red channel, and
     costs one fetch. BILINEAR: the four texels (clamped to the edge) through
     SNELL_TEXEL_FETCH, counted as one fetch (one textureGather in a shader that
     has it); valid as NEAREST is (the texel containing uv decides);
@@ -115,7 +116,8 @@ SNELL_FN_INLINE SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2
   if (size.x <= 0 || size.y <= 0) {
     return r;
   }
-  // size > 0: s.lod is a level; uv in [0,1]^2: the texel is inside it.
+  // size > 0 (C++: s.lod is one of the texture's levels) and uv in [0,1]^2:
+  // the texel is inside the level (SNELL_TEXEL_FETCH_IN_LEVEL's precondition).
   float d = SNELL_TEXEL_FETCH_IN_LEVEL(depthTex, SNELL_PIXEL_ON_SCREEN(uv, size), s.lod).x;
   if (d == s.emptyDepth) {
     return r;
