@@ -10,6 +10,7 @@
    (0,B,0,0) (0,0,C,-1) (0,0,D,0)), so both builds use the same floats (tan()
    differs between drivers). */
 #include "snell/intersect.glsl"
+#include "hit_outputs.glsl"
 
 #if defined(SNELL_LANG_GLSL)
 uniform sampler2D planeDepthA;    /* NEAREST, one level */
@@ -47,12 +48,5 @@ SNELL_FN SnellDepthSurface planeParityShapedSurface(vec3 b, vec4 c) {
   return snellDepthSurface(m, 0.5f, 40.0f, SNELL_DEPTH_GL, 0.0f);
 }
 
-/* Sets the hit outputs (PLANE_HIT_OUT in plane_cases.cpp) from a SnellHit; the
-   texel is the hit uv's level-0 texel. */
-#define PLANE_PARITY_SET_HIT(hit)                                  \
-  SnellHit planeParityH = hit;                                     \
-  uv = planeParityH.uv;                                            \
-  valid = planeParityH.valid;                                      \
-  fetches = planeParityH.fetches;                                  \
-  position = planeParityH.position;                                \
-  texel = snellUvToPixel(planeParityH.uv, ivec2(160, 120))
+/* Sets the hit outputs (PLANE_HIT_OUT in plane_cases.cpp) from a SnellHit. */
+#define PLANE_PARITY_SET_HIT(hit) CASE_SET_HIT(hit, ivec2(160, 120))

@@ -8,6 +8,7 @@
    projection travels as its four non-zero entries (x scale, y scale, z row),
    so the matrix is bit-identical on both sides (no tan on the GPU). */
 #include "snell/intersect.glsl"
+#include "hit_outputs.glsl"
 
 #define SEARCH_PARITY_NEAR 0.5f
 #define SEARCH_PARITY_FAR 40.0f
@@ -31,12 +32,5 @@ SNELL_FN SnellDepthSurface searchParitySurface(bool sceneB, vec4 d) {
                            sceneB ? 1.0f : 0.0f);
 }
 
-/* Sets the hit outputs (SEARCH_HIT_OUT in search_cases.cpp) from a SnellHit; the
-   texel is the hit uv's level-0 texel. */
-#define SEARCH_PARITY_SET_HIT(hit)                                 \
-  SnellHit searchParityH = hit;                                    \
-  uv = searchParityH.uv;                                           \
-  valid = searchParityH.valid;                                     \
-  fetches = searchParityH.fetches;                                 \
-  position = searchParityH.position;                               \
-  texel = snellUvToPixel(searchParityH.uv, ivec2(256, 256))
+/* Sets the hit outputs (SEARCH_HIT_OUT in search_cases.cpp) from a SnellHit. */
+#define SEARCH_PARITY_SET_HIT(hit) CASE_SET_HIT(hit, ivec2(256, 256))
