@@ -36,7 +36,11 @@
 // `within(abs, rel)` (|gpu - cpu| <= abs + rel |cpu|; NaN and inf matched
 // exactly). The body may not contain preprocessor lines (it is one macro
 // argument); helpers, textures and macros shared by a family's cases live in
-// its cases/<family>.glsl.
+// its cases/<family>.glsl (a macro defined only in the .cpp compiles in C++
+// and fails on the GPU, which sees the body unexpanded, on one line). Names
+// starting with `parity` belong to the generated entry; commas in `extras`
+// must sit inside parentheses. describeCase checks the layout
+// (ParityManifest.EveryCaseDescriptionIsWellFormed).
 #pragma once
 
 #include "parity_registry.hpp"
