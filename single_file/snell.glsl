@@ -83,15 +83,13 @@ contract: macros only.
 #  endif
 #endif
 /* SNELL_FN_INLINE: SNELL_FN for the small functions every strategy calls per
-   step (projection, reconstruction, depth read): C++ asks the compiler to
-   inline them (GCC/Clang: SNELL_FN plus always_inline, so a redefined SNELL_FN
-   still applies; MSVC __forceinline), which g++'s heuristics otherwise decline
-   for some callers; GLSL/HLSL: SNELL_FN. */
+   step (projection, reconstruction, depth read): C++ adds the bridge's
+   always-inline attribute (SNELL_CXX_ALWAYS_INLINE, GCC/Clang), since g++'s
+   heuristics otherwise decline to inline them for some callers; a redefined
+   SNELL_FN still applies. GLSL/HLSL: SNELL_FN. */
 #ifndef SNELL_FN_INLINE
-#  if defined(SNELL_LANG_CXX) && (defined(__GNUC__) || defined(__clang__))
-#    define SNELL_FN_INLINE SNELL_FN __attribute__((always_inline))
-#  elif defined(SNELL_LANG_CXX) && defined(_MSC_VER)
-#    define SNELL_FN_INLINE __forceinline
+#  if defined(SNELL_LANG_CXX)
+#    define SNELL_FN_INLINE SNELL_FN SNELL_CXX_ALWAYS_INLINE
 #  else
 #    define SNELL_FN_INLINE SNELL_FN
 #  endif

@@ -39,10 +39,8 @@
 #endif
 
 #ifndef SNELL_FN_INLINE
-#  if defined(SNELL_LANG_CXX) && (defined(__GNUC__) || defined(__clang__))
-#    define SNELL_FN_INLINE SNELL_FN __attribute__((always_inline))
-#  elif defined(SNELL_LANG_CXX) && defined(_MSC_VER)
-#    define SNELL_FN_INLINE __forceinline
+#  if defined(SNELL_LANG_CXX)
+#    define SNELL_FN_INLINE SNELL_FN SNELL_CXX_ALWAYS_INLINE
 #  else
 #    define SNELL_FN_INLINE SNELL_FN
 #  endif

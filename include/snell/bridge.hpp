@@ -17,15 +17,14 @@
 
 #define SNELL_CXX_BRIDGE 1
 
-// Texture2D::size and fetchInLevel, which every depth read calls, are always
-// inlined (the DDA's loop otherwise calls size out of line: 10 % more
-// instructions per ray, benchmarks/kernels).
+// The always-inline attribute (GCC, Clang; empty elsewhere): on Texture2D::size
+// and fetchInLevel, which every depth read calls (the DDA's loop otherwise calls
+// size out of line: 10 % more instructions per ray, benchmarks/kernels), and in
+// SNELL_FN_INLINE (glsl/snell/prelude.glsl).
 #if defined(__GNUC__) || defined(__clang__)
-#  define SNELL_CXX_ALWAYS_INLINE inline __attribute__((always_inline))
-#elif defined(_MSC_VER)
-#  define SNELL_CXX_ALWAYS_INLINE __forceinline
+#  define SNELL_CXX_ALWAYS_INLINE __attribute__((always_inline))
 #else
-#  define SNELL_CXX_ALWAYS_INLINE inline
+#  define SNELL_CXX_ALWAYS_INLINE
 #endif
 
 namespace snell {

@@ -193,7 +193,6 @@ inline CaseSpec describeCase(const char* function, const char* caseFile,
   std::string inNames[16], outNames[16];
   place(ins, inNames, "input");
   place(outs, outNames, "output");
-  for (int k = 0; k < 16; ++k) c.inputNames[k] = inNames[k];
   for (const CaseVar& v : outs)
     for (int k = v.first; k < v.first + caseTypeWidth(v.type) && k < 16; ++k)
       if (k >= 0) c.outputs.push_back({k, outNames[k], v.check.exact, v.check.abs, v.check.rel});
@@ -241,15 +240,15 @@ template <class T>
 T unpack(const ParityIO& io, int k);
 template <>
 inline float unpack<float>(const ParityIO& io, int k) {
-  return io.v[k / 4][k % 4];
+  return comp(io, k);
 }
 template <>
 inline int unpack<int>(const ParityIO& io, int k) {
-  return int(io.v[k / 4][k % 4]);
+  return int(comp(io, k));
 }
 template <>
 inline bool unpack<bool>(const ParityIO& io, int k) {
-  return io.v[k / 4][k % 4] > 0.5f;
+  return comp(io, k) > 0.5f;
 }
 template <>
 inline glm::vec2 unpack<glm::vec2>(const ParityIO& io, int k) {
@@ -277,7 +276,7 @@ inline bool zero<bool>() {
   return false;
 }
 
-inline void pack(ParityIO& io, int k, float x) { io.v[k / 4][k % 4] = x; }
+inline void pack(ParityIO& io, int k, float x) { comp(io, k) = x; }
 inline void pack(ParityIO& io, int k, int x) { pack(io, k, float(x)); }
 inline void pack(ParityIO& io, int k, bool x) { pack(io, k, x ? 1.0f : 0.0f); }
 inline void pack(ParityIO& io, int k, const glm::vec2& x) {

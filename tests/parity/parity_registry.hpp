@@ -53,7 +53,6 @@ struct CaseSpec {
   std::function<std::vector<ParityIO>()> inputs;
   std::function<ParityIO(const ParityIO&)> cpu;  // the C++ build of the same entry
   std::vector<snell::gpu::ParityOutput> outputs;  // the described output floats
-  std::string inputNames[16];                     // the input float names ("" unused)
   // Textures the case samples: GLSL uniforms bound on the GPU, the same
   // snell::Texture2D objects read by the C++ build. setup() fills them first.
   std::vector<snell::gpu::ParityTexture> textures = {};
@@ -69,6 +68,10 @@ inline std::vector<CaseSpec>& registry() {
   return cases;
 }
 
+// Float k of a case's 16 inputs or outputs.
+inline float comp(const ParityIO& io, int k) { return io.v[k / 4][k % 4]; }
+inline float& comp(ParityIO& io, int k) { return io.v[k / 4][k % 4]; }
+
 // FNV-1a over every bit of every float of `ios`: the parity runs print it for the
 // inputs, the C++ results and the GPU results, so a change meant to alter no
 // result (a case rewritten, a runner refactored) is proved not to by diffing
@@ -77,7 +80,7 @@ inline std::uint64_t ioDigest(const std::vector<ParityIO>& ios) {
   std::uint64_t h = 1469598103934665603ull;
   for (const ParityIO& io : ios)
     for (int k = 0; k < 16; ++k) {
-      const float x = io.v[k / 4][k % 4];
+      const float x = comp(io, k);
       std::uint32_t bits;
       std::memcpy(&bits, &x, sizeof bits);
       for (int b = 0; b < 4; ++b) h = (h ^ ((bits >> (8 * b)) & 0xFFu)) * 1099511628211ull;

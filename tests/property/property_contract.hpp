@@ -28,9 +28,6 @@
 
 namespace snell_parity::property {
 
-inline float comp(const ParityIO& io, int k) { return io.v[k / 4][k % 4]; }
-inline float& comp(ParityIO& io, int k) { return io.v[k / 4][k % 4]; }
-
 // Violations found by the first run (issue 7) and not yet triaged: each is
 // either a documented pass-through (a constructor or colour used "as given", to
 // describe in the case with CaseExtras::passThrough or unchecked and its
