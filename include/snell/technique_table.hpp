@@ -60,6 +60,27 @@ inline const SnellTechniqueInfo* snellFindTechnique(const std::string& name) {
   return nullptr;
 }
 
+// The SNELL_INTERSECT_STRATEGIES bits (bit k = strategy k) of the slots these
+// options call (shade/two_interface*.glsl): the back slot unless backMethod is
+// SNELL_BACK_WYMAN, the exit slot with exitMode SNELL_EXIT_SCENE, the reflect
+// slot with reflection on and reflectionMode SNELL_REFLECT_SCENE. A strategy
+// outside 0..SNELL_STRATEGY_DDA adds nothing (it misses either way). A host
+// that compiles one program per technique defines the mask before including
+// the shaders, so the program holds only those strategies: the dispatcher,
+// inlined with every strategy into each slot, is most of a technique shader's
+// code. The mask follows the options' values: a program whose options come
+// from uniforms must be built for every value they can take.
+inline int snellStrategiesUsed(const SnellTechniqueOptions& o) {
+  int mask = 0;
+  const auto add = [&mask](int strategy) {
+    if (strategy >= 0 && strategy <= SNELL_STRATEGY_DDA) mask |= 1 << strategy;
+  };
+  if (o.backMethod != SNELL_BACK_WYMAN) add(o.back.strategy);
+  if (o.exitMode == SNELL_EXIT_SCENE) add(o.exit.strategy);
+  if (o.reflection && o.reflectionMode == SNELL_REFLECT_SCENE) add(o.reflect.strategy);
+  return mask;
+}
+
 // One slot's strategy and parameters in words, from the options themselves
 // (so no description restates a default): "conservative binary search, 5 steps, range from the pyramid".
 inline std::string snellDescribeIntersect(const SnellIntersectOptions& o) {

@@ -101,3 +101,34 @@ TEST(TechniqueTable, DescriptionsComeFromTheOptions) {
             "Wyman 2005, distance interpolation; back faces: distance interpolation between d_V and the per-vertex "
             "d_N; exit: single sample");
 }
+
+TEST(TechniqueTable, StrategiesUsedNamesTheSlotsTheOptionsCall) {
+  SnellTechniqueOptions o = snellTechniqueOptions();
+  o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
+  o.exit = snellIntersectOptions(SNELL_STRATEGY_DDA);
+  o.reflect = snellIntersectOptions(SNELL_STRATEGY_SINGLE);
+  // The defaults: exit to the environment, reflection of the environment: the back slot alone.
+  EXPECT_EQ(snellStrategiesUsed(o), 1 << SNELL_STRATEGY_CBS);
+  o.exitMode = SNELL_EXIT_SCENE;
+  EXPECT_EQ(snellStrategiesUsed(o), (1 << SNELL_STRATEGY_CBS) | (1 << SNELL_STRATEGY_DDA));
+  o.reflectionMode = SNELL_REFLECT_SCENE;
+  EXPECT_EQ(snellStrategiesUsed(o), (1 << SNELL_STRATEGY_CBS) | (1 << SNELL_STRATEGY_DDA) | 1);
+  o.reflection = false;
+  EXPECT_EQ(snellStrategiesUsed(o), (1 << SNELL_STRATEGY_CBS) | (1 << SNELL_STRATEGY_DDA));
+  o.backMethod = SNELL_BACK_WYMAN;  // Wyman's distance replaces the back slot
+  EXPECT_EQ(snellStrategiesUsed(o), 1 << SNELL_STRATEGY_DDA);
+  // No strategy (an id outside the table) and ids past the last add nothing: no shift by a negative count.
+  o.backMethod = SNELL_BACK_INTERSECT;
+  o.reflection = true;
+  o.back = snellIntersectOptions(-1);
+  o.exit = snellIntersectOptions(8);
+  o.reflect = snellIntersectOptions(1 << 30);
+  EXPECT_EQ(snellStrategiesUsed(o), 0);
+  // Every preset with both scene slots on: the strategies kExpected names (ISR: the exit slot only).
+  for (const SnellTechniqueInfo& t : snellTechniqueTable()) {
+    SnellTechniqueOptions p = snellTechniquePreset(t.id);
+    p.exitMode = SNELL_EXIT_SCENE;
+    const Expected& e = kExpected[t.id];
+    EXPECT_EQ(snellStrategiesUsed(p), (e.backMethod == SNELL_BACK_WYMAN ? 0 : 1 << e.back) | (1 << e.exit)) << t.name;
+  }
+}
