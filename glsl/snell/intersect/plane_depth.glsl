@@ -189,40 +189,49 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
   }
   vec3 dirN = dir / sqrt(len2);
   int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
-  int fetches = 0;
-  vec3 p = origin;
-  vec2 planeUv = w.uv;
-  for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
+  // Plane 0 (at W, the far start, the facing fallback), then the refinements:
+  // the loop holds only what every refinement does (as in plane_normal.glsl).
+  SnellDepthPlane pl = snellDepthPlaneAt(origin, dirN, depthMips, s, maxLod);
+  int fetches = pl.fetches;
+  // An unbuilt plane has a zero normal, so the ray misses it; its facing plane exists
+  // only when B was read (position 0, the camera, gives no plane either).
+  SnellRayPlaneHit ph = snellRayPlane(origin, dir, pl.position, pl.normal);
+  if (farStart && dot(pl.position, pl.position) > 0.0f) {
+    SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, depthMips, s);
+    fetches += f.fetches;
+    if (f.valid && (!ph.valid || f.t < ph.t)) {
+      ph.t = f.t;
+      ph.position = f.position;
+      ph.valid = true;
+    }
+  }
+#if SNELL_PLANE_FACING_FALLBACK
+  if (!ph.valid) {
+    ph = snellRayPlane(origin, dir, pl.position, pl.position);
+  }
+#endif
+  if (!ph.valid) {
+    return snellHitMiss(fetches);
+  }
+  vec3 p = ph.position;
+  vec2 planeUv = pl.uv;
+  for (int k = 1; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
     if (k > n) {
       break;
     }
-    SnellDepthPlane pl = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
-    fetches += pl.fetches;
-    // An unbuilt plane has a zero normal, so the ray misses it; its facing plane exists
-    // only when B was read (position 0, the camera, gives no plane either).
-    SnellRayPlaneHit ph = snellRayPlane(origin, dir, pl.position, pl.normal);
-    if (k == 0 && farStart && dot(pl.position, pl.position) > 0.0f) {
-      SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, depthMips, s);
-      fetches += f.fetches;
-      if (f.valid && (!ph.valid || f.t < ph.t)) {
-        ph.t = f.t;
-        ph.position = f.position;
-        ph.valid = true;
-      }
-    }
+    SnellDepthPlane plk = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
+    fetches += plk.fetches;
+    SnellRayPlaneHit hk = snellRayPlane(origin, dir, plk.position, plk.normal);
 #if SNELL_PLANE_FACING_FALLBACK
-    if (!ph.valid) {
-      ph = snellRayPlane(origin, dir, pl.position, pl.position);
+    if (!hk.valid) {
+      hk = snellRayPlane(origin, dir, plk.position, plk.position);
     }
 #endif
-    if (!ph.valid) {
-      if (k == 0) {
-        return snellHitMiss(fetches);
-      }
+    if (!hk.valid) {
       break;  // keep P_(k-1) on plane k-1
     }
-    p = ph.position;
-    planeUv = pl.uv;
+    p = hk.position;
+    planeUv = plk.uv;
   }
   return snellPlaneHit(p, planeUv, depthMips, s, fetches);
 }

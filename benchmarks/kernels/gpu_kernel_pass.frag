@@ -1,0 +1,39 @@
+#version 450 core
+#extension GL_GOOGLE_include_directive : require
+// One ray per pixel (ray (y W + x) mod the ray count), VARIANT (set by
+// gpu_kernel_study.cpp before compiling): 0 snell single sample, 1 snell
+// normal plane (1 it., the poster's: no far start), 2 the same with the far
+// start (snell's default, the lab's), 3 the kernel single sample, 4 the kernel
+// normal plane (1 it.).
+#include "snell/snell.glsl"
+#include "gpu_kernels.glsl"
+
+layout(binding = 2) uniform sampler2D kPyramid;
+layout(binding = 3) uniform sampler2D kRayOrigin;  // xyz, one ray per texel, row-major
+layout(binding = 4) uniform sampler2D kRayDir;
+uniform mat4 kClipFromView;
+uniform int kRayCount;
+uniform vec2 kClipRange;  // zNear, zFar
+
+layout(location = 0) out vec4 outPosition;  // xyz position
+layout(location = 1) out vec4 outHit;       // uv, valid, fetches
+
+void main() {
+  int width = textureSize(kRayOrigin, 0).x;
+  int i = (int(gl_FragCoord.y) * 512 + int(gl_FragCoord.x)) % kRayCount;
+  ivec2 at = ivec2(i % width, i / width);
+  vec3 o = texelFetch(kRayOrigin, at, 0).xyz;
+  vec3 d = texelFetch(kRayDir, at, 0).xyz;
+  SnellDepthSurface s = snellDepthSurface(kClipFromView, kClipRange.x, kClipRange.y, SNELL_DEPTH_GL, 0.0);
+#if VARIANT == 0
+  SnellHit h = snellIntersectSingleSample(o, d, kDepth, s);
+#elif VARIANT == 1 || VARIANT == 2
+  SnellHit h = snellIntersectPlaneNormal(o, d, kDepth, kNormal, kPyramid, s, 0.0, 1, VARIANT == 2);
+#elif VARIANT == 3
+  KHit h = kSingleSample(o, d);
+#else
+  KHit h = kPlaneNormal(o, d, 1);
+#endif
+  outPosition = vec4(h.position, 0.0);
+  outHit = vec4(h.uv, h.valid ? 1.0 : 0.0, float(h.fetches));
+}

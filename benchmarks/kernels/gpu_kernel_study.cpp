@@ -1,0 +1,198 @@
+// The kernel study on the GPU path (issue 14: "the same in the shaders ...
+// measured as llvmpipe time ratios"): snell's GLSL single sample and normal
+// plane (1 it.) against the hand-written GLSL kernels of gpu_kernels.glsl, on
+// the kernel study's rays and buffers (kernel_scene.hpp), one ray per pixel of
+// a 512x512 pass (the 20000 rays repeated), on Mesa (OSMesa or EGL).
+// Prints how many rays each kernel answers with snell's bits, the median pass
+// time of every variant (all interleaved in one run, glFinish + steady clock)
+// and the ratios. Built and run by gpu_kernel_table.sh; under callgrind the
+// per-variant functions drawVariant<V> give instruction counts of the JIT code.
+#include <snell/gpu/context.hpp>
+#include <snell/gpu/include_flattener.hpp>
+#include <snell/gpu/program.hpp>
+#include <snell/gpu/resources.hpp>
+
+#include "kernel_scene.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace snell::gpu;
+
+constexpr int kSize = 512;
+constexpr int kVariants = 5;
+const char* const kNames[kVariants] = {"snell single sample", "snell normal plane 1 it.",
+                                       "snell normal plane 1 it. + far start", "kernel single sample",
+                                       "kernel normal plane 1 it."};
+
+struct Study {
+  Context ctx;
+  const GlApi& gl;
+  kscene::Scene sc;
+  Texture depth, normal, pyramid, origins, dirs;
+  Framebuffer fb;
+  VertexArray vao;
+  std::vector<Program> programs;
+
+  static snell::Texture2D rayTexture(const std::vector<kscene::Ray>& rays, bool origin) {
+    const int w = 200, h = (static_cast<int>(rays.size()) + w - 1) / w;
+    snell::Image img(w, h, glm::vec4(0.0f));
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      const float* v = origin ? rays[i].o : rays[i].d;
+      img.at(static_cast<int>(i) % w, static_cast<int>(i) / w) = glm::vec4(v[0], v[1], v[2], 0.0f);
+    }
+    return snell::Texture2D(std::move(img));
+  }
+  static kscene::Scene& built(kscene::Scene& s) {
+    kscene::build(s, true, false);
+    return s;
+  }
+
+  explicit Study(Backend backend)
+      : ctx(backend),
+        gl((ctx.makeCurrent(), ctx.gl())),
+        depth(gl, built(sc).depth),
+        normal(gl, sc.normal),
+        pyramid(gl, sc.pyramid),
+        origins(gl, rayTexture(sc.rays, true)),
+        dirs(gl, rayTexture(sc.rays, false)),
+        fb(gl, kSize, kSize, 2, false),
+        vao(gl) {
+    const std::vector<std::filesystem::path> paths = {SNELL_GLSL_DIR, SNELL_KERNELS_DIR};
+    const FlatSource vs = flattenGlslSource(R"(#version 450 core
+void main() {
+  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
+  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+}
+)", "fullscreen.vert", {});
+    std::string pass;
+    {
+      const std::filesystem::path f = std::filesystem::path(SNELL_KERNELS_DIR) / "gpu_kernel_pass.frag";
+      std::FILE* in = std::fopen(f.c_str(), "rb");
+      if (!in) throw Error("cannot read " + f.string());
+      char buf[4096];
+      for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, in)) > 0;) pass.append(buf, n);
+      std::fclose(in);
+    }
+    const std::size_t afterExtension = pass.find('\n', pass.find("#extension")) + 1;
+    for (int v = 0; v < kVariants; ++v) {
+      const std::string src = pass.substr(0, afterExtension) + "#define VARIANT " + std::to_string(v) + "\n" +
+                              pass.substr(afterExtension);
+      programs.push_back(Program::graphics(gl, vs, flattenGlslSource(src, "gpu_kernel_pass.frag", paths)));
+      const GLuint id = programs.back().id();
+      const kern::Camera& k = sc.cam;
+      auto loc = [&](const char* name) { return gl.GetUniformLocation(id, name); };
+      const glm::vec4 cam(k.a, k.b, k.det, k.zNear);
+      gl.ProgramUniform4fv(id, loc("kCam"), 1, &cam[0]);
+      gl.ProgramUniform1f(id, loc("kNearOverFar"), k.nearOverFar);
+      gl.ProgramUniformMatrix4fv(id, loc("kClipFromView"), 1, GL_FALSE, &sc.P[0][0]);
+      const glm::vec2 range(sc.surface.zNear, sc.surface.zFar);
+      gl.ProgramUniform2fv(id, loc("kClipRange"), 1, &range[0]);
+      gl.ProgramUniform1i(id, loc("kRayCount"), static_cast<int>(sc.rays.size()));
+      checkGl(gl, "uniforms of variant " + std::to_string(v));
+    }
+    depth.bind(0);
+    normal.bind(1);
+    pyramid.bind(2);
+    origins.bind(3);
+    dirs.bind(4);
+  }
+
+  void draw(int v) {
+    fb.bind();
+    gl.Viewport(0, 0, kSize, kSize);
+    vao.bind();
+    programs[static_cast<std::size_t>(v)].use();
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    gl.Finish();
+  }
+};
+
+// One function per variant, so callgrind can attribute a pass's instructions.
+template <int V>
+__attribute__((noinline)) double drawVariant(Study& s) {
+  const auto t0 = std::chrono::steady_clock::now();
+  s.draw(V);
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+double drawTimed(Study& s, int v) {
+  switch (v) {
+    case 0: return drawVariant<0>(s);
+    case 1: return drawVariant<1>(s);
+    case 2: return drawVariant<2>(s);
+    case 3: return drawVariant<3>(s);
+    default: return drawVariant<4>(s);
+  }
+}
+
+struct Readback {
+  snell::Image position, hit;
+};
+
+// How many of the first `rays` pixels (one per ray) hold the same bits in both.
+int identical(const Readback& a, const Readback& b, int rays, float& maxPositionDiff) {
+  int same = 0;
+  maxPositionDiff = 0.0f;
+  for (int i = 0; i < rays; ++i) {
+    const int x = i % kSize, y = i / kSize;
+    const glm::vec4 pa = a.position.at(x, y), pb = b.position.at(x, y), ha = a.hit.at(x, y), hb = b.hit.at(x, y);
+    if (std::memcmp(&pa, &pb, sizeof pa) == 0 && std::memcmp(&ha, &hb, sizeof ha) == 0) ++same;
+    for (int c = 0; c < 3; ++c) maxPositionDiff = std::max(maxPositionDiff, std::abs(pa[c] - pb[c]));
+  }
+  return same;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int rounds = argc > 1 ? std::max(1, std::atoi(argv[1])) : 21;
+  const std::string backendName = argc > 2 ? argv[2] : "auto";
+  try {
+    Study s(parseBackend(backendName));
+    std::printf("%s, %s, OpenGL %s; %dx%d pass, %zu rays repeated\n", backendName.c_str(), s.ctx.renderer().c_str(),
+                s.ctx.version().c_str(), kSize, kSize, s.sc.rays.size());
+    std::vector<Readback> out;
+    for (int v = 0; v < kVariants; ++v) {  // also JIT-compiles each program: not timed
+      s.draw(v);
+      out.push_back({s.fb.readColor(0), s.fb.readColor(1)});
+    }
+    const int rays = static_cast<int>(s.sc.rays.size());
+    for (const auto& [kernel, snellV] : {std::pair<int, int>{3, 0}, {4, 1}}) {
+      float diff = 0.0f;
+      const int same = identical(out[static_cast<std::size_t>(kernel)], out[static_cast<std::size_t>(snellV)], rays, diff);
+      std::printf("%s vs %s: %d/%d rays with identical bits (position, uv, valid, fetches); max |position diff| %.3g\n",
+                  kNames[kernel], kNames[snellV], same, rays, static_cast<double>(diff));
+    }
+    if (std::getenv("GPU_KERNEL_NO_TIMING")) return 0;
+    std::vector<std::vector<double>> ms(kVariants);
+    for (int r = 0; r < rounds; ++r)
+      for (int v = 0; v < kVariants; ++v) ms[static_cast<std::size_t>(v)].push_back(drawTimed(s, v));
+    std::vector<double> median(kVariants);
+    for (int v = 0; v < kVariants; ++v) {
+      auto& t = ms[static_cast<std::size_t>(v)];
+      std::nth_element(t.begin(), t.begin() + static_cast<long>(t.size() / 2), t.end());
+      median[static_cast<std::size_t>(v)] = t[t.size() / 2];
+    }
+    std::printf("| variant | median pass (ms) | over its single sample | over the kernel |\n|---|---:|---:|---:|\n");
+    for (int v = 0; v < kVariants; ++v) {
+      const bool kernel = v >= 3;
+      const double single = median[kernel ? 3 : 0];
+      const int twin = v == 0 ? 3 : (v == 3 ? -1 : (v == 4 ? -1 : 4));
+      std::printf("| %s | %.2f | %.2fx | %s |\n", kNames[v], median[static_cast<std::size_t>(v)],
+                  median[static_cast<std::size_t>(v)] / single,
+                  twin < 0 ? "" : (std::to_string(median[static_cast<std::size_t>(v)] / median[static_cast<std::size_t>(twin)]).substr(0, 4) + "x").c_str());
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "gpu_kernel_study: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
