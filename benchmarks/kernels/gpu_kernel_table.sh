@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# The kernel study on the GPU path (issue 14): snell's GLSL single sample and
+# normal plane (1 it.) beside the hand-written GLSL kernels of gpu_kernels.glsl,
+# one ray per pixel of a 512x512 pass on Mesa llvmpipe (gpu_kernel_study.cpp).
+# Fails unless each kernel gives snell's output bits on every ray; prints the
+# median pass times (all variants interleaved in one run) and, with callgrind
+# (llvmpipe rendering on the calling thread, LP_NUM_THREADS=0), the
+# instructions per pixel each pass executes, JIT code and texture sampling
+# included: repeatable where the times are not. About 2 minutes; not part of
+# the suite. Usage: bash benchmarks/kernels/gpu_kernel_table.sh [rounds] [backend]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+rounds=${1:-21}
+backend=${2:-osmesa}
+"${CXX:-g++}" -std=c++17 -O2 -ffp-contract=off -I"$root/benchmarks/kernels" -I"$root/include" -I"$root/glsl" \
+  -DSNELL_GLSL_DIR="\"$root/glsl\"" -DSNELL_KERNELS_DIR="\"$root/benchmarks/kernels\"" \
+  "$root/benchmarks/kernels/gpu_kernel_study.cpp" -o "$tmp/study" -ldl
+"$tmp/study" "$rounds" "$backend" | tee "$tmp/run.txt"
+# One pass per variant under callgrind (the study's drawVariant<V>, the untimed
+# first passes that compile the programs excluded).
+LP_NUM_THREADS=0 valgrind --tool=callgrind --smc-check=all --collect-atstart=no --toggle-collect='*drawVariant*' \
+  --callgrind-out-file="$tmp/cg.out" "$tmp/study" 1 "$backend" >/dev/null 2>"$tmp/cg.err" ||
+  { cat "$tmp/cg.err" >&2; exit 1; }
+callgrind_annotate --inclusive=yes "$tmp/cg.out" | grep -E 'drawVariant<[0-9]+>' |
+  sed -E 's/^ *([0-9,]+) .*drawVariant<([0-9]+)>.*/\2 \1/' | tr -d , | sort -n >"$tmp/ir.txt"
+echo
+echo "| variant | instructions per pixel (callgrind) | over its single sample | over the kernel |"
+echo "|---|---:|---:|---:|"
+awk -v pixels=$((512 * 512)) '
+  FNR == NR { if ($1 == "variant") { sub(":", "", $2); v = $2; $1 = ""; $2 = ""; sub(/^ +/, ""); name[v] = $0 } next }
+  { ir[$1] = $2 / pixels; n = $1 > n ? $1 : n }
+  END {
+    for (v = 0; v <= n; ++v) {
+      single = v >= 3 ? ir[3] : ir[0]
+      twin = v == 0 ? 3 : (v == 1 ? 4 : (v == 2 ? 4 : -1))
+      printf "| %s | %.0f | %.2fx | %s |\n", name[v], ir[v], ir[v] / single, twin < 0 ? "" : sprintf("%.2fx", ir[v] / ir[twin])
+    }
+  }' "$tmp/run.txt" "$tmp/ir.txt"
