@@ -1003,10 +1003,16 @@ SNELL_FN_INLINE SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2
 #ifndef SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
 #define SNELL_INTERSECT_SURFACE_PROJECTION_GLSL
 
+#ifndef SNELL_PERSPECTIVE_ONLY
+#  define SNELL_PERSPECTIVE_ONLY 0
+#endif
+
 SNELL_FN_INLINE SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, vec3 pView) {
+#if !SNELL_PERSPECTIVE_ONLY
   if (!s.perspective) {
     return snellViewToUv(s.clipFromView, pView);
   }
+#endif
   vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
   vec4 c1 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 1);
   vec4 c2 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 2);
@@ -1015,6 +1021,11 @@ SNELL_FN_INLINE SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface
   r.uv = vec2(0.0f, 0.0f);
   r.ndcZ = 0.0f;
   r.valid = false;
+#if SNELL_PERSPECTIVE_ONLY
+  if (!s.perspective) {
+    return r;
+  }
+#endif
   float cx = c0.x * pView.x + c2.x * pView.z;
   float cy = c1.y * pView.y + c2.y * pView.z;
   float cz = c2.z * pView.z + c3.z;
@@ -1031,12 +1042,19 @@ SNELL_FN_INLINE SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface
 }
 
 SNELL_FN_INLINE SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface) s, vec2 uv, float viewZ) {
+#if !SNELL_PERSPECTIVE_ONLY
   if (!s.perspective) {
     return snellUvZToView(s.clipFromView, uv, viewZ);
   }
+#endif
   SnellViewPoint r;
   r.position = vec3(0.0f, 0.0f, 0.0f);
   r.valid = false;
+#if SNELL_PERSPECTIVE_ONLY
+  if (!s.perspective) {
+    return r;
+  }
+#endif
   if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
       !(viewZ <= -SNELL_FLT_MIN)) {
     return r;
@@ -1348,54 +1366,59 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     return snellHitMiss(0);
   }
   int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
-  int fetches = 0;
-  vec2 uv = w.uv;
-  vec2 planeUv = w.uv;
-  vec3 p = origin;
-  for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
+  SnellSurfacePoint b = snellSurfacePoint(depthTex, w.uv, s);
+  int fetches = 1;
+  if (!b.valid) {
+    return snellHitMiss(fetches);
+  }
+  vec4 nt = SNELL_SAMPLE_LOD(normalTex, b.uv, normalLod);
+  fetches += 1;
+  SnellRayPlaneHit ph = snellRayPlane(origin, dir, b.position, vec3(nt.x, nt.y, nt.z));
+  if (farStart) {
+    SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, pyramidTex, s);
+    fetches += f.fetches;
+    if (f.valid && (!ph.valid || f.t < ph.t)) {
+      ph.t = f.t;
+      ph.position = f.position;
+      ph.valid = true;
+    }
+  }
+#if SNELL_PLANE_FACING_FALLBACK
+  if (!ph.valid) {
+    ph = snellRayPlane(origin, dir, b.position, b.position);
+  }
+#endif
+  if (!ph.valid) {
+    return snellHitMiss(fetches);
+  }
+  vec3 p = ph.position;
+  vec2 planeUv = b.uv;
+  for (int k = 1; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
     if (k > n) {
       break;
     }
-    if (k > 0) {
-      SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
-      if (!sp.valid) {
-        break;
-      }
-      uv = sp.uv;
-    }
-    SnellSurfacePoint b = snellSurfacePoint(depthTex, uv, s);
-    fetches += 1;
-    if (!b.valid) {
-      if (k == 0) {
-        return snellHitMiss(fetches);
-      }
+    SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
+    if (!sp.valid) {
       break;
     }
-    vec4 nt = SNELL_SAMPLE_LOD(normalTex, b.uv, normalLod);
+    SnellSurfacePoint bk = snellSurfacePoint(depthTex, sp.uv, s);
     fetches += 1;
-    SnellRayPlaneHit ph = snellRayPlane(origin, dir, b.position, vec3(nt.x, nt.y, nt.z));
-    if (k == 0 && farStart) {
-      SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, pyramidTex, s);
-      fetches += f.fetches;
-      if (f.valid && (!ph.valid || f.t < ph.t)) {
-        ph.t = f.t;
-        ph.position = f.position;
-        ph.valid = true;
-      }
+    if (!bk.valid) {
+      break;
     }
+    vec4 nk = SNELL_SAMPLE_LOD(normalTex, bk.uv, normalLod);
+    fetches += 1;
+    SnellRayPlaneHit hk = snellRayPlane(origin, dir, bk.position, vec3(nk.x, nk.y, nk.z));
 #if SNELL_PLANE_FACING_FALLBACK
-    if (!ph.valid) {
-      ph = snellRayPlane(origin, dir, b.position, b.position);
+    if (!hk.valid) {
+      hk = snellRayPlane(origin, dir, bk.position, bk.position);
     }
 #endif
-    if (!ph.valid) {
-      if (k == 0) {
-        return snellHitMiss(fetches);
-      }
+    if (!hk.valid) {
       break;
     }
-    p = ph.position;
-    planeUv = b.uv;
+    p = hk.position;
+    planeUv = bk.uv;
   }
   return snellPlaneHit(p, planeUv, depthTex, s, fetches);
 }
@@ -1509,38 +1532,45 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
   }
   vec3 dirN = dir / sqrt(len2);
   int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
-  int fetches = 0;
-  vec3 p = origin;
-  vec2 planeUv = w.uv;
-  for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
+  SnellDepthPlane pl = snellDepthPlaneAt(origin, dirN, depthMips, s, maxLod);
+  int fetches = pl.fetches;
+  SnellRayPlaneHit ph = snellRayPlane(origin, dir, pl.position, pl.normal);
+  if (farStart && dot(pl.position, pl.position) > 0.0f) {
+    SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, depthMips, s);
+    fetches += f.fetches;
+    if (f.valid && (!ph.valid || f.t < ph.t)) {
+      ph.t = f.t;
+      ph.position = f.position;
+      ph.valid = true;
+    }
+  }
+#if SNELL_PLANE_FACING_FALLBACK
+  if (!ph.valid) {
+    ph = snellRayPlane(origin, dir, pl.position, pl.position);
+  }
+#endif
+  if (!ph.valid) {
+    return snellHitMiss(fetches);
+  }
+  vec3 p = ph.position;
+  vec2 planeUv = pl.uv;
+  for (int k = 1; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
     if (k > n) {
       break;
     }
-    SnellDepthPlane pl = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
-    fetches += pl.fetches;
-    SnellRayPlaneHit ph = snellRayPlane(origin, dir, pl.position, pl.normal);
-    if (k == 0 && farStart && dot(pl.position, pl.position) > 0.0f) {
-      SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, depthMips, s);
-      fetches += f.fetches;
-      if (f.valid && (!ph.valid || f.t < ph.t)) {
-        ph.t = f.t;
-        ph.position = f.position;
-        ph.valid = true;
-      }
-    }
+    SnellDepthPlane plk = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
+    fetches += plk.fetches;
+    SnellRayPlaneHit hk = snellRayPlane(origin, dir, plk.position, plk.normal);
 #if SNELL_PLANE_FACING_FALLBACK
-    if (!ph.valid) {
-      ph = snellRayPlane(origin, dir, pl.position, pl.position);
+    if (!hk.valid) {
+      hk = snellRayPlane(origin, dir, plk.position, plk.position);
     }
 #endif
-    if (!ph.valid) {
-      if (k == 0) {
-        return snellHitMiss(fetches);
-      }
+    if (!hk.valid) {
       break;
     }
-    p = ph.position;
-    planeUv = pl.uv;
+    p = hk.position;
+    planeUv = plk.uv;
   }
   return snellPlaneHit(p, planeUv, depthMips, s, fetches);
 }

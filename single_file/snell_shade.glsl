@@ -2452,6 +2452,20 @@ contract:
     compilers may fold the kept zero products; the parity tolerances cover it.
   - the flag is the surface's promise: set it false after giving clipFromView
     another shape.
+options:
+  SNELL_PERSPECTIVE_ONLY  0 (default): a surface whose perspective flag is
+                          false takes the general path above. 1: the general
+                          path is not compiled in, and such a surface projects
+                          and reconstructs nothing (valid = false: every
+                          strategy misses on it); a perspective surface gives
+                          exactly what it gives by default. For shaders whose
+                          depth buffers all come from perspective cameras:
+                          llvmpipe runs the general path beside the
+                          perspective one although the flag is uniform
+                          (benchmarks/kernels/gpu_kernel_table.sh: single
+                          sample 10 %, normal plane (1 it.) 11 % fewer
+                          instructions per pixel); C++ and GPU drivers that
+                          branch on uniform values gain little.
 source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC); the equations in
   camera/view_to_uv.glsl and camera/uv_z_to_view.glsl.
 */
@@ -2641,11 +2655,16 @@ SNELL_FN SnellViewPoint snellUvZToView(mat4 clipFromView, vec2 uv, float viewZ) 
 
 #endif
 
+#ifndef SNELL_PERSPECTIVE_ONLY
+#  define SNELL_PERSPECTIVE_ONLY 0
+#endif
 
 SNELL_FN_INLINE SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, vec3 pView) {
+#if !SNELL_PERSPECTIVE_ONLY
   if (!s.perspective) {
     return snellViewToUv(s.clipFromView, pView);
   }
+#endif
   vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
   vec4 c1 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 1);
   vec4 c2 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 2);
@@ -2654,6 +2673,11 @@ SNELL_FN_INLINE SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface
   r.uv = vec2(0.0f, 0.0f);
   r.ndcZ = 0.0f;
   r.valid = false;
+#if SNELL_PERSPECTIVE_ONLY
+  if (!s.perspective) {
+    return r;
+  }
+#endif
   // A non-finite coordinate makes its own clip term non-finite here, where the
   // general product spreads it as NaN through a zero entry: invalid either way.
   float cx = c0.x * pView.x + c2.x * pView.z;
@@ -2675,12 +2699,19 @@ SNELL_FN_INLINE SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface
 }
 
 SNELL_FN_INLINE SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface) s, vec2 uv, float viewZ) {
+#if !SNELL_PERSPECTIVE_ONLY
   if (!s.perspective) {
     return snellUvZToView(s.clipFromView, uv, viewZ);
   }
+#endif
   SnellViewPoint r;
   r.position = vec3(0.0f, 0.0f, 0.0f);
   r.valid = false;
+#if SNELL_PERSPECTIVE_ONLY
+  if (!s.perspective) {
+    return r;
+  }
+#endif
   if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
       !(viewZ <= -SNELL_FLT_MIN)) {
     return r;
@@ -3144,54 +3175,63 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     return snellHitMiss(0);
   }
   int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
-  int fetches = 0;
-  vec2 uv = w.uv;
-  vec2 planeUv = w.uv;
-  vec3 p = origin;
-  for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
+  // Plane 0 (W's texel, the far start, the facing fallback), then the
+  // refinements: the loop holds only what every refinement does. With plane 0
+  // inside it, llvmpipe spent 58% more instructions on the normal plane (1 it.)
+  // with the far start and 10% more without (benchmarks/kernels/gpu_kernel_table.sh).
+  SnellSurfacePoint b = snellSurfacePoint(depthTex, w.uv, s);
+  int fetches = 1;
+  if (!b.valid) {
+    return snellHitMiss(fetches);
+  }
+  vec4 nt = SNELL_SAMPLE_LOD(normalTex, b.uv, normalLod);
+  fetches += 1;
+  SnellRayPlaneHit ph = snellRayPlane(origin, dir, b.position, vec3(nt.x, nt.y, nt.z));
+  if (farStart) {
+    SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, pyramidTex, s);
+    fetches += f.fetches;
+    if (f.valid && (!ph.valid || f.t < ph.t)) {
+      ph.t = f.t;
+      ph.position = f.position;
+      ph.valid = true;
+    }
+  }
+#if SNELL_PLANE_FACING_FALLBACK
+  if (!ph.valid) {
+    ph = snellRayPlane(origin, dir, b.position, b.position);
+  }
+#endif
+  if (!ph.valid) {
+    return snellHitMiss(fetches);
+  }
+  vec3 p = ph.position;
+  vec2 planeUv = b.uv;
+  for (int k = 1; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
     if (k > n) {
       break;
     }
-    if (k > 0) {
-      SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
-      if (!sp.valid) {
-        break;  // keep P_(k-1) on plane k-1
-      }
-      uv = sp.uv;
+    SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
+    if (!sp.valid) {
+      break;  // keep P_(k-1) on plane k-1
     }
-    SnellSurfacePoint b = snellSurfacePoint(depthTex, uv, s);
+    SnellSurfacePoint bk = snellSurfacePoint(depthTex, sp.uv, s);
     fetches += 1;
-    if (!b.valid) {
-      if (k == 0) {
-        return snellHitMiss(fetches);
-      }
+    if (!bk.valid) {
       break;
     }
-    vec4 nt = SNELL_SAMPLE_LOD(normalTex, b.uv, normalLod);
+    vec4 nk = SNELL_SAMPLE_LOD(normalTex, bk.uv, normalLod);
     fetches += 1;
-    SnellRayPlaneHit ph = snellRayPlane(origin, dir, b.position, vec3(nt.x, nt.y, nt.z));
-    if (k == 0 && farStart) {
-      SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, pyramidTex, s);
-      fetches += f.fetches;
-      if (f.valid && (!ph.valid || f.t < ph.t)) {
-        ph.t = f.t;
-        ph.position = f.position;
-        ph.valid = true;
-      }
-    }
+    SnellRayPlaneHit hk = snellRayPlane(origin, dir, bk.position, vec3(nk.x, nk.y, nk.z));
 #if SNELL_PLANE_FACING_FALLBACK
-    if (!ph.valid) {
-      ph = snellRayPlane(origin, dir, b.position, b.position);
+    if (!hk.valid) {
+      hk = snellRayPlane(origin, dir, bk.position, bk.position);
     }
 #endif
-    if (!ph.valid) {
-      if (k == 0) {
-        return snellHitMiss(fetches);
-      }
+    if (!hk.valid) {
       break;
     }
-    p = ph.position;
-    planeUv = b.uv;
+    p = hk.position;
+    planeUv = bk.uv;
   }
   return snellPlaneHit(p, planeUv, depthTex, s, fetches);
 }
@@ -3388,40 +3428,49 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
   }
   vec3 dirN = dir / sqrt(len2);
   int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
-  int fetches = 0;
-  vec3 p = origin;
-  vec2 planeUv = w.uv;
-  for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
+  // Plane 0 (at W, the far start, the facing fallback), then the refinements:
+  // the loop holds only what every refinement does (as in plane_normal.glsl).
+  SnellDepthPlane pl = snellDepthPlaneAt(origin, dirN, depthMips, s, maxLod);
+  int fetches = pl.fetches;
+  // An unbuilt plane has a zero normal, so the ray misses it; its facing plane exists
+  // only when B was read (position 0, the camera, gives no plane either).
+  SnellRayPlaneHit ph = snellRayPlane(origin, dir, pl.position, pl.normal);
+  if (farStart && dot(pl.position, pl.position) > 0.0f) {
+    SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, depthMips, s);
+    fetches += f.fetches;
+    if (f.valid && (!ph.valid || f.t < ph.t)) {
+      ph.t = f.t;
+      ph.position = f.position;
+      ph.valid = true;
+    }
+  }
+#if SNELL_PLANE_FACING_FALLBACK
+  if (!ph.valid) {
+    ph = snellRayPlane(origin, dir, pl.position, pl.position);
+  }
+#endif
+  if (!ph.valid) {
+    return snellHitMiss(fetches);
+  }
+  vec3 p = ph.position;
+  vec2 planeUv = pl.uv;
+  for (int k = 1; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
     if (k > n) {
       break;
     }
-    SnellDepthPlane pl = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
-    fetches += pl.fetches;
-    // An unbuilt plane has a zero normal, so the ray misses it; its facing plane exists
-    // only when B was read (position 0, the camera, gives no plane either).
-    SnellRayPlaneHit ph = snellRayPlane(origin, dir, pl.position, pl.normal);
-    if (k == 0 && farStart && dot(pl.position, pl.position) > 0.0f) {
-      SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, depthMips, s);
-      fetches += f.fetches;
-      if (f.valid && (!ph.valid || f.t < ph.t)) {
-        ph.t = f.t;
-        ph.position = f.position;
-        ph.valid = true;
-      }
-    }
+    SnellDepthPlane plk = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
+    fetches += plk.fetches;
+    SnellRayPlaneHit hk = snellRayPlane(origin, dir, plk.position, plk.normal);
 #if SNELL_PLANE_FACING_FALLBACK
-    if (!ph.valid) {
-      ph = snellRayPlane(origin, dir, pl.position, pl.position);
+    if (!hk.valid) {
+      hk = snellRayPlane(origin, dir, plk.position, plk.position);
     }
 #endif
-    if (!ph.valid) {
-      if (k == 0) {
-        return snellHitMiss(fetches);
-      }
+    if (!hk.valid) {
       break;  // keep P_(k-1) on plane k-1
     }
-    p = ph.position;
-    planeUv = pl.uv;
+    p = hk.position;
+    planeUv = plk.uv;
   }
   return snellPlaneHit(p, planeUv, depthMips, s, fetches);
 }

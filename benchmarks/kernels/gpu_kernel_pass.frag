@@ -4,7 +4,10 @@
 // gpu_kernel_study.cpp before compiling): 0 snell single sample, 1 snell
 // normal plane (1 it., the poster's: no far start), 2 the same with the far
 // start (snell's default, the lab's), 3 the kernel single sample, 4 the kernel
-// normal plane (1 it.).
+// normal plane (1 it.), 5 and 6: 0 and 1 with SNELL_PERSPECTIVE_ONLY 1.
+#if VARIANT >= 5
+#  define SNELL_PERSPECTIVE_ONLY 1
+#endif
 #include "snell/snell.glsl"
 #include "gpu_kernels.glsl"
 
@@ -25,9 +28,9 @@ void main() {
   vec3 o = texelFetch(kRayOrigin, at, 0).xyz;
   vec3 d = texelFetch(kRayDir, at, 0).xyz;
   SnellDepthSurface s = snellDepthSurface(kClipFromView, kClipRange.x, kClipRange.y, SNELL_DEPTH_GL, 0.0);
-#if VARIANT == 0
+#if VARIANT == 0 || VARIANT == 5
   SnellHit h = snellIntersectSingleSample(o, d, kDepth, s);
-#elif VARIANT == 1 || VARIANT == 2
+#elif VARIANT == 1 || VARIANT == 2 || VARIANT == 6
   SnellHit h = snellIntersectPlaneNormal(o, d, kDepth, kNormal, kPyramid, s, 0.0, 1, VARIANT == 2);
 #elif VARIANT == 3
   KHit h = kSingleSample(o, d);

@@ -27,10 +27,14 @@ namespace {
 using namespace snell::gpu;
 
 constexpr int kSize = 512;
-constexpr int kVariants = 5;
+constexpr int kVariants = 7;
 const char* const kNames[kVariants] = {"snell single sample", "snell normal plane 1 it.",
                                        "snell normal plane 1 it. + far start", "kernel single sample",
-                                       "kernel normal plane 1 it."};
+                                       "kernel normal plane 1 it.", "snell single sample, SNELL_PERSPECTIVE_ONLY",
+                                       "snell normal plane 1 it., SNELL_PERSPECTIVE_ONLY"};
+
+// The kernel each variant is measured against (-1: a kernel itself).
+const int kTwin[kVariants] = {3, 4, 4, -1, -1, 3, 4};
 
 struct Study {
   Context ctx;
@@ -129,7 +133,9 @@ double drawTimed(Study& s, int v) {
     case 1: return drawVariant<1>(s);
     case 2: return drawVariant<2>(s);
     case 3: return drawVariant<3>(s);
-    default: return drawVariant<4>(s);
+    case 4: return drawVariant<4>(s);
+    case 5: return drawVariant<5>(s);
+    default: return drawVariant<6>(s);
   }
 }
 
@@ -167,7 +173,7 @@ int main(int argc, char** argv) {
     for (int v = 0; v < kVariants; ++v) std::printf("variant %d: %s\n", v, kNames[v]);
     const int rays = static_cast<int>(s.sc.rays.size());
     bool allSame = true;
-    for (const auto& [kernel, snellV] : {std::pair<int, int>{3, 0}, {4, 1}}) {
+    for (const auto& [kernel, snellV] : {std::pair<int, int>{3, 0}, {4, 1}, {3, 5}, {4, 6}}) {
       float diff = 0.0f;
       const int same = identical(out[static_cast<std::size_t>(kernel)], out[static_cast<std::size_t>(snellV)], rays, diff);
       std::printf("%s vs %s: %d/%d rays with identical bits (position, uv, valid, fetches); max |position diff| %.3g\n",
@@ -191,9 +197,8 @@ int main(int argc, char** argv) {
     }
     std::printf("| variant | median pass (ms) | over its single sample | over the kernel |\n|---|---:|---:|---:|\n");
     for (int v = 0; v < kVariants; ++v) {
-      const bool kernel = v >= 3;
-      const double single = median[kernel ? 3 : 0];
-      const int twin = v == 0 ? 3 : (v == 3 ? -1 : (v == 4 ? -1 : 4));
+      const double single = median[v == 3 || v == 4 ? 3 : (v >= 5 ? 5 : 0)];
+      const int twin = kTwin[v];
       std::printf("| %s | %.2f | %.2fx | %s |\n", kNames[v], median[static_cast<std::size_t>(v)],
                   median[static_cast<std::size_t>(v)] / single,
                   twin < 0 ? "" : (std::to_string(median[static_cast<std::size_t>(v)] / median[static_cast<std::size_t>(twin)]).substr(0, 4) + "x").c_str());

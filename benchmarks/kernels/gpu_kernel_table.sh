@@ -33,8 +33,8 @@ awk -v pixels=$((512 * 512)) '
   { ir[$1] = $2 / pixels; n = $1 > n ? $1 : n }
   END {
     for (v = 0; v <= n; ++v) {
-      single = v >= 3 ? ir[3] : ir[0]
-      twin = v == 0 ? 3 : (v == 1 ? 4 : (v == 2 ? 4 : -1))
+      single = v == 3 || v == 4 ? ir[3] : (v >= 5 ? ir[5] : ir[0])
+      twin = v == 0 || v == 5 ? 3 : (v == 3 || v == 4 ? -1 : 4)
       printf "| %s | %.0f | %.2fx | %s |\n", name[v], ir[v], ir[v] / single, twin < 0 ? "" : sprintf("%.2fx", ir[v] / ir[twin])
     }
   }' "$tmp/run.txt" "$tmp/ir.txt"

@@ -194,11 +194,17 @@ struct GpuLab::Impl {
     back.set("viewFromWorld", k.viewFromWorld);
     back.set("clipFromView", k.params.clipFromView);
 
+    // Both buffers come from the lab's perspective camera: the programs leave
+    // out the general projection path (the same results; llvmpipe would run
+    // both paths). Checked, so another camera would only cost time.
+    const bool perspective =
+        snellDepthSurface(k.params.clipFromView, k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 0.0f).perspective;
     for (int id : techniques) {
       // Only the strategies the technique's slots call: the same code paths,
       // compiled in a fraction of the time.
       const std::string defines = "#define LAB_TECHNIQUE " + std::to_string(id) + "\n#define SNELL_INTERSECT_STRATEGIES " +
-                                  std::to_string(snellStrategiesUsed(labTechniqueOptions(id, k.params))) + "\n";
+                                  std::to_string(snellStrategiesUsed(labTechniqueOptions(id, k.params))) + "\n" +
+                                  (perspective ? "#define SNELL_PERSPECTIVE_ONLY 1\n" : "");
       gpu::Program prog = gpu::Program::graphics(gl, flatten(dirs.labGlsl / "lab_mesh.vert", dirs),
                                                  flattenWithDefines(dirs.labGlsl / "lab_refract.frag", defines, dirs));
       prog.set("viewFromWorld", k.viewFromWorld);

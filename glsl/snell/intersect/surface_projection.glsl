@@ -21,6 +21,20 @@ contract:
     compilers may fold the kept zero products; the parity tolerances cover it.
   - the flag is the surface's promise: set it false after giving clipFromView
     another shape.
+options:
+  SNELL_PERSPECTIVE_ONLY  0 (default): a surface whose perspective flag is
+                          false takes the general path above. 1: the general
+                          path is not compiled in, and such a surface projects
+                          and reconstructs nothing (valid = false: every
+                          strategy misses on it); a perspective surface gives
+                          exactly what it gives by default. For shaders whose
+                          depth buffers all come from perspective cameras:
+                          llvmpipe runs the general path beside the
+                          perspective one although the flag is uniform
+                          (benchmarks/kernels/gpu_kernel_table.sh: single
+                          sample 10 %, normal plane (1 it.) 11 % fewer
+                          instructions per pixel); C++ and GPU drivers that
+                          branch on uniform values gain little.
 source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC); the equations in
   camera/view_to_uv.glsl and camera/uv_z_to_view.glsl.
 */
@@ -30,11 +44,16 @@ source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC); the equations in
 #include "../camera/view_to_uv.glsl"
 #include "../camera/uv_z_to_view.glsl"
 #include "depth_surface.glsl"
+#ifndef SNELL_PERSPECTIVE_ONLY
+#  define SNELL_PERSPECTIVE_ONLY 0
+#endif
 
 SNELL_FN_INLINE SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface) s, vec3 pView) {
+#if !SNELL_PERSPECTIVE_ONLY
   if (!s.perspective) {
     return snellViewToUv(s.clipFromView, pView);
   }
+#endif
   vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
   vec4 c1 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 1);
   vec4 c2 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 2);
@@ -43,6 +62,11 @@ SNELL_FN_INLINE SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface
   r.uv = vec2(0.0f, 0.0f);
   r.ndcZ = 0.0f;
   r.valid = false;
+#if SNELL_PERSPECTIVE_ONLY
+  if (!s.perspective) {
+    return r;
+  }
+#endif
   // A non-finite coordinate makes its own clip term non-finite here, where the
   // general product spreads it as NaN through a zero entry: invalid either way.
   float cx = c0.x * pView.x + c2.x * pView.z;
@@ -64,12 +88,19 @@ SNELL_FN_INLINE SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface
 }
 
 SNELL_FN_INLINE SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface) s, vec2 uv, float viewZ) {
+#if !SNELL_PERSPECTIVE_ONLY
   if (!s.perspective) {
     return snellUvZToView(s.clipFromView, uv, viewZ);
   }
+#endif
   SnellViewPoint r;
   r.position = vec3(0.0f, 0.0f, 0.0f);
   r.valid = false;
+#if SNELL_PERSPECTIVE_ONLY
+  if (!s.perspective) {
+    return r;
+  }
+#endif
   if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
       !(viewZ <= -SNELL_FLT_MIN)) {
     return r;
