@@ -29,12 +29,14 @@ echo
 echo "| variant | instructions per pixel (callgrind) | over its single sample | over the kernel |"
 echo "|---|---:|---:|---:|"
 awk -v pixels=$((512 * 512)) '
-  FNR == NR { if ($1 == "variant") { sub(":", "", $2); v = $2; $1 = ""; $2 = ""; sub(/^ +/, ""); name[v] = $0 } next }
+  FNR == NR {  # "variant V single S twin T: name" (gpu_kernel_study.cpp)
+    if ($1 == "variant") { v = $2; single[v] = $4; twin[v] = $6 + 0; line = $0; sub(/^[^:]*: /, "", line); name[v] = line }
+    next
+  }
   { ir[$1] = $2 / pixels; n = $1 > n ? $1 : n }
   END {
     for (v = 0; v <= n; ++v) {
-      single = v == 3 || v == 4 ? ir[3] : (v >= 5 ? ir[5] : ir[0])
-      twin = v == 0 || v == 5 ? 3 : (v == 3 || v == 4 ? -1 : 4)
-      printf "| %s | %.0f | %.2fx | %s |\n", name[v], ir[v], ir[v] / single, twin < 0 ? "" : sprintf("%.2fx", ir[v] / ir[twin])
+      t = twin[v]
+      printf "| %s | %.0f | %.2fx | %s |\n", name[v], ir[v], ir[v] / ir[single[v]], t < 0 ? "" : sprintf("%.2fx", ir[v] / ir[t])
     }
   }' "$tmp/run.txt" "$tmp/ir.txt"

@@ -1,7 +1,6 @@
-#version 450 core
-#extension GL_GOOGLE_include_directive : require
-// One ray per pixel (ray (y W + x) mod the ray count), VARIANT (set by
-// gpu_kernel_study.cpp before compiling): 0 snell single sample, 1 snell
+// The study's fragment shader body (gpu_kernel_study.cpp puts #version and
+// VARIANT in front of it): one ray per pixel (ray (y W + x) mod the ray
+// count), VARIANT: 0 snell single sample, 1 snell
 // normal plane (1 it., the poster's: no far start), 2 the same with the far
 // start (snell's default, the lab's), 3 the kernel single sample, 4 the kernel
 // normal plane (1 it.), 5 and 6: 0 and 1 with SNELL_PERSPECTIVE_ONLY 1.
