@@ -2,9 +2,10 @@
 # A long fuzzing campaign (issue 16), not part of CI:
 #
 #     bash tests/fuzz/campaign.sh                 # every target, the default times
-#     bash tests/fuzz/campaign.sh obj:90 image:5  # chosen targets, minutes each
+#     bash tests/fuzz/campaign.sh obj:90 image_png:5  # chosen targets, minutes each
 #
-# Default: include_flattener 30, scene 60, obj 60, image 30 minutes
+# Default: include_flattener 30, scene 60, obj 60, and 30 for each image format
+# (image_png, image_jpeg, image_exr, image_hdr)
 # (SNELL_CAMPAIGN_MINUTES=N sets every default time to N). Targets run one
 # after another, each on its own core in libFuzzer's fork mode, which goes on
 # after a finding (-ignore_crashes/-ignore_ooms/-ignore_timeouts) so one bug
@@ -26,7 +27,8 @@ out=${SNELL_FUZZ_BUILD_DIR:-$root/build/fuzz}
 dir=$out/campaign
 default=${SNELL_CAMPAIGN_MINUTES:-}
 plan=("$@")
-[ ${#plan[@]} -gt 0 ] || plan=("include_flattener:${default:-30}" "scene:${default:-60}" "obj:${default:-60}" "image:${default:-30}")
+[ ${#plan[@]} -gt 0 ] || plan=("include_flattener:${default:-30}" "scene:${default:-60}" "obj:${default:-60}" "image_png:${default:-30}"
+                             "image_jpeg:${default:-30}" "image_exr:${default:-30}" "image_hdr:${default:-30}")
 
 targets=()
 for p in "${plan[@]}"; do

@@ -1,5 +1,8 @@
-// libFuzzer target: snell::lab::decodeImage (stb_image: PNG, JPEG, BMP, TGA,
-// Radiance HDR) on the input bytes, decoded as 8-bit sRGB and as linear. The
+// libFuzzer target: snell::lab::decodeImage (PNG through libspng, JPEG through
+// libjpeg-turbo, OpenEXR, Radiance HDR through stb_image) on the input bytes,
+// 8-bit formats decoded as sRGB or as linear. run_fuzzers.sh builds it once per
+// format (image_png, image_jpeg, image_exr, image_hdr), each fuzzed from that
+// format's corpus, so every campaign minute goes to one decoder. The
 // documented failure is snell::lab::Error (Parse: not a decodable image, or
 // more than kMaxImagePixels texels); any other exception escaping, a crash or
 // a sanitizer report is a bug.

@@ -10,21 +10,30 @@
 #
 # Environment: SNELL_FUZZ_TIME (seconds per target, default 20),
 # SNELL_FUZZ_BUILD_DIR (default build/fuzz), CLANGXX (default clang++-14 or clang++),
-# SNELL_FUZZ_TARGETS (default "include_flattener scene obj image"),
+# SNELL_FUZZ_TARGETS (default "include_flattener scene obj image_png image_jpeg
+# image_exr image_hdr"; the image_<format> targets are one source, fuzz_image.cpp,
+# each fuzzed from its own format's corpus),
 # SNELL_FUZZ_BUILD_ONLY=1 (build the targets and stop: tests/fuzz/campaign.sh).
-# Needs clang-14 and libclang-rt-14-dev (scripts/install-deps.sh).
+# Needs clang-14 and libclang-rt-14-dev (scripts/install-deps.sh). The image
+# libraries (libspng, libjpeg-turbo, OpenEXR) are Debian's, not instrumented:
+# coverage and sanitizers see snell's side of each call (OSS-Fuzz fuzzes theirs).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 out=${SNELL_FUZZ_BUILD_DIR:-$root/build/fuzz}
 seconds=${SNELL_FUZZ_TIME:-10}
-targets=${SNELL_FUZZ_TARGETS:-"include_flattener scene obj image"}
+targets=${SNELL_FUZZ_TARGETS:-"include_flattener scene obj image_png image_jpeg image_exr image_hdr"}
 cxx=${CLANGXX:-$(command -v clang++-14 || command -v clang++ || true)}
 [ -n "$cxx" ] || { echo "run_fuzzers: clang++ not found (install clang-14 libclang-rt-14-dev)" >&2; exit 1; }
-mkdir -p "$out/obj"
+mkdir -p "$out/obj/image_decoders"
 
 common=(-std=c++17 -g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined
         -I"$root/include" -I"$root/glsl" -I"$root/examples/lab/include" -I"$root/examples/lab/src")
-lab_sources=(camera environment file_util image_io json_lines json_reader mesh mesh_generators obj_loader painting scene)
+lab_sources=(camera environment file_util image_io image_decoders/exr_decoder image_decoders/jpeg_decoder
+             image_decoders/png_decoder image_decoders/radiance_decoder json_lines json_reader mesh mesh_generators
+             obj_loader painting scene)
+# shellcheck disable=SC2207
+image_libs=($(pkg-config --libs spng libjpeg OpenEXR))
+common+=($(pkg-config --cflags-only-I OpenEXR | sed 's/-I/-isystem /g'))
 
 # The lab core without the tracer (no Embree): instrumented for coverage.
 objs=() pids=()
@@ -45,12 +54,14 @@ pids=()
 build_status=0
 for t in $targets; do
   bin=$out/fuzz_$t
-  if [ -f "$bin" ] && [ -z "$(find "$root/tests/fuzz/fuzz_$t.cpp" "$root/include" "$root/glsl" -newer "$bin" -print -quit)" ] &&
+  src=$t
+  case $t in image_*) src=image ;; esac
+  if [ -f "$bin" ] && [ -z "$(find "$root/tests/fuzz/fuzz_$src.cpp" "$root/include" "$root/glsl" -newer "$bin" -print -quit)" ] &&
      [ -z "$(find "$out/obj" -newer "$bin" -print -quit)" ]; then continue; fi
   echo "run_fuzzers: building fuzz_$t"
   extra=()
-  [ "$t" = include_flattener ] || extra=("${objs[@]}")
-  "$cxx" "${common[@]}" -fsanitize=fuzzer "$root/tests/fuzz/fuzz_$t.cpp" "${extra[@]}" -o "$bin.tmp" -lpthread &&
+  [ "$t" = include_flattener ] || extra=("${objs[@]}" "${image_libs[@]}")
+  "$cxx" "${common[@]}" -fsanitize=fuzzer "$root/tests/fuzz/fuzz_$src.cpp" "${extra[@]}" -o "$bin.tmp" -lpthread &&
     mv "$bin.tmp" "$bin" &
   pids+=($!)
   if [ ${#pids[@]} -ge "$(nproc)" ]; then wait "${pids[0]}" || build_status=1; pids=("${pids[@]:1}"); fi

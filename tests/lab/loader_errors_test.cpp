@@ -230,7 +230,6 @@ TEST(LabLoaderErrors, DirectoryInsteadOfAFile) {
   std::filesystem::create_directories(d);
   EXPECT_EQ(labtest::errorOf([&] { loadScene(d); }, ErrorKind::Io), "scene file is a directory: " + d);
   EXPECT_EQ(labtest::errorOf([&] { loadObj(d); }, ErrorKind::Io), "mesh file is a directory: " + d);
-  // stb_image opened it and reported "Image not of any known type" (a Parse error).
   EXPECT_EQ(labtest::errorOf([&] { readImage(d); }, ErrorKind::Io), "image file is a directory: " + d);
   EXPECT_EQ(labtest::errorOf([&] { writePng(d, snell::Image(2, 2)); }, ErrorKind::Io),
             "cannot write PNG file " + d + ": Is a directory");
@@ -250,79 +249,52 @@ TEST(LabLoaderErrors, CorruptImagesNameThePathAndTheReason) {
   const std::string good = dir.file("good.png");
   writePng(good, snell::Image(64, 64, snell::vec4(0.5f)));
   const std::string png = readFile(good);
-  ASSERT_GT(png.size(), 40u);
-  ASSERT_EQ(png.substr(12, 4), "IHDR");
-
   const std::string cut = dir.write("cut.png", png.substr(0, png.size() / 2));
   const std::string cutMsg = labtest::errorOf([&] { readImage(cut); }, ErrorKind::Parse);
-  EXPECT_EQ(cutMsg.rfind(cut + ": cannot decode image: ", 0), 0u) << cutMsg;
-
-  // IHDR claims 2^31 - 1 x 2^31 - 1 pixels (stb_image does not check CRCs).
-  std::string huge = png;
-  huge.replace(16, 8, std::string("\x7f\xff\xff\xff\x7f\xff\xff\xff", 8));
-  const std::string hugePath = dir.write("huge.png", huge);
-  EXPECT_EQ(labtest::errorOf([&] { readImage(hugePath); }, ErrorKind::Parse),
-            hugePath + ": cannot decode image: Very large image (corrupt?)");
-  // 20000 x 20000: within stb_image's dimension limit, past its size limit.
-  huge.replace(16, 8, std::string("\x00\x00\x4e\x20\x00\x00\x4e\x20", 8));
-  const std::string bigPath = dir.write("big.png", huge);
-  EXPECT_EQ(labtest::errorOf([&] { readImage(bigPath); }, ErrorKind::Parse),
-            bigPath + ": cannot decode image: Image too large to decode");
-  // 16384 x 16384 passes stb_image's own checks (1 GiB of bytes, 4 GiB as floats).
-  huge.replace(16, 8, std::string("\x00\x00\x40\x00\x00\x00\x40\x00", 8));
-  const std::string widePath = dir.write("wide.png", huge);
-  EXPECT_EQ(labtest::errorOf([&] { readImage(widePath); }, ErrorKind::Parse),
-            widePath + ": image is 16384 x 16384 pixels; the lab reads at most 33554432 (8192 x 4096)");
-
+  EXPECT_EQ(cutMsg.rfind(cut + ": cannot decode PNG: ", 0), 0u) << cutMsg;
   const std::string empty = dir.write("empty.png", "");
-  const std::string emptyMsg = labtest::errorOf([&] { readImage(empty); }, ErrorKind::Parse);
-  EXPECT_EQ(emptyMsg.rfind(empty + ": cannot decode image: ", 0), 0u) << emptyMsg;
+  EXPECT_EQ(labtest::errorOf([&] { readImage(empty); }, ErrorKind::Parse),
+            empty + ": cannot decode image: not a PNG, JPEG, OpenEXR or Radiance HDR file (the formats the lab reads)");
   // A Radiance header that promises 100000 x 100000 texels and ends.
   const std::string hdr = dir.write("sky.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 100000 +X 100000\n\x02\x02");
   EXPECT_EQ(labtest::errorOf([&] { readImage(hdr); }, ErrorKind::Parse),
             hdr + ": image is 100000 x 100000 pixels; the lab reads at most 33554432 (8192 x 4096)");
-  // Formats stb_image knows but the lab does not read (GIF, PSD, PNM): never decoded.
-  const std::string gif = dir.write("a.gif", std::string("GIF89a\x01\x00\x01\x00\x80\x00\x00", 13));
-  EXPECT_EQ(labtest::errorOf([&] { readImage(gif); }, ErrorKind::Parse), gif + ": cannot decode image: Image not of any known type, or corrupt");
-  const std::string pnm = dir.write("a.ppm", "P6\n1 1\n255\n\x01\x02\x03");
-  EXPECT_EQ(labtest::errorOf([&] { readImage(pnm); }, ErrorKind::Parse), pnm + ": cannot decode image: Image not of any known type, or corrupt");
 }
 
-// issue 16, found by fuzz_image: stb_image 2.27 wrote past its Huffman
-// arrays on a JPEG table of more than 256 codes, and turned a Radiance header
-// of width 0 into an image of no texels (snell::Image threw invalid_argument).
+// Found by fuzz_image inside Debian 12's stb_image 2.27, which decoded PNG
+// and JPEG then: each input is now refused by libspng or libjpeg-turbo with
+// its own reason. The Radiance ones still reach stb_image's HDR reader and
+// are refused by the lab's checks in front of it: a header of width 0, and
+// a run of length 0, on which stb_image loops forever.
 TEST(LabLoaderErrors, ImageFuzzFindingsAreParseErrors) {
-  const std::string dir = std::string(SNELL_SOURCE_DIR) + "/tests/fuzz/regressions/image/";
-  const std::string jpegMsg = labtest::errorOf([&] { readImage(dir + "jpeg_dht_overflow.jpg"); }, ErrorKind::Parse);
-  EXPECT_EQ(jpegMsg.rfind(dir + "jpeg_dht_overflow.jpg: cannot decode image: a JPEG Huffman table defines ", 0), 0u);
-  EXPECT_NE(jpegMsg.find(" codes, at most 256 are allowed (corrupt JPEG)"), std::string::npos) << jpegMsg;
-  EXPECT_EQ(labtest::errorOf([&] { readImage(dir + "hdr_zero_width.hdr"); }, ErrorKind::Parse),
-            dir + "hdr_zero_width.hdr: cannot decode image: its header says 0 x 6 pixels");
-  EXPECT_EQ(labtest::errorOf([&] { readImage(dir + "hdr_zero_run_hang.hdr"); }, ErrorKind::Parse),
-            dir + "hdr_zero_run_hang.hdr: cannot decode image: scanline 3 of the Radiance file has a run of length 0 "
-                  "(the file is truncated)");
+  const std::string fuzz = std::string(SNELL_SOURCE_DIR) + "/tests/fuzz/regressions/";
+  const auto reason = [&](const std::string& file) {
+    const std::string msg = labtest::errorOf([&] { readImage(fuzz + file); }, ErrorKind::Parse);
+    EXPECT_EQ(msg.rfind(fuzz + file + ": ", 0), 0u) << msg;
+    return msg.substr(fuzz.size() + file.size() + 2);
+  };
+  // A Huffman table (DHT) whose counts sum past 256.
+  EXPECT_EQ(reason("image_jpeg/jpeg_dht_overflow.jpg"), "cannot decode JPEG: Bogus Huffman table definition");
+  // Fill bytes before the start-of-image marker, which stb_image skipped.
+  EXPECT_EQ(reason("image_jpeg/jpeg_fill_bytes_before_soi.jpg"),
+            "cannot decode image: not a PNG, JPEG, OpenEXR or Radiance HDR file (the formats the lab reads)");
+  // An IDAT claiming 1.5 GB, and a first IDAT of length 0 (with a bad CRC).
+  EXPECT_EQ(reason("image_png/png_idat_length_past_end.png").rfind("cannot decode PNG: ", 0), 0u);
+  EXPECT_EQ(reason("image_png/png_empty_first_idat.png").rfind("cannot decode PNG: ", 0), 0u);
+  EXPECT_EQ(reason("image_hdr/hdr_zero_width.hdr"), "cannot decode image: its header says 0 x 6 pixels");
+  EXPECT_EQ(reason("image_hdr/hdr_zero_run_hang.hdr"),
+            "cannot decode Radiance HDR: scanline 3 has a run of length 0 (the file is truncated)");
   // stb_image takes a header line that starts with NUL for the empty line that ends the header.
-  const std::string nulMsg = labtest::errorOf([&] { readImage(dir + "hdr_nul_header_line_hang.hdr"); }, ErrorKind::Parse);
-  EXPECT_EQ(nulMsg.rfind(dir + "hdr_nul_header_line_hang.hdr: cannot decode image: scanline ", 0), 0u) << nulMsg;
+  EXPECT_EQ(reason("image_hdr/hdr_nul_header_line_hang.hdr").rfind("cannot decode Radiance HDR: scanline ", 0), 0u);
   // The same on a file cut inside its first scanline: stb_image read zeros past the end and hung.
-  const std::string sky = readFile(std::string(SNELL_SOURCE_DIR) + "/tests/fuzz/corpus/image/sky.hdr");
+  const std::string sky = readFile(std::string(SNELL_SOURCE_DIR) + "/tests/fuzz/corpus/image_hdr/sky.hdr");
   const std::string::size_type data = sky.find("+X 8\n") + 5;
   ASSERT_NE(data, std::string::npos + 5);
   const labtest::TempDir tmp;
   const std::string cut = tmp.write("cut.hdr", sky.substr(0, data + 10));
   EXPECT_EQ(labtest::errorOf([&] { readImage(cut); }, ErrorKind::Parse),
-            cut + ": cannot decode image: scanline 0 of the Radiance file has a run of length 0 (the file is truncated)");
-  EXPECT_EQ(readImage(std::string(SNELL_SOURCE_DIR) + "/tests/fuzz/corpus/image/sky.hdr").width, 8);
-  EXPECT_EQ(labtest::errorOf([&] { readImage(dir + "png_idat_length_past_end.png"); }, ErrorKind::Parse),
-            dir + "png_idat_length_past_end.png: cannot decode image: PNG chunk 'IDAT' claims 1610612785 bytes, the file "
-                  "has 0 left (truncated or corrupt)");
-  // Found by the campaign: fill bytes before the start-of-image marker hid the
-  // Huffman tables from the check; a first IDAT of length 0 made stb_image
-  // memcpy to a null pointer.
-  const std::string fillMsg = labtest::errorOf([&] { readImage(dir + "jpeg_fill_bytes_before_soi.jpg"); }, ErrorKind::Parse);
-  EXPECT_NE(fillMsg.find("a JPEG Huffman table defines "), std::string::npos) << fillMsg;
-  const std::string idatMsg = labtest::errorOf([&] { readImage(dir + "png_empty_first_idat.png"); }, ErrorKind::Parse);
-  EXPECT_EQ(idatMsg.rfind(dir + "png_empty_first_idat.png: cannot decode image: ", 0), 0u) << idatMsg;
+            cut + ": cannot decode Radiance HDR: scanline 0 has a run of length 0 (the file is truncated)");
+  EXPECT_EQ(readImage(std::string(SNELL_SOURCE_DIR) + "/tests/fuzz/corpus/image_hdr/sky.hdr").width, 8);
   {
     // An empty IDAT is legal PNG: a good file with one inserted before its data decodes the same.
     const labtest::TempDir pngDir;
@@ -340,13 +312,12 @@ TEST(LabLoaderErrors, ImageFuzzFindingsAreParseErrors) {
     ASSERT_EQ(b.width, 4);
     EXPECT_EQ(a.texels, b.texels);
   }
-  // A valid JPEG (every DHT within bounds) still decodes: the check refuses no good file.
-  const snell::Image good = readImage(std::string(SNELL_SOURCE_DIR) + "/tests/fuzz/corpus/image/rgb.jpg");
+  const snell::Image good = readImage(std::string(SNELL_SOURCE_DIR) + "/tests/fuzz/corpus/image_jpeg/rgb.jpg");
   EXPECT_EQ(good.width, 8);
   EXPECT_EQ(good.height, 6);
 }
 
-// issue 16: every line kind the lab does not use (skin weights, lines, points,
+// Every line kind the lab does not use (skin weights, lines, points,
 // smoothing groups, tags, materials, groups) is blanked before tinyobjloader
 // sees the text, which converted a `vw` joint id of 1e30 to int (undefined
 // behaviour). They change nothing, and later lines keep their numbers.

@@ -23,11 +23,15 @@ void writePng(const std::string& path, const Image& image, PngEncoding encoding 
 // The most texels an image may have (8192 x 4096: 512 MiB as linear RGBA floats).
 inline constexpr long long kMaxImagePixels = 8192LL * 4096LL;
 
-// PNG, JPEG, BMP, TGA (8-bit: decoded from sRGB to linear unless `linear`) or
-// Radiance HDR (already linear) through stb_image, as linear RGBA (alpha 1).
-// Error(Io) naming the path when it is missing or a directory, Error(Parse)
-// naming it when it is not an image stb_image can decode or has more than
-// kMaxImagePixels texels (checked on the header, before anything is allocated).
+// PNG (libspng) or JPEG (libjpeg-turbo), 8-bit, decoded from sRGB to linear
+// unless `linear`; OpenEXR (the OpenEXR library) or Radiance HDR (stb_image's
+// HDR reader), already linear. The format is chosen by the file's signature.
+// Returns linear RGBA with alpha 1. Error(Io) naming the path when it is
+// missing or a directory; Error(Parse) naming it when it is in no format
+// above, corrupt (the library's reason: "cannot decode JPEG: Bogus Huffman
+// table definition"), or larger than kMaxImagePixels texels (checked on the
+// header, before anything is allocated). An OpenEXR texel that is NaN or
+// infinite is an error; a negative one reads as 0.
 Image readImage(const std::string& path, bool linear = false);
 
 // The same on a file's bytes; `name` is the file name used in messages. A
