@@ -1,8 +1,12 @@
 // OpenEXR through the OpenEXR library (Debian's 3.1, fuzzed in OSS-Fuzz) from
-// memory: its limits on image and tile sizes are set before the header is
-// read, the data window is checked against the lab's budget before pixels are
-// allocated, and every Iex exception becomes Error(Parse). RgbaInputFile
-// gives RGB(A), luminance and chroma files as RGBA halves.
+// memory, in two passes of the same library. First its C core (OpenEXRCore,
+// written for hostile files) parses every header against the file's size and
+// the lab's limits; only a file it accepts reaches the C++ reader, whose 3.1
+// header parser allocates an unknown attribute's declared size before reading
+// it (fuzz_image_exr: 12 bytes asked for 1.8 GB). Then RgbaInputFile gives
+// RGB(A), luminance and chroma files as RGBA halves: the data window is
+// checked against the lab's budget before pixels are allocated, and every Iex
+// exception becomes Error(Parse).
 #include "image_decoders.hpp"
 
 #include "lab/error.hpp"
@@ -11,6 +15,7 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfRgbaFile.h>
+#include <OpenEXR/openexr.h>
 
 #include <algorithm>
 #include <cmath>
@@ -42,14 +47,60 @@ class MemoryStream final : public OPENEXR_IMF_NAMESPACE::IStream {
   std::size_t pos_ = 0;
 };
 
+// The bytes and the first message of the core's parse.
+struct CoreRead {
+  const std::string& bytes;
+  std::string message;
+};
+
+std::int64_t coreReadAt(exr_const_context_t, void* user, void* buffer, std::uint64_t size, std::uint64_t offset,
+                        exr_stream_error_func_ptr_t) {
+  const std::string& b = static_cast<CoreRead*>(user)->bytes;
+  if (offset >= b.size()) return 0;
+  const std::uint64_t n = std::min<std::uint64_t>(size, b.size() - offset);
+  std::memcpy(buffer, b.data() + offset, static_cast<std::size_t>(n));
+  return static_cast<std::int64_t>(n);
+}
+
+std::int64_t coreSize(exr_const_context_t, void* user) {
+  return static_cast<std::int64_t>(static_cast<CoreRead*>(user)->bytes.size());
+}
+
+void coreError(exr_const_context_t context, exr_result_t, const char* message) {
+  void* user = nullptr;
+  if (exr_get_user_data(context, &user) == EXR_ERR_SUCCESS && user != nullptr) {
+    std::string& kept = static_cast<CoreRead*>(user)->message;
+    if (kept.empty() && message != nullptr) kept = message;
+  }
+}
+
+// Error(Parse) unless OpenEXRCore parses every header of the file within the sizes.
+void checkHeadersWithCore(const std::string& bytes, const ImageLimit& limit, int side, int tile) {
+  CoreRead read{bytes, {}};
+  exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+  init.user_data = &read;
+  init.read_fn = coreReadAt;
+  init.size_fn = coreSize;
+  init.error_handler_fn = coreError;
+  init.max_image_width = init.max_image_height = side;
+  init.max_tile_width = init.max_tile_height = tile;
+  exr_context_t context = nullptr;
+  const exr_result_t status = exr_start_read(&context, limit.name.c_str(), &init);
+  exr_finish(&context);
+  if (status != EXR_ERR_SUCCESS)
+    limit.fail("OpenEXR", read.message.empty() ? exr_get_error_code_as_string(status) : read.message);
+}
+
 }  // namespace
 
 Image decodeExr(const std::string& bytes, const ImageLimit& limit) {
   // Process-wide in OpenEXR: the header's sanity check refuses larger sizes
   // before any line-offset table or tile buffer is sized from them.
   const int side = static_cast<int>(std::min<long long>(limit.maxPixels, 1 << 16));
+  const int tile = std::min(side, 4096);
+  checkHeadersWithCore(bytes, limit, side, tile);
   OPENEXR_IMF_NAMESPACE::Header::setMaxImageSize(side, side);
-  OPENEXR_IMF_NAMESPACE::Header::setMaxTileSize(std::min(side, 4096), std::min(side, 4096));
+  OPENEXR_IMF_NAMESPACE::Header::setMaxTileSize(tile, tile);
   std::vector<OPENEXR_IMF_NAMESPACE::Rgba> texels;
   long long width = 0, height = 0;
   try {
