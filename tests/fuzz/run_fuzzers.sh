@@ -32,7 +32,7 @@ lab_sources=(camera environment file_util image_io image_decoders/exr_decoder im
              image_decoders/png_decoder image_decoders/radiance_decoder json_lines json_reader mesh mesh_generators
              obj_loader painting scene)
 # shellcheck disable=SC2207
-image_libs=($(pkg-config --libs spng libjpeg OpenEXR))
+image_libs=($(pkg-config --libs spng libjpeg) -lOpenEXRCore-3_1)
 common+=($(pkg-config --cflags-only-I OpenEXR | sed 's/-I/-isystem /g'))
 
 # The lab core without the tracer (no Embree): instrumented for coverage.

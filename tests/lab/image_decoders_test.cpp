@@ -20,6 +20,7 @@
 
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfRgbaFile.h>
+#include <OpenEXR/ImfTiledRgbaFile.h>
 
 #include <csetjmp>
 #include <cstdio>
@@ -332,13 +333,35 @@ TEST(LabImageDecoders, ExrGivesTheHalvesItWasWritten) {
         EXPECT_EQ(img.at(x, h - 1 - y), vec4(float(t.r), float(t.g), float(t.b), 1.0f)) << x << "," << y << " c" << c;
       }
   }
-  // A luminance-only file reads as grey.
+  {
+    // Tiles of 4 x 2 over the 7 x 3 window: partial tiles at the right and bottom.
+    const std::string tiled = dir.file("tiled.exr");
+    Imf::Header header(Imath::Box2i({0, 0}, {7, 7}), window);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    Imf::TiledRgbaOutputFile file(tiled.c_str(), header, Imf::WRITE_RGB, 4, 2, Imf::ONE_LEVEL);
+    file.setFrameBuffer(Imf::ComputeBasePointer(texels.data(), window), 1, static_cast<std::size_t>(w));
+    file.writeTiles(0, file.numXTiles() - 1, 0, file.numYTiles() - 1);
+  }
+  const Image tiles = readImage(dir.file("tiled.exr"));
+  ASSERT_EQ(tiles.width, w);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const Imf::Rgba& t = texels[static_cast<std::size_t>(y * w + x)];
+      EXPECT_EQ(tiles.at(x, h - 1 - y), vec4(float(t.r), float(t.g), float(t.b), 1.0f)) << x << "," << y << " tiled";
+    }
+  // A luminance-only file reads as grey; luminance-chroma is refused with the reason.
+  const std::string yc = dir.file("yc.exr");
+  writeExr(yc, std::vector<Imf::Rgba>(64, Imf::Rgba(0.5f, 0.25f, 0.125f, 1.0f)), Imath::Box2i({0, 0}, {7, 7}), Imf::WRITE_YC);
+  EXPECT_EQ(labtest::errorOf([&] { readImage(yc); }, ErrorKind::Parse),
+            yc + ": cannot decode OpenEXR: channel BY is subsampled (luminance-chroma); save the image as RGB");
   const std::string grey = dir.file("y.exr");
   writeExr(grey, texels, window, Imf::WRITE_Y);
   const Image g = readImage(grey);
   EXPECT_EQ(g.at(3, 0).x, g.at(3, 0).y);
   EXPECT_EQ(g.at(3, 0).y, g.at(3, 0).z);
   EXPECT_GT(g.at(3, 0).x, 0.0f);
+  // Alpha and any other channel are read past, not stored: an RGBA file with
+  // more channels than the lab reads gives the same texels (above: RGBA).
   // Negative radiance reads as 0; a NaN or infinite texel is refused, named.
   std::vector<Imf::Rgba> odd = texels;
   odd[0] = Imf::Rgba(-1.0f, 0.5f, -0.0f, 1.0f);
@@ -408,8 +431,8 @@ TEST(LabImageDecoders, CommittedRegressionInputsGiveClearErrors) {
 }
 
 // Found by fuzz_image_exr: an attribute of a type OpenEXR does not know,
-// declaring 1.8 GB in a 100-byte file. OpenEXR 3.1's C++ reader allocated
-// that much before reading; its C core, which parses the headers first, refuses it.
+// declaring 1.8 GB in a 470-byte file. OpenEXR 3.1's C++ reader allocated
+// that much before reading; its C core, which the lab reads with, refuses it.
 TEST(LabImageDecoders, ExrAttributeLargerThanTheFileIsRefusedBeforeAllocation) {
   const std::string path = kSource + "/tests/fuzz/regressions/image_exr/exr_opaque_attribute_size_oom.exr";
   const std::string msg = labtest::errorOf([&] { readImage(path); }, ErrorKind::Parse);
