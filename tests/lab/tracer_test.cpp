@@ -13,7 +13,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
+#include <string>
 
 using namespace snell::lab;
 using glm::dvec3;
@@ -262,4 +264,25 @@ TEST(LabTracer, BundledSceneRendersSmallWithinBudget) {
       if (!full.mask.at(x, y)) {
         EXPECT_EQ(full.color.at(x, y), two.color.at(x, y));
       }
+}
+
+// Embree asserts (SIGABRT) on a ray with a non-finite origin or direction: the
+// tracer refuses such a camera or ray with Error(Render) before Embree sees it.
+TEST(LabTracer, NonFiniteCamerasAndRaysAreRefusedBeforeEmbree) {
+  const auto tracer = sphereTracer(2);
+  Camera camera;
+  camera.width = camera.height = 8;
+  camera.position = glm::vec3(0.0f, 0.0f, std::numeric_limits<float>::infinity());
+  TraceOptions options;
+  options.progress = false;
+  const std::string message = labtest::errorOf([&] { tracer->render(camera, options); }, ErrorKind::Render);
+  EXPECT_NE(message.find("camera"), std::string::npos) << message;
+  Ray ray;
+  ray.origin = dvec3(0.0, 0.0, 5.0);
+  ray.direction = dvec3(std::nan(""), 0.0, -1.0);
+  const std::string rayMessage = labtest::errorOf([&] { tracer->radiance(ray, options); }, ErrorKind::Render);
+  EXPECT_NE(rayMessage.find("non-finite"), std::string::npos) << rayMessage;
+  ray.direction = dvec3(0.0, 0.0, -1.0);
+  ray.origin = dvec3(1e39, 0.0, 5.0);  // finite in double, inf as the float Embree takes
+  labtest::errorOf([&] { tracer->principalPath(ray, 2, TirPolicy::Reflect); }, ErrorKind::Render);
 }

@@ -2,6 +2,8 @@
 
 #include "technique.hpp"
 
+#include "lab/error.hpp"
+
 #include <snell/gpu/context.hpp>
 #include <snell/gpu/depth_pyramid_pass.hpp>
 #include <snell/gpu/include_flattener.hpp>
@@ -20,6 +22,10 @@ namespace snell::lab {
 namespace fs = std::filesystem;
 
 ShadeConstants shadeConstants(const SceneFrame& frame, int margin) {
+  // GL gets the camera's float matrices: refuse non-finite ones here (the
+  // scene loader already does, naming the field) instead of drawing nothing.
+  const std::string problem = cameraProblem(frame.camera);
+  if (!problem.empty()) throw Error(ErrorKind::Render, "GL passes: camera: " + problem);
   ShadeConstants k;
   k.margin = std::max(0, margin);
   const float W = static_cast<float>(frame.camera.width), H = static_cast<float>(frame.camera.height);

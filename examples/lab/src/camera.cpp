@@ -33,6 +33,35 @@ Ray primaryRayAtUv(const Camera& camera, glm::dvec2 uv) {
   return r;
 }
 
+namespace {
+bool finiteMatrix(const mat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
+bool finiteRay(const Ray& r) {
+  return std::isfinite(r.origin.x) && std::isfinite(r.origin.y) && std::isfinite(r.origin.z) &&
+         std::isfinite(r.direction.x) && std::isfinite(r.direction.y) && std::isfinite(r.direction.z) &&
+         std::isfinite(r.tNear) && std::isfinite(r.tFar) && r.tNear >= 0.0 && r.tFar > r.tNear;
+}
+}  // namespace
+
+std::string cameraProblem(const Camera& c) {
+  if (c.width < 1 || c.height < 1) return "the resolution is empty";
+  if (!finiteMatrix(c.viewFromWorld()) || !finiteMatrix(c.worldFromView()))
+    return "the view matrix (float, from position, target and up) is not finite: the values are too large or too "
+           "close together for float arithmetic";
+  const mat4 clip = c.clipFromView();
+  if (!finiteMatrix(clip) || clip[0][0] == 0.0f)
+    return "the projection (float, from fov, near and far) is unusable: an entry would overflow or be denormal";
+  for (int py : {0, c.height - 1})
+    for (int px : {0, c.width - 1})
+      if (!finiteRay(primaryRay(c, px, py)))
+        return "the primary ray through pixel (" + std::to_string(px) + ", " + std::to_string(py) + ") is not finite";
+  return "";
+}
+
 Ray primaryRay(const Camera& camera, int px, int py) {
   return primaryRayAtUv(camera, glm::dvec2((px + 0.5) / camera.width, (py + 0.5) / camera.height));
 }

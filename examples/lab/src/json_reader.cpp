@@ -3,24 +3,36 @@
 #include "lab/error.hpp"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace snell::lab::detail {
 
-namespace {
 std::string formatNumber(double v) {
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
   std::ostringstream s;
   s << v;
   return s.str();
 }
-}  // namespace
 
 bool Range::contains(double v) const {
   if (!std::isfinite(v)) return false;
   if (loOpen ? !(v > lo) : !(v >= lo)) return false;
   if (hiOpen ? !(v < hi) : !(v <= hi)) return false;
   return true;
+}
+
+std::string Range::floatProblem(double v) const {
+  // Every scene number is stored as a float: a double that passed the check
+  // could still become inf (1e39), 0 (1e-50) or a bound of an open range.
+  const float f = static_cast<float>(v);
+  if (!std::isfinite(f)) return "is beyond the float range (largest " + formatNumber(std::numeric_limits<float>::max()) + ")";
+  // Below the smallest normal float a GPU may flush the value to 0, so where 0
+  // is refused such a value is refused too.
+  if (!contains(0.0) && std::fabs(f) < std::numeric_limits<float>::min())
+    return "rounds to 0 as a float (smallest normal float " + formatNumber(std::numeric_limits<float>::min()) + ")";
+  if (!contains(static_cast<double>(f))) return "rounds to " + formatNumber(static_cast<double>(f)) + " as a float";
+  return "";
 }
 
 std::string Range::describe() const {
@@ -96,6 +108,8 @@ double ObjectReader::number(const std::string& key, double fallback, Range range
   if (!j) return fallback;
   if (!j->is_number() || !range.contains(j->get<double>()))
     fail(key, "expected a number" + range.describe() + ", got " + preview(*j));
+  const std::string why = range.floatProblem(j->get<double>());
+  if (!why.empty()) fail(key, "expected a number" + range.describe() + ", got " + preview(*j) + ", which " + why);
   return j->get<double>();
 }
 
@@ -157,19 +171,27 @@ vec3 ObjectReader::vector3(const std::string& key, vec3 fallback, Range element,
   vec3 v;
   for (std::size_t i = 0; i < 3; ++i) {
     const Json& e = (*j)[i];
-    if (!e.is_number() || !element.contains(e.get<double>()))
-      detail::fail(src_, childPath(key) + "[" + std::to_string(i) + "]", want + ", got " + preview(*j));
+    elementCheck(e, childPath(key) + "[" + std::to_string(i) + "]", want, *j, element);
     v[static_cast<int>(i)] = e.get<float>();
   }
   return v;
+}
+
+void ObjectReader::elementCheck(const Json& e, const std::string& path, const std::string& want, const Json& whole,
+                                const Range& element) const {
+  if (!e.is_number() || !element.contains(e.get<double>())) detail::fail(src_, path, want + ", got " + preview(whole));
+  const std::string why = element.floatProblem(e.get<double>());
+  if (!why.empty()) detail::fail(src_, path, want + ", got " + preview(whole) + ": " + preview(e) + " " + why);
 }
 
 vec3 ObjectReader::vector3OrScalar(const std::string& key, vec3 fallback, Range element) {
   const Json* j = get(key);
   if (!j) return fallback;
   if (j->is_number()) {
-    if (!element.contains(j->get<double>()))
-      fail(key, "expected a number" + element.describe() + " or an array of 3 such numbers, got " + preview(*j));
+    const std::string want = "expected a number" + element.describe() + " or an array of 3 such numbers";
+    if (!element.contains(j->get<double>())) fail(key, want + ", got " + preview(*j));
+    const std::string why = element.floatProblem(j->get<double>());
+    if (!why.empty()) fail(key, want + ", got " + preview(*j) + ", which " + why);
     return vec3(j->get<float>());
   }
   return vector3(key, fallback, element);
@@ -183,8 +205,7 @@ vec2 ObjectReader::vector2(const std::string& key, vec2 fallback, Range element)
   vec2 v;
   for (std::size_t i = 0; i < 2; ++i) {
     const Json& e = (*j)[i];
-    if (!e.is_number() || !element.contains(e.get<double>()))
-      detail::fail(src_, childPath(key) + "[" + std::to_string(i) + "]", want + ", got " + preview(*j));
+    elementCheck(e, childPath(key) + "[" + std::to_string(i) + "]", want, *j, element);
     v[static_cast<int>(i)] = e.get<float>();
   }
   return v;
@@ -218,8 +239,7 @@ std::vector<vec3> ObjectReader::colorList(const std::string& key, std::size_t mi
     if (!c.is_array() || c.size() != 3) detail::fail(src_, p, "expected a colour [r, g, b], got " + preview(c));
     vec3 v;
     for (std::size_t k = 0; k < 3; ++k) {
-      if (!c[k].is_number() || !element.contains(c[k].get<double>()))
-        detail::fail(src_, p, "expected 3 numbers each" + element.describe() + ", got " + preview(c));
+      elementCheck(c[k], p, "expected 3 numbers each" + element.describe(), c, element);
       v[static_cast<int>(k)] = c[k].get<float>();
     }
     out.push_back(v);

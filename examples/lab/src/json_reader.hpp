@@ -34,9 +34,14 @@ struct Range {
   static Range closed(double a, double b) { return Range{a, b, false, false}; }
   static Range open(double a, double b) { return Range{a, b, true, true}; }
   bool contains(double v) const;
+  // Why v, contained, is no good as the float it becomes ("" when it is): not
+  // finite, rounded to 0 (or a denormal) where 0 is refused, or rounded onto
+  // an open bound or outside the range.
+  std::string floatProblem(double v) const;
   std::string describe() const;  // " in (0, 180)", "" for any()
 };
 
+std::string formatNumber(double v);  // "inf", "1e+39", "0.5"
 [[noreturn]] void fail(const SourceInfo& src, const std::string& path, const std::string& message);
 std::string preview(const Json& j);  // short JSON text of a value for messages
 
@@ -78,6 +83,9 @@ class ObjectReader {
 
   std::string childPath(const std::string& key) const;
   const Json* get(const std::string& key);
+  // One element of an array: a number in `element` that stays so as a float.
+  void elementCheck(const Json& e, const std::string& path, const std::string& want, const Json& whole,
+                    const Range& element) const;
 };
 
 }  // namespace snell::lab::detail

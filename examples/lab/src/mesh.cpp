@@ -103,12 +103,14 @@ glm::mat4 Transform::matrix() const {
 
 void applyTransform(Mesh& mesh, const Transform& transform) {
   const glm::mat4 m = transform.matrix();
-  const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(m)));
+  // In double: with a scale of 1e-20 or 1e20 (finite floats) the float
+  // inverse's determinant underflows or overflows and every normal became NaN.
+  const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(glm::mat3(m))));
   for (glm::vec3& p : mesh.positions) p = glm::vec3(m * glm::vec4(p, 1.0f));
   for (glm::vec3& n : mesh.normals) {
-    const glm::vec3 t = normalMatrix * n;
-    const float len = glm::length(t);
-    n = len > 0.0f ? t / len : glm::vec3(0.0f, 0.0f, 1.0f);
+    const glm::dvec3 t = normalMatrix * glm::dvec3(n);
+    const double len = glm::length(t);
+    n = len > 0.0 && std::isfinite(len) ? glm::vec3(t / len) : glm::vec3(0.0f, 0.0f, 1.0f);
   }
   if (glm::determinant(glm::mat3(m)) < 0.0f) flipWinding(mesh);
 }

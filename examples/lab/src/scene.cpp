@@ -7,6 +7,7 @@
 #include "lab/image_io.hpp"
 #include "lab/obj_loader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -25,6 +26,7 @@ constexpr int kMaxResolution = 16384;
 // listing 100,000 of them ran out of memory instead of failing with a message.
 constexpr std::size_t kMaxPaintings = 64;
 const Range kColor = Range::nonNegative();
+constexpr double kMaxFarOverNear = 1e7;
 
 Camera readCamera(ObjectReader r) {
   Camera c;
@@ -39,10 +41,36 @@ Camera readCamera(ObjectReader r) {
   c.zFar = static_cast<float>(r.number("far", c.zFar, Range::positive()));
   if (!(c.zFar > c.zNear))
     r.fail("far", "expected a number > near (" + std::to_string(c.zNear) + "), got " + std::to_string(c.zFar));
+  // The GL passes keep depth in a 32-bit float buffer: window depth is about
+  // 1 - near / distance, so past far / near = 2^24 every depth rounds to 1,
+  // the cleared value, and nothing draws (the lab then ran the tracer and only
+  // afterwards blamed the near plane).
+  if (static_cast<double>(c.zFar) / static_cast<double>(c.zNear) > kMaxFarOverNear)
+    r.fail("near", "far / near is " + detail::formatNumber(static_cast<double>(c.zFar) / static_cast<double>(c.zNear)) +
+                       "; at most " + detail::formatNumber(kMaxFarOverNear) +
+                       " keeps depths apart in the float depth buffer (raise near or lower far)");
+  // Derived values, in float as glm::lookAt computes them: the components can
+  // be finite floats while target - position or its squared length overflow.
   const vec3 forward = c.target - c.position;
-  if (!(length(forward) > 0.0f)) r.fail("target", "must differ from camera.position");
-  if (!(length(c.up) > 0.0f) || length(cross(normalize(forward), normalize(c.up))) < 1e-6f)
+  const char* farther = glm::length(glm::dvec3(c.position)) >= glm::length(glm::dvec3(c.target)) ? "position" : "target";
+  if (!std::isfinite(forward.x) || !std::isfinite(forward.y) || !std::isfinite(forward.z) ||
+      !std::isfinite(length(forward)))
+    r.fail(farther, "target - position is too long for float arithmetic (its squared length overflows a float)");
+  if (!(length(forward) > 0.0f))
+    r.fail("target", "must differ from camera.position (by more than float rounding: the squared distance must not "
+                     "round to 0)");
+  // up is a direction: scaled so that its largest component is 1, which keeps
+  // its squared length from overflowing (up [0, 1e20, 0] is [0, 1, 0]).
+  const float upScale = std::max({std::fabs(c.up.x), std::fabs(c.up.y), std::fabs(c.up.z)});
+  if (upScale > 0.0f) c.up /= upScale;
+  if (!(upScale > 0.0f) || length(cross(normalize(forward), normalize(c.up))) < 1e-6f)
     r.fail("up", "must be non-zero and not parallel to the view direction (target - position)");
+  const std::string problem = cameraProblem(c);
+  if (problem.rfind("the projection", 0) == 0) {
+    const float tanHalf = std::tan(0.5f * c.fovYRadians());
+    r.fail(std::isnormal(tanHalf) && std::isnormal(1.0f / tanHalf) ? "near" : "fov", problem);
+  }
+  if (!problem.empty()) r.fail(farther, problem);
   r.finish();
   return c;
 }
@@ -166,6 +194,11 @@ PaintingSpec readPainting(ObjectReader r, const std::string& sceneFile) {
   p.center = r.vector3("center", p.center, Range::any(), true);
   p.size = r.vector2("size", p.size, Range::positive());
   p.rotateDegrees = r.vector3("rotate", p.rotateDegrees);
+  // The corners, center +- the rotated half size, are what the tracer and the
+  // GL passes draw: each a finite float.
+  for (const vec3& corner : makePainting(p.center, p.size, p.rotateDegrees, Image(1, 1)).corners())
+    if (!std::isfinite(corner.x) || !std::isfinite(corner.y) || !std::isfinite(corner.z))
+      r.fail("size", "center +- size / 2 overflows a float (a corner of the painting is not finite)");
   if (r.has("texture")) p.texture = readTexture(r.object("texture"), sceneFile);
   r.finish();
   return p;
@@ -211,6 +244,11 @@ AnimationSpec readAnimation(ObjectReader r) {
   a.frames = r.integer("frames", a.frames, 1, 100000);
   a.timeStart = static_cast<float>(r.number("time_start", a.timeStart, Range::any()));
   a.timeStep = static_cast<float>(r.number("time_step", a.timeStep, Range::any()));
+  // Frame f is at time_start + f * time_step, in float (Scene::frameTime):
+  // linear in f, so the last frame's time being finite covers every frame.
+  const float last = a.timeStart + static_cast<float>(a.frames - 1) * a.timeStep;
+  if (!std::isfinite(static_cast<float>(a.frames - 1) * a.timeStep) || !std::isfinite(last))
+    r.fail("time_step", "the last frame's time, time_start + (frames - 1) * time_step, overflows a float");
   r.finish();
   return a;
 }
@@ -250,6 +288,36 @@ Scene parseScene(const std::string& text, const std::string& file) {
 
 Scene loadScene(const std::string& path) { return parseScene(readTextFile(path, "scene"), path); }
 
+namespace {
+
+std::string sceneWhere(const Scene& scene) { return scene.file.empty() ? std::string("<scene>") : scene.file; }
+
+// The first vertex of `mesh` with a non-finite position, or -1.
+long firstNonFiniteVertex(const Mesh& mesh) {
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    const vec3& p = mesh.positions[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return static_cast<long>(i);
+  }
+  return -1;
+}
+
+// Which field of object.transform takes vertex `i` of `before` out of the
+// float range: the transform applies scale, then rotate, then translate.
+std::string transformCulprit(const std::vector<vec3>& before, std::size_t i, const Transform& t) {
+  Transform partial;
+  partial.scale = t.scale;
+  const auto finite = [&](const Transform& tr) {
+    const vec3 p = vec3(tr.matrix() * vec4(before[i], 1.0f));
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+  };
+  if (!finite(partial)) return "scale";
+  partial.rotateDegrees = t.rotateDegrees;
+  if (!finite(partial)) return "rotate";
+  return "translate";
+}
+
+}  // namespace
+
 Mesh buildObjectMesh(const Scene& scene, float time) {
   const MeshSpec& m = scene.object.mesh;
   Mesh mesh;
@@ -264,6 +332,11 @@ Mesh buildObjectMesh(const Scene& scene, float time) {
         fit.scale = vec3(m.fitSize / largest);
         for (vec3& p : mesh.positions) p -= b.center();
         applyTransform(mesh, fit);
+        const long bad = firstNonFiniteVertex(mesh);
+        if (bad >= 0)
+          throw Error(ErrorKind::Schema, sceneWhere(scene) + ": object.mesh.fit_size: the fitted mesh (" + m.path +
+                                             ") has non-finite vertex " + std::to_string(bad) +
+                                             " (its bounding box is empty or too large for float arithmetic)");
       }
       break;
     }
@@ -272,8 +345,22 @@ Mesh buildObjectMesh(const Scene& scene, float time) {
     case MeshKind::Torus: mesh = makeTorus(m.majorRadius, m.minorRadius, m.majorSegments, m.minorSegments); break;
     case MeshKind::Blob: mesh = makeBlob(m.blob, time); break;
   }
+  const std::string what = m.kind == MeshKind::Obj ? m.path : std::string("built-in mesh");
+  // The untransformed mesh first, so that a transform that overflows is named
+  // as such rather than as a bad mesh.
+  const long badBefore = firstNonFiniteVertex(mesh);
+  if (badBefore >= 0)
+    throw Error(ErrorKind::Mesh, sceneWhere(scene) + ": object.mesh: " + what + ": vertex " +
+                                     std::to_string(badBefore) + " is not finite" +
+                                     (m.kind == MeshKind::Blob ? " at time " + detail::formatNumber(time) : ""));
+  const std::vector<vec3> before = mesh.positions;
   applyTransform(mesh, scene.object.transform);
-  validateMesh(mesh, m.kind == MeshKind::Obj ? m.path : std::string("built-in mesh"));
+  const long bad = firstNonFiniteVertex(mesh);
+  if (bad >= 0)
+    throw Error(ErrorKind::Schema, sceneWhere(scene) + ": object.transform." +
+                                       transformCulprit(before, static_cast<std::size_t>(bad), scene.object.transform) +
+                                       ": the transformed mesh has non-finite vertex " + std::to_string(bad));
+  validateMesh(mesh, what);
   return mesh;
 }
 

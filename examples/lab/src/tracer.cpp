@@ -139,6 +139,16 @@ struct ReferenceTracer::Impl {
     rh.ray.tnear = static_cast<float>(tNear);
     rh.ray.tfar = tFar >= static_cast<double>(std::numeric_limits<float>::max()) ? std::numeric_limits<float>::infinity()
                                                                                  : static_cast<float>(tFar);
+    // Embree asserts (and aborts the process) on a ray it deems invalid; the
+    // scene loader refuses cameras that would make one, this is the defence.
+    if (!std::isfinite(rh.ray.org_x) || !std::isfinite(rh.ray.org_y) || !std::isfinite(rh.ray.org_z) ||
+        !std::isfinite(rh.ray.dir_x) || !std::isfinite(rh.ray.dir_y) || !std::isfinite(rh.ray.dir_z) ||
+        !(rh.ray.tnear >= 0.0f) || !(rh.ray.tnear <= rh.ray.tfar))
+      throw Error(ErrorKind::Render, "ray tracer: a ray with a non-finite origin, direction or range (origin (" +
+                                         std::to_string(o.x) + ", " + std::to_string(o.y) + ", " + std::to_string(o.z) +
+                                         "), direction (" + std::to_string(d.x) + ", " + std::to_string(d.y) + ", " +
+                                         std::to_string(d.z) + ")): the camera or the scene holds values beyond float "
+                                         "arithmetic");
     rh.ray.time = 0.0f;
     rh.ray.mask = 0xFFFFFFFFu;
     rh.ray.id = 0;
@@ -302,6 +312,8 @@ glm::dvec3 ReferenceTracer::radiance(const Ray& ray, const TraceOptions& options
 
 TraceResult ReferenceTracer::render(const Camera& camera, const TraceOptions& options) const {
   const auto start = std::chrono::steady_clock::now();
+  const std::string problem = cameraProblem(camera);
+  if (!problem.empty()) throw Error(ErrorKind::Render, "ray tracer: camera: " + problem);
   TraceResult result;
   result.color = Image(camera.width, camera.height, vec4(0.0f, 0.0f, 0.0f, 1.0f));
   result.mask = Mask(camera.width, camera.height);

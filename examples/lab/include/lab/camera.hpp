@@ -9,6 +9,8 @@
 
 #include <glm/glm.hpp>
 
+#include <string>
+
 namespace snell::lab {
 
 // Render sizes the lab accepts, from a scene's camera.resolution or --size:
@@ -39,6 +41,14 @@ struct Ray {
   double tNear = 0.0;
   double tFar = 1e30;
 };
+
+// Why `camera` cannot render ("" when it can): its view and projection
+// matrices, in float as GL gets them, must be finite (snellPerspective's zero
+// matrix counts as unusable), and the primary rays through the corner pixels,
+// in double as the tracer builds them, finite. The scene loader refuses such
+// a camera naming the field; the tracer and the GL passes check again so that
+// neither Embree nor GL ever sees a non-finite ray.
+std::string cameraProblem(const Camera& camera);
 
 // The ray through the centre of pixel (px, py) (py = 0 is the bottom row),
 // from the camera position, clipped to the near and far planes (tNear/tFar are
