@@ -4,8 +4,8 @@
 #     bash tests/fuzz/campaign.sh                 # every target, the default times
 #     bash tests/fuzz/campaign.sh obj:90 image_png:5  # chosen targets, minutes each
 #
-# Default: include_flattener 30, scene 60, obj 60, and 30 for each image format
-# (image_png, image_jpeg, image_exr, image_hdr)
+# Default: include_flattener 30, scene 60, scene_render 30, obj 60, and 30 for
+# each image format (image_png, image_jpeg, image_exr, image_hdr)
 # (SNELL_CAMPAIGN_MINUTES=N sets every default time to N). Targets run one
 # after another, each on its own core in libFuzzer's fork mode, which goes on
 # after a finding (-ignore_crashes/-ignore_ooms/-ignore_timeouts) so one bug
@@ -26,14 +26,16 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 out=${SNELL_FUZZ_BUILD_DIR:-$root/build/fuzz}
 dir=$out/campaign
 default=${SNELL_CAMPAIGN_MINUTES:-}
+# shellcheck source=tests/fuzz/targets.sh
+source "$root/tests/fuzz/targets.sh"
 plan=("$@")
-[ ${#plan[@]} -gt 0 ] || plan=("include_flattener:${default:-30}" "scene:${default:-60}" "obj:${default:-60}" "image_png:${default:-30}"
+[ ${#plan[@]} -gt 0 ] || plan=("include_flattener:${default:-30}" "scene:${default:-60}" "scene_render:${default:-30}" "obj:${default:-60}" "image_png:${default:-30}"
                              "image_jpeg:${default:-30}" "image_exr:${default:-30}" "image_hdr:${default:-30}")
 
 targets=()
 for p in "${plan[@]}"; do
   t=${p%%:*}
-  [ -d "$root/tests/fuzz/corpus/$t" ] || { echo "campaign: unknown target '$t' (one of: $(ls "$root/tests/fuzz/corpus" | tr '\n' ' '))" >&2; exit 2; }
+  [[ " $snell_fuzz_targets " == *" $t "* ]] || { echo "campaign: unknown target '$t' (one of: $snell_fuzz_targets)" >&2; exit 2; }
   m=${p#*:}; [ "$m" != "$p" ] || m=${default:-30}
   [[ "$m" =~ ^[0-9]+$ ]] && [ "$m" -gt 0 ] || { echo "campaign: '$p': minutes must be a positive whole number" >&2; exit 2; }
   targets+=("$t")
@@ -50,7 +52,7 @@ coverage() { { "$out/fuzz_$1" -runs=0 "${limits[@]}" "$2" 2>&1 || true; } | grep
 campaign_target() {
   set +e  # a step that fails leaves "?" in the row, it does not end the campaign
   local t=$1 m=$2
-  local work=$dir/$t/corpus findings=$dir/$t/findings committed=$root/tests/fuzz/corpus/$t
+  local work=$dir/$t/corpus findings=$dir/$t/findings committed=$root/tests/fuzz/corpus/$(corpus_of "$t")
   rm -f "$dir/$t/row.md"
   mkdir -p "$work" "$findings"
   cp -n "$committed/"* "$work/" 2>/dev/null || true

@@ -10,9 +10,9 @@
 #
 # Environment: SNELL_FUZZ_TIME (seconds per target, default 20),
 # SNELL_FUZZ_BUILD_DIR (default build/fuzz), CLANGXX (default clang++-14 or clang++),
-# SNELL_FUZZ_TARGETS (default "include_flattener scene obj image_png image_jpeg
-# image_exr image_hdr"; the image_<format> targets are one source, fuzz_image.cpp,
-# each fuzzed from its own format's corpus),
+# SNELL_FUZZ_TARGETS (default: every target tests/fuzz/targets.sh lists; the
+# image_<format> targets are one source, fuzz_image.cpp, each fuzzed from its
+# own format's corpus), targets fuzzed $(nproc) at a time,
 # SNELL_FUZZ_BUILD_ONLY=1 (build the targets and stop: tests/fuzz/campaign.sh).
 # Needs clang-14 and libclang-rt-14-dev (scripts/install-deps.sh). The image
 # libraries (libspng, libjpeg-turbo, OpenEXR) are Debian's, not instrumented:
@@ -21,7 +21,9 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 out=${SNELL_FUZZ_BUILD_DIR:-$root/build/fuzz}
 seconds=${SNELL_FUZZ_TIME:-10}
-targets=${SNELL_FUZZ_TARGETS:-"include_flattener scene obj image_png image_jpeg image_exr image_hdr"}
+# shellcheck source=tests/fuzz/targets.sh
+source "$root/tests/fuzz/targets.sh"
+targets=${SNELL_FUZZ_TARGETS:-$snell_fuzz_targets}
 cxx=${CLANGXX:-$(command -v clang++-14 || command -v clang++ || true)}
 [ -n "$cxx" ] || { echo "run_fuzzers: clang++ not found (install clang-14 libclang-rt-14-dev)" >&2; exit 1; }
 mkdir -p "$out/obj/image_decoders"
@@ -35,9 +37,10 @@ lab_sources=(camera environment file_util image_io image_decoders/exr_decoder im
 image_libs=($(pkg-config --libs spng libjpeg) -lOpenEXRCore-3_1)
 common+=($(pkg-config --cflags-only-I OpenEXR | sed 's/-I/-isystem /g'))
 
-# The lab core without the tracer (no Embree): instrumented for coverage.
-objs=() pids=()
-for s in "${lab_sources[@]}"; do
+# The lab core, instrumented for coverage; the tracer (Embree) only for scene_render.
+render_sources=(tracer progress)
+objs=() render_objs=() pids=()
+for s in "${lab_sources[@]}" "${render_sources[@]}"; do
   src=$root/examples/lab/src/$s.cpp o=$out/obj/$s.o
   if [ ! -f "$o" ] || [ "$src" -nt "$o" ] || [ -n "$(find "$root/examples/lab" "$root/include" -newer "$o" -name '*.hpp' -print -quit)" ]; then
     echo "run_fuzzers: compiling $s.cpp"
@@ -46,48 +49,27 @@ for s in "${lab_sources[@]}"; do
     # at most $(nproc) compilers at a time
     if [ ${#pids[@]} -ge "$(nproc)" ]; then wait "${pids[0]}"; pids=("${pids[@]:1}"); fi
   fi
-  objs+=("$o")
+  case " ${render_sources[*]} " in *" $s "*) render_objs+=("$o") ;; *) objs+=("$o") ;; esac
 done
 for p in "${pids[@]}"; do wait "$p"; done
 # The targets, $(nproc) at a time; a failed build fails the script.
 pids=()
-build_status=0
-for t in $targets; do
-  bin=$out/fuzz_$t
-  src=$t
-  case $t in image_*) src=image ;; esac
-  if [ -f "$bin" ] && [ -z "$(find "$root/tests/fuzz/fuzz_$src.cpp" "$root/include" "$root/glsl" -newer "$bin" -print -quit)" ] &&
-     [ -z "$(find "$out/obj" -newer "$bin" -print -quit)" ]; then continue; fi
-  echo "run_fuzzers: building fuzz_$t"
-  extra=()
-  [ "$t" = include_flattener ] || extra=("${objs[@]}" "${image_libs[@]}")
-  "$cxx" "${common[@]}" -fsanitize=fuzzer "$root/tests/fuzz/fuzz_$src.cpp" "${extra[@]}" -o "$bin.tmp" -lpthread &&
-    mv "$bin.tmp" "$bin" &
-  pids+=($!)
-  if [ ${#pids[@]} -ge "$(nproc)" ]; then wait "${pids[0]}" || build_status=1; pids=("${pids[@]:1}"); fi
-done
-for p in "${pids[@]}"; do wait "$p" || build_status=1; done
-[ "$build_status" = 0 ] || { echo "run_fuzzers: a fuzz target failed to build" >&2; exit 1; }
-
-[ "${SNELL_FUZZ_BUILD_ONLY:-0}" = 1 ] && exit 0
-
-export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}
-export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
-status=0
-for t in $targets; do
-  reg=$root/tests/fuzz/regressions/$t
+build_# One target: its regressions once, then fuzzing; the outcome goes to $out/$t.status.
+fuzz_target() {
+  local t=$1 ok=1
+  local reg=$root/tests/fuzz/regressions/$t
   if [ -d "$reg" ] && [ -n "$(ls -A "$reg")" ]; then
     echo "run_fuzzers: $t: regressions ($(ls "$reg" | wc -l) inputs)"
     if ! "$out/fuzz_$t" -rss_limit_mb=2048 -timeout=25 "$reg"/* > "$out/$t.regressions.log" 2>&1; then
       tail -n 40 "$out/$t.regressions.log" >&2
       echo "run_fuzzers: $t: a regression input fails again (log: $out/$t.regressions.log)" >&2
-      status=1
+      ok=0
     fi
   fi
-  work=$out/corpus/$t crashes=$out/crashes/$t
+  local work=$out/corpus/$t crashes=$out/crashes/$t
   rm -rf "$work" "$crashes"
   mkdir -p "$work" "$crashes"
-  cp "$root/tests/fuzz/corpus/$t/"* "$work/"
+  cp "$root/tests/fuzz/corpus/$(corpus_of "$t")/"* "$work/"
   echo "run_fuzzers: $t: fuzzing for ${seconds}s"
   if "$out/fuzz_$t" "$work" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=1024 -timeout=25 \
        -max_len=65536 -print_final_stats=1 -artifact_prefix="$crashes/" > "$out/$t.log" 2>&1; then
@@ -96,7 +78,21 @@ for t in $targets; do
     tail -n 60 "$out/$t.log" >&2
     echo "run_fuzzers: $t: CRASH; input(s): $(ls "$crashes")" >&2
     echo "run_fuzzers: fix it, then commit the input: cp $crashes/* $reg/" >&2
-    status=1
+    ok=0
   fi
+  echo "$ok" > "$out/$t.status"
+}
+# $(nproc) targets at a time: each fuzzes one core.
+pids=()
+for t in $targets; do
+  rm -f "$out/$t.status"
+  fuzz_target "$t" &
+  pids+=($!)
+  if [ ${#pids[@]} -ge "$(nproc)" ]; then wait "${pids[0]}" || true; pids=("${pids[@]:1}"); fi
+done
+for p in "${pids[@]}"; do wait "$p" || true; done
+status=0
+for t in $targets; do
+  [ "$(cat "$out/$t.status" 2>/dev/null)" = 1 ] || { echo "run_fuzzers: $t: failed" >&2; status=1; }
 done
 exit $status
