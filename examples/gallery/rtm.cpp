@@ -5,6 +5,7 @@
 // Snell refraction to the plane, per vertex and per pixel (at the rasterized
 // surface point, about the interpolated normal), as a function of the wave
 // amplitude; the approximate ray's refraction factor is fitted on the flat mesh.
+#include <array>
 #include <cmath>
 #include <initializer_list>
 #include <sstream>
@@ -85,6 +86,7 @@ glm::dvec2 exactUv(glm::dvec3 vertex, glm::dvec3 normal, glm::dvec3 eye) {
   return glm::clamp(glm::dvec2(u, v), 0.0, 1.0);
 }
 
+// A uv error in texels of the map, mean and max (per vertex or per pixel).
 struct UvError {
   double mean = 0.0, max = 0.0;
 };
@@ -104,46 +106,70 @@ UvError approxError(const std::vector<vec4>& v, vec3 eye, float factor) {
   return e;
 }
 
-}  // namespace
+// ---- The stages of one refractive texture mapping run, in order (runRtm below). ----
 
-EffectResult runRtm(const Gl& g, const Options& o) {
-  const gpu::GlApi& gl = g.gl();
-  const int W = o.width, H = o.height;
-  const lab::Camera cam = camera(vec3(0.0f, 3.0f, 3.2f), vec3(0.0f, -0.6f, -0.2f), 50.0f, o);
-  const mat4 clip = clipFromWorld(cam);
+constexpr float kAmplitude = 0.06f;  // the waves in the pictures, the animation and the timed passes
 
-  // The refraction factor that best matches Snell's law on the flat mesh (golden-section search).
+// The approximate ray's one free parameter, the refraction factor, fitted once so that it best matches
+// Snell's law on the flat mesh seen from `eye` (golden-section search on the mean per-vertex error).
+float fitRefractionFactor(vec3 eye) {
   std::vector<vec4> flat, flatTriangles;
   mesh({0.0f, 0.0f}, flat, flatTriangles);
   float lo = 0.0f, hi = 3.0f;
   for (int it = 0; it < 40; ++it) {
     const float a = hi - (hi - lo) * 0.618034f, b = lo + (hi - lo) * 0.618034f;
-    if (approxError(flat, cam.position, a).mean < approxError(flat, cam.position, b).mean)
+    if (approxError(flat, eye, a).mean < approxError(flat, eye, b).mean)
       hi = b;
     else
       lo = a;
   }
-  const float factor = 0.5f * (lo + hi);
-  const SnellRefractiveTextureMapParams rp = params(factor);
-  const float amplitude = 0.06f;
+  return 0.5f * (lo + hi);
+}
 
-  const Texture2D floorTex = texture(floorImage(kMapSize), Filter::Linear);
-  gpu::Texture floorGl(gl, floorTex);
-  gpu::Program draw = g.program("gallery_rtm.vert", "gallery_rtm.frag");
-  gpu::Framebuffer fb(gl, W, H, 4, true), plainFb(gl, W, H, 1, false);
-  draw.set("eye", cam.position);
-  draw.set("eta", kEta);
-  draw.set("extent", vec4(rp.extentMin, rp.extentMax));
-  draw.set("planeParams", vec3(rp.restY, rp.depth, rp.refractionFactor));
-  draw.set("clipFromWorld", clip);
-
+// The wave mesh on the GL side: the floor map (the C++ side samples the same one), the drawing program
+// with the eye and the map's plane set once, its render target (colour, uv, world position, normal), the
+// plain pass's target, and the mesh's triangles (re-uploaded per amplitude and time) with the buffer the
+// vertex shader stores its uvs in.
+struct RtmGpu {
+  const Gl& g;
+  const gpu::GlApi& gl;
+  const vec3 eye;
+  const SnellRefractiveTextureMapParams rp;
+  const Texture2D floorTex;
+  const gpu::Texture floorGl;
+  const gpu::Program draw;
+  const gpu::Framebuffer fb, plainFb;
   std::vector<vec4> vertices, triangles;
-  gpu::StorageBuffer tbuf(gl), uvbuf(gl);  // the triangles' corners, the drawn vertices' uvs
-  auto upload = [&](float amp, float time) {
+  gpu::StorageBuffer tbuf, uvbuf;  // the triangles' corners, the drawn vertices' uvs
+
+  RtmGpu(const Gl& gallery, const Options& o, const lab::Camera& cam, const SnellRefractiveTextureMapParams& mapParams)
+      : g(gallery),
+        gl(gallery.gl()),
+        eye(cam.position),
+        rp(mapParams),
+        floorTex(texture(floorImage(kMapSize), Filter::Linear)),
+        floorGl(gl, floorTex),
+        draw(g.program("gallery_rtm.vert", "gallery_rtm.frag")),
+        fb(gl, o.width, o.height, 4, true),
+        plainFb(gl, o.width, o.height, 1, false),
+        tbuf(gl),
+        uvbuf(gl) {
+    draw.set("eye", eye);
+    draw.set("eta", kEta);
+    draw.set("extent", vec4(rp.extentMin, rp.extentMax));
+    draw.set("planeParams", vec3(rp.restY, rp.depth, rp.refractionFactor));
+    draw.set("clipFromWorld", clipFromWorld(cam));
+  }
+
+  // The mesh of waves of amplitude `amp` at `time`, its triangles uploaded for drawing.
+  void upload(float amp, float time) {
     mesh({amp, time}, vertices, triangles);
     tbuf.upload(triangles);
-  };
-  auto drawPass = [&](bool exact, bool storeUvs = false) {
+  }
+
+  // The mesh drawn into fb with the approximate ray or Snell's law per vertex; with `storeUvs`, the
+  // vertex shader also stores each drawn vertex's uv in uvbuf.
+  void drawPass(bool exact, bool storeUvs = false) {
     for (int a = 0; a < 4; ++a) fb.clearColor(a, vec4(0.0f));
     fb.clearDepth(1.0f);
     fb.bind();
@@ -158,51 +184,63 @@ EffectResult runRtm(const Gl& g, const Options& o) {
     uvbuf.bindBase(1);
     draw.use();
     g.drawArrays(GLsizei(triangles.size() / 2));
-  };
-  auto plainPass = [&] { g.plainPass(plainFb, floorGl.id()); };
+  }
 
-  upload(amplitude, 0.0f);
+  // The cost yardstick: the floor map read once per pixel.
+  void plainPass() const { g.plainPass(plainFb, floorGl.id()); }
+};
 
-  EffectResult result;
-  const std::vector<double> ms =
-      g.timeInterleaved({plainPass, [&] { drawPass(false); }, [&] { drawPass(true); }}, o.timingRepeats);
+// The cost columns: the plain pass and the mesh drawn with each variant, interleaved.
+std::vector<double> timeRtm(RtmGpu& w, int repeats) {
+  return w.g.timeInterleaved({[&] { w.plainPass(); }, [&] { w.drawPass(false); }, [&] { w.drawPass(true); }},
+                             repeats);
+}
 
-  // Per vertex: the uvs the drawing vertex shader computed (it stores them by gl_VertexID) against C++.
-  const std::size_t corners = triangles.size() / 2;
-  double vertexMax[2] = {0.0, 0.0};
+// Per vertex, each variant: the uvs the drawing vertex shader computed (it stores them by gl_VertexID)
+// against C++, the largest difference in texels of the map.
+std::array<double, 2> compareVertexUvs(RtmGpu& w) {
+  const std::size_t corners = w.triangles.size() / 2;
+  std::array<double, 2> vertexMax = {0.0, 0.0};
   for (bool exact : {false, true}) {
-    uvbuf.allocate(corners * sizeof(vec4));
-    drawPass(exact, true);
-    gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    const std::vector<vec4> gpuUv = uvbuf.downloadVec4();
+    w.uvbuf.allocate(corners * sizeof(vec4));
+    w.drawPass(exact, true);
+    w.gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    const std::vector<vec4> gpuUv = w.uvbuf.downloadVec4();
     for (std::size_t k = 0; k < corners; ++k) {
-      const vec2 c = galleryRtmUv(vec3(triangles[2 * k]), vec3(triangles[2 * k + 1]), cam.position, exact, kEta, rp);
+      const vec2 c = galleryRtmUv(vec3(w.triangles[2 * k]), vec3(w.triangles[2 * k + 1]), w.eye, exact, kEta, w.rp);
       vertexMax[exact] = std::max(vertexMax[exact], double(glm::length(c - vec2(gpuUv[k]))) * kMapSize);
     }
   }
+  return vertexMax;
+}
 
-  std::vector<Image> renders, uvs;
-  for (bool exact : {false, true}) {
-    drawPass(exact);
-    const Image gpuImage = fb.readColor(0), uvImage = fb.readColor(1);
-    Image cpuImage(W, H);
-    std::vector<bool> on(gpuImage.texels.size());
-    for (std::size_t i = 0; i < on.size(); ++i) {
-      on[i] = uvImage.texels[i].w != 0.0f;
-      if (on[i]) cpuImage.texels[i] = vec4(vec3(floorTex.sampleLod(vec2(uvImage.texels[i]), 0.0f)), 1.0f);
-    }
-    const gpu::FrameComparison a = compare(gpuImage, cpuImage, on);
-    Row r = makeRow("refractive texture mapping",
-                    exact ? "Snell's law per vertex" : "approximate ray per vertex (factor " + fixed(factor, 3) + ")",
-                    1, ms[exact ? 2 : 1], ms[0], a);
-    r.check = "per-vertex uv, GPU vs C++: " + fixed(vertexMax[exact ? 1 : 0], 4) + " texels max";
-    r.metrics = {{"vertex_uv_gpu_cpu_max_texels", vertexMax[exact ? 1 : 0]}, {"refraction_factor", factor}};
-    result.rows.push_back(r);
-    renders.push_back(gpuImage);
-    uvs.push_back(uvImage);
+// One variant's row: the drawn frame against C++ sampling the map at the rasterized uvs; its render and
+// its uv image go to `renders` and `uvs` for the picture.
+Row measureVariant(RtmGpu& w, bool exact, float factor, const std::vector<double>& ms,
+                   const std::array<double, 2>& vertexMax, std::vector<Image>& renders, std::vector<Image>& uvs) {
+  w.drawPass(exact);
+  const Image gpuImage = w.fb.readColor(0), uvImage = w.fb.readColor(1);
+  Image cpuImage(gpuImage.width, gpuImage.height);
+  std::vector<bool> on(gpuImage.texels.size());
+  for (std::size_t i = 0; i < on.size(); ++i) {
+    on[i] = uvImage.texels[i].w != 0.0f;
+    if (on[i]) cpuImage.texels[i] = vec4(vec3(w.floorTex.sampleLod(vec2(uvImage.texels[i]), 0.0f)), 1.0f);
   }
-  // The difference of the two uv images, in texels of the 512 x 512 map.
-  Image diff(W, H);
+  const gpu::FrameComparison a = compare(gpuImage, cpuImage, on);
+  Row r = makeRow("refractive texture mapping",
+                  exact ? "Snell's law per vertex" : "approximate ray per vertex (factor " + fixed(factor, 3) + ")",
+                  1, ms[exact ? 2 : 1], ms[0], a);
+  r.check = "per-vertex uv, GPU vs C++: " + fixed(vertexMax[exact ? 1 : 0], 4) + " texels max";
+  r.metrics = {{"vertex_uv_gpu_cpu_max_texels", vertexMax[exact ? 1 : 0]}, {"refraction_factor", factor}};
+  renders.push_back(gpuImage);
+  uvs.push_back(uvImage);
+  return r;
+}
+
+// The picture: both variants and the difference of their uv images, in texels of the 512 x 512 map.
+void saveRtmPanel(const Options& o, const std::vector<Image>& renders, const std::vector<Image>& uvs,
+                  EffectResult& result) {
+  Image diff(o.width, o.height);
   for (std::size_t i = 0; i < diff.texels.size(); ++i)
     if (uvs[0].texels[i].w != 0.0f && uvs[1].texels[i].w != 0.0f)
       diff.texels[i] = vec4(
@@ -210,35 +248,43 @@ EffectResult runRtm(const Gl& g, const Options& o) {
   savePanel(o, "rtm.png", {{&renders[0], "approximate ray"}, {&renders[1], "Snell's law"}, {&diff, "uv difference"}},
             "A sine-wave water mesh over the pool floor; uv difference black 0 to white 16 texels of the 512 map.",
             result);
+}
+
+// The animation, with the approximate ray: the waves travel, 0.4 s per frame.
+void animateRtm(RtmGpu& w, const Options& o, EffectResult& result) {
   std::vector<Image> frames;
   for (int f = 0; f < o.frames; ++f) {
-    upload(amplitude, 0.4f * float(f));
-    drawPass(false);
-    frames.push_back(fb.readColor(0));
+    w.upload(kAmplitude, 0.4f * float(f));
+    w.drawPass(false);
+    frames.push_back(w.fb.readColor(0));
   }
   saveAnimation(o, "rtm", frames, result);
-  // Both against Snell's law as the waves grow: per vertex, and per pixel at the rasterized surface point.
-  struct PixelError {
-    double mean = 0.0, max = 0.0;
-  };
-  auto perPixel = [&](bool exact) {
-    drawPass(exact);
-    const Image uv = fb.readColor(1), world = fb.readColor(2), normal = fb.readColor(3);
-    PixelError e;
-    long n = 0;
-    for (std::size_t i = 0; i < uv.texels.size(); ++i) {
-      if (uv.texels[i].w == 0.0f) continue;
-      const double d = glm::length(glm::dvec2(vec2(uv.texels[i])) - exactUv(glm::dvec3(vec3(world.texels[i])),
-                                                                            glm::dvec3(vec3(normal.texels[i])),
-                                                                            glm::dvec3(cam.position))) *
-                       kMapSize;
-      e.mean += d;
-      e.max = std::max(e.max, d);
-      ++n;
-    }
-    e.mean /= double(std::max(1L, n));
-    return e;
-  };
+}
+
+// One variant against Snell's law per pixel: the interpolated uv against the exact refraction at the
+// rasterized surface point about the interpolated normal, texels of the map.
+UvError pixelError(RtmGpu& w, bool exact) {
+  w.drawPass(exact);
+  const Image uv = w.fb.readColor(1), world = w.fb.readColor(2), normal = w.fb.readColor(3);
+  UvError e;
+  long n = 0;
+  for (std::size_t i = 0; i < uv.texels.size(); ++i) {
+    if (uv.texels[i].w == 0.0f) continue;
+    const double d = glm::length(glm::dvec2(vec2(uv.texels[i])) - exactUv(glm::dvec3(vec3(world.texels[i])),
+                                                                          glm::dvec3(vec3(normal.texels[i])),
+                                                                          glm::dvec3(w.eye))) *
+                     kMapSize;
+    e.mean += d;
+    e.max = std::max(e.max, d);
+    ++n;
+  }
+  e.mean /= double(std::max(1L, n));
+  return e;
+}
+
+// Both variants against Snell's law as the waves grow, per vertex and per pixel: the findings' table,
+// and its means as metrics of the rows (the approximate ray's first, Snell's law's last).
+std::string amplitudeSweep(RtmGpu& w, float factor, std::vector<Row>& rows) {
   std::ostringstream t;
   t << "Refractive texture mapping against Snell's law to the floor plane in double precision (not the library's "
        "function), uv error in texels of the "
@@ -249,16 +295,33 @@ EffectResult runRtm(const Gl& g, const Options& o) {
        "| wave amplitude | approximate, per vertex | approximate, per pixel | Snell per vertex, per pixel |\n"
        "|---|---|---|---|\n";
   for (float amp : {0.0f, 0.02f, 0.04f, 0.06f, 0.1f, 0.15f}) {
-    upload(amp, 0.0f);
-    const UvError v = approxError(vertices, cam.position, factor);
-    const PixelError pa = perPixel(false), pe = perPixel(true);
+    w.upload(amp, 0.0f);
+    const UvError v = approxError(w.vertices, w.eye, factor);
+    const UvError pa = pixelError(w, false), pe = pixelError(w, true);
     t << "| " << fixed(amp, 2) << " | " << fixed(v.mean, 2) << " / " << fixed(v.max, 2) << " | " << fixed(pa.mean, 2)
       << " / " << fixed(pa.max, 2) << " | " << fixed(pe.mean, 2) << " / " << fixed(pe.max, 2) << " |\n";
-    result.rows.front().metrics["approx_error_mean_texels_a" + fixed(amp, 2)] = v.mean;
-    result.rows.front().metrics["approx_pixel_error_mean_texels_a" + fixed(amp, 2)] = pa.mean;
-    result.rows.back().metrics["snell_vertex_pixel_error_mean_texels_a" + fixed(amp, 2)] = pe.mean;
+    rows.front().metrics["approx_error_mean_texels_a" + fixed(amp, 2)] = v.mean;
+    rows.front().metrics["approx_pixel_error_mean_texels_a" + fixed(amp, 2)] = pa.mean;
+    rows.back().metrics["snell_vertex_pixel_error_mean_texels_a" + fixed(amp, 2)] = pe.mean;
   }
-  result.findings.push_back(t.str());
+  return t.str();
+}
+
+}  // namespace
+
+EffectResult runRtm(const Gl& g, const Options& o) {
+  const lab::Camera cam = camera(vec3(0.0f, 3.0f, 3.2f), vec3(0.0f, -0.6f, -0.2f), 50.0f, o);
+  const float factor = fitRefractionFactor(cam.position);
+  RtmGpu w(g, o, cam, params(factor));
+  w.upload(kAmplitude, 0.0f);
+  EffectResult result;
+  const std::vector<double> ms = timeRtm(w, o.timingRepeats);
+  const std::array<double, 2> vertexMax = compareVertexUvs(w);
+  std::vector<Image> renders, uvs;  // per variant, its render and its uv image
+  for (bool exact : {false, true}) result.rows.push_back(measureVariant(w, exact, factor, ms, vertexMax, renders, uvs));
+  saveRtmPanel(o, renders, uvs, result);
+  animateRtm(w, o, result);
+  result.findings.push_back(amplitudeSweep(w, factor, result.rows));
   return result;
 }
 
