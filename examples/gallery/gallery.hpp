@@ -1,4 +1,4 @@
-// snell-gallery (issue 15): every seed effect of the papers rendered on the GL
+// snell-gallery: every seed effect of the papers rendered on the GL
 // driver (Mesa llvmpipe by default) and shaded again in C++ from the read-back
 // buffers with the same function (examples/glsl/gallery_effects.glsl), with
 // the comparisons each effect has an exact answer for, a frame strip where the
