@@ -211,13 +211,16 @@ Row measureMask(const GlassGpu& w, const GlassBuffers& b, int m, const std::vect
   return r;
 }
 
-// The picture: S alone, then the panes without and with the mask (renders as measureMask left them).
+// The picture: S alone, then both panes without and with the mask (renders as measureMask left them);
+// the caption says "panel" for a part of the figure and "pane" for a sheet of glass in the scene.
 void saveGlassPanel(const GlassGpu& w, const Options& o, const std::vector<Image>& renders, EffectResult& result) {
   const Image sceneView = w.sceneFb.readColor(0);
   savePanel(
       o, "glass.png", {{&sceneView, "scene S"}, {&renders[0], "haze without mask"}, {&renders[1], "alpha mask"}},
-      "Left pane: stained glass (snellGlass). Right pane: heat haze (snellPerturbSample / snellRefractionMasked); "
-      "the yellow box in front leaks into it without the mask.",
+      "Panels, left to right: S, the scene the panes refract (no panes drawn); both panes, the haze without the "
+      "mask; both panes with Sousa's alpha mask. Left pane: stained glass (snellGlass, always masked). Right pane: "
+      "heat haze (snellPerturbSample without the mask, snellRefractionMasked with it); the yellow box in front leaks "
+      "into it without the mask.",
       result);
 }
 
