@@ -61,6 +61,7 @@ std::vector<Soup> crackSquares(const mat4& worldFromBox) {
   return soups;
 }
 
+// One storage buffer per crack: renderCrackDepths draws each into its own attachment.
 std::vector<gpu::StorageBuffer> uploadAll(const Gl& g, const std::vector<Soup>& soups) {
   std::vector<gpu::StorageBuffer> buffers;
   for (const Soup& s : soups) buffers.push_back(g.upload(s));
