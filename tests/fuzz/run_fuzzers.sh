@@ -54,7 +54,33 @@ done
 for p in "${pids[@]}"; do wait "$p"; done
 # The targets, $(nproc) at a time; a failed build fails the script.
 pids=()
-build_# One target: its regressions once, then fuzzing; the outcome goes to $out/$t.status.
+build_status=0
+for t in $targets; do
+  bin=$out/fuzz_$t
+  src=$t
+  case $t in image_*) src=image ;; esac
+  if [ -f "$bin" ] && [ -z "$(find "$root/tests/fuzz/fuzz_$src.cpp" "$root/include" "$root/glsl" -newer "$bin" -print -quit)" ] &&
+     [ -z "$(find "$out/obj" -newer "$bin" -print -quit)" ]; then continue; fi
+  echo "run_fuzzers: building fuzz_$t"
+  extra=()
+  case $t in
+    include_flattener) ;;
+    scene_render) extra=("${objs[@]}" "${render_objs[@]}" "${image_libs[@]}" -lembree3) ;;
+    *) extra=("${objs[@]}" "${image_libs[@]}") ;;
+  esac
+  "$cxx" "${common[@]}" -fsanitize=fuzzer "$root/tests/fuzz/fuzz_$src.cpp" "${extra[@]}" -o "$bin.tmp" -lpthread &&
+    mv "$bin.tmp" "$bin" &
+  pids+=($!)
+  if [ ${#pids[@]} -ge "$(nproc)" ]; then wait "${pids[0]}" || build_status=1; pids=("${pids[@]:1}"); fi
+done
+for p in "${pids[@]}"; do wait "$p" || build_status=1; done
+[ "$build_status" = 0 ] || { echo "run_fuzzers: a fuzz target failed to build" >&2; exit 1; }
+
+[ "${SNELL_FUZZ_BUILD_ONLY:-0}" = 1 ] && exit 0
+
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+# One target: its regressions once, then fuzzing; the outcome goes to $out/$t.status.
 fuzz_target() {
   local t=$1 ok=1
   local reg=$root/tests/fuzz/regressions/$t
