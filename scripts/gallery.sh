@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The gallery (issue 15): installs what is missing (Debian packages), builds
+# The gallery: installs what is missing (Debian packages), builds
 # snell-gallery (Release) and runs it: Sousa's water (three masks), glass and
 # heat haze, the ice block with clipped cracks and G. Oliveira's refractive
 # texture mapping, rendered on Mesa llvmpipe and checked against C++. Prints

@@ -14,7 +14,7 @@ ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
 # fuzzing per target (SNELL_FUZZ_TIME, default 10) on a copy of the seed corpus (tests/fuzz/run_fuzzers.sh).
 SNELL_FUZZ_BUILD_DIR="$build/fuzz" bash tests/fuzz/run_fuzzers.sh
 
-# Sanitizers (issue 7): a second build with AddressSanitizer + UBSan running the
+# Sanitizers: a second build with AddressSanitizer + UBSan running the
 # unit, property and lab loader tests; any report fails the script (halt_on_error,
 # -fno-sanitize-recover=undefined). The GL tests (parity, gpu, lab end-to-end
 # runs) are not in it: Mesa's own allocations are not ours to vet.

@@ -141,7 +141,7 @@ contract: macros only.
 /* SNELL_IN(T) name: a read-only parameter of struct type T. GLSL and HLSL pass
    it by value; C++ by const reference, because a call the compiler does not
    inline would otherwise copy the whole struct (a SnellDepthSurface is 92
-   bytes: 8 % of a plane ray's instructions, issue 14). */
+   bytes: 8 % of a plane ray's instructions). */
 #ifndef SNELL_IN
 #  if defined(SNELL_LANG_CXX)
 #    define SNELL_IN(T) const T&
@@ -168,8 +168,8 @@ contract: macros only.
    every language (same flags on CPU and GPU). */
 #define SNELL_FLT_MIN 1.175494351e-38f
 /* True when the float x is neither NaN nor +-Inf. C++: std::isfinite, the
-   same answer in one test instead of two (7 % of a plane ray's instructions,
-   issue 14). */
+   same answer in one test instead of two (7 % of a plane ray's
+   instructions). */
 #if defined(SNELL_LANG_CXX)
 #  define SNELL_FINITE(x) (std::isfinite(x))
 #else
@@ -3694,11 +3694,14 @@ options (strategy ids, the values of SnellIntersectOptions.strategy):
   SNELL_STRATEGY_LINEAR_BINARY  5  snellLinearBinarySearch
   SNELL_STRATEGY_LINEAR_MARCH   6  snellLinearMarch
   SNELL_STRATEGY_DDA            7  snellDdaMarch
+  SNELL_STRATEGY_COUNT          8  the number of strategies (ids 0 .. COUNT - 1;
+                                   any other id misses)
   range sources of the searches: SNELL_RANGE_PYRAMID 0 (the pyramid's top
   level, snellDepthRangeFromPyramid, 1 fetch), SNELL_RANGE_EXPLICIT 1 (o.range
   as given, e.g. snellDepthRangeFromBox: Oliveira & Brauwers' bounding box)
   SNELL_INTERSECT_STRATEGIES  bit mask of the strategies compiled in (bit k =
-                              strategy k, 0xFF = all, the default). Every
+                              strategy k; all SNELL_STRATEGY_COUNT of them,
+                              the default). Every
                               technique call inlines the dispatcher, and with
                               it every strategy: a shader that uses one or two
                               presets compiles much faster (llvmpipe: minutes
@@ -3778,12 +3781,13 @@ source: DESIGN.md sec. 2 ("every intersector is interchangeable in both
 #define SNELL_STRATEGY_LINEAR_BINARY 5
 #define SNELL_STRATEGY_LINEAR_MARCH 6
 #define SNELL_STRATEGY_DDA 7
+#define SNELL_STRATEGY_COUNT 8
 
 #define SNELL_RANGE_PYRAMID 0
 #define SNELL_RANGE_EXPLICIT 1
 
 #ifndef SNELL_INTERSECT_STRATEGIES
-#  define SNELL_INTERSECT_STRATEGIES 0xFF
+#  define SNELL_INTERSECT_STRATEGIES ((1 << SNELL_STRATEGY_COUNT) - 1)
 #endif
 /* true when strategy k is compiled in (a constant expression: the branch folds away) */
 #define SNELL_INTERSECT_HAS(k) ((SNELL_INTERSECT_STRATEGIES & (1 << (k))) != 0)

@@ -138,7 +138,7 @@ contract: macros only.
 /* SNELL_IN(T) name: a read-only parameter of struct type T. GLSL and HLSL pass
    it by value; C++ by const reference, because a call the compiler does not
    inline would otherwise copy the whole struct (a SnellDepthSurface is 92
-   bytes: 8 % of a plane ray's instructions, issue 14). */
+   bytes: 8 % of a plane ray's instructions). */
 #ifndef SNELL_IN
 #  if defined(SNELL_LANG_CXX)
 #    define SNELL_IN(T) const T&
@@ -165,8 +165,8 @@ contract: macros only.
    every language (same flags on CPU and GPU). */
 #define SNELL_FLT_MIN 1.175494351e-38f
 /* True when the float x is neither NaN nor +-Inf. C++: std::isfinite, the
-   same answer in one test instead of two (7 % of a plane ray's instructions,
-   issue 14). */
+   same answer in one test instead of two (7 % of a plane ray's
+   instructions). */
 #if defined(SNELL_LANG_CXX)
 #  define SNELL_FINITE(x) (std::isfinite(x))
 #else

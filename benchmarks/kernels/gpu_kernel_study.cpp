@@ -1,5 +1,5 @@
-// The kernel study on the GPU path (issue 14: "the same in the shaders ...
-// measured as llvmpipe time ratios"): snell's GLSL single sample and normal
+// The kernel study on the GPU path (the shaders measured as llvmpipe time
+// and instruction ratios): snell's GLSL single sample and normal
 // plane (1 it.) against the hand-written GLSL kernels of gpu_kernels.glsl, on
 // the kernel study's rays and buffers (kernel_scene.hpp), one ray per pixel of
 // a 512x512 pass (the 20000 rays repeated), on Mesa (OSMesa or EGL).
@@ -73,12 +73,7 @@ struct Study {
         fb(gl, kSize, kSize, 2, false),
         vao(gl) {
     const std::vector<std::filesystem::path> paths = {SNELL_GLSL_DIR, SNELL_KERNELS_DIR};
-    const FlatSource vs = flattenGlslSource(R"(#version 450 core
-void main() {
-  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
-  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-)", "fullscreen.vert", {});
+    const FlatSource vs = flattenGlslFile(std::filesystem::path(SNELL_GLSL_DIR) / "passes" / "fullscreen.vert", {});
     for (int v = 0; v < kVariants; ++v) {
       const std::string src = "#version 450 core\n#extension GL_GOOGLE_include_directive : require\n#define VARIANT " +
                               std::to_string(v) + "\n#include \"gpu_kernel_pass.glsl\"\n";

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The kernel study on the GPU path (issue 14): snell's GLSL single sample and
+# The kernel study on the GPU path: snell's GLSL single sample and
 # normal plane (1 it.) beside the hand-written GLSL kernels of gpu_kernels.glsl,
 # one ray per pixel of a 512x512 pass on Mesa llvmpipe (gpu_kernel_study.cpp).
 # Fails unless each kernel gives snell's output bits on every ray; prints the

@@ -1,5 +1,4 @@
-/* The hand-written kernels of benchmarks/kernels/kernels.hpp in GLSL (issue 14,
-   "the same in the shaders"): single sample and the normal-based plane for
+/* The hand-written kernels of benchmarks/kernels/kernels.hpp in GLSL: single sample and the normal-based plane for
    exactly the kernel study's setup, under the same assumptions A1-A6 listed
    there (finite inputs, a glm::perspective matrix, GL depth, level 0, nearest
    reads at texel centres, RGBA32F textures). gpu_kernel_study.cpp runs them

@@ -1,4 +1,4 @@
-// The scene and ray set of the kernel study (issue 14, "Speed at the limit"):
+// The scene and ray set of the kernel study:
 // an analytic sphere (back faces of a unit
 // sphere at z = -5, 256x256, GL depth, emptyDepth 0, normals in a Linear-filtered
 // Texture2D) and its 20000 rays, built once; plus the depth min/max pyramid for

@@ -1,4 +1,4 @@
-// Kernel study (issue 14, "Speed at the limit"): one intersection strategy run
+// Kernel study: one intersection strategy run
 // over the 20000 rays of kernel_scene.hpp by snell's C++ mirror of the GLSL and
 // by the minimal hand-written kernel of kernels.hpp, which must agree in every
 // output bit (position xyz, uv, valid, fetches) ray by ray.

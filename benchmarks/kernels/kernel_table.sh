@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# snell vs minimal hand-written kernels (issue 14, "Speed at the limit"): for each
+# snell vs minimal hand-written kernels: for each
 # strategy of kernel_study.cpp, checks that the kernel gives snell's output bits
 # on every ray (fails loudly otherwise), counts instructions per ray with
 # callgrind (machine independent: (Ir(20000 rays) - Ir(0 rays)) / 20000) and

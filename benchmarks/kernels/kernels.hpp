@@ -1,4 +1,4 @@
-// Minimal hand-written kernels (issue 14, "Speed at the limit"): per intersection
+// Minimal hand-written kernels: per intersection
 // strategy, the same per-ray floating-point work as snell's C++ mirror of the
 // GLSL, written for exactly the benchmark's setup, so that every output bit
 // (hit.position xyz, hit.uv, hit.valid, hit.fetches) equals snell's ray by ray

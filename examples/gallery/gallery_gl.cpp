@@ -38,8 +38,8 @@ Gl::Gl(const std::string& backend, const Options& options)
       vao_(ctx_.gl()),
       labGlsl_(options.labGlsl),
       snellGlsl_(options.snellGlsl),
-      plain_(program("lab_fullscreen.vert", "gallery_plain.frag")),
-      sky_(program("lab_fullscreen.vert", "gallery_sky.frag")),
+      plain_(fullScreenProgram("gallery_plain.frag")),
+      sky_(fullScreenProgram("gallery_sky.frag")),
       mask_(program("gallery_mesh.vert", "gallery_mask.frag")),
       gbuffer_(program("gallery_mesh.vert", "gallery_gbuffer.frag")) {}
 
@@ -49,6 +49,11 @@ std::string Gl::description() const {
 
 gpu::Program Gl::program(const std::string& vs, const std::string& fs) const {
   return gpu::Program::graphics(gl(), gpu::flattenGlslFile(labGlsl_ / vs, {snellGlsl_, labGlsl_}),
+                                gpu::flattenGlslFile(labGlsl_ / fs, {snellGlsl_, labGlsl_}));
+}
+
+gpu::Program Gl::fullScreenProgram(const std::string& fs) const {
+  return gpu::Program::graphics(gl(), gpu::flattenGlslFile(snellGlsl_ / "passes" / "fullscreen.vert", {snellGlsl_}),
                                 gpu::flattenGlslFile(labGlsl_ / fs, {snellGlsl_, labGlsl_}));
 }
 

@@ -37,6 +37,8 @@ class Gl {
 
   // vs/fs: file names under examples/glsl (the library's glsl/ is on the include path too).
   gpu::Program program(const std::string& vs, const std::string& fs) const;
+  // `fs` over the whole viewport, with the library's full-screen vertex stage (glsl/passes/fullscreen.vert).
+  gpu::Program fullScreenProgram(const std::string& fs) const;
 
   // A soup's storage buffer (binding 0 for gallery_mesh.vert).
   gpu::StorageBuffer upload(const Soup& soup) const;

@@ -72,7 +72,7 @@ struct GlassGpu {
         roomBuf(g.upload(roomSoup)),
         paneBuf(g.upload(paneSoup)),
         shade(g.program("gallery_mesh.vert", "gallery_scene.frag")),
-        pane(g.program("lab_fullscreen.vert", "gallery_pane.frag")),
+        pane(g.fullScreenProgram("gallery_pane.frag")),
         sceneFb(gl, W, H, 2, true),
         gFb(gl, W, H, 3, true),
         outFb(gl, W, H, 1, false) {

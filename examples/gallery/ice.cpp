@@ -105,7 +105,7 @@ struct IceGpu {
         crackSoups(crackSquares(worldFromBox)),
         crackBufs(uploadAll(g, crackSoups)),
         crack(g.program("gallery_mesh.vert", "gallery_crack.frag")),
-        ice(g.program("lab_fullscreen.vert", "gallery_ice.frag")),
+        ice(g.fullScreenProgram("gallery_ice.frag")),
         sceneFb(gl, W, H, 2, true),
         frontFb(gl, W, H, 3, true),
         backFb(gl, W, H, 3, true),

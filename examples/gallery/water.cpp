@@ -89,7 +89,7 @@ struct WaterGpu {
         sceneCount(sceneSoup.vertexCount()),
         surfaceCount(surfaceSoup.vertexCount()),
         shade(g.program("gallery_mesh.vert", "gallery_scene.frag")),
-        water(g.program("lab_fullscreen.vert", "gallery_water.frag")),
+        water(g.fullScreenProgram("gallery_water.frag")),
         sceneFb(gl, W, H, 2, true),
         reflFb(gl, W, H, 2, true),
         gFb(gl, W, H, 3, true),

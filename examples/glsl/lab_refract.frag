@@ -1,12 +1,16 @@
 #version 450 core
 #extension GL_GOOGLE_include_directive : require  // or resolve includes your own way
 // snell-lab pass 4: the refractive object's front faces, shaded with one
-// technique (LAB_TECHNIQUE, a SNELL_TECHNIQUE_* id set by the host before compiling) through
+// technique (LAB_TECHNIQUE, a SNELL_TECHNIQUE_* id, and LAB_REFERENCE, whether its row of the
+// technique table is a Reference; both set by the host before compiling) through
 // labShade (lab_technique.glsl), the very function snell-lab runs per pixel in
 // C++ on the read-back buffers. Outputs: colour, per-pixel stats, and the
 // fragment's inputs (position, normal, d_N) so the CPU evaluates the same pixel.
 #ifndef LAB_TECHNIQUE
 #  define LAB_TECHNIQUE SNELL_TECHNIQUE_PLANE_NORMAL_1
+#endif
+#ifndef LAB_REFERENCE
+#  define LAB_REFERENCE false
 #endif
 #include "lab_technique.glsl"
 
@@ -31,7 +35,7 @@ layout(location = 2) out vec4 position;  // xyz view-space front position, w d_N
 layout(location = 3) out vec4 normal;    // xyz interpolated front normal, w 1 (coverage)
 
 void main() {
-  SnellTwoInterfaceResult r = labShade(LAB_TECHNIQUE, vsPosition, vsNormal, vsDn, backDepth, backNormal,
+  SnellTwoInterfaceResult r = labShade(LAB_TECHNIQUE, LAB_REFERENCE, vsPosition, vsNormal, vsDn, backDepth, backNormal,
                                        backPyramid, sceneDepth, sceneNormal, scenePyramid, sceneColor,
                                        environment, params);
   color = vec4(r.color, 1.0f);

@@ -7,10 +7,12 @@ description: the lab's per-pixel technique call (snell-lab, examples/lab): one
   scene's buffers (the paintings; the environment where the exit ray finds
   none) and runs snellTwoInterfaceRefraction.
 use: LabParams p;  // the host fills every field (C++), or the uniform block LabUniforms holds it (GLSL)
-     SnellTwoInterfaceResult r = labShade(SNELL_TECHNIQUE_PLANE_NORMAL_1, frontPosition, frontNormal,
+     SnellTwoInterfaceResult r = labShade(SNELL_TECHNIQUE_PLANE_NORMAL_1, false, frontPosition, frontNormal,
          dN, backDepth, backNormal, backPyramid, sceneDepth, sceneNormal, scenePyramid,
          sceneColor, environment, p);
   technique   SNELL_TECHNIQUE_* (shade/technique_presets.glsl)
+  reference   the technique table's row is a Reference (the image-space
+              bound): its exit slot marches over the whole scene
   frontPosition, frontNormal, dN: the front-face fragment (view space), Wyman's d_N
   back*       the back-face pass: depth (GL_GREATER, cleared to 0), view-space
               normals, its depth min/max pyramid
@@ -26,7 +28,7 @@ contract: every technique uses SNELL_EXIT_SCENE with SNELL_FALLBACK_ENVIRONMENT,
   does; SNELL_REFLECT_ENVIRONMENT the environment only) and Beer-Lambert
   absorption along the found chord. The
   marches (linear, DDA, the image-space bound) in the back slot walk at most
-  p.backRange (the object's bounding-box diagonal), the bound's exit slot
+  p.backRange (the object's bounding-box diagonal), a reference's exit slot
   p.exitRange (the diagonal of the box around the object and the opaque
   scene); p.depthFilter BILINEAR reads both depth buffers bilinearly in every
   slot of every technique (the bound always does); every other parameter is
@@ -61,11 +63,11 @@ struct LabParams {
   int reflectionMode; // SNELL_REFLECT_*
 };
 
-SNELL_FN SnellTechniqueOptions labTechniqueOptions(int technique, LabParams p) {
+SNELL_FN SnellTechniqueOptions labTechniqueOptions(int technique, bool reference, LabParams p) {
   SnellTechniqueOptions o = snellTechniquePreset(technique);
   o.back.marchMaxDistance = p.backRange;
   o.back.ddaMaxDistance = p.backRange;
-  if (technique == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND) {
+  if (reference) {
     o.exit.marchMaxDistance = p.exitRange;
   }
   if (p.depthFilter == SNELL_DEPTH_FILTER_BILINEAR) {
@@ -88,14 +90,14 @@ SNELL_FN SnellTechniqueOptions labTechniqueOptions(int technique, LabParams p) {
   return o;
 }
 
-SNELL_FN SnellTwoInterfaceResult labShade(int technique, vec3 frontPosition, vec3 frontNormal, float dN,
+SNELL_FN SnellTwoInterfaceResult labShade(int technique, bool reference, vec3 frontPosition, vec3 frontNormal, float dN,
                                           SNELL_TEX2D backDepth, SNELL_TEX2D backNormal, SNELL_TEX2D backPyramid,
                                           SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid,
                                           SNELL_TEX2D sceneColor, SNELL_ENVIRONMENT_TEX environment, LabParams p) {
   SnellDepthSurface back = snellDepthSurface(p.clipFromView, p.zNear, p.zFar, SNELL_DEPTH_GL, 0.0f);
   SnellDepthSurface scene = snellDepthSurface(p.clipFromView, p.zNear, p.zFar, SNELL_DEPTH_GL, 1.0f);
   scene.closed = false;  // where the scene buffer is empty, the environment shows
-  SnellTechniqueOptions o = labTechniqueOptions(technique, p);
+  SnellTechniqueOptions o = labTechniqueOptions(technique, reference, p);
   return snellTwoInterfaceRefraction(frontPosition, frontNormal, dN, backDepth, backNormal, backPyramid, back,
                                      sceneDepth, sceneNormal, scenePyramid, sceneColor, scene, environment, o);
 }

@@ -171,8 +171,8 @@ class Texture2D {
 
   static int clampi(int v, int hi) { return std::max(0, std::min(v, hi)); }
   // std::floor, exactly (the sign of zero included), without the library call
-  // that x86-64 needs before SSE4.1 (309 of a plane ray's 2,316 instructions,
-  // issue 14): for |v| < 2^31 the integer part converts exactly.
+  // that x86-64 needs before SSE4.1 (309 of a plane ray's 2,316
+  // instructions): for |v| < 2^31 the integer part converts exactly.
   static float floorExact(float v) {
 #if defined(__SSE4_1__)
     return std::floor(v);  // one roundss

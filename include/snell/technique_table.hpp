@@ -17,23 +17,32 @@ namespace snell {
 // count) is tied to the ray's length in pixels; or the image-space bound, a reference for the others.
 enum class SnellTechniqueKind { ConstantTime, Search, Reference };
 
+// What a host that compares techniques (snell-lab) reads from a row, never
+// from an id or a name: the kind (a Reference row is measured against, not a
+// contender; it marches its exit over the whole scene), the cost unit (every
+// time ratio is to this row's time), the poster row (the one compared with
+// Mayer & Assarsson's published figures, against the cost unit), and, from the
+// preset, whether the technique reads Wyman's per-vertex d_N
+// (snellTechniqueNeedsDn).
 struct SnellTechniqueInfo {
   int id;                   // SNELL_TECHNIQUE_*
   const char* name;         // command-line and file name (snell-lab --technique, table.json "technique")
   const char* label;        // table and picture label
   const char* method;       // the published method, one line (the parameters come from the preset)
   SnellTechniqueKind kind;
+  bool costUnit = false;    // the unit of the time ratios (one row)
+  bool posterRow = false;   // compared with Mayer & Assarsson's poster figures (one row)
 };
 
 // Every technique, in id order (single sample first: the lab's cost unit).
 inline const std::array<SnellTechniqueInfo, SNELL_TECHNIQUE_COUNT>& snellTechniqueTable() {
   static const std::array<SnellTechniqueInfo, SNELL_TECHNIQUE_COUNT> table = {{
       {SNELL_TECHNIQUE_SINGLE, "single", "single sample", "one depth sample behind the ray origin (GPU Gems baseline)",
-       SnellTechniqueKind::ConstantTime},
+       SnellTechniqueKind::ConstantTime, /*costUnit=*/true},
       {SNELL_TECHNIQUE_PLANE_NORMAL_0, "plane-normal-0", "normal plane, 0 it.", "Mayer & Assarsson normal-based plane",
        SnellTechniqueKind::ConstantTime},
       {SNELL_TECHNIQUE_PLANE_NORMAL_1, "plane-normal-1", "normal plane, 1 it.", "Mayer & Assarsson normal-based plane",
-       SnellTechniqueKind::ConstantTime},
+       SnellTechniqueKind::ConstantTime, false, /*posterRow=*/true},
       {SNELL_TECHNIQUE_PLANE_NORMAL_2, "plane-normal-2", "normal plane, 2 it.", "Mayer & Assarsson normal-based plane",
        SnellTechniqueKind::ConstantTime},
       {SNELL_TECHNIQUE_PLANE_DEPTH, "plane-depth", "depth plane, 1 it.", "Mayer & Assarsson depth-based plane",
@@ -60,11 +69,23 @@ inline const SnellTechniqueInfo* snellFindTechnique(const std::string& name) {
   return nullptr;
 }
 
+// The row of that SNELL_TECHNIQUE_* id, or nullptr.
+inline const SnellTechniqueInfo* snellFindTechnique(int id) {
+  for (const SnellTechniqueInfo& t : snellTechniqueTable())
+    if (id == t.id) return &t;
+  return nullptr;
+}
+
+// Whether the technique reads Wyman's per-vertex d_N (its preset's back method).
+inline bool snellTechniqueNeedsDn(const SnellTechniqueInfo& t) {
+  return snellTechniquePreset(t.id).backMethod == SNELL_BACK_WYMAN;
+}
+
 // The SNELL_INTERSECT_STRATEGIES bits (bit k = strategy k) of the slots these
 // options call (shade/two_interface*.glsl): the back slot unless backMethod is
 // SNELL_BACK_WYMAN, the exit slot with exitMode SNELL_EXIT_SCENE, the reflect
 // slot with reflection on and reflectionMode SNELL_REFLECT_SCENE. A strategy
-// outside 0..SNELL_STRATEGY_DDA adds nothing (it misses either way). A host
+// outside 0 .. SNELL_STRATEGY_COUNT - 1 adds nothing (it misses either way). A host
 // that compiles one program per technique defines the mask before including
 // the shaders, so the program holds only those strategies: the dispatcher,
 // inlined with every strategy into each slot, is most of a technique shader's
@@ -73,7 +94,7 @@ inline const SnellTechniqueInfo* snellFindTechnique(const std::string& name) {
 inline int snellStrategiesUsed(const SnellTechniqueOptions& o) {
   int mask = 0;
   const auto add = [&mask](int strategy) {
-    if (strategy >= 0 && strategy <= SNELL_STRATEGY_DDA) mask |= 1 << strategy;
+    if (strategy >= 0 && strategy < SNELL_STRATEGY_COUNT) mask |= 1 << strategy;
   };
   if (o.backMethod != SNELL_BACK_WYMAN) add(o.back.strategy);
   if (o.exitMode == SNELL_EXIT_SCENE) add(o.exit.strategy);

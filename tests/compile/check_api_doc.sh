@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# docs/api.md (issue 13): its function reference is what tools/api/functions.sh
+# docs/api.md: its function reference is what tools/api/functions.sh
 # makes from the header blocks today, and every public function (each
 # SNELL_FN snell...( definition in glsl/snell, each C++-only helper named in
 # the check below) appears on the page.

@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# The dialect matrix (issue 13): every file of glsl/snell compiles as
+# The dialect matrix: every file of glsl/snell compiles as
 #   GLSL 330 core, 450 core, ES 3.00 (WebGL 2), ES 3.10  - flattened by
 #     snell-flatten and validated by glslangValidator with GL rules, which is
 #     what a driver sees from glShaderSource;
 #   Vulkan GLSL 450 - glslang's own #include (GL_GOOGLE_include_directive) to
 #     SPIR-V (-V), then spirv-val;
 #   HLSL - glslang's HLSL front end to SPIR-V;
-# and lints the subset rules a C++ compiler cannot catch. The portable
-# examples (examples/glsl/*.frag but the lab's and the gallery's own
+# and lints the subset rules a C++ compiler cannot catch. The library's
+# passes (glsl/passes: whole shader stages) and the portable examples
+# (examples/glsl/*.frag but the lab's and the gallery's own
 # lab_*/gallery_* shaders) compile in all five GLSL dialects with only their
 # #version line changed; the lab's and the gallery's shaders are GL 4.5
 # programs and compile as written.
@@ -86,11 +87,12 @@ for f in $files; do
   grep -q "^#ifndef $guard\$" "$f" || { echo "FAIL [guard] $f: expected include guard $guard"; fail=1; }
 done
 
-# The examples: portable ones in every GLSL dialect, the lab's and the gallery's as written.
-for f in "$root"/examples/glsl/*.frag "$root"/examples/glsl/*.vert "$root"/examples/glsl/*.comp; do
+# The library's passes and the examples: portable ones in every GLSL dialect,
+# the lab's and the gallery's as written.
+for f in "$root"/glsl/passes/* "$root"/examples/glsl/*.frag "$root"/examples/glsl/*.vert "$root"/examples/glsl/*.comp; do
   [ -e "$f" ] || continue
   count=$((count + 1))
-  name=examples/glsl/$(basename "$f")
+  name=${f#"$root"/}
   stage=${f##*.}
   head -n 1 "$f" | grep -q '^#version 450 core$' || { echo "FAIL [example] $name: line 1 must be #version 450 core"; fail=1; continue; }
   case $(basename "$f") in
@@ -106,6 +108,6 @@ for f in "$root"/examples/glsl/*.frag "$root"/examples/glsl/*.vert "$root"/examp
   esac
 done
 
-echo "checked $count GLSL files: library files in 6 modes (GLSL 330 core, 450 core, ES 3.00, ES 3.10, Vulkan, HLSL), portable examples in the 5 GLSL ones"
+echo "checked $count GLSL files: library files in 6 modes (GLSL 330 core, 450 core, ES 3.00, ES 3.10, Vulkan, HLSL), passes and portable examples in the 5 GLSL ones"
 if [ "$fail" -ne 0 ]; then echo "compile check FAILED"; exit 1; fi
 echo "compile check passed"

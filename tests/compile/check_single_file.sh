@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# single_file/ (issue 13): the committed files are what tools/flatten/single_file.sh
+# single_file/: the committed files are what tools/flatten/single_file.sh
 # makes from glsl/snell today, and each compiles, as it is, after a #version
 # line in every GL dialect snell claims (330 core, 450 core, ES 3.00, ES 3.10),
 # plus the three.js ShaderMaterial recipe of docs/recipes.md: three.js's WebGL 2

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A long fuzzing campaign (issue 16), not part of CI:
+# A long fuzzing campaign, not part of CI:
 #
 #     bash tests/fuzz/campaign.sh                 # every target, the default times
 #     bash tests/fuzz/campaign.sh obj:90 image_png:5  # chosen targets, minutes each

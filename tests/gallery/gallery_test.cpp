@@ -1,4 +1,4 @@
-// snell-gallery end to end at a small size (issue 15): every effect renders on
+// snell-gallery end to end at a small size: every effect renders on
 // Mesa, the C++ frame agrees with the GPU frame, and each effect's own
 // comparison holds: the masks remove every leak the unmasked pass shows, the
 // clipped cracks match the analytic solid, the per-vertex uvs agree and the

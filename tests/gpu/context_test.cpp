@@ -94,10 +94,8 @@ TEST_P(ContextBackend, CreatesGl43CoreContextAndRunsComputeShader) {
   expectAffine(runAffineKernel(ctx, 0.5f, 3.0f, 1000), 0.5f, 3.0f, 1000);
 }
 
-INSTANTIATE_TEST_SUITE_P(BothBackends, ContextBackend, ::testing::Values(Backend::OSMesa, Backend::EGL),
-                         [](const ::testing::TestParamInfo<Backend>& backend) {
-                           return std::string(snell::gpu::backendName(backend.param));
-                         });
+INSTANTIATE_TEST_SUITE_P(BothBackends, ContextBackend, ::testing::ValuesIn(snell::gpu::kGlBackends),
+                         snell::gpu::BackendParamName());
 
 TEST(Context, BothBackendsCoexistInOneProcess) {
   Context osmesa(Backend::OSMesa);
@@ -115,7 +113,7 @@ TEST(Context, BothBackendsCoexistInOneProcess) {
 }
 
 TEST(Context, TwoContextsOfOneBackendAndDestructionOrder) {
-  for (Backend b : {Backend::OSMesa, Backend::EGL}) {
+  for (Backend b : snell::gpu::kGlBackends) {
     auto first = std::make_unique<Context>(b);
     Context second(b);
     expectAffine(runAffineKernel(*first, 1.0f, 1.0f, 64), 1.0f, 1.0f, 64);

@@ -2,7 +2,7 @@
 //  1. the analytic depth scenes rendered by a fragment shader
 //     (tests/support/depth_scenes.frag) agree with the CPU buffers computed in
 //     double (tests/support/depth_scenes.hpp);
-//  2. the depth min/max pyramid built by the GL pass examples/glsl/depth_pyramid.frag
+//  2. the depth min/max pyramid built by the GL pass glsl/passes/depth_pyramid.frag
 //     (snellDepthPyramidBase / snellDepthMinMaxReduce on the GPU) equals the one
 //     snell::snellBuildDepthPyramid builds in C++, bit for bit, on every level.
 #include <gtest/gtest.h>
@@ -79,7 +79,7 @@ TEST_P(DepthPyramidGpu, GlPassEqualsCppBuilderOnEveryLevel) {
   Context ctx(GetParam());
   const GlApi& gl = ctx.gl();
   // The library's pass (include/snell/gpu/depth_pyramid_pass.hpp), as snell-lab uses it.
-  const DepthPyramidPass pass(gl, flattenGlslFile(kRoot / "examples" / "glsl" / "depth_pyramid.frag", {kRoot / "glsl"}));
+  const DepthPyramidPass pass(gl, kRoot / "glsl");
   for (int conv : {SNELL_DEPTH_GL, SNELL_DEPTH_REVERSED}) {
     for (const DepthScene& sc : {snell_test::sphereBack(203, 117, conv), snell_test::silhouette(128, 64, conv),
                                  snell_test::thinSpike(97, 160, conv)}) {
@@ -113,7 +113,21 @@ TEST_P(DepthPyramidGpu, GlPassEqualsCppBuilderOnEveryLevel) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, DepthPyramidGpu, ::testing::Values(Backend::OSMesa, Backend::EGL),
-                         [](const ::testing::TestParamInfo<Backend>& i) { return std::string(backendName(i.param)); });
+// The library's pass from a folder without its shaders: an error naming the
+// file it looked for, before anything reaches GL.
+TEST(DepthPyramidPass, MissingShaderFolderNamesTheFile) {
+  Context ctx;
+  try {
+    const DepthPyramidPass pass(ctx.gl(), "/nonexistent/snell/glsl");
+    ADD_FAILURE() << "a pass was built without its shaders";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/snell/glsl/passes/fullscreen.vert (no such file)"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, DepthPyramidGpu, ::testing::ValuesIn(snell::gpu::kGlBackends),
+                         snell::gpu::BackendParamName());
 
 }  // namespace

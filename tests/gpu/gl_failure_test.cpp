@@ -1,4 +1,4 @@
-// GL failures (issue 7): no context, backends that cannot load, compile and
+// GL failures: no context, backends that cannot load, compile and
 // link errors in included files, incomplete framebuffers, bad arguments to
 // the helpers. Each must be a snell::gpu::Error whose text names the GL call
 // (or the file and line), thrown where the mistake is made: never a crash, a

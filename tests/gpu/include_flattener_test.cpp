@@ -119,6 +119,32 @@ TEST(IncludeFlattener, VersionFirstAndGoogleExtensionDropped) {
   EXPECT_EQ(compileError(ctx, flat), "");  // Mesa rejects the GOOGLE extension, so this proves it is gone
 }
 
+// Defines go after #version and #extension and before the first #line: the
+// shader sees them, and an error keeps its own file's line number.
+TEST(IncludeFlattener, DefinesComeAfterVersionWithoutMovingLines) {
+  TempDir dir;
+  const fs::path root = dir.write("d.comp",
+                                  "#version 450 core\n"
+                                  "#extension GL_GOOGLE_include_directive : require\n" +
+                                      std::string(kMain) +             // lines 3-4
+                                      "void main() { v[0] = float(VALUE) + nope; }\n");  // line 5
+  const FlatSource flat = snell::gpu::flattenGlslFile(root, {}, {"VALUE 7", "FLAG"});
+  EXPECT_EQ(flat.text.rfind("#version 450 core\n#define VALUE 7\n#define FLAG\n#line 1 0\n", 0), 0u) << flat.text;
+  snell::gpu::Context ctx;
+  const std::string err = compileError(ctx, flat);
+  EXPECT_NE(err.find(root.string() + ":5("), std::string::npos) << err << "\n" << flat.text;
+  EXPECT_EQ(err.find("VALUE"), std::string::npos) << err;  // VALUE is defined: only `nope` is unknown
+  // A define must be one line NAME or NAME VALUE: nothing else reaches the source.
+  for (const char* bad : {"", "A\nvoid f() {}", "7UP 1", "A \\"}) {
+    try {
+      snell::gpu::flattenGlslFile(root, {}, {bad});
+      ADD_FAILURE() << "define '" << bad << "' was accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("is not one line"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(IncludeFlattener, IncludeOnce) {
   TempDir dir;
   dir.write("once.glsl", "float onceMarker() { return 1.0; }\n");

@@ -57,7 +57,9 @@ void compileAll(Backend backend) {
   }
 }
 
-TEST(MesaCompile, EveryGlslFileOnOSMesa) { compileAll(Backend::OSMesa); }
-TEST(MesaCompile, EveryGlslFileOnEGL) { compileAll(Backend::EGL); }
+class MesaCompile : public ::testing::TestWithParam<Backend> {};
+TEST_P(MesaCompile, EveryGlslFile) { compileAll(GetParam()); }
+INSTANTIATE_TEST_SUITE_P(Backends, MesaCompile, ::testing::ValuesIn(snell::gpu::kGlBackends),
+                         snell::gpu::BackendParamName());
 
 }  // namespace

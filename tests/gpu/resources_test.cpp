@@ -255,12 +255,8 @@ TEST(Resources, FramebufferClearAndRenderReadBack) {
 
   // A full-screen triangle writing gl_FragCoord to attachment 1: pixel (x, y)
   // must hold (x + 0.5, y + 0.5) at img.at(x, y), i.e. bottom row first.
-  const Program p = Program::graphics(gl, flattenGlslSource(R"(#version 450 core
-void main() {
-  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
-  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-)", "fullscreen.vert", {}), flattenGlslSource(R"(#version 450 core
+  const std::filesystem::path fullscreen = std::filesystem::path(SNELL_SOURCE_DIR) / "glsl" / "passes" / "fullscreen.vert";
+  const Program p = Program::graphics(gl, snell::gpu::flattenGlslFile(fullscreen, {}), flattenGlslSource(R"(#version 450 core
 layout(location = 0) out vec4 colour;
 layout(location = 1) out vec4 coord;
 uniform vec4 tint;

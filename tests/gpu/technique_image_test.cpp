@@ -3,7 +3,7 @@
 // (both backends) with every two-interface preset, compared pixel by pixel
 // with the C++ build of the same function (techImagePixel in
 // tests/parity/cases/technique.glsl, which calls snellTwoInterfaceRefraction).
-// Criterion (issue 4): at least 99.9% of pixels within 1/255 in every
+// Criterion: at least 99.9% of pixels within 1/255 in every
 // channel, none beyond 4/255.
 #include <gtest/gtest.h>
 
@@ -15,6 +15,7 @@
 #include <snell/gpu/program.hpp>
 #include <snell/gpu/resources.hpp>
 #include <snell/snell.hpp>
+#include <snell/technique_table.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -77,20 +78,12 @@ TEST_P(TechniqueImage, FullFrameMatchesTheCxxBuild) {
   const GlApi& gl = ctx.gl();
   const fs::path root = SNELL_SOURCE_DIR;
   const std::vector<fs::path> paths = {root / "glsl", root / "tests"};
-  // One program per preset, with the preset a compile-time constant and only its
-  // strategies compiled in (SNELL_INTERSECT_STRATEGIES): the full dispatcher inlined
-  // into three dispersion traces takes llvmpipe minutes to compile.
-  const int masks[] = {1 << SNELL_STRATEGY_CBS,
-                       1 << SNELL_STRATEGY_PLANE_NORMAL,
-                       1 << SNELL_STRATEGY_SINGLE,
-                       1 << SNELL_STRATEGY_CBS,
-                       1 << SNELL_STRATEGY_PLANE_DEPTH,
-                       1 << SNELL_STRATEGY_SINGLE,
-                       1 << SNELL_STRATEGY_LINEAR_MARCH,
-                       1 << SNELL_STRATEGY_DDA,
-                       1 << SNELL_STRATEGY_CBS};
+  // One program per preset, with the preset a compile-time constant and only the
+  // strategies its options call compiled in (snellStrategiesUsed): the full
+  // dispatcher inlined into three dispersion traces takes llvmpipe minutes to compile.
   auto makeProgram = [&](int preset) {
-    const std::string fsSrc = "#version 450 core\n#define SNELL_INTERSECT_STRATEGIES " + std::to_string(masks[preset]) +
+    const std::string fsSrc = "#version 450 core\n#define SNELL_INTERSECT_STRATEGIES " +
+                              std::to_string(snellStrategiesUsed(techImageOptions(preset))) +
                               "\n#define TECH_PRESET " + std::to_string(preset) + R"(
 struct SnellParityOut { vec4 a; vec4 b; vec4 c; vec4 d; };
 #include "parity/cases/technique.glsl"
@@ -98,12 +91,7 @@ uniform vec4 matrixEntries;
 layout(location = 0) out vec4 fragColor;
 void main() { fragColor = techImagePixel(ivec2(gl_FragCoord.xy), TECH_PRESET, matrixEntries); }
 )";
-    return Program::graphics(gl, flattenGlslSource(R"(#version 450 core
-void main() {
-  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
-  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-)", "technique_fullscreen.vert", {}), flattenGlslSource(fsSrc, "technique_image.frag", paths));
+    return Program::graphics(gl, flattenGlslFile(root / "glsl" / "passes" / "fullscreen.vert", {}), flattenGlslSource(fsSrc, "technique_image.frag", paths));
   };
   const std::pair<const char*, const Texture2D*> texs[] = {
       {"techBackDepth", &techBackDepth},     {"techBackNormal", &techBackNormal},   {"techBackPyramid", &techBackPyramid},
@@ -128,7 +116,7 @@ void main() {
                          "DDA march -> painting",
                          "DIR bounding box -> painting"};
   constexpr int kPresets = int(sizeof(names) / sizeof(names[0]));
-  static_assert(kPresets == int(sizeof(masks) / sizeof(masks[0])), "one strategy mask per preset");
+  static_assert(kPresets == TECH_IMAGE_PRESETS, "one name per preset of techImageOptions");
   for (int preset = 0; preset < kPresets; ++preset) {
     const auto t0 = std::chrono::steady_clock::now();
     const Program program = makeProgram(preset);
@@ -160,7 +148,7 @@ void main() {
     const double maxDiff = cmp.maxAbs;
     std::printf("[image] %-38s backend %s: %d px (%d object), within 1/255 %.3f%%, beyond 4/255 %d, max %.3g (x255 "
                 "%.3f) | fell back cpu %d gpu %d, flag differences %d | compile %.1f s\n",
-                names[preset], GetParam() == Backend::OSMesa ? "osmesa" : "egl", n, object, 100.0 * within1 / n,
+                names[preset], backendName(GetParam()), n, object, 100.0 * within1 / n,
                 beyond4, maxDiff, maxDiff * 255.0, fellBackCpu, fellBackGpu, flagDiff, compileSeconds);
     EXPECT_GE(within1, int(std::ceil(0.999 * n))) << names[preset];
     EXPECT_EQ(beyond4, 0) << names[preset];
@@ -168,9 +156,7 @@ void main() {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, TechniqueImage, ::testing::Values(Backend::OSMesa, Backend::EGL),
-                         [](const ::testing::TestParamInfo<Backend>& i) {
-                           return std::string(i.param == Backend::OSMesa ? "OSMesa" : "EGL");
-                         });
+INSTANTIATE_TEST_SUITE_P(Backends, TechniqueImage, ::testing::ValuesIn(snell::gpu::kGlBackends),
+                         snell::gpu::BackendParamName());
 
 }  // namespace

@@ -1,4 +1,4 @@
-# The consumer matrix (issue 13): installs snell into a scratch prefix, then
+# The consumer matrix: installs snell into a scratch prefix, then
 # builds and runs tests/install/consumer against it through find_package and
 # pkg-config, and against the source tree through add_subdirectory and
 # FetchContent; checks that the installed snell-flatten runs and that a

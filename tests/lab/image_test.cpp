@@ -120,7 +120,7 @@ TEST(LabImage, PanelPutsImagesSideBySideWithLabels) {
   EXPECT_GT(textWidth("abc", 2), textWidth("abc", 1));
 }
 
-// issue 13: at 256 px a technique's caption is wider than its panel; it wraps
+// At 256 px a technique's caption is wider than its panel; it wraps
 // onto more lines instead of running off the edge.
 TEST(LabImage, PanelCaptionWrapsToTheWidth) {
   const Image a(40, 10, vec4(0, 0, 0, 1));

@@ -241,7 +241,7 @@ TEST(LabCli, UsageErrorsAreExitCode2) {
   EXPECT_EQ(help.code, 0);
 }
 
-// The messages a user meets first read clearly (issue 13).
+// The messages a user meets first read clearly.
 TEST(LabCli, UsageMessagesSayWhatIsWrongAndWhatWouldBeRight) {
   labtest::TempDir dir;
   const ExeRun typo = runLabExe("--techniqe single -q", dir);

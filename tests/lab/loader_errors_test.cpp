@@ -1,4 +1,4 @@
-// Hostile input to the lab's loaders (issue 7): truncated and malformed
+// Hostile input to the lab's loaders: truncated and malformed
 // files, enormous counts and indices, deep nesting, file names that are not
 // UTF-8, directories where files belong, writes that fail. Each must end in a
 // snell::lab::Error of the documented kind whose message names the file (and

@@ -1,4 +1,4 @@
-// The lab's progress line (issue 13): without a terminal it still reports
+// The lab's progress line: without a terminal it still reports
 // (plain lines every 10%), with one it redraws in place; from many threads
 // the percentage shown never goes backwards, and it ends at 100% exactly when
 // all the work was done.

@@ -125,7 +125,7 @@ TEST(LabScene, EachBadFieldIsNamed) {
        "camera.position: expected an array of 3 numbers, got [0,0]"},
       {R"({ "camera": { "position": [0, 0, 5], "resolution": [0, 10] }, "object": { "mesh": { "type": "icosphere" } } })",
        "camera.resolution[0]: expected an array of 2 integers each in [8, 8192]"},
-      // --size allows no less than 8 either: one limit for both (issue 13).
+      // --size allows no less than 8 either: one limit for both.
       {R"({ "camera": { "position": [0, 0, 5], "resolution": [4, 4] }, "object": { "mesh": { "type": "icosphere" } } })",
        "camera.resolution[0]: expected an array of 2 integers each in [8, 8192]"},
       {R"({ "camera": { "position": [0, 0, 5], "resolution": [64.5, 10] }, "object": { "mesh": { "type": "icosphere" } } })",

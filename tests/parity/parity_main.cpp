@@ -73,10 +73,62 @@ Context& contextFor(Backend backend) {
   return *slot;
 }
 
+// A runtime the parity cases run on: it runs a case's entry on the case's
+// inputs and returns what the GPU wrote. Every case runs on every runtime of
+// parityRuntimes(); a new runtime (Vulkan, WebGPU, WebGL 2) is one more
+// implementation there, and no case changes.
+class ParityRuntime {
+ public:
+  virtual ~ParityRuntime() = default;
+  virtual std::string suite() const = 0;  // the gtest suite of its runs: "Parity_osmesa"
+  virtual std::string tag() const = 0;    // the report line's prefix: "[parity]"
+  virtual Backend backend() const = 0;    // the GL context it runs in
+  virtual std::vector<ParityIO> run(const CaseSpec& spec, const std::vector<ParityIO>& inputs) const = 0;
+};
+
+// The case file as GLSL, on one GL backend.
+class GlslRuntime final : public ParityRuntime {
+ public:
+  explicit GlslRuntime(Backend backend) : backend_(backend) {}
+  std::string suite() const override { return std::string("Parity_") + snell::gpu::backendName(backend_); }
+  std::string tag() const override { return "[parity]"; }
+  Backend backend() const override { return backend_; }
+  std::vector<ParityIO> run(const CaseSpec& spec, const std::vector<ParityIO>& inputs) const override {
+    return snell::gpu::runParityGpu(contextFor(backend_), {kRoot / "glsl", kRoot / "tests" / "parity" / "cases"},
+                                    spec.glslFile, spec.entry, inputs, spec.textures, spec.entrySource);
+  }
+
+ private:
+  Backend backend_;
+};
+
+// The case file through the HLSL bridge, cross-compiled to GLSL 450.
+class HlslRuntime final : public ParityRuntime {
+ public:
+  std::string suite() const override { return std::string("ParityHlsl_") + snell::gpu::backendName(kHlslBackend); }
+  std::string tag() const override { return "[parity-hlsl]"; }
+  Backend backend() const override { return kHlslBackend; }
+  std::vector<ParityIO> run(const CaseSpec& spec, const std::vector<ParityIO>& inputs) const override {
+    return snell::gpu::runParityHlsl(
+        contextFor(kHlslBackend), {kRoot / "hlsl_like" / "snell", kRoot / "glsl", kRoot / "tests" / "parity" / "cases"},
+        spec.glslFile, spec.entry, inputs, spec.textures, hlslWorkDir(), hlslTools(), {}, spec.entrySource);
+  }
+};
+
+// Every runtime, in the order their suites run.
+const std::vector<std::unique_ptr<ParityRuntime>>& parityRuntimes() {
+  static const std::vector<std::unique_ptr<ParityRuntime>> all = [] {
+    std::vector<std::unique_ptr<ParityRuntime>> r;
+    for (Backend backend : snell::gpu::kGlBackends) r.push_back(std::make_unique<GlslRuntime>(backend));
+    r.push_back(std::make_unique<HlslRuntime>());
+    return r;
+  }();
+  return all;
+}
+
 class ParityTest : public ::testing::Test {
  public:
-  // hlsl: run the case file through the HLSL bridge instead of as GLSL.
-  ParityTest(const CaseSpec* spec, Backend backend, bool hlsl = false) : spec_(spec), backend_(backend), hlsl_(hlsl) {}
+  ParityTest(const CaseSpec* spec, const ParityRuntime* runtime) : spec_(spec), runtime_(runtime) {}
   void TestBody() override {
     ASSERT_TRUE(spec_->layoutError.empty()) << spec_->function << "'s description: " << spec_->layoutError;
     if (spec_->setup) spec_->setup();
@@ -85,18 +137,11 @@ class ParityTest : public ::testing::Test {
     std::vector<ParityIO> cpu;
     cpu.reserve(inputs.size());
     for (const ParityIO& in : inputs) cpu.push_back(spec_->cpu(in));
-    Context& ctx = contextFor(backend_);
-    const std::vector<ParityIO> gpu =
-        hlsl_ ? snell::gpu::runParityHlsl(
-                    ctx, {kRoot / "hlsl_like" / "snell", kRoot / "glsl", kRoot / "tests" / "parity" / "cases"},
-                    spec_->glslFile, spec_->entry, inputs, spec_->textures, hlslWorkDir(), hlslTools(), {},
-                    spec_->entrySource)
-              : snell::gpu::runParityGpu(ctx, {kRoot / "glsl", kRoot / "tests" / "parity" / "cases"},
-                                         spec_->glslFile, spec_->entry, inputs, spec_->textures, spec_->entrySource);
+    const std::vector<ParityIO> gpu = runtime_->run(*spec_, inputs);
     const snell::gpu::ParityReport r = snell::gpu::compareParity(gpu, cpu, spec_->outputs, &inputs);
     // The figures the closing notes quote.
-    std::cout << (hlsl_ ? "[parity-hlsl] " : "[parity] ") << spec_->function << " file=" << spec_->glslFile
-              << " backend=" << snell::gpu::backendName(backend_)
+    std::cout << runtime_->tag() << " " << spec_->function << " file=" << spec_->glslFile
+              << " backend=" << snell::gpu::backendName(runtime_->backend())
               << " cases=" << r.cases << " mismatches=" << r.mismatches << " maxAbs=" << r.maxAbs
               << " maxRel=" << r.maxRel << std::hex << " digests in=" << ioDigest(inputs) << " cpu=" << ioDigest(cpu)
               << " gpu=" << ioDigest(gpu) << std::dec << "\n";
@@ -105,8 +150,7 @@ class ParityTest : public ::testing::Test {
 
  private:
   const CaseSpec* spec_;
-  Backend backend_;
-  bool hlsl_;
+  const ParityRuntime* runtime_;
 };
 
 // SNELL_HLSL_FLIP_V (bridge.hlsl, D3D-oriented textures): the hooks cases run
@@ -173,10 +217,10 @@ TEST(ParityHlslFlipV, TexelFetchSizeAndNearest) { runFlipV("SNELL_TEXEL_FETCH_an
 TEST(ParityHlslFlipV, SampleLodLinear) { runFlipV("SNELL_SAMPLE_LOD", EdgeNudge::None); }
 TEST(ParityHlslFlipV, SampleLodMipmaps) { runFlipV("SNELL_SAMPLE_LOD_mipmaps", EdgeNudge::AllLevels); }
 
-// Functions whose HLSL run main() registered.
-std::set<std::string>& hlslRegistered() {
-  static std::set<std::string> names;
-  return names;
+// The functions main() registered a run of, per runtime suite.
+std::map<std::string, std::set<std::string>>& registeredRuns() {
+  static std::map<std::string, std::set<std::string>> runs;
+  return runs;
 }
 
 // Cases of the prelude's texture hook macros (SNELL_SAMPLE_LOD, ...) rather than
@@ -235,7 +279,7 @@ TEST(ParityManifest, EveryPublicGlslFunctionHasAParityCase) {
 }
 
 // Every public GLSL function is defined by hlsl_like/snell/snell.hlsl and by its
-// family's entry file, and every function's parity case also runs as HLSL.
+// family's entry file (its HLSL run: EveryCaseRunsOnEveryRuntime).
 TEST(ParityManifest, EveryPublicGlslFunctionHasAnHlslEntryAndRun) {
   const std::map<std::string, std::string> families = publicGlslFunctionFamilies();
   ASSERT_GT(families.size(), 0u);
@@ -251,10 +295,16 @@ TEST(ParityManifest, EveryPublicGlslFunctionHasAnHlslEntryAndRun) {
     } else {
       EXPECT_TRUE(entry->second.count(name)) << name << " is not defined by hlsl_like/snell/" << family << ".hlsl";
     }
-    EXPECT_TRUE(hlslRegistered().count(name)) << name << " has no HLSL parity run (ParityHlsl_*)";
   }
-  for (const CaseSpec& c : registry())
-    EXPECT_TRUE(hlslRegistered().count(c.function)) << "parity case " << c.function << " has no HLSL run";
+}
+
+// Every case runs on every runtime.
+TEST(ParityManifest, EveryCaseRunsOnEveryRuntime) {
+  ASSERT_GE(parityRuntimes().size(), 3u);
+  for (const auto& runtime : parityRuntimes())
+    for (const CaseSpec& c : registry())
+      EXPECT_TRUE(registeredRuns()[runtime->suite()].count(c.function))
+          << "parity case " << c.function << " has no run on " << runtime->suite();
 }
 
 // The layout check itself: each wrong description is reported (and nothing is
@@ -307,23 +357,13 @@ TEST(ParityManifest, EveryCaseDescriptionIsWellFormed) {
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
-  using snell::gpu::Backend;
-  for (const snell_parity::CaseSpec& spec : snell_parity::registry()) {
-    for (Backend backend : {Backend::OSMesa, Backend::EGL}) {
-      const std::string suite = std::string("Parity_") + snell::gpu::backendName(backend);
-      ::testing::RegisterTest(suite.c_str(), spec.function.c_str(), nullptr, nullptr, __FILE__, __LINE__,
-                              [&spec, backend]() -> ::testing::Test* {
-                                return new snell_parity::ParityTest(&spec, backend);
-                              });
+  for (const snell_parity::CaseSpec& spec : snell_parity::registry())
+    for (const auto& runtime : snell_parity::parityRuntimes()) {
+      const snell_parity::ParityRuntime* r = runtime.get();
+      ::testing::RegisterTest(r->suite().c_str(), spec.function.c_str(), nullptr, nullptr, __FILE__, __LINE__,
+                              [&spec, r]() -> ::testing::Test* { return new snell_parity::ParityTest(&spec, r); });
+      snell_parity::registeredRuns()[r->suite()].insert(spec.function);
     }
-    // The same case through the HLSL bridge, cross-compiled to GLSL 450.
-    const std::string hlslSuite = std::string("ParityHlsl_") + snell::gpu::backendName(snell_parity::kHlslBackend);
-    ::testing::RegisterTest(hlslSuite.c_str(), spec.function.c_str(), nullptr, nullptr, __FILE__, __LINE__,
-                            [&spec]() -> ::testing::Test* {
-                              return new snell_parity::ParityTest(&spec, snell_parity::kHlslBackend, true);
-                            });
-    snell_parity::hlslRegistered().insert(spec.function);
-  }
   const int result = RUN_ALL_TESTS();
   snell_parity::contexts().clear();
   return result;

@@ -140,7 +140,7 @@ std::vector<ParityIO> dispatchInputs(std::uint32_t seed) {
     if (g.chance(0.05f)) d = -d;
     if (g.chance(0.02f)) o = g.hostileVector();
     ParityIO in{};
-    in.v[0] = glm::vec4(o, float(g.integer(0, 9)));
+    in.v[0] = glm::vec4(o, float(g.integer(0, SNELL_STRATEGY_COUNT + 1)));  // every strategy and two ids past them
     in.v[1] = glm::vec4(d, float(g.integer(0, 12)));
     in.v[2] = matrixEntries();
     in.v[3] = glm::vec4(toScene ? 1.0f : 0.0f, g.chance(0.3f) ? 1.0f : 0.0f, 0.0f, 0.0f);

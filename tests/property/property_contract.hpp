@@ -1,4 +1,4 @@
-// The property tests' shared half (issue 7): the hostile input stream and the
+// The property tests' shared half: the hostile input stream and the
 // contract check, used by the CPU run (property_main.cpp, >= 1M inputs per
 // function through the C++ build of the parity entries) and the GPU run
 // (property_gpu_main.cpp, 10,000 of the same inputs through the GLSL entries on
@@ -28,7 +28,7 @@
 
 namespace snell_parity::property {
 
-// Violations found by the first run (issue 7) and not yet triaged: each is
+// Violations found by the first run and not yet triaged: each is
 // either a documented pass-through (a constructor or colour used "as given", to
 // describe in the case with CaseExtras::passThrough or unchecked and its
 // contract sentence) or a bug to fix in

@@ -1,4 +1,4 @@
-// Property test (issue 7), GPU side: every public function, through the GLSL
+// Property test, GPU side: every public function, through the GLSL
 // build of its parity case entry on llvmpipe (OSMesa), on 10,000 hostile inputs:
 // inputs #n .. #n + 9,999 of the CPU property stream (property_contract.hpp),
 // n being the size of the case's generator output, i.e. one hostile mutation of
@@ -41,7 +41,7 @@ namespace {
 
 using property::Tally;
 
-// SNELL_PROPERTY_GPU_INPUTS overrides it for a longer run (not in CI): issue 16.
+// SNELL_PROPERTY_GPU_INPUTS overrides it for a longer run (not in CI).
 std::size_t gpuInputs() {
   const char* env = std::getenv("SNELL_PROPERTY_GPU_INPUTS");
   if (!env) return 10000;

@@ -1,4 +1,4 @@
-// Property test (issue 7), CPU side: every public function, through the C++
+// Property test, CPU side: every public function, through the C++
 // build of its parity case entry (tests/parity/*_cases.cpp, compiled here again
 // without any GL context), on >= 1,000,000 inputs: the case's own generator
 // (10-12k inputs, hostile values included) plus hostile mutations of them, each

@@ -27,12 +27,9 @@ inline GpuSceneBuffers renderDepthSceneGpu(const snell::gpu::Context& ctx, const
   ctx.makeCurrent();
   const GlApi& gl = ctx.gl();
   const std::filesystem::path dir = std::filesystem::path(SNELL_SOURCE_DIR) / "tests" / "support";
-  const Program program = Program::graphics(gl, flattenGlslSource(R"(#version 450 core
-void main() {
-  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
-  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-)", "depth_scenes_fullscreen.vert", {}), flattenGlslFile(dir / "depth_scenes.frag", {dir}));
+  const std::filesystem::path fullscreen = std::filesystem::path(SNELL_SOURCE_DIR) / "glsl" / "passes" / "fullscreen.vert";
+  const Program program =
+      Program::graphics(gl, flattenGlslFile(fullscreen, {}), flattenGlslFile(dir / "depth_scenes.frag", {dir}));
   Framebuffer fb(gl, sc.width, sc.height, 1, true);
   fb.clearColor(0, glm::vec4(0.0f));
   fb.clearDepth(sc.emptyDepth);

@@ -1,4 +1,4 @@
-// The GLSL include flattener against hostile file trees (issue 7): huge files,
+// The GLSL include flattener against hostile file trees: huge files,
 // deep and cyclic nesting, missing files, directories, too many files or
 // lines, names that are not UTF-8. Each ends in a snell::gpu::Error whose text
 // names the file and line where it went wrong. No GL is involved, so this runs

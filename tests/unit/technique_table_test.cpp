@@ -20,7 +20,7 @@ struct Expected {
   int back, backSteps, exit, exitSteps;  // steps: the strategy's own count (iterations, steps); 0 for single sample
 };
 
-// snell-lab --technique names and table.json "technique" values (issue 11: keep them).
+// snell-lab --technique names and table.json "technique" values: scripts and saved tables use them, keep them.
 const Expected kExpected[] = {
     {"single", SNELL_BACK_INTERSECT, SNELL_STRATEGY_SINGLE, 0, SNELL_STRATEGY_SINGLE, 0},
     {"plane-normal-0", SNELL_BACK_INTERSECT, SNELL_STRATEGY_PLANE_NORMAL, 0, SNELL_STRATEGY_PLANE_NORMAL, 0},
@@ -121,7 +121,7 @@ TEST(TechniqueTable, StrategiesUsedNamesTheSlotsTheOptionsCall) {
   o.backMethod = SNELL_BACK_INTERSECT;
   o.reflection = true;
   o.back = snellIntersectOptions(-1);
-  o.exit = snellIntersectOptions(8);
+  o.exit = snellIntersectOptions(SNELL_STRATEGY_COUNT);
   o.reflect = snellIntersectOptions(1 << 30);
   EXPECT_EQ(snellStrategiesUsed(o), 0);
   // Every preset with both scene slots on: the strategies kExpected names (ISR: the exit slot only).
@@ -131,4 +131,29 @@ TEST(TechniqueTable, StrategiesUsedNamesTheSlotsTheOptionsCall) {
     const Expected& e = kExpected[t.id];
     EXPECT_EQ(snellStrategiesUsed(p), (e.backMethod == SNELL_BACK_WYMAN ? 0 : 1 << e.back) | (1 << e.exit)) << t.name;
   }
+}
+
+// What a host reads from the rows instead of ids and names: one cost unit
+// (single sample, the GPU Gems baseline every time ratio is to), one poster row
+// (Mayer & Assarsson's published comparison is normal plane, 1 iteration, vs
+// single sample), one reference (the image-space bound), and d_N exactly for
+// Wyman's method (kExpected's back method, not the table's).
+TEST(TechniqueTable, RowsSayWhatAHostTreatsSpecially) {
+  int units = 0, posters = 0, references = 0;
+  for (const SnellTechniqueInfo& t : snellTechniqueTable()) {
+    const Expected& e = kExpected[t.id];
+    units += t.costUnit;
+    posters += t.posterRow;
+    references += t.kind == SnellTechniqueKind::Reference;
+    EXPECT_EQ(t.costUnit, std::string(e.name) == "single") << e.name;
+    EXPECT_EQ(t.posterRow, std::string(e.name) == "plane-normal-1") << e.name;
+    EXPECT_EQ(t.kind == SnellTechniqueKind::Reference, std::string(e.name) == "image-space-bound") << e.name;
+    EXPECT_EQ(snellTechniqueNeedsDn(t), e.backMethod == SNELL_BACK_WYMAN) << e.name;
+    EXPECT_EQ(snellFindTechnique(t.id), &t);
+  }
+  EXPECT_EQ(units, 1);
+  EXPECT_EQ(posters, 1);
+  EXPECT_EQ(references, 1);
+  EXPECT_EQ(snellFindTechnique(SNELL_TECHNIQUE_COUNT), nullptr);
+  EXPECT_EQ(snellFindTechnique(-1), nullptr);
 }

@@ -9,6 +9,7 @@
 #include <snell/gpu/include_flattener.hpp>
 #include <snell/gpu/program.hpp>
 #include <snell/gpu/resources.hpp>
+#include <snell/technique_table.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -82,35 +83,8 @@ static_assert(offsetof(LabParams, clipFromView) == 0 && offsetof(LabParams, abso
                   offsetof(LabParams, reflectionMode) == 136 && sizeof(LabParams) == 140,
               "LabParams must keep the std140 layout of the uniform block LabUniforms");
 
-std::string readFile(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw gpu::Error("cannot open shader " + p.string());
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// The source with `defines` inserted after its leading #version / #extension lines.
-gpu::FlatSource flattenWithDefines(const fs::path& file, const std::string& defines, const ShaderDirs& dirs) {
-  const std::string text = readFile(file);
-  std::size_t insertAt = 0, pos = 0;
-  while (pos < text.size()) {
-    const std::size_t end = text.find('\n', pos);
-    const std::string line = text.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
-    if (line.rfind("#version", 0) == 0 || line.rfind("#extension", 0) == 0) {
-      insertAt = end == std::string::npos ? text.size() : end + 1;
-    } else if (!line.empty() && line.rfind("//", 0) != 0) {
-      break;
-    }
-    if (end == std::string::npos) break;
-    pos = end + 1;
-  }
-  std::string out = text.substr(0, insertAt) + defines + text.substr(insertAt);
-  return gpu::flattenGlslSource(out, file.string(), {dirs.snellGlsl, dirs.labGlsl});
-}
-
-gpu::FlatSource flatten(const fs::path& file, const ShaderDirs& dirs) {
-  return gpu::flattenGlslFile(file, {dirs.snellGlsl, dirs.labGlsl});
+gpu::FlatSource flatten(const fs::path& file, const ShaderDirs& dirs, const std::vector<std::string>& defines = {}) {
+  return gpu::flattenGlslFile(file, {dirs.snellGlsl, dirs.labGlsl}, defines);
 }
 
 }  // namespace
@@ -149,13 +123,13 @@ struct GpuLab::Impl {
         normals(gl),
         indices(gl),
         environment(gl, environmentTexture(frame)),
-        background(gpu::Program::graphics(gl, flatten(dirs.labGlsl / "lab_fullscreen.vert", dirs),
+        background(gpu::Program::graphics(gl, flatten(dirs.snellGlsl / "passes" / "fullscreen.vert", dirs),
                                           flatten(dirs.labGlsl / "lab_background.frag", dirs))),
         scene(gpu::Program::graphics(gl, flatten(dirs.labGlsl / "lab_scene.vert", dirs),
                                      flatten(dirs.labGlsl / "lab_scene.frag", dirs))),
         back(gpu::Program::graphics(gl, flatten(dirs.labGlsl / "lab_mesh.vert", dirs),
                                     flatten(dirs.labGlsl / "lab_back.frag", dirs))),
-        pyramidPass(gl, flatten(dirs.labGlsl / "depth_pyramid.frag", dirs)),
+        pyramidPass(gl, dirs.snellGlsl),
         sceneFb(gl, bufferWidth, bufferHeight, 2, true),
         backFb(gl, bufferWidth, bufferHeight, 1, true),
         frontFb(gl, width, height, 4, true),
@@ -208,11 +182,16 @@ struct GpuLab::Impl {
     for (int id : techniques) {
       // Only the strategies the technique's slots call: the same code paths,
       // compiled in a fraction of the time.
-      const std::string defines = "#define LAB_TECHNIQUE " + std::to_string(id) + "\n#define SNELL_INTERSECT_STRATEGIES " +
-                                  std::to_string(snellStrategiesUsed(labTechniqueOptions(id, k.params))) + "\n" +
-                                  (perspective ? "#define SNELL_PERSPECTIVE_ONLY 1\n" : "");
+      const SnellTechniqueInfo* info = snellFindTechnique(id);
+      if (info == nullptr) throw gpu::Error("snell-lab: no technique has id " + std::to_string(id));
+      const bool reference = info->kind == SnellTechniqueKind::Reference;
+      std::vector<std::string> defines = {
+          "LAB_TECHNIQUE " + std::to_string(id), std::string("LAB_REFERENCE ") + (reference ? "true" : "false"),
+          "SNELL_INTERSECT_STRATEGIES " +
+              std::to_string(snellStrategiesUsed(labTechniqueOptions(id, reference, k.params)))};
+      if (perspective) defines.push_back("SNELL_PERSPECTIVE_ONLY 1");
       gpu::Program prog = gpu::Program::graphics(gl, flatten(dirs.labGlsl / "lab_mesh.vert", dirs),
-                                                 flattenWithDefines(dirs.labGlsl / "lab_refract.frag", defines, dirs));
+                                                 flatten(dirs.labGlsl / "lab_refract.frag", dirs, defines));
       prog.set("viewFromWorld", k.viewFromWorld);
       prog.set("clipFromView", k.clipFromView);
       prog.requireUniformBlock("LabUniforms", kLabUniformsBinding, sizeof(LabParams));

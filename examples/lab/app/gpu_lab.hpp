@@ -2,7 +2,7 @@
 // default): (1) the opaque scene (environment background, paintings: colour,
 // depth, view-space normal), (2) the refractive object's back faces (depth
 // GL_GREATER after clearing to 0, front faces culled, normals), (3) the depth
-// min/max pyramids of both depth buffers (examples/glsl/depth_pyramid.frag),
+// min/max pyramids of both depth buffers (glsl/passes/depth_pyramid.frag),
 // (4) the front faces with one technique (examples/glsl/lab_refract.frag):
 // colour, per-pixel stats and the fragment inputs, in RGBA32F attachments.
 #pragma once
@@ -20,8 +20,9 @@
 
 namespace snell::lab {
 
-// Where the shaders live: `labGlsl` holds lab_*.frag/vert and depth_pyramid.frag,
-// `snellGlsl` is the library's glsl/ directory.
+// Where the shaders live: `labGlsl` holds lab_*.frag/vert, `snellGlsl` is the
+// library's glsl/ directory (with passes/: the pyramid pass and the full-screen
+// vertex stage).
 struct ShaderDirs {
   std::filesystem::path labGlsl;
   std::filesystem::path snellGlsl;

@@ -125,8 +125,8 @@ std::string markdownTable(const LabResult& r) {
          " | " + fmt("%.3f %%", 100.0 * t.cpuGpuBeyond1) + " | " + std::to_string(t.cpuGpuBeyond4Pixels) + " (" +
          std::to_string(t.cpuGpuBeyond4Ties) + ") |\n";
   }
-  const TechniqueRow* bound = r.row("image-space-bound");
-  const TechniqueRow* single = r.row("single");
+  const TechniqueRow* bound = r.boundRow();
+  const TechniqueRow* unit = r.costUnitRow();
   s += "\n" + r.scene + ", " + std::to_string(r.width) + "x" + std::to_string(r.height) + ", " +
        std::to_string(r.objectPixels) + " object pixels, scene and back-face buffers " +
        std::to_string(r.width + 2 * r.guardBand) + "x" + std::to_string(r.height + 2 * r.guardBand) + " (a guard band of " +
@@ -151,7 +151,7 @@ std::string markdownTable(const LabResult& r) {
   s += "\nunshaded: object pixels the technique's front-face pass did not cover (they show the scene behind). "
        "invalid: pixels that fell back (no back-face or exit hit: environment along the ray). Time: the refraction "
        "pass alone, glFinish + steady clock, median of " + std::to_string(r.frames) + " frames (the bound: 1), all "
-       "techniques interleaved, on " + r.gpu + "; ratios are to " + (single ? "single sample" : "the first row") +
+       "techniques interleaved, on " + r.gpu + "; ratios are to " + (unit ? unit->label : std::string("the first row")) +
        "; a software rasterizer's milliseconds say little about a GPU. CPU-GPU: the same technique function run in "
        "C++ on the read-back buffers against the GL image; (ties): how many of the pixels beyond 4/255 the C++ "
        "build reproduces within 1/255 when P1 or N1 moves by at most " + std::to_string(kTieUlps) +
@@ -163,8 +163,8 @@ std::string markdownTable(const LabResult& r) {
 // The poster's figures next to this run's, as ratios (absolute MSE depends on the scene and its
 // textures; absolute time on the GPU).
 std::string targetsText(const LabResult& r) {
-  const TechniqueRow* single = r.row("single");
-  const TechniqueRow* plane = r.row("plane-normal-1");
+  const TechniqueRow* single = r.costUnitRow();
+  const TechniqueRow* plane = r.posterRow();
   std::string s = "Mayer & Assarsson (their scene, RTX 3070): normal plane MSE 0.16x single sample's at 1.12x its "
                   "time; depth plane 0.16x at 1.58x; ray marching 1.38x the plane's time.\n";
   s += "Here (" + r.scene + ", vs the two-interface reference):";
@@ -239,7 +239,7 @@ void writeJson(const fs::path& path, const LabResult& r) {
 std::vector<const SnellTechniqueInfo*> selectTechniques(const LabOptions& options) {
   std::vector<const SnellTechniqueInfo*> techniques;
   for (const SnellTechniqueInfo& t : snellTechniqueTable())
-    if (options.techniques.empty() || t.id == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND ||
+    if (options.techniques.empty() || t.kind == SnellTechniqueKind::Reference ||
         std::find(options.techniques.begin(), options.techniques.end(), t.name) != options.techniques.end())
       techniques.push_back(&t);
   return techniques;
@@ -323,11 +323,11 @@ Mask missingInformation(const References& refs, const SceneFrame& frame, const S
   return missing;
 }
 
-// Wyman's d_N per vertex, when ISR is asked for (else none: the shaders read 0).
+// Wyman's d_N per vertex, when a technique reads it (else none: the shaders read 0).
 std::vector<float> wymanDnIfNeeded(const SceneFrame& frame, const std::vector<const SnellTechniqueInfo*>& techniques) {
-  const bool wantIsr = std::any_of(techniques.begin(), techniques.end(),
-                                   [](const SnellTechniqueInfo* t) { return t->id == SNELL_TECHNIQUE_ISR; });
-  if (!wantIsr) return {};
+  const bool wanted = std::any_of(techniques.begin(), techniques.end(),
+                                  [](const SnellTechniqueInfo* t) { return snellTechniqueNeedsDn(*t); });
+  if (!wanted) return {};
   return computeWymanDn(frame.object.positions, frame.object.normals, frame.object.indices);
 }
 
@@ -339,7 +339,7 @@ struct CpuShader {
   int margin;  // guard band of the buffers, texels per side
 
   SnellTwoInterfaceResult operator()(vec3 p1, vec3 n1, float dN) const {
-    return labShade(info.id, p1, n1, dN, cb.backDepth, cb.backNormal, cb.backPyramid, cb.sceneDepth, cb.sceneNormal,
+    return labShade(info.id, info.kind == SnellTechniqueKind::Reference, p1, n1, dN, cb.backDepth, cb.backNormal, cb.backPyramid, cb.sceneDepth, cb.sceneNormal,
                     cb.scenePyramid, cb.sceneColor, cb.environment, params);
   }
 
@@ -481,7 +481,7 @@ TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const CpuShader& shade
 void scoreAgainstTheBound(const std::vector<const SnellTechniqueInfo*>& techniques, const std::vector<Image>& images,
                           const Mask& missing, const References& refs, LabResult& result) {
   std::size_t b = 0;
-  while (b < techniques.size() && techniques[b]->id != SNELL_TECHNIQUE_IMAGE_SPACE_BOUND) ++b;
+  while (b < techniques.size() && techniques[b]->kind != SnellTechniqueKind::Reference) ++b;
   if (b == techniques.size()) return;
   const Mask& object = refs.full.mask;
   const double n = std::max<double>(1.0, static_cast<double>(object.count()));
@@ -521,7 +521,7 @@ void timeTechniques(GpuLab& gpu, const std::vector<const SnellTechniqueInfo*>& t
   double unit = 0.0;
   for (std::size_t i = 0; i < techniques.size(); ++i) {
     result.rows[i].medianMs = median(times[i]);
-    if (techniques[i]->id == SNELL_TECHNIQUE_SINGLE) unit = result.rows[i].medianMs;
+    if (techniques[i]->costUnit) unit = result.rows[i].medianMs;
   }
   if (unit <= 0.0 && !result.rows.empty()) unit = result.rows[0].medianMs;
   for (TechniqueRow& r : result.rows) r.costRatio = unit > 0.0 ? r.medianMs / unit : 0.0;
@@ -553,8 +553,7 @@ void writeOutputs(const fs::path& out, const References& refs, const std::vector
     const TechniqueRow& r = result.rows[i];
     const Image heat = errorHeatMap(full, images[i], refs.full.mask);
     // The time ratio is to single sample when it ran, else to the first row (as in the table).
-    const bool singleRan = std::any_of(result.rows.begin(), result.rows.end(),
-                                       [](const TechniqueRow& row) { return row.name == "single"; });
+    const bool singleRan = result.costUnitRow() != nullptr;
     char numbers[256];
     std::snprintf(numbers, sizeof numbers, ": MSE %.3g (two-interface ref. %.3g), invalid %.1f%%, %.1f fetches/px, %.2fx ",
                   r.mseFull, r.mseTwo, 100.0 * r.invalidShare, r.fetchesPerPixel, r.costRatio);

@@ -5,6 +5,8 @@
 #pragma once
 #include "gpu_lab.hpp"
 
+#include <snell/technique_table.hpp>
+
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -72,6 +74,20 @@ struct LabResult {
       if (r.name == name) return &r;
     return nullptr;
   }
+  // The first row whose technique-table entry satisfies `pred` (a SnellTechniqueInfo predicate), or nullptr.
+  template <class Pred>
+  const TechniqueRow* rowWhere(Pred pred) const {
+    for (const TechniqueRow& r : rows) {
+      const SnellTechniqueInfo* info = snellFindTechnique(r.name);
+      if (info != nullptr && pred(*info)) return &r;
+    }
+    return nullptr;
+  }
+  const TechniqueRow* boundRow() const {
+    return rowWhere([](const SnellTechniqueInfo& t) { return t.kind == SnellTechniqueKind::Reference; });
+  }
+  const TechniqueRow* costUnitRow() const { return rowWhere([](const SnellTechniqueInfo& t) { return t.costUnit; }); }
+  const TechniqueRow* posterRow() const { return rowWhere([](const SnellTechniqueInfo& t) { return t.posterRow; }); }
 };
 
 // Throws snell::lab::Error (scene and file errors) and snell::gpu::Error (GL).

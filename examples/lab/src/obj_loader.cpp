@@ -23,7 +23,7 @@ namespace {
 // range wrapped around (atoi), so a truncated or corrupt file would load as a
 // wrong mesh without a word; and it converts numbers of lines the lab never
 // uses to int unchecked (a `vw` skin-weight joint id of 1e30 is undefined
-// behaviour inside the library, found by fuzzing: issue 16). This pass checks
+// behaviour inside the library, found by fuzzing). This pass checks
 // the lines the lab uses (v, vn, f) and names the line of the first bad one;
 // it returns the only text tinyobjloader is given: those lines rebuilt from
 // their checked tokens, with the texture-coordinate part of each face corner

@@ -25,11 +25,14 @@ options (strategy ids, the values of SnellIntersectOptions.strategy):
   SNELL_STRATEGY_LINEAR_BINARY  5  snellLinearBinarySearch
   SNELL_STRATEGY_LINEAR_MARCH   6  snellLinearMarch
   SNELL_STRATEGY_DDA            7  snellDdaMarch
+  SNELL_STRATEGY_COUNT          8  the number of strategies (ids 0 .. COUNT - 1;
+                                   any other id misses)
   range sources of the searches: SNELL_RANGE_PYRAMID 0 (the pyramid's top
   level, snellDepthRangeFromPyramid, 1 fetch), SNELL_RANGE_EXPLICIT 1 (o.range
   as given, e.g. snellDepthRangeFromBox: Oliveira & Brauwers' bounding box)
   SNELL_INTERSECT_STRATEGIES  bit mask of the strategies compiled in (bit k =
-                              strategy k, 0xFF = all, the default). Every
+                              strategy k; all SNELL_STRATEGY_COUNT of them,
+                              the default). Every
                               technique call inlines the dispatcher, and with
                               it every strategy: a shader that uses one or two
                               presets compiles much faster (llvmpipe: minutes
@@ -109,12 +112,13 @@ source: DESIGN.md sec. 2 ("every intersector is interchangeable in both
 #define SNELL_STRATEGY_LINEAR_BINARY 5
 #define SNELL_STRATEGY_LINEAR_MARCH 6
 #define SNELL_STRATEGY_DDA 7
+#define SNELL_STRATEGY_COUNT 8
 
 #define SNELL_RANGE_PYRAMID 0
 #define SNELL_RANGE_EXPLICIT 1
 
 #ifndef SNELL_INTERSECT_STRATEGIES
-#  define SNELL_INTERSECT_STRATEGIES 0xFF
+#  define SNELL_INTERSECT_STRATEGIES ((1 << SNELL_STRATEGY_COUNT) - 1)
 #endif
 /* true when strategy k is compiled in (a constant expression: the branch folds away) */
 #define SNELL_INTERSECT_HAS(k) ((SNELL_INTERSECT_STRATEGIES & (1 << (k))) != 0)

@@ -34,6 +34,18 @@ inline const char* backendName(Backend b) {
   }
 }
 
+// Every GL backend, in the order Auto tries them: the one list tests and tools
+// iterate ("on every backend").
+inline constexpr Backend kGlBackends[] = {Backend::OSMesa, Backend::EGL};
+
+// A gtest parameter name generator for a Backend ("osmesa", "egl").
+struct BackendParamName {
+  template <class ParamInfo>
+  std::string operator()(const ParamInfo& info) const {
+    return backendName(info.param);
+  }
+};
+
 // Case-insensitive inverse of backendName, for flags and SNELL_GL_BACKEND.
 inline Backend parseBackend(const std::string& name) {
   std::string s;

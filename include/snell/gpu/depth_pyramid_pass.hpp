@@ -3,11 +3,12 @@
 // and the GL-vs-C++ pyramid test. One RGBA32F texture with its full mip chain;
 // level 0 from a depth texture (snellDepthPyramidBase), each next level the 2x2
 // reduction of the one before (snellDepthMinMaxReduce), one full-screen
-// triangle per level through examples/glsl/depth_pyramid.frag (or a shader
-// with its uniforms). The result equals snell::snellBuildDepthPyramid bit for
-// bit on every level (tests/gpu/depth_pyramid_gpu_test.cpp).
+// triangle per level through glsl/passes/depth_pyramid.frag (installed with
+// the library's GLSL, share/snell/glsl), or a shader of your own with its
+// uniforms. The result equals snell::snellBuildDepthPyramid bit for bit on
+// every level (tests/gpu/depth_pyramid_gpu_test.cpp).
 //
-//   snell::gpu::DepthPyramidPass pass(gl, flattenGlslFile("examples/glsl/depth_pyramid.frag", {"glsl"}));
+//   snell::gpu::DepthPyramidPass pass(gl, "/usr/local/share/snell/glsl");   // or the source tree's glsl/
 //   snell::gpu::DepthPyramid pyramid(gl, width, height);
 //   pass.build(pyramid, depthTexture, zNear, zFar, SNELL_DEPTH_GL, 0.0f);   // then bind pyramid.texture()
 #pragma once
@@ -87,9 +88,17 @@ class DepthPyramid {
 
 class DepthPyramidPass {
  public:
-  // fragment: examples/glsl/depth_pyramid.frag, flattened with glsl/ on the include path.
-  DepthPyramidPass(const GlApi& gl, const FlatSource& fragment)
-      : gl_(&gl), program_(Program::graphics(gl, fullScreenTriangle(), fragment)), vao_(gl) {}
+  // The library's pass: passes/fullscreen.vert and passes/depth_pyramid.frag of
+  // glslDir (snell's glsl/ folder, installed as share/snell/glsl), flattened
+  // with glslDir on the include path. Error naming the file when one is missing.
+  DepthPyramidPass(const GlApi& gl, const std::filesystem::path& glslDir)
+      : DepthPyramidPass(gl, flattenGlslFile(glslDir / "passes" / "fullscreen.vert", {glslDir}),
+                         flattenGlslFile(glslDir / "passes" / "depth_pyramid.frag", {glslDir})) {}
+
+  // A pass of your own shaders: a full-screen vertex stage and a fragment
+  // stage with depth_pyramid.frag's uniforms (for other depth hooks, say).
+  DepthPyramidPass(const GlApi& gl, const FlatSource& vertex, const FlatSource& fragment)
+      : gl_(&gl), program_(Program::graphics(gl, vertex, fragment)), vao_(gl) {}
 
   // Fills every level of `target` from depthTexture (level 0's size), whose texels are window depths in
   // `convention` with emptyDepth meaning "no surface". Leaves texture unit 0 unbound, depth test off.
@@ -134,16 +143,6 @@ class DepthPyramidPass {
   const GlApi* gl_;
   Program program_;
   VertexArray vao_;
-
-  static FlatSource fullScreenTriangle() {
-    return flattenGlslSource(R"(#version 450 core
-void main() {
-  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
-  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-)",
-                             "snell_depth_pyramid_pass.vert", {});
-  }
 };
 
 }  // namespace snell::gpu

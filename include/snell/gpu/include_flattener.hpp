@@ -81,10 +81,18 @@ class IncludeFlattener {
   explicit IncludeFlattener(const std::vector<std::filesystem::path>& searchPaths) : searchPaths_(searchPaths) {}
 
   FlatSource run(const std::string& source, const std::string& name, const std::filesystem::path& dir,
-                 const std::string& key) {
+                 const std::string& key, const std::vector<std::string>& defines) {
+    std::string defineLines;
+    for (const std::string& d : defines) {
+      if (d.empty() || d.find_first_of("\r\n") != std::string::npos || d.find('\\') != std::string::npos ||
+          !(std::isalpha(static_cast<unsigned char>(d[0])) || d[0] == '_'))
+        throw Error(name + ": define '" + d + "' is not one line \"NAME\" or \"NAME VALUE\"");
+      defineLines += "#define " + d + "\n";
+    }
     expand(source, name, dir, key, 0);
     FlatSource out;
-    out.text = version_ + extensions_ + body_;
+    // The defines come before the first #line, so every line number stays the file's own.
+    out.text = version_ + extensions_ + defineLines + body_;
     out.files = files_;
     return out;
   }
@@ -317,16 +325,21 @@ class IncludeFlattener {
 }  // namespace detail
 
 // Flattens a shader held in memory. `name` labels it in messages (files[0]);
-// if it has a directory part, quoted includes look there first.
+// if it has a directory part, quoted includes look there first. `defines`
+// ("NAME" or "NAME VALUE", one line each) become #define lines right after the
+// hoisted #version and #extension lines, before any code: the way to compile
+// one file as several programs (SNELL_INTERSECT_STRATEGIES, a technique id).
 inline FlatSource flattenGlslSource(const std::string& source, const std::string& name,
-                                    const std::vector<std::filesystem::path>& searchPaths) {
+                                    const std::vector<std::filesystem::path>& searchPaths,
+                                    const std::vector<std::string>& defines = {}) {
   const std::filesystem::path asPath(name);
   detail::IncludeFlattener f(searchPaths);
-  return f.run(source, name, asPath.parent_path(), "<source> " + name);
+  return f.run(source, name, asPath.parent_path(), "<source> " + name, defines);
 }
 
 inline FlatSource flattenGlslFile(const std::filesystem::path& file,
-                                  const std::vector<std::filesystem::path>& searchPaths) {
+                                  const std::vector<std::filesystem::path>& searchPaths,
+                                  const std::vector<std::string>& defines = {}) {
   std::string text;
   if (!detail::readGlslFile(file, text)) {
     std::error_code ec;
@@ -338,7 +351,7 @@ inline FlatSource flattenGlslFile(const std::filesystem::path& file,
   std::error_code ec;
   std::filesystem::path key = std::filesystem::weakly_canonical(file, ec);
   detail::IncludeFlattener f(searchPaths);
-  return f.run(text, file.string(), file.parent_path(), (ec ? file.lexically_normal() : key).string());
+  return f.run(text, file.string(), file.parent_path(), (ec ? file.lexically_normal() : key).string(), defines);
 }
 
 namespace detail {

@@ -151,11 +151,47 @@ Texture2D<float4> techFrontDepth;
 Texture2D<float4> techFrontNormal;
 #endif
 
-/* One pixel of a full frame (tests/gpu/technique_image_test.cpp): the front-face
-   buffers give P1 and N1, the technique the colour; outside the object, the
-   painting (or the environment where the painting is missing). preset: 0 DIR to
-   the scene, 1 plane normal (2 iterations) to the scene, 2 ISR (d_N = 2R) to the
-   environment, 3 DIR + dispersion + absorption + edge-fade fallback. */
+/* The full-frame test's techniques (tests/gpu/technique_image_test.cpp, which
+   compiles one program per preset with the strategies its options call):
+   0 DIR to the scene, 1 plane normal (2 iterations) to the scene, 2 ISR (d_N =
+   2R) to the environment, 3 DIR + dispersion + absorption + edge-fade
+   fallback; then, painting behind: 4 plane depth (3 iterations), 5 single
+   sample, 6 linear march, 7 DDA, 8 DIR with the sphere's bounding box as its
+   range (centre z -6, radius 2.2: tests/support/technique_scene.hpp). */
+#define TECH_IMAGE_PRESETS 9
+SNELL_FN SnellTechniqueOptions techImageOptions(int preset) {
+  SnellTechniqueOptions o = snellPresetDir();
+  o.exitMode = SNELL_EXIT_SCENE;
+  if (preset == 1) {
+    o = snellPresetPlaneNormal(2);
+    o.exitMode = SNELL_EXIT_SCENE;
+  } else if (preset == 2) {
+    o = snellPresetIsr();
+  } else if (preset == 3) {
+    o.dispersion = 3;
+    o.iors = snellDispersionIors(1.5168f, 30.0f);
+    o.absorption = vec3(0.05f, 0.1f, 0.2f);
+    o.fallback = SNELL_FALLBACK_EDGE_FADE;
+  } else if (preset >= 4) {
+    if (preset == 4) {
+      o = snellPresetPlaneDepth(3);
+    } else if (preset == 5) {
+      o = snellPresetSingleSample();
+    } else if (preset == 6) {
+      o = snellPresetLinearMarch();
+    } else if (preset == 7) {
+      o = snellPresetDdaMarch();
+    } else {
+      o = snellPresetDirBounds(-3.8f, -8.2f);
+    }
+    o.exitMode = SNELL_EXIT_SCENE;
+  }
+  return o;
+}
+
+/* One pixel of a full frame: the front-face buffers give P1 and N1, the
+   technique (techImageOptions(preset)) the colour; outside the object, the
+   painting (or the environment where the painting is missing). */
 SNELL_FN vec4 techImagePixel(ivec2 px, int preset, vec4 c) {
   SnellDepthSurface front = snellDepthSurface(techMatrix(c), 0.5f, 40.0f, SNELL_DEPTH_GL, 1.0f);
   ivec2 size = SNELL_TEXTURE_SIZE(techFrontDepth, 0);
@@ -172,34 +208,7 @@ SNELL_FN vec4 techImagePixel(ivec2 px, int preset, vec4 c) {
   }
   SnellViewPoint p1 = snellUvZToView(techMatrix(c), uv, f.viewZ);
   vec4 n1 = SNELL_TEXEL_FETCH(techFrontNormal, px, 0);
-  SnellTechniqueOptions o = snellPresetDir();
-  o.exitMode = SNELL_EXIT_SCENE;
-  if (preset == 1) {
-    o = snellPresetPlaneNormal(2);
-    o.exitMode = SNELL_EXIT_SCENE;
-  } else if (preset == 2) {
-    o = snellPresetIsr();
-  } else if (preset == 3) {
-    o.dispersion = 3;
-    o.iors = snellDispersionIors(1.5168f, 30.0f);
-    o.absorption = vec3(0.05f, 0.1f, 0.2f);
-    o.fallback = SNELL_FALLBACK_EDGE_FADE;
-  } else if (preset >= 4) {
-    // The other presets, painting behind: plane depth, single sample, linear march, DDA, DIR with the
-    // sphere's bounding box as its range (centre z -6, radius 2.2: tests/support/technique_scene.hpp).
-    if (preset == 4) {
-      o = snellPresetPlaneDepth(3);
-    } else if (preset == 5) {
-      o = snellPresetSingleSample();
-    } else if (preset == 6) {
-      o = snellPresetLinearMarch();
-    } else if (preset == 7) {
-      o = snellPresetDdaMarch();
-    } else {
-      o = snellPresetDirBounds(-3.8f, -8.2f);
-    }
-    o.exitMode = SNELL_EXIT_SCENE;
-  }
+  SnellTechniqueOptions o = techImageOptions(preset);
   SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
       p1.position, vec3(n1.x, n1.y, n1.z), 4.4f, techBackDepth, techBackNormal, techBackPyramid, techBackSurface(c),
       techSceneDepth, techSceneNormal, techScenePyramid, techSceneColor, techSceneSurface(c), techEnv, o);
