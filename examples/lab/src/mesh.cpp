@@ -103,14 +103,23 @@ glm::mat4 Transform::matrix() const {
 
 void applyTransform(Mesh& mesh, const Transform& transform) {
   const glm::mat4 m = transform.matrix();
-  // In double: with a scale of 1e-20 or 1e20 (finite floats) the float
-  // inverse's determinant underflows or overflows and every normal became NaN.
-  const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(glm::mat3(m))));
+  // In float, as the lab always computed it (every result of a scene depends on
+  // these bits); in double where float overflows or underflows: with a scale
+  // of 1e-20 or 1e20 (finite floats) the float inverse's determinant does, and
+  // every normal became NaN.
+  const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(m)));
+  const glm::dmat3 normalMatrixDouble = glm::transpose(glm::inverse(glm::dmat3(glm::mat3(m))));
   for (glm::vec3& p : mesh.positions) p = glm::vec3(m * glm::vec4(p, 1.0f));
   for (glm::vec3& n : mesh.normals) {
-    const glm::dvec3 t = normalMatrix * glm::dvec3(n);
-    const double len = glm::length(t);
-    n = len > 0.0 && std::isfinite(len) ? glm::vec3(t / len) : glm::vec3(0.0f, 0.0f, 1.0f);
+    const glm::vec3 t = normalMatrix * n;
+    const float len = glm::length(t);
+    if (std::isfinite(len) && std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z)) {
+      n = len > 0.0f ? t / len : glm::vec3(0.0f, 0.0f, 1.0f);
+    } else {
+      const glm::dvec3 d = normalMatrixDouble * glm::dvec3(n);
+      const double dlen = glm::length(d);
+      n = dlen > 0.0 && std::isfinite(dlen) ? glm::vec3(d / dlen) : glm::vec3(0.0f, 0.0f, 1.0f);
+    }
   }
   if (glm::determinant(glm::mat3(m)) < 0.0f) flipWinding(mesh);
 }
