@@ -208,7 +208,9 @@ contract:
     (1 - eta^2) + eta^2 cos_i^2 < 0;
   - eta = 1 returns the normalized incident direction (up to rounding);
   - r.valid is false (direction 0, tir false) when incident or normal is zero,
-    denormal-small, NaN or infinite, or eta is not a finite positive number;
+    denormal-small, NaN or infinite, or eta is not a finite positive normal
+    number (a denormal eta counts as 0, the prelude's rule: a runtime that
+    flushes denormals, SwiftShader's WebGL 2 among them, sees 0 there);
   - at normal incidence under CRITICAL the tangent is undefined, but TIR cannot
     happen there (sin_i = 0), so the case does not arise.
 source: Snell's law in vector form: t = eta i + (eta cos_i - cos_t) n with
@@ -236,8 +238,8 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
   r.valid = false;
   vec3 i = snellSafeNormalize(incident);
   vec3 n = snellSafeNormalize(normal);
-  // eta > 0 is false for NaN; eta < FLT_MAX is false for +Inf.
-  if (dot(i, i) == 0.0f || dot(n, n) == 0.0f || !(eta > 0.0f) || !(eta < SNELL_FLT_MAX)) {
+  // eta >= FLT_MIN is false for NaN, 0 and denormals; eta < FLT_MAX is false for +Inf.
+  if (dot(i, i) == 0.0f || dot(n, n) == 0.0f || !(eta >= SNELL_FLT_MIN) || !(eta < SNELL_FLT_MAX)) {
     return r;
   }
   r.valid = true;

@@ -405,7 +405,7 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
   r.valid = false;
   vec3 i = snellSafeNormalize(incident);
   vec3 n = snellSafeNormalize(normal);
-  if (dot(i, i) == 0.0f || dot(n, n) == 0.0f || !(eta > 0.0f) || !(eta < SNELL_FLT_MAX)) {
+  if (dot(i, i) == 0.0f || dot(n, n) == 0.0f || !(eta >= SNELL_FLT_MIN) || !(eta < SNELL_FLT_MAX)) {
     return r;
   }
   r.valid = true;

@@ -149,11 +149,15 @@ TEST(OpticsRefract, BadInputsAreInvalid) {
         EXPECT_EQ(res.direction, vec3(0.0f));
       }
     }
-    for (float eta : {0.0f, -1.0f, kNaN, kInf, -kInf}) {
+    // Denormal etas count as 0 (a runtime that flushes denormals sees 0 there);
+    // the smallest normal one is an eta like any other.
+    for (float eta : {0.0f, -1.0f, kNaN, kInf, -kInf, 1e-40f, std::numeric_limits<float>::denorm_min(),
+                      std::nextafter(std::numeric_limits<float>::min(), 0.0f)}) {
       snell::SnellRefraction res = snell::snellRefract(i, n, eta, p);
-      EXPECT_FALSE(res.valid);
+      EXPECT_FALSE(res.valid) << eta;
       EXPECT_EQ(res.direction, vec3(0.0f));
     }
+    EXPECT_TRUE(snell::snellRefract(i, n, std::numeric_limits<float>::min(), p).valid);
   }
 }
 
