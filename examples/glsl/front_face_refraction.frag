@@ -4,6 +4,7 @@
 // 300 es, 310 es, or as Vulkan GLSL (tests/compile/check_glsl.sh).
 #ifdef GL_ES
 precision highp float;
+precision highp int;
 precision highp sampler2D;
 #endif
 #include "snell/optics.glsl"
