@@ -8,6 +8,7 @@ packages=(
   libgtest-dev libbenchmark-dev   # tests and benchmarks
   glslang-tools spirv-tools spirv-cross  # offline GLSL/HLSL compilation checks
   libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev  # Mesa llvmpipe, no GPU needed
+  libvulkan-dev mesa-vulkan-drivers  # the Vulkan loader and lavapipe (Vulkan on the CPU): the Vulkan parity runs
   libembree-dev nlohmann-json3-dev libtinyobjloader-dev libstb-dev libcli11-dev  # the lab
   libspng-dev libjpeg62-turbo-dev libopenexr-dev  # the lab's image decoders (PNG, JPEG, OpenEXR)
   clang-14 libclang-rt-14-dev valgrind  # libFuzzer targets (tests/fuzz), the GPU leak check

@@ -8,6 +8,7 @@
 
 #include <snell/gpu/context.hpp>
 #include <snell/gpu/hlsl.hpp>
+#include <snell/gpu/parity_vulkan.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -82,7 +83,7 @@ class ParityRuntime {
   virtual ~ParityRuntime() = default;
   virtual std::string suite() const = 0;  // the gtest suite of its runs: "Parity_osmesa"
   virtual std::string tag() const = 0;    // the report line's prefix: "[parity]"
-  virtual Backend backend() const = 0;    // the GL context it runs in
+  virtual std::string where() const = 0;  // the report's backend= field: "osmesa", "vulkan"
   virtual std::vector<ParityIO> run(const CaseSpec& spec, const std::vector<ParityIO>& inputs) const = 0;
 };
 
@@ -92,7 +93,7 @@ class GlslRuntime final : public ParityRuntime {
   explicit GlslRuntime(Backend backend) : backend_(backend) {}
   std::string suite() const override { return std::string("Parity_") + snell::gpu::backendName(backend_); }
   std::string tag() const override { return "[parity]"; }
-  Backend backend() const override { return backend_; }
+  std::string where() const override { return snell::gpu::backendName(backend_); }
   std::vector<ParityIO> run(const CaseSpec& spec, const std::vector<ParityIO>& inputs) const override {
     return snell::gpu::runParityGpu(contextFor(backend_), {kRoot / "glsl", kRoot / "tests" / "parity" / "cases"},
                                     spec.glslFile, spec.entry, inputs, spec.textures, spec.entrySource);
@@ -107,11 +108,37 @@ class HlslRuntime final : public ParityRuntime {
  public:
   std::string suite() const override { return std::string("ParityHlsl_") + snell::gpu::backendName(kHlslBackend); }
   std::string tag() const override { return "[parity-hlsl]"; }
-  Backend backend() const override { return kHlslBackend; }
+  std::string where() const override { return snell::gpu::backendName(kHlslBackend); }
   std::vector<ParityIO> run(const CaseSpec& spec, const std::vector<ParityIO>& inputs) const override {
     return snell::gpu::runParityHlsl(
         contextFor(kHlslBackend), {kRoot / "hlsl_like" / "snell", kRoot / "glsl", kRoot / "tests" / "parity" / "cases"},
         spec.glslFile, spec.entry, inputs, spec.textures, hlslWorkDir(), hlslTools(), {}, spec.entrySource);
+  }
+};
+
+// The one Vulkan device of the run (lavapipe on the test machines): created on
+// first use, released by main() before exit like the GL contexts. No device is
+// a failure of every Vulkan case, naming what is missing.
+std::unique_ptr<snell::gpu::VulkanCompute>& vulkanDevice() {
+  static std::unique_ptr<snell::gpu::VulkanCompute> device;
+  return device;
+}
+
+// The case file as Vulkan GLSL: glslang -V to SPIR-V, run as compute on the Vulkan device.
+class VulkanRuntime final : public ParityRuntime {
+ public:
+  std::string suite() const override { return "ParityVulkan"; }
+  std::string tag() const override { return "[parity-vulkan]"; }
+  std::string where() const override { return "vulkan"; }
+  std::vector<ParityIO> run(const CaseSpec& spec, const std::vector<ParityIO>& inputs) const override {
+    auto& device = vulkanDevice();
+    if (!device) {
+      device = std::make_unique<snell::gpu::VulkanCompute>();
+      std::cout << "[parity-vulkan] device: " << device->description() << "\n";
+    }
+    return snell::gpu::runParityVulkan(*device, {kRoot / "glsl", kRoot / "tests" / "parity" / "cases"}, spec.glslFile,
+                                       spec.entry, inputs, spec.textures, hlslWorkDir() / "vulkan", hlslTools(),
+                                       spec.entrySource);
   }
 };
 
@@ -121,6 +148,7 @@ const std::vector<std::unique_ptr<ParityRuntime>>& parityRuntimes() {
     std::vector<std::unique_ptr<ParityRuntime>> r;
     for (Backend backend : snell::gpu::kGlBackends) r.push_back(std::make_unique<GlslRuntime>(backend));
     r.push_back(std::make_unique<HlslRuntime>());
+    r.push_back(std::make_unique<VulkanRuntime>());
     return r;
   }();
   return all;
@@ -141,7 +169,7 @@ class ParityTest : public ::testing::Test {
     const snell::gpu::ParityReport r = snell::gpu::compareParity(gpu, cpu, spec_->outputs, &inputs);
     // The figures the closing notes quote.
     std::cout << runtime_->tag() << " " << spec_->function << " file=" << spec_->glslFile
-              << " backend=" << snell::gpu::backendName(runtime_->backend())
+              << " backend=" << runtime_->where()
               << " cases=" << r.cases << " mismatches=" << r.mismatches << " maxAbs=" << r.maxAbs
               << " maxRel=" << r.maxRel << std::hex << " digests in=" << ioDigest(inputs) << " cpu=" << ioDigest(cpu)
               << " gpu=" << ioDigest(gpu) << std::dec << "\n";
@@ -365,6 +393,7 @@ int main(int argc, char** argv) {
       snell_parity::registeredRuns()[r->suite()].insert(spec.function);
     }
   const int result = RUN_ALL_TESTS();
+  snell_parity::vulkanDevice().reset();
   snell_parity::contexts().clear();
   return result;
 }
