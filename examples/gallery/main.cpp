@@ -10,6 +10,7 @@
 #include <snell/gpu/error.hpp>
 
 #include "gallery.hpp"
+#include "lab/cli.hpp"
 #include "lab/camera.hpp"
 #include "lab/error.hpp"
 
@@ -29,20 +30,7 @@ int main(int argc, char** argv) {
   app.add_option("--effect", o.effects, "effects to run (default all): water, glass, ice, rtm")
       ->check(CLI::IsMember(snell::gallery::effectNames()));
   app.add_option("--out", out, "output directory (default gallery-out)");
-  // Usage errors exit 2 as snell-lab's do (CLI11_PARSE returned CLI11's own
-  // codes, 105 or 109); --help still exits 0.
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return 2;
-  }
+  if (const int code = snell::lab::parseCommandLine(app, argc, argv); code >= 0) return code;
   int w = 0, h = 0;
   char x = 0, extra = 0;
   if (std::sscanf(size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||

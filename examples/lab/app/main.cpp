@@ -3,6 +3,7 @@
 #include "lab_run.hpp"
 #include "technique.hpp"
 
+#include "lab/cli.hpp"
 #include "lab/error.hpp"
 
 #include <snell/gpu/error.hpp>
@@ -135,19 +136,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   app.add_flag("-q,--quiet", o.quiet, "no progress bars and no table on stdout");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    suggestOptions(app, argc, argv);
-    return 2;
-  }
+  if (const int code = parseCommandLine(app, argc, argv, [&] { suggestOptions(app, argc, argv); }); code >= 0)
+    return code;
   for (const std::string& t : techniqueArgs) {
     if (t == "all") continue;
     if (!snell::snellFindTechnique(t)) {

@@ -80,17 +80,25 @@ inline std::string parityCallAndStore(const std::string& entry) {
 }
 }  // namespace detail
 
+// Who compiles the generated shader: GL (the flattener resolves the includes,
+// the case count is a uniform) or glslang for Vulkan (its include directive,
+// the count a push constant: Vulkan has no free uniforms).
+enum class ParityDialect { Gl, Vulkan };
+
 // The generated compute shader. `in`/`out` are GLSL keywords, hence the names.
 // `entrySource`, if given, is appended after the case file (a generated entry
 // that calls what the case file declares).
 inline std::string parityShaderSource(const std::string& caseFile, const std::string& entry,
-                                      const std::string& entrySource = {}) {
+                                      const std::string& entrySource = {},
+                                      ParityDialect dialect = ParityDialect::Gl) {
   std::string s;
   s += "#version 450 core\n";
+  if (dialect == ParityDialect::Vulkan) s += "#extension GL_GOOGLE_include_directive : require\n";
   s += "layout(local_size_x = " + std::to_string(kParityLocalSize) + ") in;\n";
   s += "layout(std430, binding = 0) readonly buffer SnellParityInputs { vec4 snellParityIn[]; };\n";
   s += "layout(std430, binding = 1) writeonly buffer SnellParityOutputs { vec4 snellParityResult[]; };\n";
-  s += "uniform int snellParityCount;\n";
+  s += dialect == ParityDialect::Vulkan ? "layout(push_constant) uniform SnellParityPush { int snellParityCount; };\n"
+                                        : "uniform int snellParityCount;\n";
   s += "struct SnellParityOut { vec4 a; vec4 b; vec4 c; vec4 d; };\n";
   s += "#include \"" + caseFile + "\"\n";
   s += entrySource;

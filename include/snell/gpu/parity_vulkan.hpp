@@ -25,27 +25,6 @@ namespace snell::gpu {
 // Samplers get bindings from here on; 0 and 1 are the input and result buffers.
 constexpr std::uint32_t kParityVulkanFirstSampler = 16;
 
-// The Vulkan twin of parityShaderSource().
-inline std::string parityVulkanShaderSource(const std::string& caseFile, const std::string& entry,
-                                            const std::string& entrySource = {}) {
-  std::string s;
-  s += "#version 450 core\n";
-  s += "#extension GL_GOOGLE_include_directive : require\n";
-  s += "layout(local_size_x = " + std::to_string(kParityLocalSize) + ") in;\n";
-  s += "layout(std430, binding = 0) readonly buffer SnellParityInputs { vec4 snellParityIn[]; };\n";
-  s += "layout(std430, binding = 1) writeonly buffer SnellParityOutputs { vec4 snellParityResult[]; };\n";
-  s += "layout(push_constant) uniform SnellParityPush { int snellParityCount; };\n";
-  s += "struct SnellParityOut { vec4 a; vec4 b; vec4 c; vec4 d; };\n";
-  s += "#include \"" + caseFile + "\"\n";
-  s += entrySource;
-  s += "void main() {\n";
-  s += "  uint i = gl_GlobalInvocationID.x;\n";
-  s += "  if (i >= uint(snellParityCount)) return;\n";
-  s += detail::parityCallAndStore(entry);
-  s += "}\n";
-  return s;
-}
-
 namespace detail {
 
 // The live samplers of a SPIR-V module and their bindings, from spirv-cross
@@ -89,7 +68,7 @@ inline std::vector<ParityIO> runParityVulkan(const VulkanCompute& vk, const std:
   const std::string name = fs::path(caseFile).stem().string() + "." + entry;
   const fs::path source = workDir / (name + ".comp"), spv = workDir / (name + ".spv"),
                  reflect = workDir / (name + ".json");
-  detail::writeTextFile(source, parityVulkanShaderSource(caseFile, entry, entrySource));
+  detail::writeTextFile(source, parityShaderSource(caseFile, entry, entrySource, ParityDialect::Vulkan));
   std::vector<std::string> args = {"-V", "--target-env", "vulkan1.1", "--auto-map-bindings", "--shift-texture-binding",
                                    std::to_string(kParityVulkanFirstSampler), "-o", spv.string()};
   for (const fs::path& d : includeDirs) args.push_back("-I" + d.string());
