@@ -189,8 +189,9 @@ class VulkanCompute {
       s.addressModeU = s.addressModeV = s.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
       s.minLod = 0.0f;
       // GL without mips reads level 0 only (GL_NEAREST / GL_LINEAR minification): a
-      // Vulkan sampler does that with maxLod 0.25, which keeps the min/mag choice
-      // (made on the LOD before the clamp to maxLod) while every read stays on level 0.
+      // Vulkan sampler does that with maxLod 0.25, which keeps a positive LOD
+      // positive (so minification picks minFilter, as in GL) while nearest-mip
+      // selection stays on level 0.
       s.maxLod = tex.mipFilter == snell::MipFilter::None ? 0.25f : static_cast<float>(levels - 1);
       s.unnormalizedCoordinates = VK_FALSE;
       vk.check(vk.vkCreateSampler(vk.device_, &s, nullptr, &sampler_), "vkCreateSampler");
