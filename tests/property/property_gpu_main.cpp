@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "parity_registry.hpp"
+#include "parity_runtimes.hpp"
 #include "property_contract.hpp"
 
 namespace snell_parity {
@@ -53,12 +54,20 @@ std::size_t gpuInputs() {
   }
   return static_cast<std::size_t>(n);
 }
-constexpr snell::gpu::Backend kBackend = snell::gpu::Backend::OSMesa;
-const std::filesystem::path kRoot = SNELL_SOURCE_DIR;
+// The runtimes the hostile inputs run on: GLSL on OSMesa and Vulkan GLSL on
+// the Vulkan device (the parity suite's, parity_runtimes.hpp).
+const std::vector<const ParityRuntime*>& propertyRuntimes() {
+  static const std::vector<const ParityRuntime*> all = [] {
+    static const GlslRuntime gl(snell::gpu::Backend::OSMesa);
+    static const VulkanRuntime vulkan;
+    return std::vector<const ParityRuntime*>{&gl, &vulkan};
+  }();
+  return all;
+}
 
 class PropertyGpuTest : public ::testing::Test {
  public:
-  explicit PropertyGpuTest(const CaseSpec* spec) : spec_(spec) {}
+  PropertyGpuTest(const CaseSpec* spec, const ParityRuntime* runtime) : spec_(spec), runtime_(runtime) {}
   void TestBody() override {
     if (spec_->setup) spec_->setup();
     const std::vector<ParityIO> base = spec_->inputs();
@@ -69,10 +78,7 @@ class PropertyGpuTest : public ::testing::Test {
     for (std::uint64_t i = base.size(); i < base.size() + count; ++i)
       inputs.push_back(property::propertyInput(base, i));
 
-    snell::gpu::Context ctx(kBackend);
-    const std::vector<ParityIO> gpu =
-        snell::gpu::runParityGpu(ctx, {kRoot / "glsl", kRoot / "tests" / "parity" / "cases"}, spec_->glslFile,
-                                 spec_->entry, inputs, spec_->textures, spec_->entrySource);
+    const std::vector<ParityIO> gpu = runtime_->run(*spec_, inputs);
     ASSERT_EQ(gpu.size(), inputs.size());
 
     Tally onGpu, onCpu;
@@ -88,7 +94,7 @@ class PropertyGpuTest : public ::testing::Test {
                        "\n  gpu output: " + property::formatIO(gpu[j]) + "\n  cpu output: " + property::formatIO(cpu);
       if (c && !g) ++cpuOnly;
     }
-    std::cout << "[property-gpu] " << spec_->function << " backend=" << snell::gpu::backendName(kBackend)
+    std::cout << "[property-gpu] " << spec_->function << " backend=" << runtime_->where()
               << " inputs=" << onGpu.inputs << " violations=" << onGpu.violations << " gpuOnly=" << gpuOnly
               << " cpuOnly=" << cpuOnly << " exempt=" << onGpu.exempt << onGpu.byOutputText() << "\n";
     if (gpuOnly) std::cout << "[property-gpu] " << spec_->function << " first GPU-only " << firstGpuOnly << "\n";
@@ -105,6 +111,7 @@ class PropertyGpuTest : public ::testing::Test {
 
  private:
   const CaseSpec* spec_;
+  const ParityRuntime* runtime_;
 };
 
 }  // namespace
@@ -112,10 +119,15 @@ class PropertyGpuTest : public ::testing::Test {
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
-  const std::string suite = std::string("PropertyGpu_") + snell::gpu::backendName(snell_parity::kBackend);
-  for (const snell_parity::CaseSpec& spec : snell_parity::registry()) {
-    ::testing::RegisterTest(suite.c_str(), spec.function.c_str(), nullptr, nullptr, __FILE__, __LINE__,
-                            [&spec]() -> ::testing::Test* { return new snell_parity::PropertyGpuTest(&spec); });
+  for (const snell_parity::ParityRuntime* runtime : snell_parity::propertyRuntimes()) {
+    const std::string suite = "PropertyGpu_" + runtime->where();
+    for (const snell_parity::CaseSpec& spec : snell_parity::registry())
+      ::testing::RegisterTest(suite.c_str(), spec.function.c_str(), nullptr, nullptr, __FILE__, __LINE__,
+                              [&spec, runtime]() -> ::testing::Test* {
+                                return new snell_parity::PropertyGpuTest(&spec, runtime);
+                              });
   }
-  return RUN_ALL_TESTS();
+  const int result = RUN_ALL_TESTS();
+  snell_parity::releaseParityRuntimes();
+  return result;
 }
