@@ -57,8 +57,7 @@ pids=()
 build_status=0
 for t in $targets; do
   bin=$out/fuzz_$t
-  src=$t
-  case $t in image_*) src=image ;; esac
+  src=$(source_of "$t")
   if [ -f "$bin" ] && [ -z "$(find "$root/tests/fuzz/fuzz_$src.cpp" "$root/include" "$root/glsl" -newer "$bin" -print -quit)" ] &&
      [ -z "$(find "$out/obj" -newer "$bin" -print -quit)" ]; then continue; fi
   echo "run_fuzzers: building fuzz_$t"

@@ -15,8 +15,6 @@
 
 #include <chrono>
 #include <cstddef>
-#include <fstream>
-#include <sstream>
 
 namespace snell::lab {
 

@@ -57,7 +57,7 @@ inline const char* vkResultName(VkResult r) {
 #define SNELL_VK_INSTANCE_FUNCTIONS(X)                                                                       \
   X(vkDestroyInstance) X(vkEnumeratePhysicalDevices) X(vkGetPhysicalDeviceProperties)                      \
   X(vkGetPhysicalDeviceQueueFamilyProperties) X(vkGetPhysicalDeviceMemoryProperties) X(vkCreateDevice)     \
-  X(vkGetDeviceProcAddr) X(vkGetPhysicalDeviceFormatProperties)
+  X(vkGetDeviceProcAddr)
 #define SNELL_VK_DEVICE_FUNCTIONS(X)                                                                         \
   X(vkDestroyDevice) X(vkGetDeviceQueue) X(vkCreateBuffer) X(vkDestroyBuffer)                              \
   X(vkGetBufferMemoryRequirements) X(vkAllocateMemory) X(vkFreeMemory) X(vkBindBufferMemory) X(vkMapMemory) \
