@@ -41,8 +41,10 @@ const std::vector<Pixel>& pixels() {
 
 void twoInterface(benchmark::State& state, int technique) {
   const technique_test::Scene& s = scene();
-  SnellTechniqueOptions o = snellTechniquePreset(technique);
-  o.exitMode = SNELL_EXIT_SCENE;
+  SnellTechnique t = snellTechniquePreset(technique);
+  t.exit.source = SNELL_SOURCE_BUFFERS;
+  const SnellMaterial m = snellMaterial();
+  const SnellView v = snellView();
   const std::vector<Pixel>& px = pixels();
   double fetches = 0.0;
   std::size_t n = 0;
@@ -50,7 +52,7 @@ void twoInterface(benchmark::State& state, int technique) {
     for (const Pixel& p : px) {
       const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
           p.p, p.n, 4.4f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(), s.plane.depth,
-          s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o);
+          s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, t, m, v);
       benchmark::DoNotOptimize(r.color);
       fetches += r.fetches;
     }

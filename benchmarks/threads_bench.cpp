@@ -131,8 +131,10 @@ const FrameInput& frameInput() {
 void refractFrame(benchmark::State& state, int technique) {
   const FrameInput& f = frameInput();
   const technique_test::Scene& s = f.scene;
-  snell::SnellTechniqueOptions o = snell::snellTechniquePreset(technique);
-  o.exitMode = SNELL_EXIT_SCENE;
+  snell::SnellTechnique t = snell::snellTechniquePreset(technique);
+  t.exit.source = SNELL_SOURCE_BUFFERS;
+  const snell::SnellMaterial m = snell::snellMaterial();
+  const snell::SnellView v = snell::snellView();
   const int threads = static_cast<int>(state.range(0));
   std::vector<glm::vec3> color(static_cast<std::size_t>(kFrameSize * kFrameSize));
   for (auto _ : state) {
@@ -143,7 +145,7 @@ void refractFrame(benchmark::State& state, int technique) {
           color[static_cast<std::size_t>(p.index)] =
               snell::snellTwoInterfaceRefraction(p.p, p.n, 4.4f, s.back.depth, s.backNormalMips, s.backPyramid,
                                                  s.backSurface(), s.plane.depth, s.sceneNormalMips, s.scenePyramid,
-                                                 s.sceneColor, s.sceneSurface(), s.env, o)
+                                                 s.sceneColor, s.sceneSurface(), s.env, t, m, v)
                   .color;
     });
     benchmark::DoNotOptimize(color.data());

@@ -2745,136 +2745,164 @@ SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
 #ifndef SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
 #define SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
 
-#define SNELL_BACK_INTERSECT 0
-#define SNELL_BACK_WYMAN 1
-
-#define SNELL_EXIT_ENVIRONMENT 0
-#define SNELL_EXIT_SCENE 1
+#define SNELL_SOURCE_ENVIRONMENT 0
+#define SNELL_SOURCE_BUFFERS 1
+#define SNELL_SOURCE_WYMAN 2
 
 #define SNELL_FALLBACK_ENVIRONMENT 0
 #define SNELL_FALLBACK_EDGE_FADE 1
 
-#define SNELL_REFLECT_ENVIRONMENT 0
-#define SNELL_REFLECT_SCENE 1
-
-struct SnellTechniqueOptions {
-  int backMethod;
-  SnellIntersectOptions back;
-  SnellIntersectOptions exit;
-  int exitMode;
+struct SnellSlot {
+  int source;
+  SnellIntersectOptions intersect;
   int fallback;
   float fallbackDistance;
   float edgeFadeWidth;
-  int tirPolicy;
+};
+
+struct SnellTechnique {
+  SnellSlot back;
+  SnellSlot exit;
+  SnellSlot reflect;
+};
+
+struct SnellMaterial {
   float ior;
   float iorOutside;
   int dispersion;
   vec3 iors;
   vec3 absorption;
+  int tirPolicy;
   bool reflection;
-  int reflectionMode;
-  SnellIntersectOptions reflect;
   float roughness;
-  int sceneColorLevels;
-  int environmentLevels;
+};
+
+struct SnellView {
   vec3 envX;
   vec3 envY;
   vec3 envZ;
+  int sceneColorLevels;
+  int environmentLevels;
 };
 
-SNELL_FN SnellTechniqueOptions snellTechniqueOptions() {
-  SnellTechniqueOptions o;
-  o.backMethod = SNELL_BACK_INTERSECT;
-  o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
-  o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
-  o.exitMode = SNELL_EXIT_ENVIRONMENT;
-  o.fallback = SNELL_FALLBACK_ENVIRONMENT;
-  o.fallbackDistance = 1.0f;
-  o.edgeFadeWidth = 0.1f;
-  o.tirPolicy = SNELL_TIR_CRITICAL;
-  o.ior = 1.5f;
-  o.iorOutside = 1.0f;
-  o.dispersion = 1;
-  o.iors = vec3(1.5f, 1.5f, 1.5f);
-  o.absorption = vec3(0.0f, 0.0f, 0.0f);
-  o.reflection = true;
-  o.reflectionMode = SNELL_REFLECT_ENVIRONMENT;
-  o.reflect = snellIntersectOptions(SNELL_STRATEGY_LINEAR_MARCH);
-  o.roughness = 0.0f;
-  o.sceneColorLevels = 1;
-  o.environmentLevels = 1;
-  o.envX = vec3(1.0f, 0.0f, 0.0f);
-  o.envY = vec3(0.0f, 1.0f, 0.0f);
-  o.envZ = vec3(0.0f, 0.0f, 1.0f);
-  return o;
+SNELL_FN SnellSlot snellSlot(int source, int strategy) {
+  SnellSlot s;
+  s.source = source;
+  s.intersect = snellIntersectOptions(strategy);
+  s.fallback = SNELL_FALLBACK_ENVIRONMENT;
+  s.fallbackDistance = 1.0f;
+  s.edgeFadeWidth = 0.1f;
+  return s;
 }
+
+SNELL_FN SnellTechnique snellTechnique() {
+  SnellTechnique t;
+  t.back = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_CBS);
+  t.exit = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_PLANE_NORMAL);
+  t.reflect = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_LINEAR_MARCH);
+  return t;
+}
+
+SNELL_FN SnellMaterial snellMaterial() {
+  SnellMaterial m;
+  m.ior = 1.5f;
+  m.iorOutside = 1.0f;
+  m.dispersion = 1;
+  m.iors = vec3(1.5f, 1.5f, 1.5f);
+  m.absorption = vec3(0.0f, 0.0f, 0.0f);
+  m.tirPolicy = SNELL_TIR_CRITICAL;
+  m.reflection = true;
+  m.roughness = 0.0f;
+  return m;
+}
+
+SNELL_FN SnellView snellView() {
+  SnellView v;
+  v.envX = vec3(1.0f, 0.0f, 0.0f);
+  v.envY = vec3(0.0f, 1.0f, 0.0f);
+  v.envZ = vec3(0.0f, 0.0f, 1.0f);
+  v.sceneColorLevels = 1;
+  v.environmentLevels = 1;
+  return v;
+}
+
+#endif
+
+#ifndef SNELL_SHADE_TECHNIQUE_BUFFERS_GLSL
+#define SNELL_SHADE_TECHNIQUE_BUFFERS_GLSL
+
+#define SNELL_OBJECT_BUFFERS SNELL_TEX2D backDepth, SNELL_TEX2D backNormal, SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back
+#define SNELL_OBJECT_BUFFER_ARGS backDepth, backNormal, backPyramid, back
+
+#define SNELL_SCENE_BUFFERS SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor, SNELL_IN(SnellDepthSurface) scene, SNELL_ENVIRONMENT_TEX environment
+#define SNELL_SCENE_BUFFER_ARGS sceneDepth, sceneNormal, scenePyramid, sceneColor, scene, environment
 
 #endif
 
 #ifndef SNELL_SHADE_TECHNIQUE_PRESETS_GLSL
 #define SNELL_SHADE_TECHNIQUE_PRESETS_GLSL
 
-SNELL_FN SnellTechniqueOptions snellTechniquePresetSlots(int backStrategy, int exitStrategy) {
-  SnellTechniqueOptions o = snellTechniqueOptions();
-  o.back = snellIntersectOptions(backStrategy);
-  o.exit = snellIntersectOptions(exitStrategy);
-  return o;
+SNELL_FN SnellTechnique snellTechniquePresetSlots(int backStrategy, int exitStrategy) {
+  SnellTechnique t = snellTechnique();
+  t.back.intersect = snellIntersectOptions(backStrategy);
+  t.exit.intersect = snellIntersectOptions(exitStrategy);
+  return t;
 }
 
-SNELL_FN SnellTechniqueOptions snellPresetDir() {
+SNELL_FN SnellTechnique snellPresetDir() {
   return snellTechniquePresetSlots(SNELL_STRATEGY_CBS, SNELL_STRATEGY_CBS);
 }
 
-SNELL_FN SnellTechniqueOptions snellPresetDirBounds(float zNearest, float zFarthest) {
-  SnellTechniqueOptions o = snellPresetDir();
-  o.back.rangeSource = SNELL_RANGE_EXPLICIT;
-  o.back.range.zNearest = zNearest;
-  o.back.range.zFarthest = zFarthest;
-  o.back.range.valid = true;
-  return o;
+SNELL_FN SnellTechnique snellPresetDirBounds(float zNearest, float zFarthest) {
+  SnellTechnique t = snellPresetDir();
+  t.back.intersect.rangeSource = SNELL_RANGE_EXPLICIT;
+  t.back.intersect.range.zNearest = zNearest;
+  t.back.intersect.range.zFarthest = zFarthest;
+  t.back.intersect.range.valid = true;
+  return t;
 }
 
-SNELL_FN SnellTechniqueOptions snellPresetIsr() {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
-  o.backMethod = SNELL_BACK_WYMAN;
-  return o;
+SNELL_FN SnellTechnique snellPresetIsr() {
+  SnellTechnique t = snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
+  t.back.source = SNELL_SOURCE_WYMAN;
+  return t;
 }
 
-SNELL_FN SnellTechniqueOptions snellPresetPlaneNormal(int iterations) {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_NORMAL, SNELL_STRATEGY_PLANE_NORMAL);
-  o.back.planeIterations = iterations;
-  o.exit.planeIterations = iterations;
-  return o;
+SNELL_FN SnellTechnique snellPresetPlaneNormal(int iterations) {
+  SnellTechnique t = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_NORMAL, SNELL_STRATEGY_PLANE_NORMAL);
+  t.back.intersect.planeIterations = iterations;
+  t.exit.intersect.planeIterations = iterations;
+  return t;
 }
 
-SNELL_FN SnellTechniqueOptions snellPresetPlaneDepth(int iterations) {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_DEPTH, SNELL_STRATEGY_PLANE_DEPTH);
-  o.back.planeIterations = iterations;
-  o.exit.planeIterations = iterations;
-  return o;
+SNELL_FN SnellTechnique snellPresetPlaneDepth(int iterations) {
+  SnellTechnique t = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_DEPTH, SNELL_STRATEGY_PLANE_DEPTH);
+  t.back.intersect.planeIterations = iterations;
+  t.exit.intersect.planeIterations = iterations;
+  return t;
 }
 
-SNELL_FN SnellTechniqueOptions snellPresetSingleSample() {
+SNELL_FN SnellTechnique snellPresetSingleSample() {
   return snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
 }
 
-SNELL_FN SnellTechniqueOptions snellPresetLinearMarch() {
+SNELL_FN SnellTechnique snellPresetLinearMarch() {
   return snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
 }
 
-SNELL_FN SnellTechniqueOptions snellPresetDdaMarch() {
+SNELL_FN SnellTechnique snellPresetDdaMarch() {
   return snellTechniquePresetSlots(SNELL_STRATEGY_DDA, SNELL_STRATEGY_DDA);
 }
 
-SNELL_FN SnellTechniqueOptions snellPresetImageSpaceBound() {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
-  o.back.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
-  o.back.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
-  o.exit.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
-  o.exit.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
-  o.back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-  o.exit.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-  return o;
+SNELL_FN SnellTechnique snellPresetImageSpaceBound() {
+  SnellTechnique t = snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
+  t.back.intersect.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  t.back.intersect.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  t.exit.intersect.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  t.exit.intersect.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  t.back.intersect.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  t.exit.intersect.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  return t;
 }
 
 #define SNELL_TECHNIQUE_SINGLE 0
@@ -2889,7 +2917,7 @@ SNELL_FN SnellTechniqueOptions snellPresetImageSpaceBound() {
 #define SNELL_TECHNIQUE_IMAGE_SPACE_BOUND 9
 #define SNELL_TECHNIQUE_COUNT 10
 
-SNELL_FN SnellTechniqueOptions snellTechniquePreset(int technique) {
+SNELL_FN SnellTechnique snellTechniquePreset(int technique) {
   if (technique == SNELL_TECHNIQUE_SINGLE) {
     return snellPresetSingleSample();
   }
@@ -2947,9 +2975,7 @@ struct SnellTwoInterfacePath {
 };
 
 SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
-                                                      SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
-                                                      SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back,
-                                                      SnellTechniqueOptions o) {
+                                                      SNELL_OBJECT_BUFFERS, SNELL_IN(SnellSlot) slot, int tirPolicy) {
   SnellTwoInterfacePath p;
   p.entryDirection = vec3(0.0f, 0.0f, 0.0f);
   p.exitPoint = vec3(0.0f, 0.0f, 0.0f);
@@ -2962,7 +2988,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.tir = false;
   p.fellBack = true;
   p.valid = false;
-  SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, o.tirPolicy);
+  SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy);
   if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_FINITE(frontPosition.x) ||
       !SNELL_FINITE(frontPosition.y) || !SNELL_FINITE(frontPosition.z)) {
     return p;
@@ -2973,7 +2999,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitDirection = t1;
   p.valid = true;
   SnellHit h = snellHitMiss(0);
-  if (o.backMethod == SNELL_BACK_WYMAN) {
+  if (slot.source == SNELL_SOURCE_WYMAN) {
     SnellScreenPoint sp = snellViewToUv(back.clipFromView, frontPosition);
     if (sp.valid && frontPosition.z < 0.0f) {
       SnellSurfaceSample b = snellSampleSurface(backDepth, sp.uv, back);
@@ -2984,8 +3010,8 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
         h = snellHitOnSurface(frontPosition + d * t1, backDepth, back, 1);
       }
     }
-  } else {
-    h = snellIntersectWith(frontPosition, t1, backDepth, backNormal, backPyramid, back, o.back);
+  } else if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
+    h = snellIntersectWith(frontPosition, t1, backDepth, backNormal, backPyramid, back, slot.intersect);
   }
   p.fetches = h.fetches;
   float pathLength = length(h.position - frontPosition);
@@ -3010,7 +3036,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     n = -n;
   }
   p.exitNormal = n;
-  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, o.tirPolicy);
+  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, tirPolicy);
   p.tir = r2.tir;
   if (!r2.valid || dot(r2.direction, r2.direction) == 0.0f) {
     return p;
@@ -3046,10 +3072,9 @@ struct SnellTwoInterfaceResult {
   bool tir;
 };
 
-SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_TEX2D sceneDepth,
-                                                     SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid,
-                                                     SNELL_TEX2D sceneColor, SNELL_IN(SnellDepthSurface) scene,
-                                                     SNELL_ENVIRONMENT_TEX environment, SnellTechniqueOptions o) {
+SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_SCENE_BUFFERS,
+                                                     SNELL_IN(SnellSlot) slot, SNELL_IN(SnellMaterial) m,
+                                                     SNELL_IN(SnellView) v) {
   SnellTwoInterfaceExit e;
   e.color = vec3(0.0f, 0.0f, 0.0f);
   e.hit = snellHitMiss(0);
@@ -3060,11 +3085,11 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
       !SNELL_FINITE(origin.z)) {
     return e;
   }
-  float envLod = snellRoughnessToLod(o.roughness, o.environmentLevels);
-  float sceneLod = snellRoughnessToLod(o.roughness, o.sceneColorLevels);
-  vec3 world = d.x * o.envX + d.y * o.envY + d.z * o.envZ;
-  if (o.exitMode == SNELL_EXIT_SCENE) {
-    e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, o.exit);
+  float envLod = snellRoughnessToLod(m.roughness, v.environmentLevels);
+  float sceneLod = snellRoughnessToLod(m.roughness, v.sceneColorLevels);
+  vec3 world = d.x * v.envX + d.y * v.envY + d.z * v.envZ;
+  if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
+    e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, slot.intersect);
     e.fetches = e.hit.fetches;
     if (e.hit.valid) {
       vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);
@@ -3076,9 +3101,9 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
     vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, envLod);
     e.fetches = e.fetches + 1;
     e.color = vec3(env.x, env.y, env.z);
-    if (o.fallback == SNELL_FALLBACK_EDGE_FADE) {
-      SnellScreenPoint sp = snellViewToUv(scene.clipFromView, origin + o.fallbackDistance * d);
-      float w = sp.valid ? snellScreenEdgeFade(sp.uv, o.edgeFadeWidth) : 0.0f;
+    if (slot.fallback == SNELL_FALLBACK_EDGE_FADE) {
+      SnellScreenPoint sp = snellViewToUv(scene.clipFromView, origin + slot.fallbackDistance * d);
+      float w = sp.valid ? snellScreenEdgeFade(sp.uv, slot.edgeFadeWidth) : 0.0f;
       if (w > 0.0f) {
         vec2 uv = clamp(sp.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
         vec4 c = SNELL_SAMPLE_LOD(sceneColor, uv, sceneLod);
@@ -3096,19 +3121,16 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
 }
 
 SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition, vec3 frontNormal, float dN,
-                                                             SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
-                                                             SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back,
-                                                             SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal,
-                                                             SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor,
-                                                             SNELL_IN(SnellDepthSurface) scene, SNELL_ENVIRONMENT_TEX environment,
-                                                             SnellTechniqueOptions o) {
-  bool three = o.dispersion == 3;
-  float eta = snellIorToEta(o.iorOutside, three ? o.iors.y : o.ior);
+                                                             SNELL_OBJECT_BUFFERS, SNELL_SCENE_BUFFERS,
+                                                             SNELL_IN(SnellTechnique) t, SNELL_IN(SnellMaterial) m,
+                                                             SNELL_IN(SnellView) v) {
+  bool three = m.dispersion == 3;
+  float eta = snellIorToEta(m.iorOutside, three ? m.iors.y : m.ior);
   SnellTwoInterfacePath p =
-      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, backDepth, backNormal, backPyramid, back, o);
-  SnellTwoInterfaceExit e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, sceneDepth, sceneNormal,
-                                                  scenePyramid, sceneColor, scene, environment, o);
-  vec3 transmitted = e.color * snellBeerLambert(o.absorption, p.pathLength);
+      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
+  SnellTwoInterfaceExit e =
+      snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+  vec3 transmitted = e.color * snellBeerLambert(m.absorption, p.pathLength);
   SnellTwoInterfaceResult r;
   r.exitPoint = p.exitPoint;
   r.exitDirection = p.exitDirection;
@@ -3121,46 +3143,30 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   r.fellBack = p.fellBack || e.fellBack || !p.valid;
   r.tir = p.tir;
   if (three) {
-    SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal,
-                                                      snellIorToEta(o.iorOutside, o.iors.x), dN, backDepth,
-                                                      backNormal, backPyramid, back, o);
-    SnellTwoInterfaceExit er = snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, sceneDepth, sceneNormal,
-                                                     scenePyramid, sceneColor, scene, environment, o);
-    SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal,
-                                                      snellIorToEta(o.iorOutside, o.iors.z), dN, backDepth,
-                                                      backNormal, backPyramid, back, o);
-    SnellTwoInterfaceExit eb = snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, sceneDepth, sceneNormal,
-                                                     scenePyramid, sceneColor, scene, environment, o);
-    transmitted.x = er.color.x * snellBeerLambert(o.absorption, pr.pathLength).x;
-    transmitted.z = eb.color.z * snellBeerLambert(o.absorption, pb.pathLength).z;
+    SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.x),
+                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
+    SnellTwoInterfaceExit er =
+        snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+    SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.z),
+                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
+    SnellTwoInterfaceExit eb =
+        snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+    transmitted.x = er.color.x * snellBeerLambert(m.absorption, pr.pathLength).x;
+    transmitted.z = eb.color.z * snellBeerLambert(m.absorption, pb.pathLength).z;
     r.fetches = r.fetches + pr.fetches + er.fetches + pb.fetches + eb.fetches;
     r.fellBack = r.fellBack || pr.fellBack || er.fellBack || pb.fellBack || eb.fellBack;
   }
   r.color = transmitted;
-  vec3 v = snellSafeNormalize(frontPosition);
+  vec3 vv = snellSafeNormalize(frontPosition);
   vec3 n1 = snellSafeNormalize(frontNormal);
-  if (o.reflection && dot(v, v) > 0.0f && dot(n1, n1) > 0.0f) {
-    float f = snellFresnelDielectric(dot(v, n1), eta);
-    vec3 rv = reflect(v, n1);
-    vec3 reflected = vec3(0.0f, 0.0f, 0.0f);
-    if (o.reflectionMode == SNELL_REFLECT_SCENE) {
-      SnellTechniqueOptions ro = o;
-      ro.exit = o.reflect;
-      ro.exitMode = SNELL_EXIT_SCENE;
-      ro.fallback = SNELL_FALLBACK_ENVIRONMENT;
-      SnellTwoInterfaceExit re = snellTwoInterfaceExit(frontPosition, rv, sceneDepth, sceneNormal, scenePyramid,
-                                                       sceneColor, scene, environment, ro);
-      reflected = re.color;
-      r.reflectionHit = re.hit;
-      r.fetches = r.fetches + re.fetches;
-    } else {
-      vec3 world = rv.x * o.envX + rv.y * o.envY + rv.z * o.envZ;
-      vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, snellRoughnessToLod(o.roughness, o.environmentLevels));
-      reflected = vec3(env.x, env.y, env.z);
-      r.fetches = r.fetches + 1;
-    }
+  if (m.reflection && dot(vv, vv) > 0.0f && dot(n1, n1) > 0.0f) {
+    float f = snellFresnelDielectric(dot(vv, n1), eta);
+    SnellTwoInterfaceExit re =
+        snellTwoInterfaceExit(frontPosition, reflect(vv, n1), SNELL_SCENE_BUFFER_ARGS, t.reflect, m, v);
+    r.reflectionHit = re.hit;
+    r.fetches = r.fetches + re.fetches;
     r.fresnel = f;
-    r.color = f * reflected + (1.0f - f) * transmitted;
+    r.color = f * re.color + (1.0f - f) * transmitted;
   }
   return r;
 }

@@ -1694,46 +1694,57 @@ SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
 
 #endif
 /*
-description: the knobs of a two-interface refraction technique: how the back
-  face is found (any intersection strategy in the back slot, or Wyman's
-  distance interpolation), which strategy fills the exit and reflection slots
-  (intersect/intersect_with.glsl: SnellIntersectOptions, one per slot), and
-  the optics and shading options. The constructor fills every field with the
-  documented default; presets (technique_presets.glsl) start from it.
-use: SnellTechniqueOptions o = snellTechniqueOptions();
-     o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
-     o.back.cbsSteps = 8;
-     o.exitMode = SNELL_EXIT_SCENE;
-     o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
+description: what a two-interface refraction technique is made of, split by
+  what each part describes and how long it lives:
+  - SnellSlot: one place a ray is resolved (where it reads from, the
+    intersection strategy and its parameters, what it shows when the buffers
+    give nothing). A technique has three: back (where T1 leaves the object),
+    exit (what T2 sees), reflect (what the first surface's reflected ray R
+    sees). The exit and the reflection are the same call with their own slot.
+  - SnellTechnique: the technique's choices, the set of slots (the presets,
+    technique_presets.glsl, return one).
+  - SnellMaterial: the object's optics (IORs, dispersion, absorption, TIR
+    policy, reflection on/off, roughness).
+  - SnellView: the frame's constants (the environment's basis, the mip
+    counts of the colour lookups).
+  Each constructor fills every field with the documented default.
+use: SnellTechnique t = snellTechnique();   // or a preset: snellPresetDir()
+     t.back = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_CBS);
+     t.back.intersect.cbsSteps = 8;
+     t.exit = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_PLANE_NORMAL);
+     SnellMaterial m = snellMaterial();
+     m.ior = 1.33f;
+     SnellView v = snellView();
 options:
-  back methods (how P2 is found, snellTwoInterfaceTrace): SNELL_BACK_INTERSECT
-  0 (the back slot's strategy against the back-face depth buffer),
-  SNELL_BACK_WYMAN 1 (Wyman 2005 distance interpolation between d_V and the
-  per-vertex d_N; the back slot is not read)
-  exit modes: SNELL_EXIT_ENVIRONMENT 0 (distant environment along T2),
-  SNELL_EXIT_SCENE 1 (the opaque scene's depth/colour buffers, exit slot)
-  reflection modes (the first surface's reflected ray R, when reflection is
-  on): SNELL_REFLECT_ENVIRONMENT 0 (the environment along R),
-  SNELL_REFLECT_SCENE 1 (R from P1 against the opaque scene's buffers with the
-  `reflect` slot's strategy, the environment where it finds nothing:
-  screen-space reflection, what a ray tracer's F bg(R) computes)
-  fallbacks when the exit-slot hit is invalid: SNELL_FALLBACK_ENVIRONMENT 0
-  (environment along T2), SNELL_FALLBACK_EDGE_FADE 1 (scene colour at the
-  clamped projection of P2 + fallbackDistance T2, faded to the environment
-  over edgeFadeWidth of uv near and beyond the screen edge)
-contract (defaults): backMethod = INTERSECT, back = CBS, exit =
-  PLANE_NORMAL (each slot with snellIntersectOptions' defaults), exitMode =
-  ENVIRONMENT, fallback = ENVIRONMENT, fallbackDistance = 1, edgeFadeWidth =
-  0.1, tirPolicy = SNELL_TIR_CRITICAL (Wyman 2005, O&B 2007 sec. 5), ior = 1.5,
-  iorOutside = 1, dispersion = 1 (one trace; 3 = one per channel with iors,
-  e.g. snellDispersionIors(1.5168f, 64.17f) from shade/dispersion.glsl), iors =
-  (1.5, 1.5, 1.5), absorption = 0 (Beer-Lambert sigma per channel, per view
-  unit), reflection = true (Fresnel-weighted reflection at the first
-  interface), reflectionMode = ENVIRONMENT, reflect = LINEAR_MARCH (its
-  defaults; read only in SCENE mode), roughness = 0, sceneColorLevels =
-  environmentLevels = 1 (mip levels for snellRoughnessToLod), envX/envY/envZ
-  = the columns of the world-from-view rotation used for environment lookups
-  (identity).
+  sources (SnellSlot.source): SNELL_SOURCE_ENVIRONMENT 0 (the distant
+  environment along the ray; the intersector is not run), SNELL_SOURCE_BUFFERS
+  1 (the slot's intersector against the buffers of its layer: the back-face
+  buffers for the back slot, the opaque scene's for exit and reflect),
+  SNELL_SOURCE_WYMAN 2 (back slot only: Wyman 2005 distance interpolation
+  between d_V and the per-vertex d_N; the intersector is not run; in the exit
+  or reflect slot it reads as SNELL_SOURCE_BUFFERS)
+  fallbacks when a BUFFERS slot finds nothing (exit and reflect slots):
+  SNELL_FALLBACK_ENVIRONMENT 0 (the environment along the ray),
+  SNELL_FALLBACK_EDGE_FADE 1 (scene colour at the clamped projection of origin
+  + fallbackDistance dir, faded to the environment over edgeFadeWidth of uv
+  near and beyond the screen edge)
+contract (defaults):
+  snellSlot(source, strategy): intersect = snellIntersectOptions(strategy),
+    fallback = ENVIRONMENT, fallbackDistance = 1, edgeFadeWidth = 0.1.
+  snellTechnique(): back = snellSlot(BUFFERS, CBS), exit =
+    snellSlot(ENVIRONMENT, PLANE_NORMAL), reflect = snellSlot(ENVIRONMENT,
+    LINEAR_MARCH) (the strategies are read only when the source becomes
+    BUFFERS).
+  snellMaterial(): ior = 1.5, iorOutside = 1, dispersion = 1 (one trace; 3 =
+    one per channel with iors, e.g. snellDispersionIors(1.5168f, 64.17f) from
+    shade/dispersion.glsl), iors = (1.5, 1.5, 1.5), absorption = 0
+    (Beer-Lambert sigma per channel, per view unit), tirPolicy =
+    SNELL_TIR_CRITICAL (both interfaces; Wyman 2005, O&B 2007 sec. 5),
+    reflection = true (Fresnel-weighted reflection at the first interface),
+    roughness = 0.
+  snellView(): envX/envY/envZ = the columns of the world-from-view rotation
+    used for environment lookups (identity), sceneColorLevels =
+    environmentLevels = 1 (mip levels for snellRoughnessToLod).
 source: the composition of DESIGN.md sec. 2 (a technique = optics, an
   intersector against the back faces, optics, an intersector against the scene
   or an environment lookup); Oliveira & Brauwers 2007 sec. 3; Wyman 2005;
@@ -4457,78 +4468,147 @@ SNELL_FN SnellHit snellIntersectWith(vec3 origin, vec3 dir, SNELL_TEX2D depthTex
 
 #endif
 
-#define SNELL_BACK_INTERSECT 0
-#define SNELL_BACK_WYMAN 1
-
-#define SNELL_EXIT_ENVIRONMENT 0
-#define SNELL_EXIT_SCENE 1
+#define SNELL_SOURCE_ENVIRONMENT 0
+#define SNELL_SOURCE_BUFFERS 1
+#define SNELL_SOURCE_WYMAN 2
 
 #define SNELL_FALLBACK_ENVIRONMENT 0
 #define SNELL_FALLBACK_EDGE_FADE 1
 
-#define SNELL_REFLECT_ENVIRONMENT 0
-#define SNELL_REFLECT_SCENE 1
-
-struct SnellTechniqueOptions {
-  int backMethod;
-  SnellIntersectOptions back;
-  SnellIntersectOptions exit;
-  int exitMode;
+struct SnellSlot {
+  int source;
+  SnellIntersectOptions intersect;
   int fallback;
   float fallbackDistance;
   float edgeFadeWidth;
-  int tirPolicy;
+};
+
+struct SnellTechnique {
+  SnellSlot back;
+  SnellSlot exit;
+  SnellSlot reflect;
+};
+
+struct SnellMaterial {
   float ior;
   float iorOutside;
   int dispersion;
   vec3 iors;
   vec3 absorption;
+  int tirPolicy;
   bool reflection;
-  int reflectionMode;
-  SnellIntersectOptions reflect;
   float roughness;
-  int sceneColorLevels;
-  int environmentLevels;
+};
+
+struct SnellView {
   vec3 envX;
   vec3 envY;
   vec3 envZ;
+  int sceneColorLevels;
+  int environmentLevels;
 };
 
-SNELL_FN SnellTechniqueOptions snellTechniqueOptions() {
-  SnellTechniqueOptions o;
-  o.backMethod = SNELL_BACK_INTERSECT;
-  o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
-  o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
-  o.exitMode = SNELL_EXIT_ENVIRONMENT;
-  o.fallback = SNELL_FALLBACK_ENVIRONMENT;
-  o.fallbackDistance = 1.0f;
-  o.edgeFadeWidth = 0.1f;
-  o.tirPolicy = SNELL_TIR_CRITICAL;
-  o.ior = 1.5f;
-  o.iorOutside = 1.0f;
-  o.dispersion = 1;
-  o.iors = vec3(1.5f, 1.5f, 1.5f);
-  o.absorption = vec3(0.0f, 0.0f, 0.0f);
-  o.reflection = true;
-  o.reflectionMode = SNELL_REFLECT_ENVIRONMENT;
-  o.reflect = snellIntersectOptions(SNELL_STRATEGY_LINEAR_MARCH);
-  o.roughness = 0.0f;
-  o.sceneColorLevels = 1;
-  o.environmentLevels = 1;
-  o.envX = vec3(1.0f, 0.0f, 0.0f);
-  o.envY = vec3(0.0f, 1.0f, 0.0f);
-  o.envZ = vec3(0.0f, 0.0f, 1.0f);
-  return o;
+SNELL_FN SnellSlot snellSlot(int source, int strategy) {
+  SnellSlot s;
+  s.source = source;
+  s.intersect = snellIntersectOptions(strategy);
+  s.fallback = SNELL_FALLBACK_ENVIRONMENT;
+  s.fallbackDistance = 1.0f;
+  s.edgeFadeWidth = 0.1f;
+  return s;
 }
+
+SNELL_FN SnellTechnique snellTechnique() {
+  SnellTechnique t;
+  t.back = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_CBS);
+  t.exit = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_PLANE_NORMAL);
+  t.reflect = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_LINEAR_MARCH);
+  return t;
+}
+
+SNELL_FN SnellMaterial snellMaterial() {
+  SnellMaterial m;
+  m.ior = 1.5f;
+  m.iorOutside = 1.0f;
+  m.dispersion = 1;
+  m.iors = vec3(1.5f, 1.5f, 1.5f);
+  m.absorption = vec3(0.0f, 0.0f, 0.0f);
+  m.tirPolicy = SNELL_TIR_CRITICAL;
+  m.reflection = true;
+  m.roughness = 0.0f;
+  return m;
+}
+
+SNELL_FN SnellView snellView() {
+  SnellView v;
+  v.envX = vec3(1.0f, 0.0f, 0.0f);
+  v.envY = vec3(0.0f, 1.0f, 0.0f);
+  v.envZ = vec3(0.0f, 0.0f, 1.0f);
+  v.sceneColorLevels = 1;
+  v.environmentLevels = 1;
+  return v;
+}
+
+#endif
+/*
+description: the buffers a two-interface technique reads, as the parameter
+  lists every technique function declares and the argument lists every call
+  inside snell passes on. A layer of buffers is a depth texture, its
+  view-space normals, its depth min/max pyramid and the SnellDepthSurface
+  that says how to read them; the object's layers (today its back faces) and
+  the opaque scene's (its layer, its colour and the environment) each travel
+  as one list, so a new layer (a second back-face layer, the object's front
+  faces) is one edit here, not one per function and call site.
+use: in a function that takes or forwards the buffers:
+     SNELL_FN SnellTwoInterfacePath f(vec3 p, SNELL_OBJECT_BUFFERS, SNELL_SCENE_BUFFERS) {
+       return g(p, SNELL_OBJECT_BUFFER_ARGS, SNELL_SCENE_BUFFER_ARGS);
+     }
+     A caller outside snell passes its own textures in the order below.
+options:
+  SNELL_OBJECT_BUFFERS  SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
+                        SNELL_TEX2D backPyramid, SnellDepthSurface back
+                        (the back-face pass: depth cleared to the near value
+                        and drawn with GL_GREATER, view-space normals, the
+                        pyramid of that depth, how to read the depth)
+  SNELL_SCENE_BUFFERS   SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal,
+                        SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor,
+                        SnellDepthSurface scene, SNELL_ENVIRONMENT_TEX
+                        environment (the opaque scene without the object,
+                        its colour, mipmapped for roughness > 0, and the
+                        distant environment)
+  SNELL_OBJECT_BUFFER_ARGS, SNELL_SCENE_BUFFER_ARGS  the same names as
+                        arguments, for the call sites inside snell.
+contract: macros only, each on one line (GLSL 330 has no line continuation). Why parameter lists and not a struct of samplers:
+  GLSL allows a struct holding samplers only as a uniform (no constructor, so
+  a shader could not group textures it declared apart), Vulkan GLSL cannot
+  give such a struct's members explicit bindings, WGSL has no structs of
+  textures, and GLSL ES has no token pasting for a per-layer name prefix.
+  A fixed list of names compiles in every language snell runs, and the code
+  after the preprocessor is the code written out by hand (no cost on any
+  runtime).
+*/
+#ifndef SNELL_SHADE_TECHNIQUE_BUFFERS_GLSL
+#define SNELL_SHADE_TECHNIQUE_BUFFERS_GLSL
+
+
+
+
+#define SNELL_OBJECT_BUFFERS SNELL_TEX2D backDepth, SNELL_TEX2D backNormal, SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back
+#define SNELL_OBJECT_BUFFER_ARGS backDepth, backNormal, backPyramid, back
+
+#define SNELL_SCENE_BUFFERS SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor, SNELL_IN(SnellDepthSurface) scene, SNELL_ENVIRONMENT_TEX environment
+#define SNELL_SCENE_BUFFER_ARGS sceneDepth, sceneNormal, scenePyramid, sceneColor, scene, environment
 
 #endif
 /*
 description: named presets for the published two-interface refraction methods
   and the baselines, all through the same technique (snellTwoInterfaceTrace /
   snellTwoInterfaceRefraction), so the lab compares them fairly. Each returns
-  snellTechniqueOptions() with both intersection slots set.
-use: SnellTechniqueOptions o = snellPresetDir();           // then adjust fields
-     SnellTechniqueOptions o = snellPresetPlaneNormal(2);
+  snellTechnique() with the back and exit slots' strategies set (the exit
+  slot's source stays the default, ENVIRONMENT: point it at the scene with
+  t.exit.source = SNELL_SOURCE_BUFFERS).
+use: SnellTechnique t = snellPresetDir();           // then adjust fields
+     SnellTechnique t = snellPresetPlaneNormal(2);
 presets (back slot / exit slot):
   snellPresetDir()                 Oliveira & Brauwers 2007 (DIR): CBS, 5 steps,
                                    range from the min/max pyramid's top level /
@@ -4537,8 +4617,8 @@ presets (back slot / exit slot):
                                    (their suggested speed-up: no reduction
                                    pass); the numbers from snellDepthRangeFromBox;
                                    back slot only, the exit slot keeps the pyramid
-  snellPresetIsr()                 Wyman 2005 (ISR): backMethod
-                                   SNELL_BACK_WYMAN, distance interpolation
+  snellPresetIsr()                 Wyman 2005 (ISR): back.source
+                                   SNELL_SOURCE_WYMAN, distance interpolation
                                    between d_V and the per-vertex d_N /
                                    single sample
   snellPresetPlaneNormal(n)        Mayer & Assarsson, normal-based plane, n
@@ -4563,8 +4643,8 @@ presets (back slot / exit slot):
                                    bisections) on bilinear depth reads
                                    (SNELL_DEPTH_FILTER_BILINEAR: exact on
                                    planes between texel centres) / the same;
-                                   set back.marchMaxDistance and
-                                   exit.marchMaxDistance to the depths the
+                                   set back.intersect.marchMaxDistance and
+                                   exit.intersect.marchMaxDistance to the depths the
                                    object and the scene span
 the technique table (the one list of named techniques: snell-lab's
   --technique names, the benchmarks and the tests all draw on it; names and
@@ -4581,7 +4661,7 @@ the technique table (the one list of named techniques: snell-lab's
   SNELL_TECHNIQUE_DDA             dda             snellPresetDdaMarch()
   SNELL_TECHNIQUE_IMAGE_SPACE_BOUND  image-space-bound  snellPresetImageSpaceBound()
   SNELL_TECHNIQUE_COUNT           the number of ids (ids are 0 .. COUNT - 1)
-  SnellTechniqueOptions o = snellTechniquePreset(SNELL_TECHNIQUE_PLANE_NORMAL_1);
+  SnellTechnique t = snellTechniquePreset(SNELL_TECHNIQUE_PLANE_NORMAL_1);
   Adding a technique: a preset function here, an id, a branch in
   snellTechniquePreset and a row in include/snell/technique_table.hpp (a
   compile-time check there keeps the two the same length).
@@ -4600,73 +4680,73 @@ source: Oliveira & Brauwers 2007 (sec. 3.3, 5 steps; sec. 6, bounding box);
 
 
 
-SNELL_FN SnellTechniqueOptions snellTechniquePresetSlots(int backStrategy, int exitStrategy) {
-  SnellTechniqueOptions o = snellTechniqueOptions();
-  o.back = snellIntersectOptions(backStrategy);
-  o.exit = snellIntersectOptions(exitStrategy);
-  return o;
+SNELL_FN SnellTechnique snellTechniquePresetSlots(int backStrategy, int exitStrategy) {
+  SnellTechnique t = snellTechnique();
+  t.back.intersect = snellIntersectOptions(backStrategy);
+  t.exit.intersect = snellIntersectOptions(exitStrategy);
+  return t;
 }
 
 /* Oliveira & Brauwers 2007, sec. 3.3: CBS with c = 5 (SNELL_CBS_STEPS' default) */
-SNELL_FN SnellTechniqueOptions snellPresetDir() {
+SNELL_FN SnellTechnique snellPresetDir() {
   return snellTechniquePresetSlots(SNELL_STRATEGY_CBS, SNELL_STRATEGY_CBS);
 }
 
 /* Oliveira & Brauwers 2007, sec. 6: bounding-box range instead of the reduction */
-SNELL_FN SnellTechniqueOptions snellPresetDirBounds(float zNearest, float zFarthest) {
-  SnellTechniqueOptions o = snellPresetDir();
-  o.back.rangeSource = SNELL_RANGE_EXPLICIT;
-  o.back.range.zNearest = zNearest;
-  o.back.range.zFarthest = zFarthest;
-  o.back.range.valid = true;
-  return o;
+SNELL_FN SnellTechnique snellPresetDirBounds(float zNearest, float zFarthest) {
+  SnellTechnique t = snellPresetDir();
+  t.back.intersect.rangeSource = SNELL_RANGE_EXPLICIT;
+  t.back.intersect.range.zNearest = zNearest;
+  t.back.intersect.range.zFarthest = zFarthest;
+  t.back.intersect.range.valid = true;
+  return t;
 }
 
 /* Wyman 2005 (O&B 2007 eqs. 1-2): the trace's Wyman variant; the exit slot samples once */
-SNELL_FN SnellTechniqueOptions snellPresetIsr() {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
-  o.backMethod = SNELL_BACK_WYMAN;
-  return o;
+SNELL_FN SnellTechnique snellPresetIsr() {
+  SnellTechnique t = snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
+  t.back.source = SNELL_SOURCE_WYMAN;
+  return t;
 }
 
 /* Mayer & Assarsson, method 1 + step 5 */
-SNELL_FN SnellTechniqueOptions snellPresetPlaneNormal(int iterations) {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_NORMAL, SNELL_STRATEGY_PLANE_NORMAL);
-  o.back.planeIterations = iterations;
-  o.exit.planeIterations = iterations;
-  return o;
+SNELL_FN SnellTechnique snellPresetPlaneNormal(int iterations) {
+  SnellTechnique t = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_NORMAL, SNELL_STRATEGY_PLANE_NORMAL);
+  t.back.intersect.planeIterations = iterations;
+  t.exit.intersect.planeIterations = iterations;
+  return t;
 }
 
 /* Mayer & Assarsson, method 2 + step 5 */
-SNELL_FN SnellTechniqueOptions snellPresetPlaneDepth(int iterations) {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_DEPTH, SNELL_STRATEGY_PLANE_DEPTH);
-  o.back.planeIterations = iterations;
-  o.exit.planeIterations = iterations;
-  return o;
+SNELL_FN SnellTechnique snellPresetPlaneDepth(int iterations) {
+  SnellTechnique t = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_DEPTH, SNELL_STRATEGY_PLANE_DEPTH);
+  t.back.intersect.planeIterations = iterations;
+  t.exit.intersect.planeIterations = iterations;
+  return t;
 }
 
-SNELL_FN SnellTechniqueOptions snellPresetSingleSample() {
+SNELL_FN SnellTechnique snellPresetSingleSample() {
   return snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
 }
 
-SNELL_FN SnellTechniqueOptions snellPresetLinearMarch() {
+SNELL_FN SnellTechnique snellPresetLinearMarch() {
   return snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
 }
 
-SNELL_FN SnellTechniqueOptions snellPresetDdaMarch() {
+SNELL_FN SnellTechnique snellPresetDdaMarch() {
   return snellTechniquePresetSlots(SNELL_STRATEGY_DDA, SNELL_STRATEGY_DDA);
 }
 
 /* The image-space bound: the linear march at its limits, both slots. */
-SNELL_FN SnellTechniqueOptions snellPresetImageSpaceBound() {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
-  o.back.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
-  o.back.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
-  o.exit.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
-  o.exit.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
-  o.back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-  o.exit.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-  return o;
+SNELL_FN SnellTechnique snellPresetImageSpaceBound() {
+  SnellTechnique t = snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
+  t.back.intersect.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  t.back.intersect.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  t.exit.intersect.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  t.exit.intersect.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  t.back.intersect.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  t.exit.intersect.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  return t;
 }
 
 #define SNELL_TECHNIQUE_SINGLE 0
@@ -4682,7 +4762,7 @@ SNELL_FN SnellTechniqueOptions snellPresetImageSpaceBound() {
 #define SNELL_TECHNIQUE_COUNT 10
 
 /* the technique table's constructor: id -> preset */
-SNELL_FN SnellTechniqueOptions snellTechniquePreset(int technique) {
+SNELL_FN SnellTechnique snellTechniquePreset(int technique) {
   if (technique == SNELL_TECHNIQUE_SINGLE) {
     return snellPresetSingleSample();
   }
@@ -4726,23 +4806,23 @@ description: the geometry of two-interface refraction: refract the view ray at
   exit ray (P2, T2) is then resolved by two_interface_shade.glsl against the
   opaque scene or the environment.
 use: SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN,
-         backDepth, backNormal, backPyramid, backSurface, o);
+         backDepth, backNormal, backPyramid, back, t.back, m.tirPolicy);
   frontPosition  P1: view-space position of the front-face fragment (camera at
                  the origin, so the view ray V is frontPosition itself)
   frontNormal    N1: its normal (either orientation, any length)
   eta            n_outside / n_object (snellIorToEta(1.0f, 1.5f) for glass in air)
   dN             Wyman's d_N: thickness along -N1, interpolated from the per-vertex
                  values the host precomputes (include/snell/wyman_dn.hpp); read
-                 only by Wyman's variant (o.backMethod SNELL_BACK_WYMAN)
-  backDepth, backNormal, backPyramid, backSurface
-                 the back-face pass: depth (GL_GREATER after clearing to the near
-                 value), view-space normals, the depth min/max pyramid of that
-                 depth (snellBuildDepthPyramid / examples/glsl/depth_pyramid.frag),
-                 and how to read the depth (emptyDepth = the clear value)
-  o              the technique's options: o.backMethod, o.back (the back
-                 slot's strategy and parameters) and o.tirPolicy
-                 (SNELL_TIR_ZERO / _CRITICAL / _REFLECT, both interfaces) are
-                 read
+                 only by Wyman's variant (slot.source SNELL_SOURCE_WYMAN)
+  backDepth, backNormal, backPyramid, back
+                 SNELL_OBJECT_BUFFERS (technique_buffers.glsl): the back-face
+                 pass: depth (GL_GREATER after clearing to the near value),
+                 view-space normals, the depth min/max pyramid of that depth
+                 (snellBuildDepthPyramid / glsl/passes/depth_pyramid.frag), and
+                 how to read the depth (emptyDepth = the clear value)
+  slot           the back slot (technique_options.glsl): its source and its
+                 intersector
+  tirPolicy      SNELL_TIR_ZERO / _CRITICAL / _REFLECT, both interfaces
 options: technique_options.glsl, and
   SNELL_TWO_INTERFACE_NORMAL_SAMPLE  how N2 is read from backNormal at the hit
                  uv: 1 (default) SNELL_SAMPLE_LOD at level 0 with the texture's
@@ -4751,19 +4831,21 @@ options: technique_options.glsl, and
                  containing the uv, as 0 does); 0 SNELL_TEXEL_FETCH of the texel
                  containing the uv (level 0)
 contract:
-  - T1 = snellRefract(frontPosition, frontNormal, eta, o.tirPolicy). If it is
+  - T1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy). If it is
     invalid or zero (NaN/zero inputs, eta not finite positive; TIR under ZERO
     when eta > 1), the path is invalid: valid = false, every vector 0, fetches 0.
-  - SNELL_BACK_WYMAN: one sample of the back depth at the projection of P1
+  - slot.source SNELL_SOURCE_WYMAN: one sample of the back depth at the projection of P1
     gives d_V = |P1| (zBack / P1.z - 1) (front-to-back distance along the view
     ray); d = snellWymanDistanceVec(P1, N1, T1, d_V, dN); P2 = P1 + d T1,
     accepted when snellHitOnSurface(P2) is valid (the back buffer has a
-    surface there; 2 fetches). SNELL_BACK_INTERSECT (and any other value):
-    snellIntersectWith(P1, T1, back..., o.back).
+    surface there; 2 fetches). SNELL_SOURCE_BUFFERS (and any value but the
+    two named here): snellIntersectWith(P1, T1, back..., slot.intersect).
+    SNELL_SOURCE_ENVIRONMENT: no back-face read (0 fetches), the fallback
+    below (the ray leaves at P1 along T1: a thin surface).
   - on a hit: N2 = xyz of the back normal read at the hit uv, level 0
     (SNELL_TWO_INTERFACE_NORMAL_SAMPLE: filtered sample or texel fetch; 1
     fetch), normalized and flipped to face T1 (dot(N2, T1) <= 0); T2 =
-    snellRefract(T1, N2, 1 / eta, o.tirPolicy). hit = true, exitPoint = P2,
+    snellRefract(T1, N2, 1 / eta, tirPolicy). hit = true, exitPoint = P2,
     exitUv = the hit uv, exitNormal = N2, pathLength = |P2 - P1|, tir = TIR at
     the second interface (T2 follows the policy: critical-angle tangent or
     mirror; the reflected ray is not traced further).
@@ -4918,6 +5000,7 @@ SNELL_FN float snellWymanDistanceVec(vec3 incident, vec3 normal, vec3 refracted,
 
 
 
+
 #ifndef SNELL_TWO_INTERFACE_NORMAL_SAMPLE
 #  define SNELL_TWO_INTERFACE_NORMAL_SAMPLE 1
 #endif
@@ -4938,9 +5021,7 @@ struct SnellTwoInterfacePath {
 
 /* Wyman 2005 / Oliveira & Brauwers 2007 sec. 3: P1, T1 -> P2 (back-face buffer), N2 -> T2 */
 SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
-                                                      SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
-                                                      SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back,
-                                                      SnellTechniqueOptions o) {
+                                                      SNELL_OBJECT_BUFFERS, SNELL_IN(SnellSlot) slot, int tirPolicy) {
   SnellTwoInterfacePath p;
   p.entryDirection = vec3(0.0f, 0.0f, 0.0f);
   p.exitPoint = vec3(0.0f, 0.0f, 0.0f);
@@ -4953,7 +5034,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.tir = false;
   p.fellBack = true;
   p.valid = false;
-  SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, o.tirPolicy);
+  SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy);
   if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_FINITE(frontPosition.x) ||
       !SNELL_FINITE(frontPosition.y) || !SNELL_FINITE(frontPosition.z)) {
     return p;
@@ -4964,7 +5045,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitDirection = t1;
   p.valid = true;
   SnellHit h = snellHitMiss(0);
-  if (o.backMethod == SNELL_BACK_WYMAN) {
+  if (slot.source == SNELL_SOURCE_WYMAN) {
     SnellScreenPoint sp = snellViewToUv(back.clipFromView, frontPosition);
     if (sp.valid && frontPosition.z < 0.0f) {
       SnellSurfaceSample b = snellSampleSurface(backDepth, sp.uv, back);
@@ -4975,8 +5056,8 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
         h = snellHitOnSurface(frontPosition + d * t1, backDepth, back, 1);
       }
     }
-  } else {
-    h = snellIntersectWith(frontPosition, t1, backDepth, backNormal, backPyramid, back, o.back);
+  } else if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
+    h = snellIntersectWith(frontPosition, t1, backDepth, backNormal, backPyramid, back, slot.intersect);
   }
   p.fetches = h.fetches;
   // length() squares first: it overflows beyond ~1.8e19 (Wyman's estimate with a huge dN).
@@ -5002,7 +5083,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     n = -n;
   }
   p.exitNormal = n;
-  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, o.tirPolicy);
+  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, tirPolicy);
   p.tir = r2.tir;
   if (!r2.valid || dot(r2.direction, r2.direction) == 0.0f) {
     return p;
@@ -5016,69 +5097,76 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
 /*
 description: two-interface refraction, shaded: the full technique a fragment
   shader calls for a front-face fragment of a refractive object. Trace the
-  path through the object (two_interface.glsl), resolve the exit ray against
-  the opaque scene behind the object (its depth, normal, pyramid and colour
-  buffers, with any strategy: Mayer & Assarsson's painting behind a glass
-  sphere) or against a distant environment, with a documented fallback when
-  the scene hit is not found; absorb along the path inside (Beer-Lambert), add
-  the Fresnel-weighted environment reflection at the first interface;
-  optionally once per colour channel (chromatic dispersion) and with blurred
-  (roughness) lookups.
-use: SnellTechniqueOptions o = snellPresetDir();   // or any preset, then adjust
-     o.exitMode = SNELL_EXIT_SCENE;
+  path through the object (two_interface.glsl), resolve the exit ray with the
+  exit slot against the opaque scene behind the object (its depth, normal,
+  pyramid and colour buffers, with any strategy: Mayer & Assarsson's painting
+  behind a glass sphere) or against a distant environment, with a documented
+  fallback when the scene hit is not found; absorb along the path inside
+  (Beer-Lambert), add the Fresnel-weighted reflection at the first interface,
+  resolved by the same call with the reflect slot; optionally once per colour
+  channel (chromatic dispersion) and with blurred (roughness) lookups.
+use: SnellTechnique t = snellPresetDir();   // or any preset, then adjust
+     t.exit.source = SNELL_SOURCE_BUFFERS;
+     SnellMaterial m = snellMaterial();
+     SnellView v = snellView();
      SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(frontPosition, frontNormal, dN,
-         backDepth, backNormal, backPyramid, backSurface,
-         sceneDepth, sceneNormal, scenePyramid, sceneColor, sceneSurface, environment, o);
+         backDepth, backNormal, backPyramid, back,
+         sceneDepth, sceneNormal, scenePyramid, sceneColor, scene, environment, t, m, v);
      fragColor = vec4(r.color, 1.0f);
      SnellTwoInterfaceExit e = snellTwoInterfaceExit(origin, dir, sceneDepth, sceneNormal,
-         scenePyramid, sceneColor, sceneSurface, environment, o);   // the exit slot alone
+         scenePyramid, sceneColor, scene, environment, t.exit, m, v);   // one slot alone
   frontPosition, frontNormal, dN, back*: as snellTwoInterfaceTrace
-  sceneDepth, sceneNormal, scenePyramid, sceneSurface: the opaque scene without the
-                 object, read by o.exit (normals for PLANE_NORMAL, the pyramid
-                 for the search range and PLANE_DEPTH); any textures in
-                 environment mode (never read)
+                 (SNELL_OBJECT_BUFFERS, technique_buffers.glsl)
+  sceneDepth, sceneNormal, scenePyramid, scene: the opaque scene without the
+                 object, read by a BUFFERS slot (normals for PLANE_NORMAL, the
+                 pyramid for the search range and PLANE_DEPTH); any textures
+                 when no slot reads them (never read)
   sceneColor     the opaque scene's colour (mipmapped for roughness > 0)
   environment    SNELL_ENVIRONMENT_TEX: an equirectangular 2D texture by
                  default, a cube map through the hook (environment.glsl); looked
-                 up with world directions: envX, envY, envZ = the columns of
-                 the world-from-view rotation
-  o              SnellTechniqueOptions (technique_options.glsl)
-options: technique_options.glsl; environment.glsl hooks.
-contract (snellTwoInterfaceExit(origin, dir, ...)):
-  - lods: envLod = snellRoughnessToLod(o.roughness, o.environmentLevels),
-    sceneLod = snellRoughnessToLod(o.roughness, o.sceneColorLevels)
+                 up with world directions: v.envX, v.envY, v.envZ = the columns
+                 of the world-from-view rotation
+  t, m, v        SnellTechnique (its back, exit and reflect slots),
+                 SnellMaterial, SnellView (technique_options.glsl)
+options: technique_options.glsl; technique_buffers.glsl; environment.glsl hooks.
+contract (snellTwoInterfaceExit(origin, dir, ..., slot, m, v)):
+  - lods: envLod = snellRoughnessToLod(m.roughness, v.environmentLevels),
+    sceneLod = snellRoughnessToLod(m.roughness, v.sceneColorLevels)
     (shade/roughness.glsl); every colour read uses them.
   - dir zero or not finite, or origin not finite: color 0, fellBack, 0 fetches.
-  - ENVIRONMENT mode: color = SNELL_SAMPLE_ENVIRONMENT(env, world(dir), envLod).xyz,
-    1 fetch, hit = snellHitMiss(0), fellBack false.
-  - SCENE mode: hit = snellIntersectWith(origin, dir, scene..., o.exit); valid: color = SNELL_SAMPLE_LOD(sceneColor, hit.uv, sceneLod).xyz
-    (+1 fetch). Invalid (ray leaves the screen, points towards the camera where a
-    search cannot follow, lands on an empty texel): fellBack = true and
-    FALLBACK_ENVIRONMENT: the environment along dir; FALLBACK_EDGE_FADE: q =
-    origin + fallbackDistance dir/|dir|, w = snellScreenEdgeFade(projection of q,
-    edgeFadeWidth) (0 when q does not project), color = mix(environment,
+  - slot.source ENVIRONMENT: color = SNELL_SAMPLE_ENVIRONMENT(env,
+    world(dir / |dir|), envLod).xyz, 1 fetch, hit = snellHitMiss(0), fellBack
+    false.
+  - any other source (BUFFERS; WYMAN reads as BUFFERS here): hit =
+    snellIntersectWith(origin, dir, scene..., slot.intersect); valid: color =
+    SNELL_SAMPLE_LOD(sceneColor, hit.uv, sceneLod).xyz (+1 fetch). Invalid (ray
+    leaves the screen, points towards the camera where a search cannot
+    follow, lands on an empty texel): fellBack = true and slot.fallback
+    ENVIRONMENT: the environment along dir; EDGE_FADE: q = origin +
+    slot.fallbackDistance dir/|dir|, w = snellScreenEdgeFade(projection of q,
+    slot.edgeFadeWidth) (0 when q does not project), color = mix(environment,
     sceneColor at the projection clamped to [0,1]^2, w) (the scene read only
     when w > 0). Never black unless the environment is.
   - fetches: the strategy's plus one per colour or environment read.
 contract (snellTwoInterfaceRefraction):
-  - one trace with eta = snellIorToEta(o.iorOutside, o.ior) (o.dispersion != 3),
-    or three (o.dispersion == 3), with o.iors.x/.y/.z for red/green/blue, each
-    channel taken from its own trace; the reported geometry (exit point,
+  - one trace with eta = snellIorToEta(m.iorOutside, m.ior) (m.dispersion != 3),
+    or three (m.dispersion == 3), with m.iors.x/.y/.z for red/green/blue, each
+    channel taken from its own trace; the back slot t.back finds P2, the exit
+    slot t.exit resolves (P2, T2); the reported geometry (exit point,
     direction, hit, path length, tir, backHit) is the single / green trace's;
     fetches and fellBack (any) cover all traces.
-  - transmitted = exit color * snellBeerLambert(o.absorption, pathLength) per
+  - transmitted = exit color * snellBeerLambert(m.absorption, pathLength) per
     channel, pathLength = |P2 - P1| of that channel's trace (0 on fallback
     without a back hit; finite: a back hit whose |P2 - P1| overflows a float
     counts as none, two_interface.glsl).
-  - reflection (o.reflection): F = snellFresnelDielectric(cos(V, N1), eta of
-    the green/single trace); R = reflect(V, N1); color = F bg(R) + (1 - F)
-    transmitted; bg(R) = env(R), +1 fetch (SNELL_REFLECT_ENVIRONMENT), or
-    (SNELL_REFLECT_SCENE) snellTwoInterfaceExit(P1, R, scene..., o with exit =
-    o.reflect, SCENE mode, FALLBACK_ENVIRONMENT): the scene colour where the
-    reflect slot finds the scene, else env(R), its fetches added and its hit
-    in reflectionHit (snellHitMiss(0) otherwise); else F = 0, color =
-    transmitted. The second
-    interface's Fresnel loss and internally reflected light are not modelled.
+  - reflection (m.reflection): F = snellFresnelDielectric(cos(V, N1), eta of
+    the green/single trace); R = reflect(V, N1); bg(R) =
+    snellTwoInterfaceExit(P1, R, scene..., t.reflect, m, v) (the environment
+    along R, or the scene colour where the reflect slot's intersector finds
+    the scene, else its fallback); its fetches added, its hit in
+    reflectionHit; color = F bg(R) + (1 - F) transmitted. Else F = 0, color =
+    transmitted. The second interface's Fresnel loss and internally reflected
+    light are not modelled.
   - an invalid path (NaN / zero inputs): color 0, fellBack true, the
     reflection still added when R is defined.
 source: Wyman 2005 and Oliveira & Brauwers 2007 (two interfaces, distant
@@ -5206,6 +5294,7 @@ SNELL_FN vec3 snellBeerLambert(vec3 absorption, float dist) {
 
 
 
+
 struct SnellTwoInterfaceExit {
   vec3 color;
   SnellHit hit;
@@ -5217,8 +5306,8 @@ struct SnellTwoInterfaceResult {
   vec3 color;
   vec3 exitPoint;      // P2 (P1 when the back hit failed)
   vec3 exitDirection;  // T2 (T1 on fallback)
-  SnellHit exitHit;    // the exit slot's hit in the scene buffers (SCENE mode)
-  SnellHit reflectionHit;  // the reflection slot's hit in the scene buffers (SNELL_REFLECT_SCENE)
+  SnellHit exitHit;    // the exit slot's hit in the scene buffers (SNELL_SOURCE_BUFFERS)
+  SnellHit reflectionHit;  // the reflect slot's hit in the scene buffers (SNELL_SOURCE_BUFFERS)
   float pathLength;    // |P2 - P1| inside the object
   float fresnel;       // F at the first interface (0 without reflection)
   int fetches;
@@ -5227,10 +5316,10 @@ struct SnellTwoInterfaceResult {
   bool tir;            // TIR at the second interface
 };
 
-SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_TEX2D sceneDepth,
-                                                     SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid,
-                                                     SNELL_TEX2D sceneColor, SNELL_IN(SnellDepthSurface) scene,
-                                                     SNELL_ENVIRONMENT_TEX environment, SnellTechniqueOptions o) {
+/* Mayer & Assarsson: a ray from the object resolved by one slot against the scene buffers or the environment */
+SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_SCENE_BUFFERS,
+                                                     SNELL_IN(SnellSlot) slot, SNELL_IN(SnellMaterial) m,
+                                                     SNELL_IN(SnellView) v) {
   SnellTwoInterfaceExit e;
   e.color = vec3(0.0f, 0.0f, 0.0f);
   e.hit = snellHitMiss(0);
@@ -5241,11 +5330,11 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
       !SNELL_FINITE(origin.z)) {
     return e;
   }
-  float envLod = snellRoughnessToLod(o.roughness, o.environmentLevels);
-  float sceneLod = snellRoughnessToLod(o.roughness, o.sceneColorLevels);
-  vec3 world = d.x * o.envX + d.y * o.envY + d.z * o.envZ;
-  if (o.exitMode == SNELL_EXIT_SCENE) {
-    e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, o.exit);
+  float envLod = snellRoughnessToLod(m.roughness, v.environmentLevels);
+  float sceneLod = snellRoughnessToLod(m.roughness, v.sceneColorLevels);
+  vec3 world = d.x * v.envX + d.y * v.envY + d.z * v.envZ;
+  if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
+    e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, slot.intersect);
     e.fetches = e.hit.fetches;
     if (e.hit.valid) {
       vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);
@@ -5257,9 +5346,9 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
     vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, envLod);
     e.fetches = e.fetches + 1;
     e.color = vec3(env.x, env.y, env.z);
-    if (o.fallback == SNELL_FALLBACK_EDGE_FADE) {
-      SnellScreenPoint sp = snellViewToUv(scene.clipFromView, origin + o.fallbackDistance * d);
-      float w = sp.valid ? snellScreenEdgeFade(sp.uv, o.edgeFadeWidth) : 0.0f;
+    if (slot.fallback == SNELL_FALLBACK_EDGE_FADE) {
+      SnellScreenPoint sp = snellViewToUv(scene.clipFromView, origin + slot.fallbackDistance * d);
+      float w = sp.valid ? snellScreenEdgeFade(sp.uv, slot.edgeFadeWidth) : 0.0f;
       if (w > 0.0f) {
         vec2 uv = clamp(sp.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
         vec4 c = SNELL_SAMPLE_LOD(sceneColor, uv, sceneLod);
@@ -5278,19 +5367,16 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
 
 /* Wyman 2005; Oliveira & Brauwers 2007; Mayer & Assarsson: the composed technique */
 SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition, vec3 frontNormal, float dN,
-                                                             SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
-                                                             SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back,
-                                                             SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal,
-                                                             SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor,
-                                                             SNELL_IN(SnellDepthSurface) scene, SNELL_ENVIRONMENT_TEX environment,
-                                                             SnellTechniqueOptions o) {
-  bool three = o.dispersion == 3;
-  float eta = snellIorToEta(o.iorOutside, three ? o.iors.y : o.ior);
+                                                             SNELL_OBJECT_BUFFERS, SNELL_SCENE_BUFFERS,
+                                                             SNELL_IN(SnellTechnique) t, SNELL_IN(SnellMaterial) m,
+                                                             SNELL_IN(SnellView) v) {
+  bool three = m.dispersion == 3;
+  float eta = snellIorToEta(m.iorOutside, three ? m.iors.y : m.ior);
   SnellTwoInterfacePath p =
-      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, backDepth, backNormal, backPyramid, back, o);
-  SnellTwoInterfaceExit e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, sceneDepth, sceneNormal,
-                                                  scenePyramid, sceneColor, scene, environment, o);
-  vec3 transmitted = e.color * snellBeerLambert(o.absorption, p.pathLength);
+      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
+  SnellTwoInterfaceExit e =
+      snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+  vec3 transmitted = e.color * snellBeerLambert(m.absorption, p.pathLength);
   SnellTwoInterfaceResult r;
   r.exitPoint = p.exitPoint;
   r.exitDirection = p.exitDirection;
@@ -5303,47 +5389,31 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   r.fellBack = p.fellBack || e.fellBack || !p.valid;
   r.tir = p.tir;
   if (three) {
-    SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal,
-                                                      snellIorToEta(o.iorOutside, o.iors.x), dN, backDepth,
-                                                      backNormal, backPyramid, back, o);
-    SnellTwoInterfaceExit er = snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, sceneDepth, sceneNormal,
-                                                     scenePyramid, sceneColor, scene, environment, o);
-    SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal,
-                                                      snellIorToEta(o.iorOutside, o.iors.z), dN, backDepth,
-                                                      backNormal, backPyramid, back, o);
-    SnellTwoInterfaceExit eb = snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, sceneDepth, sceneNormal,
-                                                     scenePyramid, sceneColor, scene, environment, o);
-    transmitted.x = er.color.x * snellBeerLambert(o.absorption, pr.pathLength).x;
-    transmitted.z = eb.color.z * snellBeerLambert(o.absorption, pb.pathLength).z;
+    SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.x),
+                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
+    SnellTwoInterfaceExit er =
+        snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+    SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.z),
+                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
+    SnellTwoInterfaceExit eb =
+        snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+    transmitted.x = er.color.x * snellBeerLambert(m.absorption, pr.pathLength).x;
+    transmitted.z = eb.color.z * snellBeerLambert(m.absorption, pb.pathLength).z;
     r.fetches = r.fetches + pr.fetches + er.fetches + pb.fetches + eb.fetches;
     r.fellBack = r.fellBack || pr.fellBack || er.fellBack || pb.fellBack || eb.fellBack;
   }
   r.color = transmitted;
-  vec3 v = snellSafeNormalize(frontPosition);
+  vec3 vv = snellSafeNormalize(frontPosition);
   vec3 n1 = snellSafeNormalize(frontNormal);
-  if (o.reflection && dot(v, v) > 0.0f && dot(n1, n1) > 0.0f) {
-    float f = snellFresnelDielectric(dot(v, n1), eta);
-    vec3 rv = reflect(v, n1);
-    vec3 reflected = vec3(0.0f, 0.0f, 0.0f);
-    if (o.reflectionMode == SNELL_REFLECT_SCENE) {
-      // The reflection slot: the exit machinery with the reflect slot's strategy, from P1 along R.
-      SnellTechniqueOptions ro = o;
-      ro.exit = o.reflect;
-      ro.exitMode = SNELL_EXIT_SCENE;
-      ro.fallback = SNELL_FALLBACK_ENVIRONMENT;
-      SnellTwoInterfaceExit re = snellTwoInterfaceExit(frontPosition, rv, sceneDepth, sceneNormal, scenePyramid,
-                                                       sceneColor, scene, environment, ro);
-      reflected = re.color;
-      r.reflectionHit = re.hit;
-      r.fetches = r.fetches + re.fetches;
-    } else {
-      vec3 world = rv.x * o.envX + rv.y * o.envY + rv.z * o.envZ;
-      vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, snellRoughnessToLod(o.roughness, o.environmentLevels));
-      reflected = vec3(env.x, env.y, env.z);
-      r.fetches = r.fetches + 1;
-    }
+  if (m.reflection && dot(vv, vv) > 0.0f && dot(n1, n1) > 0.0f) {
+    float f = snellFresnelDielectric(dot(vv, n1), eta);
+    // The reflect slot: the exit's call with its own slot, from P1 along R.
+    SnellTwoInterfaceExit re =
+        snellTwoInterfaceExit(frontPosition, reflect(vv, n1), SNELL_SCENE_BUFFER_ARGS, t.reflect, m, v);
+    r.reflectionHit = re.hit;
+    r.fetches = r.fetches + re.fetches;
     r.fresnel = f;
-    r.color = f * reflected + (1.0f - f) * transmitted;
+    r.color = f * re.color + (1.0f - f) * transmitted;
   }
   return r;
 }

@@ -21,12 +21,14 @@ use: LabParams p;  // the host fills every field (C++), or the uniform block Lab
   environment the equirectangular environment (world directions through
               envX/envY/envZ, the columns of world-from-view with the
               environment's rotation folded in)
-contract: every technique uses SNELL_EXIT_SCENE with SNELL_FALLBACK_ENVIRONMENT,
-  the critical-angle TIR policy, Fresnel reflection at the first interface
-  (p.reflectionMode: SNELL_REFLECT_SCENE resolves R against the opaque scene
-  with the exit slot's strategy and parameters, as the ray-traced reference
-  does; SNELL_REFLECT_ENVIRONMENT the environment only) and Beer-Lambert
-  absorption along the found chord. The
+contract: every technique's exit slot reads the scene's buffers
+  (SNELL_SOURCE_BUFFERS) with SNELL_FALLBACK_ENVIRONMENT; the material has the
+  critical-angle TIR policy, Fresnel reflection at the first interface and
+  Beer-Lambert absorption along the found chord; the reflect slot is the exit
+  slot's intersector with p.reflectSource as its source (SNELL_SOURCE_BUFFERS
+  resolves R against the opaque scene, as the ray-traced reference does;
+  SNELL_SOURCE_ENVIRONMENT the environment only) and the environment as its
+  fallback. The
   marches (linear, DDA, the image-space bound) in the back slot walk at most
   p.backRange (the object's bounding-box diagonal), a reference's exit slot
   p.exitRange (the diagonal of the box around the object and the opaque
@@ -60,34 +62,44 @@ struct LabParams {
   float backRange;    // the object's bounding-box diagonal: the back slot's march range
   float exitRange;    // the box around object and scene: the image-space bound's exit range
   int depthFilter;    // SNELL_DEPTH_FILTER_*: how every slot reads both depth buffers
-  int reflectionMode; // SNELL_REFLECT_*
+  int reflectSource;  // SNELL_SOURCE_*: the reflect slot's source
 };
 
-SNELL_FN SnellTechniqueOptions labTechniqueOptions(int technique, bool reference, LabParams p) {
-  SnellTechniqueOptions o = snellTechniquePreset(technique);
-  o.back.marchMaxDistance = p.backRange;
-  o.back.ddaMaxDistance = p.backRange;
+SNELL_FN SnellTechnique labTechnique(int technique, bool reference, LabParams p) {
+  SnellTechnique t = snellTechniquePreset(technique);
+  t.back.intersect.marchMaxDistance = p.backRange;
+  t.back.intersect.ddaMaxDistance = p.backRange;
   if (reference) {
-    o.exit.marchMaxDistance = p.exitRange;
+    t.exit.intersect.marchMaxDistance = p.exitRange;
   }
   if (p.depthFilter == SNELL_DEPTH_FILTER_BILINEAR) {
-    o.back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-    o.exit.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+    t.back.intersect.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+    t.exit.intersect.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
   }
-  o.exitMode = SNELL_EXIT_SCENE;
-  o.fallback = SNELL_FALLBACK_ENVIRONMENT;
-  o.tirPolicy = SNELL_TIR_CRITICAL;
-  o.ior = p.ior;
-  o.iorOutside = 1.0f;
-  o.iors = vec3(p.ior, p.ior, p.ior);
-  o.absorption = p.absorption;
-  o.reflection = true;
-  o.reflectionMode = p.reflectionMode;
-  o.reflect = o.exit;
-  o.envX = p.envX;
-  o.envY = p.envY;
-  o.envZ = p.envZ;
-  return o;
+  t.exit.source = SNELL_SOURCE_BUFFERS;
+  t.exit.fallback = SNELL_FALLBACK_ENVIRONMENT;
+  t.reflect = t.exit;
+  t.reflect.source = p.reflectSource;
+  return t;
+}
+
+SNELL_FN SnellMaterial labMaterial(LabParams p) {
+  SnellMaterial m = snellMaterial();
+  m.tirPolicy = SNELL_TIR_CRITICAL;
+  m.ior = p.ior;
+  m.iorOutside = 1.0f;
+  m.iors = vec3(p.ior, p.ior, p.ior);
+  m.absorption = p.absorption;
+  m.reflection = true;
+  return m;
+}
+
+SNELL_FN SnellView labView(LabParams p) {
+  SnellView v = snellView();
+  v.envX = p.envX;
+  v.envY = p.envY;
+  v.envZ = p.envZ;
+  return v;
 }
 
 SNELL_FN SnellTwoInterfaceResult labShade(int technique, bool reference, vec3 frontPosition, vec3 frontNormal, float dN,
@@ -97,9 +109,8 @@ SNELL_FN SnellTwoInterfaceResult labShade(int technique, bool reference, vec3 fr
   SnellDepthSurface back = snellDepthSurface(p.clipFromView, p.zNear, p.zFar, SNELL_DEPTH_GL, 0.0f);
   SnellDepthSurface scene = snellDepthSurface(p.clipFromView, p.zNear, p.zFar, SNELL_DEPTH_GL, 1.0f);
   scene.closed = false;  // where the scene buffer is empty, the environment shows
-  SnellTechniqueOptions o = labTechniqueOptions(technique, reference, p);
-  return snellTwoInterfaceRefraction(frontPosition, frontNormal, dN, backDepth, backNormal, backPyramid, back,
-                                     sceneDepth, sceneNormal, scenePyramid, sceneColor, scene, environment, o);
+  return snellTwoInterfaceRefraction(frontPosition, frontNormal, dN, SNELL_OBJECT_BUFFER_ARGS, SNELL_SCENE_BUFFER_ARGS,
+                                     labTechnique(technique, reference, p), labMaterial(p), labView(p));
 }
 
 #endif

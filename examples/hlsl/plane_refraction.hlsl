@@ -56,18 +56,20 @@ float4 main(PSInput input) : SV_Target {
   SnellDepthSurface back = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DEPTH_REVERSED, backEmptyDepth);
   SnellDepthSurface scene = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DEPTH_REVERSED, sceneEmptyDepth);
 
-  SnellTechniqueOptions o = snellPresetPlaneNormal(2);
-  o.exitMode = SNELL_EXIT_SCENE;            // refract the painting behind the object
-  o.fallback = SNELL_FALLBACK_EDGE_FADE;    // off-screen exit: fade to the environment
-  o.ior = ior;
-  o.absorption = absorption;
-  o.envX = float3(worldFromView[0][0], worldFromView[1][0], worldFromView[2][0]);  // columns
-  o.envY = float3(worldFromView[0][1], worldFromView[1][1], worldFromView[2][1]);
-  o.envZ = float3(worldFromView[0][2], worldFromView[1][2], worldFromView[2][2]);
+  SnellTechnique t = snellPresetPlaneNormal(2);
+  t.exit.source = SNELL_SOURCE_BUFFERS;         // refract the painting behind the object
+  t.exit.fallback = SNELL_FALLBACK_EDGE_FADE;   // off-screen exit: fade to the environment
+  SnellMaterial m = snellMaterial();
+  m.ior = ior;
+  m.absorption = absorption;
+  SnellView v = snellView();
+  v.envX = float3(worldFromView[0][0], worldFromView[1][0], worldFromView[2][0]);  // columns
+  v.envY = float3(worldFromView[0][1], worldFromView[1][1], worldFromView[2][1]);
+  v.envZ = float3(worldFromView[0][2], worldFromView[1][2], worldFromView[2][2]);
 
   SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
       input.viewPosition, input.viewNormal, 0.0f /* dN: Wyman's ISR only */,
       backDepth, backNormal, backPyramid, back,
-      sceneDepth, sceneNormal, scenePyramid, sceneColor, scene, environment, o);
+      sceneDepth, sceneNormal, scenePyramid, sceneColor, scene, environment, t, m, v);
   return float4(r.color, 1.0f);
 }

@@ -15,6 +15,7 @@
 #include "shade/environment_cube_face.glsl"
 #include "shade/environment.glsl"
 #include "shade/technique_options.glsl"
+#include "shade/technique_buffers.glsl"
 #include "shade/technique_presets.glsl"
 #include "shade/two_interface.glsl"
 #include "shade/two_interface_shade.glsl"

@@ -76,29 +76,32 @@ inline const SnellTechniqueInfo* snellFindTechnique(int id) {
   return nullptr;
 }
 
-// Whether the technique reads Wyman's per-vertex d_N (its preset's back method).
+// Whether the technique reads Wyman's per-vertex d_N (its preset's back slot source).
 inline bool snellTechniqueNeedsDn(const SnellTechniqueInfo& t) {
-  return snellTechniquePreset(t.id).backMethod == SNELL_BACK_WYMAN;
+  return snellTechniquePreset(t.id).back.source == SNELL_SOURCE_WYMAN;
 }
 
-// The SNELL_INTERSECT_STRATEGIES bits (bit k = strategy k) of the slots these
-// options call (shade/two_interface*.glsl): the back slot unless backMethod is
-// SNELL_BACK_WYMAN, the exit slot with exitMode SNELL_EXIT_SCENE, the reflect
-// slot with reflection on and reflectionMode SNELL_REFLECT_SCENE. A strategy
+// The SNELL_INTERSECT_STRATEGIES bits (bit k = strategy k) of the slots this
+// technique calls (shade/two_interface*.glsl): every slot whose source runs its
+// intersector (not SNELL_SOURCE_ENVIRONMENT; for the back slot not
+// SNELL_SOURCE_WYMAN either), the reflect slot only with the material's
+// reflection on. A strategy
 // outside 0 .. SNELL_STRATEGY_COUNT - 1 adds nothing (it misses either way). A host
 // that compiles one program per technique defines the mask before including
 // the shaders, so the program holds only those strategies: the dispatcher,
 // inlined with every strategy into each slot, is most of a technique shader's
-// code. The mask follows the options' values: a program whose options come
+// code. The mask follows the slots' values: a program whose slots come
 // from uniforms must be built for every value they can take.
-inline int snellStrategiesUsed(const SnellTechniqueOptions& o) {
+inline int snellStrategiesUsed(const SnellTechnique& t, const SnellMaterial& m) {
   int mask = 0;
-  const auto add = [&mask](int strategy) {
-    if (strategy >= 0 && strategy < SNELL_STRATEGY_COUNT) mask |= 1 << strategy;
+  const auto add = [&mask](const SnellSlot& slot) {
+    const int strategy = slot.intersect.strategy;
+    if (slot.source != SNELL_SOURCE_ENVIRONMENT && strategy >= 0 && strategy < SNELL_STRATEGY_COUNT)
+      mask |= 1 << strategy;
   };
-  if (o.backMethod != SNELL_BACK_WYMAN) add(o.back.strategy);
-  if (o.exitMode == SNELL_EXIT_SCENE) add(o.exit.strategy);
-  if (o.reflection && o.reflectionMode == SNELL_REFLECT_SCENE) add(o.reflect.strategy);
+  if (t.back.source != SNELL_SOURCE_WYMAN) add(t.back);
+  add(t.exit);
+  if (m.reflection) add(t.reflect);
   return mask;
 }
 
@@ -135,15 +138,16 @@ inline std::string snellDescribeIntersect(const SnellIntersectOptions& o) {
 }
 
 // How one technique finds the back face: its back slot, or Wyman's distance interpolation.
-inline std::string snellDescribeBack(const SnellTechniqueOptions& o) {
-  if (o.backMethod == SNELL_BACK_WYMAN) return "distance interpolation between d_V and the per-vertex d_N";
-  return snellDescribeIntersect(o.back);
+inline std::string snellDescribeBack(const SnellTechnique& t) {
+  if (t.back.source == SNELL_SOURCE_WYMAN) return "distance interpolation between d_V and the per-vertex d_N";
+  if (t.back.source == SNELL_SOURCE_ENVIRONMENT) return "none (a thin surface: the ray leaves where it enters)";
+  return snellDescribeIntersect(t.back.intersect);
 }
 
 // "method; back faces: ...; exit: ..." for --help and the docs, from the preset.
 inline std::string snellDescribeTechnique(const SnellTechniqueInfo& t) {
-  const SnellTechniqueOptions o = snellTechniquePreset(t.id);
-  const std::string back = snellDescribeBack(o), exit = snellDescribeIntersect(o.exit);
+  const SnellTechnique o = snellTechniquePreset(t.id);
+  const std::string back = snellDescribeBack(o), exit = snellDescribeIntersect(o.exit.intersect);
   return std::string(t.method) + "; back faces: " + back + "; exit: " + (exit == back ? "the same" : exit);
 }
 

@@ -83,7 +83,7 @@ TEST_P(TechniqueImage, FullFrameMatchesTheCxxBuild) {
   // dispatcher inlined into three dispersion traces takes llvmpipe minutes to compile.
   auto makeProgram = [&](int preset) {
     const std::string fsSrc = "#version 450 core\n#define SNELL_INTERSECT_STRATEGIES " +
-                              std::to_string(snellStrategiesUsed(techImageOptions(preset))) +
+                              std::to_string(snellStrategiesUsed(techImageTechnique(preset), techImageMaterial(preset))) +
                               "\n#define TECH_PRESET " + std::to_string(preset) + R"(
 struct SnellParityOut { vec4 a; vec4 b; vec4 c; vec4 d; };
 #include "parity/cases/technique.glsl"
@@ -116,7 +116,7 @@ void main() { fragColor = techImagePixel(ivec2(gl_FragCoord.xy), TECH_PRESET, ma
                          "DDA march -> painting",
                          "DIR bounding box -> painting"};
   constexpr int kPresets = int(sizeof(names) / sizeof(names[0]));
-  static_assert(kPresets == TECH_IMAGE_PRESETS, "one name per preset of techImageOptions");
+  static_assert(kPresets == TECH_IMAGE_PRESETS, "one name per preset of techImageTechnique");
   for (int preset = 0; preset < kPresets; ++preset) {
     const auto t0 = std::chrono::steady_clock::now();
     const Program program = makeProgram(preset);

@@ -1,7 +1,7 @@
 // The two-interface refraction parity and property cases (see parity_case.hpp):
 // environment helpers, depth ranges, options and presets, the strategy dispatcher,
 // the path trace, the exit slot and the full shaded technique. cases/technique.glsl
-// holds the textures, the ray cases' options (techOptions), the options cases'
+// holds the textures, the ray cases' technique, material and view (techTechnique, techMaterial, techView), the options cases'
 // packing (TECH_OPTIONS_OUT) and techImagePixel (tests/gpu/technique_image_test.cpp).
 //
 // Textures: the technique test scene (tests/support/technique_scene.hpp) at 96x96;
@@ -231,7 +231,7 @@ namespace parity_technique {
   (vec4, sums, 12, exact)
 
 // The ray cases' inputs after the ray (floats 0-2, 4-6): the technique (techPreset), its steps, the
-// projection's entries, the IOR, d_N, the mode bits (techOptions) and the roughness.
+// projection's entries, the IOR, d_N, the mode bits (techTechnique, techMaterial) and the roughness.
 #define TECH_RAY_INPUTS(ORIGIN, DIRECTION)                                                                           \
   (vec3, ORIGIN, 0)(int, preset, 3)(vec3, DIRECTION, 4)(int, steps, 7)(vec4, projection, 8)(float, ior, 12)         \
   (float, dN, 13)(int, modes, 14)(float, roughness, 15)
@@ -316,30 +316,54 @@ SNELL_PARITY_CASE(snellIntersectOptions, [] { return smallIntInputs(810, -1, 10)
                   (int, strategy, 0),
                   TECH_OPTIONS_EXACT,
                   techExtras(),
-                  SnellTechniqueOptions o = snellTechniqueOptions();
-                  o.back = snellIntersectOptions(strategy);
-                  TECH_OPTIONS_OUT(o))
+                  SnellTechnique t = snellTechnique();
+                  t.back.intersect = snellIntersectOptions(strategy);
+                  TECH_OPTIONS_OUT(t, snellMaterial(), snellView()))
 
-SNELL_PARITY_CASE(snellTechniqueOptions, [] { return smallIntInputs(811, 0, 1); },
+// The three defaults together: their outputs are the single options struct's before the split.
+SNELL_PARITY_CASE(snellTechnique, [] { return smallIntInputs(811, 0, 1); },
                   /* no inputs */,
                   TECH_OPTIONS_EXACT,
                   techExtras(),
-                  SnellTechniqueOptions o = snellTechniqueOptions();
-                  TECH_OPTIONS_OUT(o))
+                  TECH_OPTIONS_OUT(snellTechnique(), snellMaterial(), snellView()))
+
+SNELL_PARITY_CASE(snellMaterial, [] { return smallIntInputs(826, 0, 1); },
+                  /* no inputs */,
+                  TECH_OPTIONS_EXACT,
+                  techExtras(),
+                  SnellMaterial m = snellMaterial();
+                  TECH_OPTIONS_OUT(snellTechnique(), m, snellView()))
+
+SNELL_PARITY_CASE(snellView, [] { return smallIntInputs(827, 0, 1); },
+                  /* no inputs */,
+                  TECH_OPTIONS_EXACT,
+                  techExtras(),
+                  SnellView v = snellView();
+                  TECH_OPTIONS_OUT(snellTechnique(), snellMaterial(), v))
+
+// A slot from its source and strategy, in the exit slot (flags: source and fallback) and the back slot.
+SNELL_PARITY_CASE(snellSlot, [] { return smallIntInputs(828, -1, 10); },
+                  (int, source, 0)(int, strategy, 1),
+                  TECH_OPTIONS_EXACT,
+                  techExtras(),
+                  SnellTechnique t = snellTechnique();
+                  t.exit = snellSlot(source, strategy);
+                  t.back = snellSlot(source, strategy);
+                  TECH_OPTIONS_OUT(t, snellMaterial(), snellView()))
 
 SNELL_PARITY_CASE(snellTechniquePresetSlots, [] { return smallIntInputs(812, -1, 10); },
                   (int, backSlot, 0)(int, exitSlot, 1),
                   TECH_OPTIONS_EXACT,
                   techExtras(),
-                  SnellTechniqueOptions o = snellTechniquePresetSlots(backSlot, exitSlot);
-                  TECH_OPTIONS_OUT(o))
+                  SnellTechnique t = snellTechniquePresetSlots(backSlot, exitSlot);
+                  TECH_OPTIONS_OUT(t, snellMaterial(), snellView()))
 
 SNELL_PARITY_CASE(snellPresetDir, [] { return smallIntInputs(813, 0, 1); },
                   /* no inputs */,
                   TECH_OPTIONS_EXACT,
                   techExtras(),
-                  SnellTechniqueOptions o = snellPresetDir();
-                  TECH_OPTIONS_OUT(o))
+                  SnellTechnique t = snellPresetDir();
+                  TECH_OPTIONS_OUT(t, snellMaterial(), snellView()))
 
 // Every float exact (the old mask compared the `reflection` flag, float 11, within 1e-5: a slip, a flag
 // is 0 or 1).
@@ -348,65 +372,65 @@ SNELL_PARITY_CASE(snellPresetDirBounds, boundsInputs,
                   TECH_OPTIONS_EXACT,
                   techExtras().passThrough({"zNearest", "zFarthest"}, {"sums.x", "sums.y"},
                                            "a preset constructor: stores the bounds it is given (outputs 12-13)"),
-                  SnellTechniqueOptions o = snellPresetDirBounds(zNearest, zFarthest);
-                  TECH_OPTIONS_OUT(o))
+                  SnellTechnique t = snellPresetDirBounds(zNearest, zFarthest);
+                  TECH_OPTIONS_OUT(t, snellMaterial(), snellView()))
 
 SNELL_PARITY_CASE(snellPresetIsr, [] { return smallIntInputs(814, 0, 1); },
                   /* no inputs */,
                   TECH_OPTIONS_EXACT,
                   techExtras(),
-                  SnellTechniqueOptions o = snellPresetIsr();
-                  TECH_OPTIONS_OUT(o))
+                  SnellTechnique t = snellPresetIsr();
+                  TECH_OPTIONS_OUT(t, snellMaterial(), snellView()))
 
 SNELL_PARITY_CASE(snellPresetPlaneNormal, [] { return smallIntInputs(815, -2, 12); },
                   (int, iterations, 0),
                   TECH_OPTIONS_EXACT,
                   techExtras(),
-                  SnellTechniqueOptions o = snellPresetPlaneNormal(iterations);
-                  TECH_OPTIONS_OUT(o))
+                  SnellTechnique t = snellPresetPlaneNormal(iterations);
+                  TECH_OPTIONS_OUT(t, snellMaterial(), snellView()))
 
 SNELL_PARITY_CASE(snellPresetPlaneDepth, [] { return smallIntInputs(816, -2, 12); },
                   (int, iterations, 0),
                   TECH_OPTIONS_EXACT,
                   techExtras(),
-                  SnellTechniqueOptions o = snellPresetPlaneDepth(iterations);
-                  TECH_OPTIONS_OUT(o))
+                  SnellTechnique t = snellPresetPlaneDepth(iterations);
+                  TECH_OPTIONS_OUT(t, snellMaterial(), snellView()))
 
 SNELL_PARITY_CASE(snellPresetSingleSample, [] { return smallIntInputs(817, 0, 1); },
                   /* no inputs */,
                   TECH_OPTIONS_EXACT,
                   techExtras(),
-                  SnellTechniqueOptions o = snellPresetSingleSample();
-                  TECH_OPTIONS_OUT(o))
+                  SnellTechnique t = snellPresetSingleSample();
+                  TECH_OPTIONS_OUT(t, snellMaterial(), snellView()))
 
 SNELL_PARITY_CASE(snellPresetLinearMarch, [] { return smallIntInputs(818, 0, 1); },
                   /* no inputs */,
                   TECH_OPTIONS_EXACT,
                   techExtras(),
-                  SnellTechniqueOptions o = snellPresetLinearMarch();
-                  TECH_OPTIONS_OUT(o))
+                  SnellTechnique t = snellPresetLinearMarch();
+                  TECH_OPTIONS_OUT(t, snellMaterial(), snellView()))
 
 SNELL_PARITY_CASE(snellPresetDdaMarch, [] { return smallIntInputs(819, 0, 1); },
                   /* no inputs */,
                   TECH_OPTIONS_EXACT,
                   techExtras(),
-                  SnellTechniqueOptions o = snellPresetDdaMarch();
-                  TECH_OPTIONS_OUT(o))
+                  SnellTechnique t = snellPresetDdaMarch();
+                  TECH_OPTIONS_OUT(t, snellMaterial(), snellView()))
 
 SNELL_PARITY_CASE(snellPresetImageSpaceBound, [] { return smallIntInputs(825, 0, 1); },
                   /* no inputs */,
                   TECH_OPTIONS_EXACT,
                   techExtras(),
-                  SnellTechniqueOptions o = snellPresetImageSpaceBound();
-                  TECH_OPTIONS_OUT(o))
+                  SnellTechnique t = snellPresetImageSpaceBound();
+                  TECH_OPTIONS_OUT(t, snellMaterial(), snellView()))
 
 // Every id of the technique table and a few outside it.
 SNELL_PARITY_CASE(snellTechniquePreset, [] { return smallIntInputs(824, -2, SNELL_TECHNIQUE_COUNT + 2); },
                   (int, id, 0),
                   TECH_OPTIONS_EXACT,
                   techExtras(),
-                  SnellTechniqueOptions o = snellTechniquePreset(id);
-                  TECH_OPTIONS_OUT(o))
+                  SnellTechnique t = snellTechniquePreset(id);
+                  TECH_OPTIONS_OUT(t, snellMaterial(), snellView()))
 
 // Searches and marches through the sphere's back faces and the painting plane: the strategy, its main count
 // (iterations, steps, linear steps), to the scene or the back faces, an explicit range or the pyramid's.
@@ -452,10 +476,11 @@ SNELL_PARITY_CASE(snellTwoInterfaceTrace, [] { return techniqueInputs(821); },
                   (vec3, exitNormal, 8, within(1e-4f, 1e-4f))(float, flags, 11, exact)
                   (vec2, exitUv, 12, within(1e-4f, 1e-4f))(float, entryDirectionZ, 14, within(1e-4f, 1e-4f)),
                   techExtras(),
-                  SnellTechniqueOptions o = techOptions(preset, steps, ior, modes, roughness);
-                  SnellTwoInterfacePath p = snellTwoInterfaceTrace(entryPoint, entryNormal, snellIorToEta(1.0f, o.ior),
+                  SnellTechnique t = techTechnique(preset, steps, modes);
+                  SnellMaterial m = techMaterial(ior, modes, roughness);
+                  SnellTwoInterfacePath p = snellTwoInterfaceTrace(entryPoint, entryNormal, snellIorToEta(1.0f, m.ior),
                                                                    dN, techBackDepth, techBackNormal, techBackPyramid,
-                                                                   techBackSurface(projection), o);
+                                                                   techBackSurface(projection), t.back, m.tirPolicy);
                   exitDirection = p.exitDirection;
                   fetches = p.fetches;
                   exitPoint = p.exitPoint;
@@ -472,10 +497,11 @@ SNELL_PARITY_CASE(snellTwoInterfaceExit, [] { return exitInputs(822); },
                   (vec3, color, 0, within(1e-4f, 1e-4f))(int, fetches, 3, exact)(vec2, hitUv, 4, within(1e-4f, 1e-4f))
                   (bool, hitValid, 6, exact)(bool, fellBack, 7, exact)(vec3, hitPosition, 8, within(1e-4f, 1e-4f)),
                   techExtras(),
-                  SnellTechniqueOptions o = techOptions(preset, steps, ior, modes, roughness);
+                  SnellTechnique t = techTechnique(preset, steps, modes);
                   SnellTwoInterfaceExit e = snellTwoInterfaceExit(origin, direction, techSceneDepth, techSceneNormal,
                                                                   techScenePyramid, techSceneColor,
-                                                                  techSceneSurface(projection), techEnv, o);
+                                                                  techSceneSurface(projection), techEnv, t.exit,
+                                                                  techMaterial(ior, modes, roughness), techView());
                   color = e.color;
                   fetches = e.fetches;
                   hitUv = e.hit.uv;
@@ -493,11 +519,11 @@ SNELL_PARITY_CASE(snellTwoInterfaceRefraction, [] { return techniqueInputs(823);
                   (vec2, exitUv, 12, within(1e-4f, 1e-4f))(float, fresnel, 14, within(1e-4f, 1e-4f))
                   (bool, reflectionHit, 15, exact),
                   techExtras(),
-                  SnellTechniqueOptions o = techOptions(preset, steps, ior, modes, roughness);
                   SnellTwoInterfaceResult t = snellTwoInterfaceRefraction(
                       entryPoint, entryNormal, dN, techBackDepth, techBackNormal, techBackPyramid,
                       techBackSurface(projection), techSceneDepth, techSceneNormal, techScenePyramid, techSceneColor,
-                      techSceneSurface(projection), techEnv, o);
+                      techSceneSurface(projection), techEnv, techTechnique(preset, steps, modes),
+                      techMaterial(ior, modes, roughness), techView());
                   color = t.color;
                   fetches = t.fetches;
                   exitDirection = t.exitDirection;

@@ -21,8 +21,9 @@ TEST(TechniqueCubeEnvironment, ExitRayReadsTheCubeFace) {
   std::array<Texture2D, 6> faces;
   for (int k = 0; k < 6; ++k) faces[size_t(k)] = Texture2D(Image(8, 8, glm::vec4(0.1f * float(k + 1))));
   const TextureCube cube(faces);
-  SnellTechniqueOptions o = snellPresetDir();
-  o.reflection = false;
+  const SnellTechnique t = snellPresetDir();
+  SnellMaterial m = snellMaterial();
+  m.reflection = false;
   int n = 0;
   for (int j = 0; j < 96; j += 4)
     for (int i = 0; i < 96; i += 4) {
@@ -30,7 +31,7 @@ TEST(TechniqueCubeEnvironment, ExitRayReadsTheCubeFace) {
       if (!e.hitsSphere) continue;
       const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
           glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(),
-          s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), cube, o);
+          s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), cube, t, m, snellView());
       const SnellCubeFace f = snellCubeFaceUv(r.exitDirection);
       ASSERT_TRUE(f.valid);
       EXPECT_EQ(r.color.x, 0.1f * float(f.face + 1));

@@ -16,22 +16,22 @@ namespace {
 
 struct Expected {
   const char* name;
-  int backMethod;
+  int backSource;  // SNELL_SOURCE_BUFFERS or SNELL_SOURCE_WYMAN
   int back, backSteps, exit, exitSteps;  // steps: the strategy's own count (iterations, steps); 0 for single sample
 };
 
 // snell-lab --technique names and table.json "technique" values: scripts and saved tables use them, keep them.
 const Expected kExpected[] = {
-    {"single", SNELL_BACK_INTERSECT, SNELL_STRATEGY_SINGLE, 0, SNELL_STRATEGY_SINGLE, 0},
-    {"plane-normal-0", SNELL_BACK_INTERSECT, SNELL_STRATEGY_PLANE_NORMAL, 0, SNELL_STRATEGY_PLANE_NORMAL, 0},
-    {"plane-normal-1", SNELL_BACK_INTERSECT, SNELL_STRATEGY_PLANE_NORMAL, 1, SNELL_STRATEGY_PLANE_NORMAL, 1},
-    {"plane-normal-2", SNELL_BACK_INTERSECT, SNELL_STRATEGY_PLANE_NORMAL, 2, SNELL_STRATEGY_PLANE_NORMAL, 2},
-    {"plane-depth", SNELL_BACK_INTERSECT, SNELL_STRATEGY_PLANE_DEPTH, 1, SNELL_STRATEGY_PLANE_DEPTH, 1},
-    {"dir", SNELL_BACK_INTERSECT, SNELL_STRATEGY_CBS, 5, SNELL_STRATEGY_CBS, 5},  // O&B 2007 sec. 3.3: c = 5
-    {"isr", SNELL_BACK_WYMAN, SNELL_STRATEGY_SINGLE, 0, SNELL_STRATEGY_SINGLE, 0},  // Wyman 2005: d_V, d_N
-    {"linear-march", SNELL_BACK_INTERSECT, SNELL_STRATEGY_LINEAR_MARCH, 32, SNELL_STRATEGY_LINEAR_MARCH, 32},
-    {"dda", SNELL_BACK_INTERSECT, SNELL_STRATEGY_DDA, 256, SNELL_STRATEGY_DDA, 256},
-    {"image-space-bound", SNELL_BACK_INTERSECT, SNELL_STRATEGY_LINEAR_MARCH, 512, SNELL_STRATEGY_LINEAR_MARCH, 512},
+    {"single", SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_SINGLE, 0, SNELL_STRATEGY_SINGLE, 0},
+    {"plane-normal-0", SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_PLANE_NORMAL, 0, SNELL_STRATEGY_PLANE_NORMAL, 0},
+    {"plane-normal-1", SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_PLANE_NORMAL, 1, SNELL_STRATEGY_PLANE_NORMAL, 1},
+    {"plane-normal-2", SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_PLANE_NORMAL, 2, SNELL_STRATEGY_PLANE_NORMAL, 2},
+    {"plane-depth", SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_PLANE_DEPTH, 1, SNELL_STRATEGY_PLANE_DEPTH, 1},
+    {"dir", SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_CBS, 5, SNELL_STRATEGY_CBS, 5},  // O&B 2007 sec. 3.3: c = 5
+    {"isr", SNELL_SOURCE_WYMAN, SNELL_STRATEGY_SINGLE, 0, SNELL_STRATEGY_SINGLE, 0},  // Wyman 2005: d_V, d_N
+    {"linear-march", SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_LINEAR_MARCH, 32, SNELL_STRATEGY_LINEAR_MARCH, 32},
+    {"dda", SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_DDA, 256, SNELL_STRATEGY_DDA, 256},
+    {"image-space-bound", SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_LINEAR_MARCH, 512, SNELL_STRATEGY_LINEAR_MARCH, 512},
 };
 
 // The count each strategy is known by (what the lab's labels and the papers name).
@@ -66,25 +66,26 @@ TEST(TechniqueTable, OneRowPerIdInIdOrderWithTheDocumentedNames) {
 TEST(TechniqueTable, EachPresetHasThePublishedSlots) {
   for (const SnellTechniqueInfo& t : snellTechniqueTable()) {
     const Expected& e = kExpected[t.id];
-    const SnellTechniqueOptions o = snellTechniquePreset(t.id);
-    EXPECT_EQ(o.backMethod, e.backMethod) << t.name;
-    EXPECT_EQ(o.back.strategy, e.back) << t.name;
-    EXPECT_EQ(mainCount(o.back), e.backSteps) << t.name;
-    EXPECT_EQ(o.exit.strategy, e.exit) << t.name;
-    EXPECT_EQ(mainCount(o.exit), e.exitSteps) << t.name;
-    EXPECT_EQ(o.back.rangeSource, SNELL_RANGE_PYRAMID) << t.name;
-    // The shared optics defaults, untouched by any preset.
-    EXPECT_EQ(o.tirPolicy, SNELL_TIR_CRITICAL) << t.name;
-    EXPECT_EQ(o.ior, 1.5f) << t.name;
-    EXPECT_TRUE(o.reflection) << t.name;
+    const SnellTechnique o = snellTechniquePreset(t.id);
+    EXPECT_EQ(o.back.source, e.backSource) << t.name;
+    EXPECT_EQ(o.back.intersect.strategy, e.back) << t.name;
+    EXPECT_EQ(mainCount(o.back.intersect), e.backSteps) << t.name;
+    EXPECT_EQ(o.exit.intersect.strategy, e.exit) << t.name;
+    EXPECT_EQ(mainCount(o.exit.intersect), e.exitSteps) << t.name;
+    EXPECT_EQ(o.back.intersect.rangeSource, SNELL_RANGE_PYRAMID) << t.name;
+    // A preset chooses strategies only: the exit and reflect slots keep the environment, whatever the host
+    // points them at.
+    EXPECT_EQ(o.exit.source, SNELL_SOURCE_ENVIRONMENT) << t.name;
+    EXPECT_EQ(o.reflect.source, SNELL_SOURCE_ENVIRONMENT) << t.name;
+    EXPECT_EQ(o.exit.fallback, SNELL_FALLBACK_ENVIRONMENT) << t.name;
   }
 }
 
 TEST(TechniqueTable, AnIdOutsideTheTableMissesEveryRay) {
   for (int id : {-1, SNELL_TECHNIQUE_COUNT, 1000}) {
-    const SnellTechniqueOptions o = snellTechniquePreset(id);
-    EXPECT_EQ(o.back.strategy, -1);
-    EXPECT_EQ(o.exit.strategy, -1);
+    const SnellTechnique o = snellTechniquePreset(id);
+    EXPECT_EQ(o.back.intersect.strategy, -1);
+    EXPECT_EQ(o.exit.intersect.strategy, -1);
   }
 }
 
@@ -103,33 +104,38 @@ TEST(TechniqueTable, DescriptionsComeFromTheOptions) {
 }
 
 TEST(TechniqueTable, StrategiesUsedNamesTheSlotsTheOptionsCall) {
-  SnellTechniqueOptions o = snellTechniqueOptions();
-  o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
-  o.exit = snellIntersectOptions(SNELL_STRATEGY_DDA);
-  o.reflect = snellIntersectOptions(SNELL_STRATEGY_SINGLE);
+  SnellTechnique o = snellTechnique();
+  SnellMaterial m = snellMaterial();
+  o.back.intersect = snellIntersectOptions(SNELL_STRATEGY_CBS);
+  o.exit.intersect = snellIntersectOptions(SNELL_STRATEGY_DDA);
+  o.reflect.intersect = snellIntersectOptions(SNELL_STRATEGY_SINGLE);
   // The defaults: exit to the environment, reflection of the environment: the back slot alone.
-  EXPECT_EQ(snellStrategiesUsed(o), 1 << SNELL_STRATEGY_CBS);
-  o.exitMode = SNELL_EXIT_SCENE;
-  EXPECT_EQ(snellStrategiesUsed(o), (1 << SNELL_STRATEGY_CBS) | (1 << SNELL_STRATEGY_DDA));
-  o.reflectionMode = SNELL_REFLECT_SCENE;
-  EXPECT_EQ(snellStrategiesUsed(o), (1 << SNELL_STRATEGY_CBS) | (1 << SNELL_STRATEGY_DDA) | 1);
-  o.reflection = false;
-  EXPECT_EQ(snellStrategiesUsed(o), (1 << SNELL_STRATEGY_CBS) | (1 << SNELL_STRATEGY_DDA));
-  o.backMethod = SNELL_BACK_WYMAN;  // Wyman's distance replaces the back slot
-  EXPECT_EQ(snellStrategiesUsed(o), 1 << SNELL_STRATEGY_DDA);
+  EXPECT_EQ(snellStrategiesUsed(o, m), 1 << SNELL_STRATEGY_CBS);
+  o.exit.source = SNELL_SOURCE_BUFFERS;
+  EXPECT_EQ(snellStrategiesUsed(o, m), (1 << SNELL_STRATEGY_CBS) | (1 << SNELL_STRATEGY_DDA));
+  o.reflect.source = SNELL_SOURCE_BUFFERS;
+  EXPECT_EQ(snellStrategiesUsed(o, m), (1 << SNELL_STRATEGY_CBS) | (1 << SNELL_STRATEGY_DDA) | 1);
+  m.reflection = false;
+  EXPECT_EQ(snellStrategiesUsed(o, m), (1 << SNELL_STRATEGY_CBS) | (1 << SNELL_STRATEGY_DDA));
+  o.back.source = SNELL_SOURCE_WYMAN;  // Wyman's distance replaces the back slot's intersector
+  EXPECT_EQ(snellStrategiesUsed(o, m), 1 << SNELL_STRATEGY_DDA);
+  o.back.source = SNELL_SOURCE_ENVIRONMENT;  // no back faces read at all
+  EXPECT_EQ(snellStrategiesUsed(o, m), 1 << SNELL_STRATEGY_DDA);
   // No strategy (an id outside the table) and ids past the last add nothing: no shift by a negative count.
-  o.backMethod = SNELL_BACK_INTERSECT;
-  o.reflection = true;
-  o.back = snellIntersectOptions(-1);
-  o.exit = snellIntersectOptions(SNELL_STRATEGY_COUNT);
-  o.reflect = snellIntersectOptions(1 << 30);
-  EXPECT_EQ(snellStrategiesUsed(o), 0);
+  o.back.source = SNELL_SOURCE_BUFFERS;
+  m.reflection = true;
+  o.back.intersect = snellIntersectOptions(-1);
+  o.exit.intersect = snellIntersectOptions(SNELL_STRATEGY_COUNT);
+  o.reflect.intersect = snellIntersectOptions(1 << 30);
+  EXPECT_EQ(snellStrategiesUsed(o, m), 0);
   // Every preset with both scene slots on: the strategies kExpected names (ISR: the exit slot only).
   for (const SnellTechniqueInfo& t : snellTechniqueTable()) {
-    SnellTechniqueOptions p = snellTechniquePreset(t.id);
-    p.exitMode = SNELL_EXIT_SCENE;
+    SnellTechnique p = snellTechniquePreset(t.id);
+    p.exit.source = SNELL_SOURCE_BUFFERS;
     const Expected& e = kExpected[t.id];
-    EXPECT_EQ(snellStrategiesUsed(p), (e.backMethod == SNELL_BACK_WYMAN ? 0 : 1 << e.back) | (1 << e.exit)) << t.name;
+    EXPECT_EQ(snellStrategiesUsed(p, snellMaterial()),
+              (e.backSource == SNELL_SOURCE_WYMAN ? 0 : 1 << e.back) | (1 << e.exit))
+        << t.name;
   }
 }
 
@@ -148,7 +154,7 @@ TEST(TechniqueTable, RowsSayWhatAHostTreatsSpecially) {
     EXPECT_EQ(t.costUnit, std::string(e.name) == "single") << e.name;
     EXPECT_EQ(t.posterRow, std::string(e.name) == "plane-normal-1") << e.name;
     EXPECT_EQ(t.kind == SnellTechniqueKind::Reference, std::string(e.name) == "image-space-bound") << e.name;
-    EXPECT_EQ(snellTechniqueNeedsDn(t), e.backMethod == SNELL_BACK_WYMAN) << e.name;
+    EXPECT_EQ(snellTechniqueNeedsDn(t), e.backSource == SNELL_SOURCE_WYMAN) << e.name;
     EXPECT_EQ(snellFindTechnique(t.id), &t);
   }
   EXPECT_EQ(units, 1);

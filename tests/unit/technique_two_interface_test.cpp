@@ -24,6 +24,15 @@ using namespace snell;
 using technique_test::Exact;
 using technique_test::Scene;
 
+// The technique, material and view a test varies together; a preset converts to one with the defaults.
+struct Options {
+  SnellTechnique t = snellTechnique();
+  SnellMaterial m = snellMaterial();
+  SnellView v = snellView();
+  Options() = default;
+  Options(const SnellTechnique& technique) : t(technique) {}  // NOLINT: a preset reads as options
+};
+
 glm::dvec3 kCentreD() { return technique_test::kCentre; }
 
 constexpr double kIor = 1.5;
@@ -33,9 +42,10 @@ const Scene& scene() {
   return s;
 }
 
-SnellTwoInterfacePath trace(const Scene& s, const Exact& e, const SnellTechniqueOptions& o, float dN) {
+SnellTwoInterfacePath trace(const Scene& s, const Exact& e, const Options& o, float dN) {
   return snellTwoInterfaceTrace(glm::vec3(e.p1), glm::vec3(e.n1), snellIorToEta(1.0f, float(kIor)), dN, s.back.depth,
-                                s.backNormalMips, s.backPyramid, s.backSurface(), o);
+                                s.backNormalMips, s.backPyramid, s.backSurface(), o.t.back,
+                                o.m.tirPolicy);
 }
 
 struct Stats {
@@ -62,7 +72,7 @@ struct Stats {
 
 // Angle (degrees) between the technique's exit direction and the exact T2 over
 // every sphere pixel (exact paths never TIR inside a sphere).
-Stats directionErrors(const SnellTechniqueOptions& o, bool exactDn = true) {
+Stats directionErrors(const Options& o, bool exactDn = true) {
   const Scene& s = scene();
   Stats st;
   for (int j = 0; j < s.height; ++j)
@@ -93,10 +103,10 @@ void report(const char* name, const Stats& st) {
 TEST(TechniqueTwoInterface, ExitDirectionPerPreset) {
   struct P {
     const char* name;
-    SnellTechniqueOptions o;
+    Options o;
   };
-  SnellTechniqueOptions dir16 = snellPresetDir();
-  dir16.back.cbsSteps = 16;
+  Options dir16 = snellPresetDir();
+  dir16.t.back.intersect.cbsSteps = 16;
   const SnellDepthRange box = snellDepthRangeFromBox(
       mat4(1.0f), glm::vec3(technique_test::kCentre) - glm::vec3(float(technique_test::kRadius)),
       glm::vec3(technique_test::kCentre) + glm::vec3(float(technique_test::kRadius)));
@@ -175,7 +185,7 @@ bool firstPlaneBehindP1(const Exact& e) {
   return glm::dot(e.t1, nBack) <= 0.0;
 }
 
-PaintingStats paintingErrors(const SnellTechniqueOptions& o) {
+PaintingStats paintingErrors(const Options& o) {
   const Scene& s = scene();
   PaintingStats st;
   for (int j = 0; j < s.height; ++j)
@@ -189,7 +199,7 @@ PaintingStats paintingErrors(const SnellTechniqueOptions& o) {
       const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
           glm::vec3(e.p1), glm::vec3(e.n1), float(2.0 * technique_test::kRadius), s.back.depth, s.backNormalMips,
           s.backPyramid, s.backSurface(), s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor,
-          s.sceneSurface(), s.env, o);
+          s.sceneSurface(), s.env, o.t, o.m, o.v);
       st.totalFetches += r.fetches;
       const glm::dvec2 px(s.width, s.height);
       const bool behind = firstPlaneBehindP1(e);
@@ -221,7 +231,7 @@ double shareBelow(const std::vector<double>& v, double x) {
 TEST(TechniqueTwoInterface, PaintingBehindTheSphere) {
   struct P {
     const char* name;
-    SnellTechniqueOptions o;
+    Options o;
   };
   std::vector<P> presets = {{"Plane normal N=0", snellPresetPlaneNormal(0)},
                             {"Plane normal N=2", snellPresetPlaneNormal(2)},
@@ -238,12 +248,12 @@ TEST(TechniqueTwoInterface, PaintingBehindTheSphere) {
                             {"Plane normal N=1", snellPresetPlaneNormal(1)},
                             {"N=1 no far start", snellPresetPlaneNormal(1)},
                             {"N=2 no far start", snellPresetPlaneNormal(2)}};
-  presets[8].o.back.cbsSteps = 12;
-  presets[8].o.exit.cbsSteps = 12;
-  for (int i : {13, 14}) presets[size_t(i)].o.back.planeFarStart = presets[size_t(i)].o.exit.planeFarStart = false;
+  presets[8].o.t.back.intersect.cbsSteps = 12;
+  presets[8].o.t.exit.intersect.cbsSteps = 12;
+  for (int i : {13, 14}) presets[size_t(i)].o.t.back.intersect.planeFarStart = presets[size_t(i)].o.t.exit.intersect.planeFarStart = false;
   std::vector<PaintingStats> all;
   for (P& p : presets) {
-    p.o.exitMode = SNELL_EXIT_SCENE;
+    p.o.t.exit.source = SNELL_SOURCE_BUFFERS;
     all.push_back(paintingErrors(p.o));
     const PaintingStats& st = all.back();
     const int hits = st.pixels - st.backMiss;
@@ -295,10 +305,10 @@ TEST(TechniqueTwoInterface, PaintingBehindTheSphere) {
 
 TEST(TechniqueTwoInterface, BeerLambertUsesTheFoundChord) {
   const Scene& s = scene();
-  SnellTechniqueOptions o = snellPresetDir();
-  o.back.cbsSteps = 16;
-  o.reflection = false;
-  o.absorption = glm::vec3(0.1f, 0.3f, 0.6f);
+  Options o = snellPresetDir();
+  o.t.back.intersect.cbsSteps = 16;
+  o.m.reflection = false;
+  o.m.absorption = glm::vec3(0.1f, 0.3f, 0.6f);
   double maxRel = 0.0, maxColor = 0.0;
   int n = 0;
   for (int j = 0; j < s.height; j += 3)
@@ -308,7 +318,7 @@ TEST(TechniqueTwoInterface, BeerLambertUsesTheFoundChord) {
       if (!e.hitsSphere || e.tir) continue;
       const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
           glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(),
-          s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o);
+          s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o.t, o.m, o.v);
       if (r.fellBack) continue;
       ++n;
       const double chord = glm::length(e.p2 - e.p1);
@@ -316,7 +326,7 @@ TEST(TechniqueTwoInterface, BeerLambertUsesTheFoundChord) {
       // The colour is the environment along T2 attenuated over pathLength.
       const glm::vec3 w = r.exitDirection;
       const glm::vec4 env = snellSampleEquirect(s.env, w, 0.0f);
-      const glm::vec3 expect = glm::vec3(env) * glm::exp(-o.absorption * r.pathLength);
+      const glm::vec3 expect = glm::vec3(env) * glm::exp(-o.m.absorption * r.pathLength);
       maxColor = std::max(maxColor, double(glm::length(r.color - expect)));
     }
   std::printf("[beer] %d px: max relative chord error %.4f, max colour error %.2g\n", n, maxRel, maxColor);
@@ -331,10 +341,10 @@ TEST(TechniqueTwoInterface, FallbackWhenTheExitLeavesTheScreen) {
   Texture2D emptyDepth(Image(s.width, s.height, glm::vec4(1.0f, 0.0f, 0.0f, 0.0f)));
   const Texture2D emptyPyramid = snellBuildDepthPyramid(emptyDepth, s.sceneSurface());
   for (int fallback : {SNELL_FALLBACK_ENVIRONMENT, SNELL_FALLBACK_EDGE_FADE}) {
-    SnellTechniqueOptions o = snellPresetPlaneNormal(2);
-    o.exitMode = SNELL_EXIT_SCENE;
-    o.fallback = fallback;
-    o.reflection = false;
+    Options o = snellPresetPlaneNormal(2);
+    o.t.exit.source = SNELL_SOURCE_BUFFERS;
+    o.t.exit.fallback = fallback;
+    o.m.reflection = false;
     int n = 0, bad = 0;
     for (int j = 0; j < s.height; j += 4)
       for (int i = 0; i < s.width; i += 4) {
@@ -343,7 +353,7 @@ TEST(TechniqueTwoInterface, FallbackWhenTheExitLeavesTheScreen) {
         if (!e.hitsSphere) continue;
         const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
             glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(),
-            emptyDepth, s.sceneNormalMips, emptyPyramid, s.sceneColor, s.sceneSurface(), s.env, o);
+            emptyDepth, s.sceneNormalMips, emptyPyramid, s.sceneColor, s.sceneSurface(), s.env, o.t, o.m, o.v);
         ++n;
         EXPECT_TRUE(r.fellBack);
         EXPECT_FALSE(r.exitHit.valid);
@@ -358,12 +368,12 @@ TEST(TechniqueTwoInterface, FallbackWhenTheExitLeavesTheScreen) {
     EXPECT_EQ(bad, 0) << "fallback " << fallback << " produced black or non-finite colours";
   }
   // Exit rays leaving the screen sideways: from the sphere's edge region outwards.
-  SnellTechniqueOptions o = snellPresetDir();
-  o.exitMode = SNELL_EXIT_SCENE;
-  o.fallback = SNELL_FALLBACK_EDGE_FADE;
+  Options o = snellPresetDir();
+  o.t.exit.source = SNELL_SOURCE_BUFFERS;
+  o.t.exit.fallback = SNELL_FALLBACK_EDGE_FADE;
   const SnellTwoInterfaceExit ex =
       snellTwoInterfaceExit(glm::vec3(2.0f, 0.0f, -5.0f), glm::vec3(1.0f, 0.0f, -0.05f), s.plane.depth,
-                            s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o);
+                            s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o.t.exit, o.m, o.v);
   EXPECT_TRUE(ex.fellBack);
   EXPECT_FALSE(ex.hit.valid);
   const glm::vec4 env = snellSampleEquirect(s.env, glm::normalize(glm::vec3(1.0f, 0.0f, -0.05f)), 0.0f);
@@ -379,8 +389,8 @@ TEST(TechniqueTwoInterface, FallbackWhenTheExitLeavesTheScreen) {
 // still finite) is a hit.
 TEST(TechniqueTwoInterface, BackHitBeyondFloatLengthFallsBack) {
   const Scene& s = scene();
-  SnellTechniqueOptions isr = snellPresetIsr();
-  isr.tirPolicy = SNELL_TIR_REFLECT;
+  Options isr = snellPresetIsr();
+  isr.m.tirPolicy = SNELL_TIR_REFLECT;
   {
     const glm::vec3 p1(-0.88325721f, 0.6121943f, -4.33259392f), n1(0.0f, 0.369179219f, 0.757911861f);
     const float ior = 1.28285468f;
@@ -389,7 +399,7 @@ TEST(TechniqueTwoInterface, BackHitBeyondFloatLengthFallsBack) {
     const glm::dvec3 t1 = glm::refract(v, glm::dot(v, n) > 0.0 ? -n : n, double(eta));
     auto run = [&](float dN) {
       return snellTwoInterfaceTrace(p1, n1, eta, dN, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(),
-                                    isr);
+                                    isr.t.back, isr.m.tirPolicy);
     };
     const SnellTwoInterfacePath far = run(1e30f);
     EXPECT_TRUE(far.valid);
@@ -405,15 +415,15 @@ TEST(TechniqueTwoInterface, BackHitBeyondFloatLengthFallsBack) {
   }
   {
     const glm::vec3 p1(1.19292653f, 0.687132239f, -4.1956501f), n1(0.405875713f, 0.403241932f, 0.820159018f);
-    SnellTechniqueOptions o = isr;
-    o.ior = 1.70045829f;
-    o.iors = glm::vec3(o.ior * 0.98f, o.ior, o.ior * 1.02f);
-    o.dispersion = 3;
-    o.tirPolicy = SNELL_TIR_ZERO;
-    o.fallback = SNELL_FALLBACK_EDGE_FADE;
+    Options o = isr;
+    o.m.ior = 1.70045829f;
+    o.m.iors = glm::vec3(o.m.ior * 0.98f, o.m.ior, o.m.ior * 1.02f);
+    o.m.dispersion = 3;
+    o.m.tirPolicy = SNELL_TIR_ZERO;
+    o.t.exit.fallback = SNELL_FALLBACK_EDGE_FADE;
     const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
         p1, n1, 1e30f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(), s.plane.depth,
-        s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o);
+        s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o.t, o.m, o.v);
     EXPECT_FALSE(r.backHit);
     EXPECT_TRUE(r.fellBack);
     EXPECT_EQ(r.pathLength, 0.0f);
@@ -504,42 +514,42 @@ TEST(TechniqueTwoInterface, DispatcherMatchesTheStrategies) {
 
 TEST(TechniqueTwoInterface, DispersionTracesThreeChannels) {
   const Scene& s = scene();
-  SnellTechniqueOptions o = snellPresetDir();
-  o.reflection = false;
+  Options o = snellPresetDir();
+  o.m.reflection = false;
   const Exact e = technique_test::exactTrace(s.front, glm::dvec2(0.62, 0.55), kIor);
   ASSERT_TRUE(e.hitsSphere);
-  auto run = [&](const SnellTechniqueOptions& opt) {
+  auto run = [&](const Options& opt) {
     return snellTwoInterfaceRefraction(glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, s.back.depth, s.backNormalMips,
                                        s.backPyramid, s.backSurface(), s.plane.depth, s.sceneNormalMips,
-                                       s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, opt);
+                                       s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, opt.t, opt.m, opt.v);
   };
   const SnellTwoInterfaceResult one = run(o);
-  SnellTechniqueOptions o3 = o;
-  o3.dispersion = 3;
-  o3.iors = glm::vec3(1.5f, 1.5f, 1.5f);
+  Options o3 = o;
+  o3.m.dispersion = 3;
+  o3.m.iors = glm::vec3(1.5f, 1.5f, 1.5f);
   const SnellTwoInterfaceResult same = run(o3);
   EXPECT_EQ(one.color, same.color);  // equal IORs: the same image, three times the work
   EXPECT_EQ(same.fetches, 3 * one.fetches);
-  o3.iors = snellDispersionIors(1.5168f, 20.0f);
+  o3.m.iors = snellDispersionIors(1.5168f, 20.0f);
   const SnellTwoInterfaceResult disp = run(o3);
-  SnellTechniqueOptions oR = o, oB = o;
-  oR.ior = o3.iors.x;
-  oB.ior = o3.iors.z;
+  Options oR = o, oB = o;
+  oR.m.ior = o3.m.iors.x;
+  oB.m.ior = o3.m.iors.z;
   EXPECT_EQ(disp.color.x, run(oR).color.x);
   EXPECT_EQ(disp.color.z, run(oB).color.z);
 }
 
 TEST(TechniqueTwoInterface, RoughnessSelectsBlurredLevels) {
   const Scene& s = scene();
-  SnellTechniqueOptions o = snellPresetDir();
-  o.reflection = false;
-  o.exitMode = SNELL_EXIT_SCENE;
-  o.roughness = 1.0f;
-  o.sceneColorLevels = s.sceneColor.levelCount();
+  Options o = snellPresetDir();
+  o.m.reflection = false;
+  o.t.exit.source = SNELL_SOURCE_BUFFERS;
+  o.m.roughness = 1.0f;
+  o.v.sceneColorLevels = s.sceneColor.levelCount();
   const Exact e = technique_test::exactTrace(s.front, glm::dvec2(0.5, 0.5), kIor);
   const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
       glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(),
-      s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o);
+      s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o.t, o.m, o.v);
   ASSERT_TRUE(r.exitHit.valid);
   const glm::vec4 top = s.sceneColor.level(s.sceneColor.levelCount() - 1).at(0, 0);
   EXPECT_LT(glm::length(r.color - glm::vec3(top)), 1e-6f);
@@ -613,13 +623,13 @@ TEST(TechniqueRange, PyramidAndBox) {
 // it must be the march converged, not one more approximation: against the exact double-precision trace
 // through the analytic sphere onto the analytic painting plane, and against itself with half the steps.
 TEST(TechniqueBound, ConvergesToTheExactExitPoints) {
-  SnellTechniqueOptions o = snellPresetImageSpaceBound();
-  o.exitMode = SNELL_EXIT_SCENE;
-  o.back.marchMaxDistance = float(2.0 * technique_test::kRadius);  // the sphere's diameter: every chord fits
-  o.exit.marchMaxDistance = 20.0f;  // beyond the painting from anywhere on the sphere
-  SnellTechniqueOptions half = o;
-  half.back.marchSteps /= 2;
-  half.exit.marchSteps /= 2;
+  Options o = snellPresetImageSpaceBound();
+  o.t.exit.source = SNELL_SOURCE_BUFFERS;
+  o.t.back.intersect.marchMaxDistance = float(2.0 * technique_test::kRadius);  // the sphere's diameter: every chord fits
+  o.t.exit.intersect.marchMaxDistance = 20.0f;  // beyond the painting from anywhere on the sphere
+  Options half = o;
+  half.t.back.intersect.marchSteps /= 2;
+  half.t.exit.intersect.marchSteps /= 2;
   const PaintingStats full = paintingErrors(o);
   const PaintingStats coarse = paintingErrors(half);
   ASSERT_EQ(full.errors.size(), coarse.errors.size());
@@ -640,21 +650,21 @@ TEST(TechniqueBound, ConvergesToTheExactExitPoints) {
   EXPECT_GE(shareBelow(change, 0.05), 0.999);
 }
 
-// The reflection slot (SNELL_REFLECT_SCENE): at the sphere's rim the first surface reflects the painting
+// The reflect slot with SNELL_SOURCE_BUFFERS: at the sphere's rim the first surface reflects the painting
 // behind it (grazing rays keep going away from the camera). The slot must find the reflected ray's hit on
 // the painting where the exact double-precision reflection meets the analytic plane, and the colour it
 // adds is then the painting's there, not the environment's.
 TEST(TechniqueReflection, FindsTheMirroredPaintingAtTheAnalyticPosition) {
   const Scene& s = scene();
   for (const int strategy : {SNELL_STRATEGY_PLANE_NORMAL, SNELL_STRATEGY_LINEAR_MARCH}) {
-    SnellTechniqueOptions o = snellPresetSingleSample();
-    o.exitMode = SNELL_EXIT_SCENE;
-    o.reflectionMode = SNELL_REFLECT_SCENE;
-    o.reflect = snellIntersectOptions(strategy);
+    Options o = snellPresetSingleSample();
+    o.t.exit.source = SNELL_SOURCE_BUFFERS;
+    o.t.reflect.source = SNELL_SOURCE_BUFFERS;
+    o.t.reflect.intersect = snellIntersectOptions(strategy);
     if (strategy == SNELL_STRATEGY_LINEAR_MARCH) {
-      o.reflect.marchSteps = 256;
-      o.reflect.marchBisections = 16;
-      o.reflect.marchMaxDistance = 20.0f;
+      o.t.reflect.intersect.marchSteps = 256;
+      o.t.reflect.intersect.marchBisections = 16;
+      o.t.reflect.intersect.marchMaxDistance = 20.0f;
     }
     std::vector<double> errors;
     int environment = 0, misses = 0;
@@ -668,7 +678,7 @@ TEST(TechniqueReflection, FindsTheMirroredPaintingAtTheAnalyticPosition) {
         const double t = den != 0.0 ? glm::dot(technique_test::kPlanePoint - e.p1, technique_test::kPlaneNormal) / den : -1.0;
         const SnellTwoInterfaceResult res = snellTwoInterfaceRefraction(
             glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(),
-            s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o);
+            s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o.t, o.m, o.v);
         const glm::dvec2 q = t > 0.0 ? s.plane.project(e.p1 + t * r) : glm::dvec2(-1.0);
         const bool onScreen = q.x > 0.0 && q.x < 1.0 && q.y > 0.0 && q.y < 1.0;
         if (!onScreen) {
@@ -693,11 +703,11 @@ TEST(TechniqueReflection, FindsTheMirroredPaintingAtTheAnalyticPosition) {
     EXPECT_GE(within, 0.99) << strategy;
   }
   // Environment mode never reads the scene for the reflection.
-  SnellTechniqueOptions env = snellPresetSingleSample();
+  Options env = snellPresetSingleSample();
   const Exact e = technique_test::exactTrace(s.front, glm::dvec2(0.5, 0.5), kIor);
   const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
       glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(),
-      s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, env);
+      s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, env.t, env.m, env.v);
   EXPECT_FALSE(r.reflectionHit.valid);
   EXPECT_EQ(r.reflectionHit.fetches, 0);
 }

@@ -78,7 +78,7 @@ static_assert(offsetof(LabParams, clipFromView) == 0 && offsetof(LabParams, abso
                   offsetof(LabParams, zFar) == 92 && offsetof(LabParams, envY) == 96 && offsetof(LabParams, ior) == 108 &&
                   offsetof(LabParams, envZ) == 112 && offsetof(LabParams, backRange) == 124 &&
                   offsetof(LabParams, exitRange) == 128 && offsetof(LabParams, depthFilter) == 132 &&
-                  offsetof(LabParams, reflectionMode) == 136 && sizeof(LabParams) == 140,
+                  offsetof(LabParams, reflectSource) == 136 && sizeof(LabParams) == 140,
               "LabParams must keep the std140 layout of the uniform block LabUniforms");
 
 gpu::FlatSource flatten(const fs::path& file, const ShaderDirs& dirs, const std::vector<std::string>& defines = {}) {
@@ -186,7 +186,7 @@ struct GpuLab::Impl {
       std::vector<std::string> defines = {
           "LAB_TECHNIQUE " + std::to_string(id), std::string("LAB_REFERENCE ") + (reference ? "true" : "false"),
           "SNELL_INTERSECT_STRATEGIES " +
-              std::to_string(snellStrategiesUsed(labTechniqueOptions(id, reference, k.params)))};
+              std::to_string(snellStrategiesUsed(labTechnique(id, reference, k.params), labMaterial(k.params)))};
       if (perspective) defines.push_back("SNELL_PERSPECTIVE_ONLY 1");
       gpu::Program prog = gpu::Program::graphics(gl, flatten(dirs.labGlsl / "lab_mesh.vert", dirs),
                                                  flatten(dirs.labGlsl / "lab_refract.frag", dirs, defines));

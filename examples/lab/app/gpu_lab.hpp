@@ -52,8 +52,8 @@ enum class NormalFilter { Linear, Nearest };
 // gets these bytes as the uniform block LabUniforms), and what only the host
 // passes need.
 struct ShadeConstants {
-  // params.clipFromView is the buffers' projection (the guard band, below); depthFilter and reflectionMode
-  // keep their defaults (SNELL_DEPTH_FILTER_NEAREST, SNELL_REFLECT_SCENE) until the caller sets them.
+  // params.clipFromView is the buffers' projection (the guard band, below); depthFilter and reflectSource
+  // keep their defaults (SNELL_DEPTH_FILTER_NEAREST, SNELL_SOURCE_BUFFERS) until the caller sets them.
   LabParams params = defaultLabParams();
   mat4 viewFromWorld{1.0f};
   mat4 clipFromView{1.0f};        // the viewport's projection (the front-face pass, the pictures)
@@ -76,7 +76,7 @@ struct ShadeConstants {
     p.backRange = 10.0f;  // object bounding-box diagonal
     p.exitRange = 10.0f;  // diagonal of the box around object and opaque scene
     p.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
-    p.reflectionMode = SNELL_REFLECT_SCENE;
+    p.reflectSource = SNELL_SOURCE_BUFFERS;
     return p;
   }
 };

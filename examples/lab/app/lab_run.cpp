@@ -137,8 +137,8 @@ std::string markdownTable(const LabResult& r) {
        "that models two interfaces can get closer to the ray tracer than that.\n";
   if (bound) {
     s += "- information: the image-space bound (the same buffers, intersected as exhaustively as a march can: " +
-         std::to_string(snellPresetImageSpaceBound().back.marchSteps) + " march steps + " +
-         std::to_string(snellPresetImageSpaceBound().back.marchBisections) + " bisections per slot over the object's "
+         std::to_string(snellPresetImageSpaceBound().back.intersect.marchSteps) + " march steps + " +
+         std::to_string(snellPresetImageSpaceBound().back.intersect.marchBisections) + " bisections per slot over the object's "
          "and the scene's extent) is " + fmt("%.3g", bound->mseTwo) +
          " from the two-interface reference: " + fmt("%.3g", r.boundInformationMse) + " on the " +
          fmt("%.1f %%", 100.0 * r.boundInformationShare) + " of object pixels whose exact path the buffers do not hold "
@@ -634,7 +634,7 @@ LabResult runLab(const LabOptions& options) {
   ShadeConstants k = shadeConstants(frame, margin);
   k.normalFilter = options.normalFilter;
   k.params.depthFilter = options.depthFilter;
-  k.params.reflectionMode = options.reflectionMode;
+  k.params.reflectSource = options.reflectSource;
   GpuLab gpu(options.backend, frame, wymanDnIfNeeded(frame, techniques), ids, options.dirs, k);
   result.gpu = gpu.description();
   result.staticPassMs = gpu.renderStatic();

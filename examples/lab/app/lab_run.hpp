@@ -24,7 +24,7 @@ struct LabOptions {
   int threads = 0;                      // tracer and CPU shading threads (0: all cores)
   NormalFilter normalFilter = NormalFilter::Linear;  // how both sides read the normal buffers
   int depthFilter = SNELL_DEPTH_FILTER_NEAREST;      // how every technique reads the depth buffers
-  int reflectionMode = SNELL_REFLECT_SCENE;          // what the first surface reflects
+  int reflectSource = SNELL_SOURCE_BUFFERS;          // what the first surface reflects (the reflect slot's source)
   double guardBand = 0.1;  // scene and back-face buffers wider than the viewport by this share of its size per side
   ShaderDirs dirs;
 };

@@ -162,7 +162,7 @@ int main(int argc, char** argv) {
   }
   o.normalFilter = normalFilter == "nearest" ? NormalFilter::Nearest : NormalFilter::Linear;
   o.depthFilter = depthFilter == "bilinear" ? SNELL_DEPTH_FILTER_BILINEAR : SNELL_DEPTH_FILTER_NEAREST;
-  o.reflectionMode = reflection == "environment" ? SNELL_REFLECT_ENVIRONMENT : SNELL_REFLECT_SCENE;
+  o.reflectSource = reflection == "environment" ? SNELL_SOURCE_ENVIRONMENT : SNELL_SOURCE_BUFFERS;
   o.dirs = shaderDirs();
   try {
     const LabResult r = runLab(o);

@@ -1,44 +1,55 @@
 /*
-description: the knobs of a two-interface refraction technique: how the back
-  face is found (any intersection strategy in the back slot, or Wyman's
-  distance interpolation), which strategy fills the exit and reflection slots
-  (intersect/intersect_with.glsl: SnellIntersectOptions, one per slot), and
-  the optics and shading options. The constructor fills every field with the
-  documented default; presets (technique_presets.glsl) start from it.
-use: SnellTechniqueOptions o = snellTechniqueOptions();
-     o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
-     o.back.cbsSteps = 8;
-     o.exitMode = SNELL_EXIT_SCENE;
-     o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
+description: what a two-interface refraction technique is made of, split by
+  what each part describes and how long it lives:
+  - SnellSlot: one place a ray is resolved (where it reads from, the
+    intersection strategy and its parameters, what it shows when the buffers
+    give nothing). A technique has three: back (where T1 leaves the object),
+    exit (what T2 sees), reflect (what the first surface's reflected ray R
+    sees). The exit and the reflection are the same call with their own slot.
+  - SnellTechnique: the technique's choices, the set of slots (the presets,
+    technique_presets.glsl, return one).
+  - SnellMaterial: the object's optics (IORs, dispersion, absorption, TIR
+    policy, reflection on/off, roughness).
+  - SnellView: the frame's constants (the environment's basis, the mip
+    counts of the colour lookups).
+  Each constructor fills every field with the documented default.
+use: SnellTechnique t = snellTechnique();   // or a preset: snellPresetDir()
+     t.back = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_CBS);
+     t.back.intersect.cbsSteps = 8;
+     t.exit = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_PLANE_NORMAL);
+     SnellMaterial m = snellMaterial();
+     m.ior = 1.33f;
+     SnellView v = snellView();
 options:
-  back methods (how P2 is found, snellTwoInterfaceTrace): SNELL_BACK_INTERSECT
-  0 (the back slot's strategy against the back-face depth buffer),
-  SNELL_BACK_WYMAN 1 (Wyman 2005 distance interpolation between d_V and the
-  per-vertex d_N; the back slot is not read)
-  exit modes: SNELL_EXIT_ENVIRONMENT 0 (distant environment along T2),
-  SNELL_EXIT_SCENE 1 (the opaque scene's depth/colour buffers, exit slot)
-  reflection modes (the first surface's reflected ray R, when reflection is
-  on): SNELL_REFLECT_ENVIRONMENT 0 (the environment along R),
-  SNELL_REFLECT_SCENE 1 (R from P1 against the opaque scene's buffers with the
-  `reflect` slot's strategy, the environment where it finds nothing:
-  screen-space reflection, what a ray tracer's F bg(R) computes)
-  fallbacks when the exit-slot hit is invalid: SNELL_FALLBACK_ENVIRONMENT 0
-  (environment along T2), SNELL_FALLBACK_EDGE_FADE 1 (scene colour at the
-  clamped projection of P2 + fallbackDistance T2, faded to the environment
-  over edgeFadeWidth of uv near and beyond the screen edge)
-contract (defaults): backMethod = INTERSECT, back = CBS, exit =
-  PLANE_NORMAL (each slot with snellIntersectOptions' defaults), exitMode =
-  ENVIRONMENT, fallback = ENVIRONMENT, fallbackDistance = 1, edgeFadeWidth =
-  0.1, tirPolicy = SNELL_TIR_CRITICAL (Wyman 2005, O&B 2007 sec. 5), ior = 1.5,
-  iorOutside = 1, dispersion = 1 (one trace; 3 = one per channel with iors,
-  e.g. snellDispersionIors(1.5168f, 64.17f) from shade/dispersion.glsl), iors =
-  (1.5, 1.5, 1.5), absorption = 0 (Beer-Lambert sigma per channel, per view
-  unit), reflection = true (Fresnel-weighted reflection at the first
-  interface), reflectionMode = ENVIRONMENT, reflect = LINEAR_MARCH (its
-  defaults; read only in SCENE mode), roughness = 0, sceneColorLevels =
-  environmentLevels = 1 (mip levels for snellRoughnessToLod), envX/envY/envZ
-  = the columns of the world-from-view rotation used for environment lookups
-  (identity).
+  sources (SnellSlot.source): SNELL_SOURCE_ENVIRONMENT 0 (the distant
+  environment along the ray; the intersector is not run), SNELL_SOURCE_BUFFERS
+  1 (the slot's intersector against the buffers of its layer: the back-face
+  buffers for the back slot, the opaque scene's for exit and reflect),
+  SNELL_SOURCE_WYMAN 2 (back slot only: Wyman 2005 distance interpolation
+  between d_V and the per-vertex d_N; the intersector is not run; in the exit
+  or reflect slot it reads as SNELL_SOURCE_BUFFERS)
+  fallbacks when a BUFFERS slot finds nothing (exit and reflect slots):
+  SNELL_FALLBACK_ENVIRONMENT 0 (the environment along the ray),
+  SNELL_FALLBACK_EDGE_FADE 1 (scene colour at the clamped projection of origin
+  + fallbackDistance dir, faded to the environment over edgeFadeWidth of uv
+  near and beyond the screen edge)
+contract (defaults):
+  snellSlot(source, strategy): intersect = snellIntersectOptions(strategy),
+    fallback = ENVIRONMENT, fallbackDistance = 1, edgeFadeWidth = 0.1.
+  snellTechnique(): back = snellSlot(BUFFERS, CBS), exit =
+    snellSlot(ENVIRONMENT, PLANE_NORMAL), reflect = snellSlot(ENVIRONMENT,
+    LINEAR_MARCH) (the strategies are read only when the source becomes
+    BUFFERS).
+  snellMaterial(): ior = 1.5, iorOutside = 1, dispersion = 1 (one trace; 3 =
+    one per channel with iors, e.g. snellDispersionIors(1.5168f, 64.17f) from
+    shade/dispersion.glsl), iors = (1.5, 1.5, 1.5), absorption = 0
+    (Beer-Lambert sigma per channel, per view unit), tirPolicy =
+    SNELL_TIR_CRITICAL (both interfaces; Wyman 2005, O&B 2007 sec. 5),
+    reflection = true (Fresnel-weighted reflection at the first interface),
+    roughness = 0.
+  snellView(): envX/envY/envZ = the columns of the world-from-view rotation
+    used for environment lookups (identity), sceneColorLevels =
+    environmentLevels = 1 (mip levels for snellRoughnessToLod).
 source: the composition of DESIGN.md sec. 2 (a technique = optics, an
   intersector against the back faces, optics, an intersector against the scene
   or an environment lookup); Oliveira & Brauwers 2007 sec. 3; Wyman 2005;
@@ -50,68 +61,85 @@ source: the composition of DESIGN.md sec. 2 (a technique = optics, an
 #include "../optics/refract.glsl"
 #include "../intersect/intersect_with.glsl"
 
-#define SNELL_BACK_INTERSECT 0
-#define SNELL_BACK_WYMAN 1
-
-#define SNELL_EXIT_ENVIRONMENT 0
-#define SNELL_EXIT_SCENE 1
+#define SNELL_SOURCE_ENVIRONMENT 0
+#define SNELL_SOURCE_BUFFERS 1
+#define SNELL_SOURCE_WYMAN 2
 
 #define SNELL_FALLBACK_ENVIRONMENT 0
 #define SNELL_FALLBACK_EDGE_FADE 1
 
-#define SNELL_REFLECT_ENVIRONMENT 0
-#define SNELL_REFLECT_SCENE 1
-
-struct SnellTechniqueOptions {
-  int backMethod;
-  SnellIntersectOptions back;
-  SnellIntersectOptions exit;
-  int exitMode;
+struct SnellSlot {
+  int source;
+  SnellIntersectOptions intersect;
   int fallback;
   float fallbackDistance;
   float edgeFadeWidth;
-  int tirPolicy;
+};
+
+struct SnellTechnique {
+  SnellSlot back;
+  SnellSlot exit;
+  SnellSlot reflect;
+};
+
+struct SnellMaterial {
   float ior;
   float iorOutside;
   int dispersion;
   vec3 iors;
   vec3 absorption;
+  int tirPolicy;
   bool reflection;
-  int reflectionMode;
-  SnellIntersectOptions reflect;
   float roughness;
-  int sceneColorLevels;
-  int environmentLevels;
+};
+
+struct SnellView {
   vec3 envX;
   vec3 envY;
   vec3 envZ;
+  int sceneColorLevels;
+  int environmentLevels;
 };
 
-SNELL_FN SnellTechniqueOptions snellTechniqueOptions() {
-  SnellTechniqueOptions o;
-  o.backMethod = SNELL_BACK_INTERSECT;
-  o.back = snellIntersectOptions(SNELL_STRATEGY_CBS);
-  o.exit = snellIntersectOptions(SNELL_STRATEGY_PLANE_NORMAL);
-  o.exitMode = SNELL_EXIT_ENVIRONMENT;
-  o.fallback = SNELL_FALLBACK_ENVIRONMENT;
-  o.fallbackDistance = 1.0f;
-  o.edgeFadeWidth = 0.1f;
-  o.tirPolicy = SNELL_TIR_CRITICAL;
-  o.ior = 1.5f;
-  o.iorOutside = 1.0f;
-  o.dispersion = 1;
-  o.iors = vec3(1.5f, 1.5f, 1.5f);
-  o.absorption = vec3(0.0f, 0.0f, 0.0f);
-  o.reflection = true;
-  o.reflectionMode = SNELL_REFLECT_ENVIRONMENT;
-  o.reflect = snellIntersectOptions(SNELL_STRATEGY_LINEAR_MARCH);
-  o.roughness = 0.0f;
-  o.sceneColorLevels = 1;
-  o.environmentLevels = 1;
-  o.envX = vec3(1.0f, 0.0f, 0.0f);
-  o.envY = vec3(0.0f, 1.0f, 0.0f);
-  o.envZ = vec3(0.0f, 0.0f, 1.0f);
-  return o;
+SNELL_FN SnellSlot snellSlot(int source, int strategy) {
+  SnellSlot s;
+  s.source = source;
+  s.intersect = snellIntersectOptions(strategy);
+  s.fallback = SNELL_FALLBACK_ENVIRONMENT;
+  s.fallbackDistance = 1.0f;
+  s.edgeFadeWidth = 0.1f;
+  return s;
+}
+
+SNELL_FN SnellTechnique snellTechnique() {
+  SnellTechnique t;
+  t.back = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_CBS);
+  t.exit = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_PLANE_NORMAL);
+  t.reflect = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_LINEAR_MARCH);
+  return t;
+}
+
+SNELL_FN SnellMaterial snellMaterial() {
+  SnellMaterial m;
+  m.ior = 1.5f;
+  m.iorOutside = 1.0f;
+  m.dispersion = 1;
+  m.iors = vec3(1.5f, 1.5f, 1.5f);
+  m.absorption = vec3(0.0f, 0.0f, 0.0f);
+  m.tirPolicy = SNELL_TIR_CRITICAL;
+  m.reflection = true;
+  m.roughness = 0.0f;
+  return m;
+}
+
+SNELL_FN SnellView snellView() {
+  SnellView v;
+  v.envX = vec3(1.0f, 0.0f, 0.0f);
+  v.envY = vec3(0.0f, 1.0f, 0.0f);
+  v.envZ = vec3(0.0f, 0.0f, 1.0f);
+  v.sceneColorLevels = 1;
+  v.environmentLevels = 1;
+  return v;
 }
 
 #endif

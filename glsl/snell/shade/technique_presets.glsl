@@ -2,9 +2,11 @@
 description: named presets for the published two-interface refraction methods
   and the baselines, all through the same technique (snellTwoInterfaceTrace /
   snellTwoInterfaceRefraction), so the lab compares them fairly. Each returns
-  snellTechniqueOptions() with both intersection slots set.
-use: SnellTechniqueOptions o = snellPresetDir();           // then adjust fields
-     SnellTechniqueOptions o = snellPresetPlaneNormal(2);
+  snellTechnique() with the back and exit slots' strategies set (the exit
+  slot's source stays the default, ENVIRONMENT: point it at the scene with
+  t.exit.source = SNELL_SOURCE_BUFFERS).
+use: SnellTechnique t = snellPresetDir();           // then adjust fields
+     SnellTechnique t = snellPresetPlaneNormal(2);
 presets (back slot / exit slot):
   snellPresetDir()                 Oliveira & Brauwers 2007 (DIR): CBS, 5 steps,
                                    range from the min/max pyramid's top level /
@@ -13,8 +15,8 @@ presets (back slot / exit slot):
                                    (their suggested speed-up: no reduction
                                    pass); the numbers from snellDepthRangeFromBox;
                                    back slot only, the exit slot keeps the pyramid
-  snellPresetIsr()                 Wyman 2005 (ISR): backMethod
-                                   SNELL_BACK_WYMAN, distance interpolation
+  snellPresetIsr()                 Wyman 2005 (ISR): back.source
+                                   SNELL_SOURCE_WYMAN, distance interpolation
                                    between d_V and the per-vertex d_N /
                                    single sample
   snellPresetPlaneNormal(n)        Mayer & Assarsson, normal-based plane, n
@@ -39,8 +41,8 @@ presets (back slot / exit slot):
                                    bisections) on bilinear depth reads
                                    (SNELL_DEPTH_FILTER_BILINEAR: exact on
                                    planes between texel centres) / the same;
-                                   set back.marchMaxDistance and
-                                   exit.marchMaxDistance to the depths the
+                                   set back.intersect.marchMaxDistance and
+                                   exit.intersect.marchMaxDistance to the depths the
                                    object and the scene span
 the technique table (the one list of named techniques: snell-lab's
   --technique names, the benchmarks and the tests all draw on it; names and
@@ -57,7 +59,7 @@ the technique table (the one list of named techniques: snell-lab's
   SNELL_TECHNIQUE_DDA             dda             snellPresetDdaMarch()
   SNELL_TECHNIQUE_IMAGE_SPACE_BOUND  image-space-bound  snellPresetImageSpaceBound()
   SNELL_TECHNIQUE_COUNT           the number of ids (ids are 0 .. COUNT - 1)
-  SnellTechniqueOptions o = snellTechniquePreset(SNELL_TECHNIQUE_PLANE_NORMAL_1);
+  SnellTechnique t = snellTechniquePreset(SNELL_TECHNIQUE_PLANE_NORMAL_1);
   Adding a technique: a preset function here, an id, a branch in
   snellTechniquePreset and a row in include/snell/technique_table.hpp (a
   compile-time check there keeps the two the same length).
@@ -76,73 +78,73 @@ source: Oliveira & Brauwers 2007 (sec. 3.3, 5 steps; sec. 6, bounding box);
 #include "../prelude.glsl"
 #include "technique_options.glsl"
 
-SNELL_FN SnellTechniqueOptions snellTechniquePresetSlots(int backStrategy, int exitStrategy) {
-  SnellTechniqueOptions o = snellTechniqueOptions();
-  o.back = snellIntersectOptions(backStrategy);
-  o.exit = snellIntersectOptions(exitStrategy);
-  return o;
+SNELL_FN SnellTechnique snellTechniquePresetSlots(int backStrategy, int exitStrategy) {
+  SnellTechnique t = snellTechnique();
+  t.back.intersect = snellIntersectOptions(backStrategy);
+  t.exit.intersect = snellIntersectOptions(exitStrategy);
+  return t;
 }
 
 /* Oliveira & Brauwers 2007, sec. 3.3: CBS with c = 5 (SNELL_CBS_STEPS' default) */
-SNELL_FN SnellTechniqueOptions snellPresetDir() {
+SNELL_FN SnellTechnique snellPresetDir() {
   return snellTechniquePresetSlots(SNELL_STRATEGY_CBS, SNELL_STRATEGY_CBS);
 }
 
 /* Oliveira & Brauwers 2007, sec. 6: bounding-box range instead of the reduction */
-SNELL_FN SnellTechniqueOptions snellPresetDirBounds(float zNearest, float zFarthest) {
-  SnellTechniqueOptions o = snellPresetDir();
-  o.back.rangeSource = SNELL_RANGE_EXPLICIT;
-  o.back.range.zNearest = zNearest;
-  o.back.range.zFarthest = zFarthest;
-  o.back.range.valid = true;
-  return o;
+SNELL_FN SnellTechnique snellPresetDirBounds(float zNearest, float zFarthest) {
+  SnellTechnique t = snellPresetDir();
+  t.back.intersect.rangeSource = SNELL_RANGE_EXPLICIT;
+  t.back.intersect.range.zNearest = zNearest;
+  t.back.intersect.range.zFarthest = zFarthest;
+  t.back.intersect.range.valid = true;
+  return t;
 }
 
 /* Wyman 2005 (O&B 2007 eqs. 1-2): the trace's Wyman variant; the exit slot samples once */
-SNELL_FN SnellTechniqueOptions snellPresetIsr() {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
-  o.backMethod = SNELL_BACK_WYMAN;
-  return o;
+SNELL_FN SnellTechnique snellPresetIsr() {
+  SnellTechnique t = snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
+  t.back.source = SNELL_SOURCE_WYMAN;
+  return t;
 }
 
 /* Mayer & Assarsson, method 1 + step 5 */
-SNELL_FN SnellTechniqueOptions snellPresetPlaneNormal(int iterations) {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_NORMAL, SNELL_STRATEGY_PLANE_NORMAL);
-  o.back.planeIterations = iterations;
-  o.exit.planeIterations = iterations;
-  return o;
+SNELL_FN SnellTechnique snellPresetPlaneNormal(int iterations) {
+  SnellTechnique t = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_NORMAL, SNELL_STRATEGY_PLANE_NORMAL);
+  t.back.intersect.planeIterations = iterations;
+  t.exit.intersect.planeIterations = iterations;
+  return t;
 }
 
 /* Mayer & Assarsson, method 2 + step 5 */
-SNELL_FN SnellTechniqueOptions snellPresetPlaneDepth(int iterations) {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_DEPTH, SNELL_STRATEGY_PLANE_DEPTH);
-  o.back.planeIterations = iterations;
-  o.exit.planeIterations = iterations;
-  return o;
+SNELL_FN SnellTechnique snellPresetPlaneDepth(int iterations) {
+  SnellTechnique t = snellTechniquePresetSlots(SNELL_STRATEGY_PLANE_DEPTH, SNELL_STRATEGY_PLANE_DEPTH);
+  t.back.intersect.planeIterations = iterations;
+  t.exit.intersect.planeIterations = iterations;
+  return t;
 }
 
-SNELL_FN SnellTechniqueOptions snellPresetSingleSample() {
+SNELL_FN SnellTechnique snellPresetSingleSample() {
   return snellTechniquePresetSlots(SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_SINGLE);
 }
 
-SNELL_FN SnellTechniqueOptions snellPresetLinearMarch() {
+SNELL_FN SnellTechnique snellPresetLinearMarch() {
   return snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
 }
 
-SNELL_FN SnellTechniqueOptions snellPresetDdaMarch() {
+SNELL_FN SnellTechnique snellPresetDdaMarch() {
   return snellTechniquePresetSlots(SNELL_STRATEGY_DDA, SNELL_STRATEGY_DDA);
 }
 
 /* The image-space bound: the linear march at its limits, both slots. */
-SNELL_FN SnellTechniqueOptions snellPresetImageSpaceBound() {
-  SnellTechniqueOptions o = snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
-  o.back.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
-  o.back.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
-  o.exit.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
-  o.exit.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
-  o.back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-  o.exit.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-  return o;
+SNELL_FN SnellTechnique snellPresetImageSpaceBound() {
+  SnellTechnique t = snellTechniquePresetSlots(SNELL_STRATEGY_LINEAR_MARCH, SNELL_STRATEGY_LINEAR_MARCH);
+  t.back.intersect.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  t.back.intersect.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  t.exit.intersect.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  t.exit.intersect.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  t.back.intersect.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  t.exit.intersect.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  return t;
 }
 
 #define SNELL_TECHNIQUE_SINGLE 0
@@ -158,7 +160,7 @@ SNELL_FN SnellTechniqueOptions snellPresetImageSpaceBound() {
 #define SNELL_TECHNIQUE_COUNT 10
 
 /* the technique table's constructor: id -> preset */
-SNELL_FN SnellTechniqueOptions snellTechniquePreset(int technique) {
+SNELL_FN SnellTechnique snellTechniquePreset(int technique) {
   if (technique == SNELL_TECHNIQUE_SINGLE) {
     return snellPresetSingleSample();
   }

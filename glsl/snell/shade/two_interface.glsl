@@ -7,23 +7,23 @@ description: the geometry of two-interface refraction: refract the view ray at
   exit ray (P2, T2) is then resolved by two_interface_shade.glsl against the
   opaque scene or the environment.
 use: SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN,
-         backDepth, backNormal, backPyramid, backSurface, o);
+         backDepth, backNormal, backPyramid, back, t.back, m.tirPolicy);
   frontPosition  P1: view-space position of the front-face fragment (camera at
                  the origin, so the view ray V is frontPosition itself)
   frontNormal    N1: its normal (either orientation, any length)
   eta            n_outside / n_object (snellIorToEta(1.0f, 1.5f) for glass in air)
   dN             Wyman's d_N: thickness along -N1, interpolated from the per-vertex
                  values the host precomputes (include/snell/wyman_dn.hpp); read
-                 only by Wyman's variant (o.backMethod SNELL_BACK_WYMAN)
-  backDepth, backNormal, backPyramid, backSurface
-                 the back-face pass: depth (GL_GREATER after clearing to the near
-                 value), view-space normals, the depth min/max pyramid of that
-                 depth (snellBuildDepthPyramid / examples/glsl/depth_pyramid.frag),
-                 and how to read the depth (emptyDepth = the clear value)
-  o              the technique's options: o.backMethod, o.back (the back
-                 slot's strategy and parameters) and o.tirPolicy
-                 (SNELL_TIR_ZERO / _CRITICAL / _REFLECT, both interfaces) are
-                 read
+                 only by Wyman's variant (slot.source SNELL_SOURCE_WYMAN)
+  backDepth, backNormal, backPyramid, back
+                 SNELL_OBJECT_BUFFERS (technique_buffers.glsl): the back-face
+                 pass: depth (GL_GREATER after clearing to the near value),
+                 view-space normals, the depth min/max pyramid of that depth
+                 (snellBuildDepthPyramid / glsl/passes/depth_pyramid.frag), and
+                 how to read the depth (emptyDepth = the clear value)
+  slot           the back slot (technique_options.glsl): its source and its
+                 intersector
+  tirPolicy      SNELL_TIR_ZERO / _CRITICAL / _REFLECT, both interfaces
 options: technique_options.glsl, and
   SNELL_TWO_INTERFACE_NORMAL_SAMPLE  how N2 is read from backNormal at the hit
                  uv: 1 (default) SNELL_SAMPLE_LOD at level 0 with the texture's
@@ -32,19 +32,21 @@ options: technique_options.glsl, and
                  containing the uv, as 0 does); 0 SNELL_TEXEL_FETCH of the texel
                  containing the uv (level 0)
 contract:
-  - T1 = snellRefract(frontPosition, frontNormal, eta, o.tirPolicy). If it is
+  - T1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy). If it is
     invalid or zero (NaN/zero inputs, eta not finite positive; TIR under ZERO
     when eta > 1), the path is invalid: valid = false, every vector 0, fetches 0.
-  - SNELL_BACK_WYMAN: one sample of the back depth at the projection of P1
+  - slot.source SNELL_SOURCE_WYMAN: one sample of the back depth at the projection of P1
     gives d_V = |P1| (zBack / P1.z - 1) (front-to-back distance along the view
     ray); d = snellWymanDistanceVec(P1, N1, T1, d_V, dN); P2 = P1 + d T1,
     accepted when snellHitOnSurface(P2) is valid (the back buffer has a
-    surface there; 2 fetches). SNELL_BACK_INTERSECT (and any other value):
-    snellIntersectWith(P1, T1, back..., o.back).
+    surface there; 2 fetches). SNELL_SOURCE_BUFFERS (and any value but the
+    two named here): snellIntersectWith(P1, T1, back..., slot.intersect).
+    SNELL_SOURCE_ENVIRONMENT: no back-face read (0 fetches), the fallback
+    below (the ray leaves at P1 along T1: a thin surface).
   - on a hit: N2 = xyz of the back normal read at the hit uv, level 0
     (SNELL_TWO_INTERFACE_NORMAL_SAMPLE: filtered sample or texel fetch; 1
     fetch), normalized and flipped to face T1 (dot(N2, T1) <= 0); T2 =
-    snellRefract(T1, N2, 1 / eta, o.tirPolicy). hit = true, exitPoint = P2,
+    snellRefract(T1, N2, 1 / eta, tirPolicy). hit = true, exitPoint = P2,
     exitUv = the hit uv, exitNormal = N2, pathLength = |P2 - P1|, tir = TIR at
     the second interface (T2 follows the policy: critical-angle tangent or
     mirror; the reflected ray is not traced further).
@@ -75,6 +77,7 @@ source: C. Wyman, "An Approximate Image-Space Approach for Interactive
 #include "../intersect/hit_on_surface.glsl"
 #include "../intersect/intersect_with.glsl"
 #include "technique_options.glsl"
+#include "technique_buffers.glsl"
 
 #ifndef SNELL_TWO_INTERFACE_NORMAL_SAMPLE
 #  define SNELL_TWO_INTERFACE_NORMAL_SAMPLE 1
@@ -96,9 +99,7 @@ struct SnellTwoInterfacePath {
 
 /* Wyman 2005 / Oliveira & Brauwers 2007 sec. 3: P1, T1 -> P2 (back-face buffer), N2 -> T2 */
 SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
-                                                      SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
-                                                      SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back,
-                                                      SnellTechniqueOptions o) {
+                                                      SNELL_OBJECT_BUFFERS, SNELL_IN(SnellSlot) slot, int tirPolicy) {
   SnellTwoInterfacePath p;
   p.entryDirection = vec3(0.0f, 0.0f, 0.0f);
   p.exitPoint = vec3(0.0f, 0.0f, 0.0f);
@@ -111,7 +112,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.tir = false;
   p.fellBack = true;
   p.valid = false;
-  SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, o.tirPolicy);
+  SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy);
   if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_FINITE(frontPosition.x) ||
       !SNELL_FINITE(frontPosition.y) || !SNELL_FINITE(frontPosition.z)) {
     return p;
@@ -122,7 +123,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitDirection = t1;
   p.valid = true;
   SnellHit h = snellHitMiss(0);
-  if (o.backMethod == SNELL_BACK_WYMAN) {
+  if (slot.source == SNELL_SOURCE_WYMAN) {
     SnellScreenPoint sp = snellViewToUv(back.clipFromView, frontPosition);
     if (sp.valid && frontPosition.z < 0.0f) {
       SnellSurfaceSample b = snellSampleSurface(backDepth, sp.uv, back);
@@ -133,8 +134,8 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
         h = snellHitOnSurface(frontPosition + d * t1, backDepth, back, 1);
       }
     }
-  } else {
-    h = snellIntersectWith(frontPosition, t1, backDepth, backNormal, backPyramid, back, o.back);
+  } else if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
+    h = snellIntersectWith(frontPosition, t1, backDepth, backNormal, backPyramid, back, slot.intersect);
   }
   p.fetches = h.fetches;
   // length() squares first: it overflows beyond ~1.8e19 (Wyman's estimate with a huge dN).
@@ -160,7 +161,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     n = -n;
   }
   p.exitNormal = n;
-  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, o.tirPolicy);
+  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, tirPolicy);
   p.tir = r2.tir;
   if (!r2.valid || dot(r2.direction, r2.direction) == 0.0f) {
     return p;

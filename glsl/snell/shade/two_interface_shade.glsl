@@ -1,69 +1,76 @@
 /*
 description: two-interface refraction, shaded: the full technique a fragment
   shader calls for a front-face fragment of a refractive object. Trace the
-  path through the object (two_interface.glsl), resolve the exit ray against
-  the opaque scene behind the object (its depth, normal, pyramid and colour
-  buffers, with any strategy: Mayer & Assarsson's painting behind a glass
-  sphere) or against a distant environment, with a documented fallback when
-  the scene hit is not found; absorb along the path inside (Beer-Lambert), add
-  the Fresnel-weighted environment reflection at the first interface;
-  optionally once per colour channel (chromatic dispersion) and with blurred
-  (roughness) lookups.
-use: SnellTechniqueOptions o = snellPresetDir();   // or any preset, then adjust
-     o.exitMode = SNELL_EXIT_SCENE;
+  path through the object (two_interface.glsl), resolve the exit ray with the
+  exit slot against the opaque scene behind the object (its depth, normal,
+  pyramid and colour buffers, with any strategy: Mayer & Assarsson's painting
+  behind a glass sphere) or against a distant environment, with a documented
+  fallback when the scene hit is not found; absorb along the path inside
+  (Beer-Lambert), add the Fresnel-weighted reflection at the first interface,
+  resolved by the same call with the reflect slot; optionally once per colour
+  channel (chromatic dispersion) and with blurred (roughness) lookups.
+use: SnellTechnique t = snellPresetDir();   // or any preset, then adjust
+     t.exit.source = SNELL_SOURCE_BUFFERS;
+     SnellMaterial m = snellMaterial();
+     SnellView v = snellView();
      SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(frontPosition, frontNormal, dN,
-         backDepth, backNormal, backPyramid, backSurface,
-         sceneDepth, sceneNormal, scenePyramid, sceneColor, sceneSurface, environment, o);
+         backDepth, backNormal, backPyramid, back,
+         sceneDepth, sceneNormal, scenePyramid, sceneColor, scene, environment, t, m, v);
      fragColor = vec4(r.color, 1.0f);
      SnellTwoInterfaceExit e = snellTwoInterfaceExit(origin, dir, sceneDepth, sceneNormal,
-         scenePyramid, sceneColor, sceneSurface, environment, o);   // the exit slot alone
+         scenePyramid, sceneColor, scene, environment, t.exit, m, v);   // one slot alone
   frontPosition, frontNormal, dN, back*: as snellTwoInterfaceTrace
-  sceneDepth, sceneNormal, scenePyramid, sceneSurface: the opaque scene without the
-                 object, read by o.exit (normals for PLANE_NORMAL, the pyramid
-                 for the search range and PLANE_DEPTH); any textures in
-                 environment mode (never read)
+                 (SNELL_OBJECT_BUFFERS, technique_buffers.glsl)
+  sceneDepth, sceneNormal, scenePyramid, scene: the opaque scene without the
+                 object, read by a BUFFERS slot (normals for PLANE_NORMAL, the
+                 pyramid for the search range and PLANE_DEPTH); any textures
+                 when no slot reads them (never read)
   sceneColor     the opaque scene's colour (mipmapped for roughness > 0)
   environment    SNELL_ENVIRONMENT_TEX: an equirectangular 2D texture by
                  default, a cube map through the hook (environment.glsl); looked
-                 up with world directions: envX, envY, envZ = the columns of
-                 the world-from-view rotation
-  o              SnellTechniqueOptions (technique_options.glsl)
-options: technique_options.glsl; environment.glsl hooks.
-contract (snellTwoInterfaceExit(origin, dir, ...)):
-  - lods: envLod = snellRoughnessToLod(o.roughness, o.environmentLevels),
-    sceneLod = snellRoughnessToLod(o.roughness, o.sceneColorLevels)
+                 up with world directions: v.envX, v.envY, v.envZ = the columns
+                 of the world-from-view rotation
+  t, m, v        SnellTechnique (its back, exit and reflect slots),
+                 SnellMaterial, SnellView (technique_options.glsl)
+options: technique_options.glsl; technique_buffers.glsl; environment.glsl hooks.
+contract (snellTwoInterfaceExit(origin, dir, ..., slot, m, v)):
+  - lods: envLod = snellRoughnessToLod(m.roughness, v.environmentLevels),
+    sceneLod = snellRoughnessToLod(m.roughness, v.sceneColorLevels)
     (shade/roughness.glsl); every colour read uses them.
   - dir zero or not finite, or origin not finite: color 0, fellBack, 0 fetches.
-  - ENVIRONMENT mode: color = SNELL_SAMPLE_ENVIRONMENT(env, world(dir), envLod).xyz,
-    1 fetch, hit = snellHitMiss(0), fellBack false.
-  - SCENE mode: hit = snellIntersectWith(origin, dir, scene..., o.exit); valid: color = SNELL_SAMPLE_LOD(sceneColor, hit.uv, sceneLod).xyz
-    (+1 fetch). Invalid (ray leaves the screen, points towards the camera where a
-    search cannot follow, lands on an empty texel): fellBack = true and
-    FALLBACK_ENVIRONMENT: the environment along dir; FALLBACK_EDGE_FADE: q =
-    origin + fallbackDistance dir/|dir|, w = snellScreenEdgeFade(projection of q,
-    edgeFadeWidth) (0 when q does not project), color = mix(environment,
+  - slot.source ENVIRONMENT: color = SNELL_SAMPLE_ENVIRONMENT(env,
+    world(dir / |dir|), envLod).xyz, 1 fetch, hit = snellHitMiss(0), fellBack
+    false.
+  - any other source (BUFFERS; WYMAN reads as BUFFERS here): hit =
+    snellIntersectWith(origin, dir, scene..., slot.intersect); valid: color =
+    SNELL_SAMPLE_LOD(sceneColor, hit.uv, sceneLod).xyz (+1 fetch). Invalid (ray
+    leaves the screen, points towards the camera where a search cannot
+    follow, lands on an empty texel): fellBack = true and slot.fallback
+    ENVIRONMENT: the environment along dir; EDGE_FADE: q = origin +
+    slot.fallbackDistance dir/|dir|, w = snellScreenEdgeFade(projection of q,
+    slot.edgeFadeWidth) (0 when q does not project), color = mix(environment,
     sceneColor at the projection clamped to [0,1]^2, w) (the scene read only
     when w > 0). Never black unless the environment is.
   - fetches: the strategy's plus one per colour or environment read.
 contract (snellTwoInterfaceRefraction):
-  - one trace with eta = snellIorToEta(o.iorOutside, o.ior) (o.dispersion != 3),
-    or three (o.dispersion == 3), with o.iors.x/.y/.z for red/green/blue, each
-    channel taken from its own trace; the reported geometry (exit point,
+  - one trace with eta = snellIorToEta(m.iorOutside, m.ior) (m.dispersion != 3),
+    or three (m.dispersion == 3), with m.iors.x/.y/.z for red/green/blue, each
+    channel taken from its own trace; the back slot t.back finds P2, the exit
+    slot t.exit resolves (P2, T2); the reported geometry (exit point,
     direction, hit, path length, tir, backHit) is the single / green trace's;
     fetches and fellBack (any) cover all traces.
-  - transmitted = exit color * snellBeerLambert(o.absorption, pathLength) per
+  - transmitted = exit color * snellBeerLambert(m.absorption, pathLength) per
     channel, pathLength = |P2 - P1| of that channel's trace (0 on fallback
     without a back hit; finite: a back hit whose |P2 - P1| overflows a float
     counts as none, two_interface.glsl).
-  - reflection (o.reflection): F = snellFresnelDielectric(cos(V, N1), eta of
-    the green/single trace); R = reflect(V, N1); color = F bg(R) + (1 - F)
-    transmitted; bg(R) = env(R), +1 fetch (SNELL_REFLECT_ENVIRONMENT), or
-    (SNELL_REFLECT_SCENE) snellTwoInterfaceExit(P1, R, scene..., o with exit =
-    o.reflect, SCENE mode, FALLBACK_ENVIRONMENT): the scene colour where the
-    reflect slot finds the scene, else env(R), its fetches added and its hit
-    in reflectionHit (snellHitMiss(0) otherwise); else F = 0, color =
-    transmitted. The second
-    interface's Fresnel loss and internally reflected light are not modelled.
+  - reflection (m.reflection): F = snellFresnelDielectric(cos(V, N1), eta of
+    the green/single trace); R = reflect(V, N1); bg(R) =
+    snellTwoInterfaceExit(P1, R, scene..., t.reflect, m, v) (the environment
+    along R, or the scene colour where the reflect slot's intersector finds
+    the scene, else its fallback); its fetches added, its hit in
+    reflectionHit; color = F bg(R) + (1 - F) transmitted. Else F = 0, color =
+    transmitted. The second interface's Fresnel loss and internally reflected
+    light are not modelled.
   - an invalid path (NaN / zero inputs): color 0, fellBack true, the
     reflection still added when R is defined.
 source: Wyman 2005 and Oliveira & Brauwers 2007 (two interfaces, distant
@@ -88,6 +95,7 @@ source: Wyman 2005 and Oliveira & Brauwers 2007 (two interfaces, distant
 #include "perturb_edge_fade.glsl"
 #include "../intersect/intersect_with.glsl"
 #include "technique_options.glsl"
+#include "technique_buffers.glsl"
 #include "two_interface.glsl"
 
 struct SnellTwoInterfaceExit {
@@ -101,8 +109,8 @@ struct SnellTwoInterfaceResult {
   vec3 color;
   vec3 exitPoint;      // P2 (P1 when the back hit failed)
   vec3 exitDirection;  // T2 (T1 on fallback)
-  SnellHit exitHit;    // the exit slot's hit in the scene buffers (SCENE mode)
-  SnellHit reflectionHit;  // the reflection slot's hit in the scene buffers (SNELL_REFLECT_SCENE)
+  SnellHit exitHit;    // the exit slot's hit in the scene buffers (SNELL_SOURCE_BUFFERS)
+  SnellHit reflectionHit;  // the reflect slot's hit in the scene buffers (SNELL_SOURCE_BUFFERS)
   float pathLength;    // |P2 - P1| inside the object
   float fresnel;       // F at the first interface (0 without reflection)
   int fetches;
@@ -111,10 +119,10 @@ struct SnellTwoInterfaceResult {
   bool tir;            // TIR at the second interface
 };
 
-SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_TEX2D sceneDepth,
-                                                     SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid,
-                                                     SNELL_TEX2D sceneColor, SNELL_IN(SnellDepthSurface) scene,
-                                                     SNELL_ENVIRONMENT_TEX environment, SnellTechniqueOptions o) {
+/* Mayer & Assarsson: a ray from the object resolved by one slot against the scene buffers or the environment */
+SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_SCENE_BUFFERS,
+                                                     SNELL_IN(SnellSlot) slot, SNELL_IN(SnellMaterial) m,
+                                                     SNELL_IN(SnellView) v) {
   SnellTwoInterfaceExit e;
   e.color = vec3(0.0f, 0.0f, 0.0f);
   e.hit = snellHitMiss(0);
@@ -125,11 +133,11 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
       !SNELL_FINITE(origin.z)) {
     return e;
   }
-  float envLod = snellRoughnessToLod(o.roughness, o.environmentLevels);
-  float sceneLod = snellRoughnessToLod(o.roughness, o.sceneColorLevels);
-  vec3 world = d.x * o.envX + d.y * o.envY + d.z * o.envZ;
-  if (o.exitMode == SNELL_EXIT_SCENE) {
-    e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, o.exit);
+  float envLod = snellRoughnessToLod(m.roughness, v.environmentLevels);
+  float sceneLod = snellRoughnessToLod(m.roughness, v.sceneColorLevels);
+  vec3 world = d.x * v.envX + d.y * v.envY + d.z * v.envZ;
+  if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
+    e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, slot.intersect);
     e.fetches = e.hit.fetches;
     if (e.hit.valid) {
       vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);
@@ -141,9 +149,9 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
     vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, envLod);
     e.fetches = e.fetches + 1;
     e.color = vec3(env.x, env.y, env.z);
-    if (o.fallback == SNELL_FALLBACK_EDGE_FADE) {
-      SnellScreenPoint sp = snellViewToUv(scene.clipFromView, origin + o.fallbackDistance * d);
-      float w = sp.valid ? snellScreenEdgeFade(sp.uv, o.edgeFadeWidth) : 0.0f;
+    if (slot.fallback == SNELL_FALLBACK_EDGE_FADE) {
+      SnellScreenPoint sp = snellViewToUv(scene.clipFromView, origin + slot.fallbackDistance * d);
+      float w = sp.valid ? snellScreenEdgeFade(sp.uv, slot.edgeFadeWidth) : 0.0f;
       if (w > 0.0f) {
         vec2 uv = clamp(sp.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
         vec4 c = SNELL_SAMPLE_LOD(sceneColor, uv, sceneLod);
@@ -162,19 +170,16 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
 
 /* Wyman 2005; Oliveira & Brauwers 2007; Mayer & Assarsson: the composed technique */
 SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition, vec3 frontNormal, float dN,
-                                                             SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
-                                                             SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back,
-                                                             SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal,
-                                                             SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor,
-                                                             SNELL_IN(SnellDepthSurface) scene, SNELL_ENVIRONMENT_TEX environment,
-                                                             SnellTechniqueOptions o) {
-  bool three = o.dispersion == 3;
-  float eta = snellIorToEta(o.iorOutside, three ? o.iors.y : o.ior);
+                                                             SNELL_OBJECT_BUFFERS, SNELL_SCENE_BUFFERS,
+                                                             SNELL_IN(SnellTechnique) t, SNELL_IN(SnellMaterial) m,
+                                                             SNELL_IN(SnellView) v) {
+  bool three = m.dispersion == 3;
+  float eta = snellIorToEta(m.iorOutside, three ? m.iors.y : m.ior);
   SnellTwoInterfacePath p =
-      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, backDepth, backNormal, backPyramid, back, o);
-  SnellTwoInterfaceExit e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, sceneDepth, sceneNormal,
-                                                  scenePyramid, sceneColor, scene, environment, o);
-  vec3 transmitted = e.color * snellBeerLambert(o.absorption, p.pathLength);
+      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
+  SnellTwoInterfaceExit e =
+      snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+  vec3 transmitted = e.color * snellBeerLambert(m.absorption, p.pathLength);
   SnellTwoInterfaceResult r;
   r.exitPoint = p.exitPoint;
   r.exitDirection = p.exitDirection;
@@ -187,47 +192,31 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   r.fellBack = p.fellBack || e.fellBack || !p.valid;
   r.tir = p.tir;
   if (three) {
-    SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal,
-                                                      snellIorToEta(o.iorOutside, o.iors.x), dN, backDepth,
-                                                      backNormal, backPyramid, back, o);
-    SnellTwoInterfaceExit er = snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, sceneDepth, sceneNormal,
-                                                     scenePyramid, sceneColor, scene, environment, o);
-    SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal,
-                                                      snellIorToEta(o.iorOutside, o.iors.z), dN, backDepth,
-                                                      backNormal, backPyramid, back, o);
-    SnellTwoInterfaceExit eb = snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, sceneDepth, sceneNormal,
-                                                     scenePyramid, sceneColor, scene, environment, o);
-    transmitted.x = er.color.x * snellBeerLambert(o.absorption, pr.pathLength).x;
-    transmitted.z = eb.color.z * snellBeerLambert(o.absorption, pb.pathLength).z;
+    SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.x),
+                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
+    SnellTwoInterfaceExit er =
+        snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+    SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.z),
+                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
+    SnellTwoInterfaceExit eb =
+        snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+    transmitted.x = er.color.x * snellBeerLambert(m.absorption, pr.pathLength).x;
+    transmitted.z = eb.color.z * snellBeerLambert(m.absorption, pb.pathLength).z;
     r.fetches = r.fetches + pr.fetches + er.fetches + pb.fetches + eb.fetches;
     r.fellBack = r.fellBack || pr.fellBack || er.fellBack || pb.fellBack || eb.fellBack;
   }
   r.color = transmitted;
-  vec3 v = snellSafeNormalize(frontPosition);
+  vec3 vv = snellSafeNormalize(frontPosition);
   vec3 n1 = snellSafeNormalize(frontNormal);
-  if (o.reflection && dot(v, v) > 0.0f && dot(n1, n1) > 0.0f) {
-    float f = snellFresnelDielectric(dot(v, n1), eta);
-    vec3 rv = reflect(v, n1);
-    vec3 reflected = vec3(0.0f, 0.0f, 0.0f);
-    if (o.reflectionMode == SNELL_REFLECT_SCENE) {
-      // The reflection slot: the exit machinery with the reflect slot's strategy, from P1 along R.
-      SnellTechniqueOptions ro = o;
-      ro.exit = o.reflect;
-      ro.exitMode = SNELL_EXIT_SCENE;
-      ro.fallback = SNELL_FALLBACK_ENVIRONMENT;
-      SnellTwoInterfaceExit re = snellTwoInterfaceExit(frontPosition, rv, sceneDepth, sceneNormal, scenePyramid,
-                                                       sceneColor, scene, environment, ro);
-      reflected = re.color;
-      r.reflectionHit = re.hit;
-      r.fetches = r.fetches + re.fetches;
-    } else {
-      vec3 world = rv.x * o.envX + rv.y * o.envY + rv.z * o.envZ;
-      vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, snellRoughnessToLod(o.roughness, o.environmentLevels));
-      reflected = vec3(env.x, env.y, env.z);
-      r.fetches = r.fetches + 1;
-    }
+  if (m.reflection && dot(vv, vv) > 0.0f && dot(n1, n1) > 0.0f) {
+    float f = snellFresnelDielectric(dot(vv, n1), eta);
+    // The reflect slot: the exit's call with its own slot, from P1 along R.
+    SnellTwoInterfaceExit re =
+        snellTwoInterfaceExit(frontPosition, reflect(vv, n1), SNELL_SCENE_BUFFER_ARGS, t.reflect, m, v);
+    r.reflectionHit = re.hit;
+    r.fetches = r.fetches + re.fetches;
     r.fresnel = f;
-    r.color = f * reflected + (1.0f - f) * transmitted;
+    r.color = f * re.color + (1.0f - f) * transmitted;
   }
   return r;
 }

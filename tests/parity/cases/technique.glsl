@@ -60,14 +60,14 @@ SNELL_FN SnellDepthSurface techSceneSurface(vec4 c) {
 #define TECH_PLANE_NORMAL_N (SNELL_TECHNIQUE_COUNT + 2)
 #define TECH_PLANE_DEPTH_N (SNELL_TECHNIQUE_COUNT + 3)
 #define TECH_BINARY (SNELL_TECHNIQUE_COUNT + 4)
-SNELL_FN SnellTechniqueOptions techPreset(int preset, int steps) {
+SNELL_FN SnellTechnique techPreset(int preset, int steps) {
   if (preset >= 0 && preset < SNELL_TECHNIQUE_COUNT) {
     return snellTechniquePreset(preset);
   }
   if (preset == TECH_DIR_STEPS) {
-    SnellTechniqueOptions o = snellPresetDir();
-    o.back.cbsSteps = steps;
-    return o;
+    SnellTechnique t = snellPresetDir();
+    t.back.intersect.cbsSteps = steps;
+    return t;
   }
   if (preset == TECH_DIR_BOUNDS) {
     return snellPresetDirBounds(-3.8f, -8.3f);
@@ -78,33 +78,43 @@ SNELL_FN SnellTechniqueOptions techPreset(int preset, int steps) {
   if (preset == TECH_PLANE_DEPTH_N) {
     return snellPresetPlaneDepth(steps);
   }
-  SnellTechniqueOptions o = snellTechniqueOptions();
-  o.back = snellIntersectOptions(SNELL_STRATEGY_BINARY);
-  o.exit = snellIntersectOptions(SNELL_STRATEGY_LINEAR_BINARY);
-  return o;
+  SnellTechnique t = snellTechnique();
+  t.back.intersect = snellIntersectOptions(SNELL_STRATEGY_BINARY);
+  t.exit.intersect = snellIntersectOptions(SNELL_STRATEGY_LINEAR_BINARY);
+  return t;
 }
 
-/* The ray cases' options: techPreset(preset, steps) with the given IOR and roughness; mode bits: 1 exit to
-   scene, 2 edge-fade fallback, 4 dispersion (3 traces), 8 no reflection, 16 TIR policy ZERO, 32 REFLECT,
-   64 absorption, 128 reflection from the scene (through the exit slot). */
-SNELL_FN SnellTechniqueOptions techOptions(int preset, int steps, float ior, int modes, float roughness) {
-  SnellTechniqueOptions o = techPreset(preset, steps);
-  o.ior = ior;
-  o.iors = vec3(ior * 0.98f, ior, ior * 1.02f);
-  o.exitMode = techBit(modes, 1) ? SNELL_EXIT_SCENE : SNELL_EXIT_ENVIRONMENT;
-  o.fallback = techBit(modes, 2) ? SNELL_FALLBACK_EDGE_FADE : SNELL_FALLBACK_ENVIRONMENT;
-  o.dispersion = techBit(modes, 4) ? 3 : 1;
-  o.reflection = !techBit(modes, 8);
-  o.tirPolicy = techBit(modes, 16) ? SNELL_TIR_ZERO : (techBit(modes, 32) ? SNELL_TIR_REFLECT : SNELL_TIR_CRITICAL);
-  o.absorption = techBit(modes, 64) ? vec3(0.1f, 0.2f, 0.4f) : vec3(0.0f, 0.0f, 0.0f);
-  o.reflectionMode = techBit(modes, 128) ? SNELL_REFLECT_SCENE : SNELL_REFLECT_ENVIRONMENT;
+/* The ray cases' technique, material and view: techPreset(preset, steps) with the given IOR and roughness;
+   mode bits: 1 exit slot to the scene, 2 edge-fade fallback, 4 dispersion (3 traces), 8 no reflection, 16 TIR
+   policy ZERO, 32 REFLECT, 64 absorption, 128 reflect slot to the scene (with the exit slot's intersector). */
+SNELL_FN SnellTechnique techTechnique(int preset, int steps, int modes) {
+  SnellTechnique t = techPreset(preset, steps);
+  t.exit.source = techBit(modes, 1) ? SNELL_SOURCE_BUFFERS : SNELL_SOURCE_ENVIRONMENT;
+  t.exit.fallback = techBit(modes, 2) ? SNELL_FALLBACK_EDGE_FADE : SNELL_FALLBACK_ENVIRONMENT;
   if (techBit(modes, 128)) {
-    o.reflect = o.exit;
+    t.reflect.source = SNELL_SOURCE_BUFFERS;
+    t.reflect.intersect = t.exit.intersect;
   }
-  o.roughness = roughness;
-  o.sceneColorLevels = 7;
-  o.environmentLevels = 8;
-  return o;
+  return t;
+}
+
+SNELL_FN SnellMaterial techMaterial(float ior, int modes, float roughness) {
+  SnellMaterial m = snellMaterial();
+  m.ior = ior;
+  m.iors = vec3(ior * 0.98f, ior, ior * 1.02f);
+  m.dispersion = techBit(modes, 4) ? 3 : 1;
+  m.reflection = !techBit(modes, 8);
+  m.tirPolicy = techBit(modes, 16) ? SNELL_TIR_ZERO : (techBit(modes, 32) ? SNELL_TIR_REFLECT : SNELL_TIR_CRITICAL);
+  m.absorption = techBit(modes, 64) ? vec3(0.1f, 0.2f, 0.4f) : vec3(0.0f, 0.0f, 0.0f);
+  m.roughness = roughness;
+  return m;
+}
+
+SNELL_FN SnellView techView() {
+  SnellView v = snellView();
+  v.sceneColorLevels = 7;
+  v.environmentLevels = 8;
+  return v;
 }
 
 /* A slot's counts in one float each: plane iterations + 16 CBS steps + 256 binary steps (+ 4096 linear steps of
@@ -115,32 +125,35 @@ SNELL_FN vec2 techPackCounts(SnellIntersectOptions o) {
               float(o.marchSteps) + 1024.0f * float(o.marchBisections) + 32768.0f * float(o.ddaSteps));
 }
 
-/* rangeSource + 2 backMethod + 4 explicit range valid */
-SNELL_FN float techBackFlags(SnellTechniqueOptions o) {
-  return float(o.back.rangeSource) + 2.0f * float(o.backMethod) + 4.0f * techFlag(o.back.range.valid);
+/* the back slot: rangeSource + 2 (source is WYMAN) + 4 explicit range valid + 8 (source is ENVIRONMENT) */
+SNELL_FN float techBackFlags(SnellSlot s) {
+  return float(s.intersect.rangeSource) + 2.0f * techFlag(s.source == SNELL_SOURCE_WYMAN) +
+         4.0f * techFlag(s.intersect.range.valid) + 8.0f * techFlag(s.source == SNELL_SOURCE_ENVIRONMENT);
 }
 
-/* exitMode + 2 fallback */
-SNELL_FN float techExitFlags(SnellTechniqueOptions o) {
-  return float(o.exitMode) + 2.0f * float(o.fallback);
+/* the exit slot: (source is BUFFERS) + 2 fallback + 4 (source is WYMAN) */
+SNELL_FN float techExitFlags(SnellSlot s) {
+  return techFlag(s.source == SNELL_SOURCE_BUFFERS) + 2.0f * float(s.fallback) +
+         4.0f * techFlag(s.source == SNELL_SOURCE_WYMAN);
 }
 
 /* x: the given range alone (sums of inputs and constants let a compiler fold the constants first, which changes
    the last bit); the other sums hold only whole numbers or constants: y: thickness clamp + fallback distance +
    edge fade, z: stride + roughness + distances + normal lod, w: max lod, levels, environment axes, iors,
    absorption, depth filter. */
-SNELL_FN vec4 techOptionSums(SnellTechniqueOptions o) {
-  return vec4(o.back.range.zNearest + o.back.range.zFarthest,
-              min(o.back.ddaThickness, 1e6f) + o.fallbackDistance + o.edgeFadeWidth,
-              o.back.ddaStride + o.roughness + o.back.marchMaxDistance + o.back.ddaMaxDistance + o.back.planeNormalLod,
-              float(o.back.planeMaxLod) + float(o.sceneColorLevels + o.environmentLevels) + o.envX.x + o.envY.y +
-                  o.envZ.z + o.iorOutside + o.iors.y + o.absorption.x + float(o.back.depthFilter));
+SNELL_FN vec4 techOptionSums(SnellTechnique t, SnellMaterial m, SnellView v) {
+  return vec4(t.back.intersect.range.zNearest + t.back.intersect.range.zFarthest,
+              min(t.back.intersect.ddaThickness, 1e6f) + t.exit.fallbackDistance + t.exit.edgeFadeWidth,
+              t.back.intersect.ddaStride + m.roughness + t.back.intersect.marchMaxDistance +
+                  t.back.intersect.ddaMaxDistance + t.back.intersect.planeNormalLod,
+              float(t.back.intersect.planeMaxLod) + float(v.sceneColorLevels + v.environmentLevels) + v.envX.x +
+                  v.envY.y + v.envZ.z + m.iorOutside + m.iors.y + m.absorption.x + float(t.back.intersect.depthFilter));
 }
 
-/* The options cases' outputs (TECH_OPTIONS_OUTPUTS in technique_cases.cpp) set from the options `o`: each slot's
-   strategy, counts and flags, the refraction settings and the sums. */
-#define TECH_SLOTS_OUT(o) backStrategy = o.back.strategy; backCounts = techPackCounts(o.back); backFlags = techBackFlags(o); exitStrategy = o.exit.strategy; exitCounts = techPackCounts(o.exit); exitFlags = techExitFlags(o);
-#define TECH_OPTIONS_OUT(o) TECH_SLOTS_OUT(o) tirPolicy = o.tirPolicy; ior = o.ior; dispersion = o.dispersion; reflection = o.reflection; sums = techOptionSums(o);
+/* The options cases' outputs (TECH_OPTIONS_OUTPUTS in technique_cases.cpp) set from a technique `t`, material
+   `m` and view `v`: the back and exit slots' strategy, counts and flags, the material's settings and the sums. */
+#define TECH_SLOTS_OUT(t) backStrategy = t.back.intersect.strategy; backCounts = techPackCounts(t.back.intersect); backFlags = techBackFlags(t.back); exitStrategy = t.exit.intersect.strategy; exitCounts = techPackCounts(t.exit.intersect); exitFlags = techExitFlags(t.exit);
+#define TECH_OPTIONS_OUT(t, m, v) TECH_SLOTS_OUT(t) tirPolicy = m.tirPolicy; ior = m.ior; dispersion = m.dispersion; reflection = m.reflection; sums = techOptionSums(t, m, v);
 
 #if defined(SNELL_LANG_GLSL)
 uniform sampler2D techFrontDepth;
@@ -159,38 +172,43 @@ Texture2D<float4> techFrontNormal;
    sample, 6 linear march, 7 DDA, 8 DIR with the sphere's bounding box as its
    range (centre z -6, radius 2.2: tests/support/technique_scene.hpp). */
 #define TECH_IMAGE_PRESETS 9
-SNELL_FN SnellTechniqueOptions techImageOptions(int preset) {
-  SnellTechniqueOptions o = snellPresetDir();
-  o.exitMode = SNELL_EXIT_SCENE;
+SNELL_FN SnellTechnique techImageTechnique(int preset) {
+  SnellTechnique t = snellPresetDir();
   if (preset == 1) {
-    o = snellPresetPlaneNormal(2);
-    o.exitMode = SNELL_EXIT_SCENE;
+    t = snellPresetPlaneNormal(2);
   } else if (preset == 2) {
-    o = snellPresetIsr();
+    t = snellPresetIsr();
   } else if (preset == 3) {
-    o.dispersion = 3;
-    o.iors = snellDispersionIors(1.5168f, 30.0f);
-    o.absorption = vec3(0.05f, 0.1f, 0.2f);
-    o.fallback = SNELL_FALLBACK_EDGE_FADE;
-  } else if (preset >= 4) {
-    if (preset == 4) {
-      o = snellPresetPlaneDepth(3);
-    } else if (preset == 5) {
-      o = snellPresetSingleSample();
-    } else if (preset == 6) {
-      o = snellPresetLinearMarch();
-    } else if (preset == 7) {
-      o = snellPresetDdaMarch();
-    } else {
-      o = snellPresetDirBounds(-3.8f, -8.2f);
-    }
-    o.exitMode = SNELL_EXIT_SCENE;
+    t.exit.fallback = SNELL_FALLBACK_EDGE_FADE;
+  } else if (preset == 4) {
+    t = snellPresetPlaneDepth(3);
+  } else if (preset == 5) {
+    t = snellPresetSingleSample();
+  } else if (preset == 6) {
+    t = snellPresetLinearMarch();
+  } else if (preset == 7) {
+    t = snellPresetDdaMarch();
+  } else if (preset >= 8) {
+    t = snellPresetDirBounds(-3.8f, -8.2f);
   }
-  return o;
+  if (preset != 2) {
+    t.exit.source = SNELL_SOURCE_BUFFERS;
+  }
+  return t;
+}
+
+SNELL_FN SnellMaterial techImageMaterial(int preset) {
+  SnellMaterial m = snellMaterial();
+  if (preset == 3) {
+    m.dispersion = 3;
+    m.iors = snellDispersionIors(1.5168f, 30.0f);
+    m.absorption = vec3(0.05f, 0.1f, 0.2f);
+  }
+  return m;
 }
 
 /* One pixel of a full frame: the front-face buffers give P1 and N1, the
-   technique (techImageOptions(preset)) the colour; outside the object, the
+   technique (techImageTechnique(preset), techImageMaterial(preset)) the colour; outside the object, the
    painting (or the environment where the painting is missing). */
 SNELL_FN vec4 techImagePixel(ivec2 px, int preset, vec4 c) {
   SnellDepthSurface front = snellDepthSurface(techMatrix(c), 0.5f, 40.0f, SNELL_DEPTH_GL, 1.0f);
@@ -208,9 +226,9 @@ SNELL_FN vec4 techImagePixel(ivec2 px, int preset, vec4 c) {
   }
   SnellViewPoint p1 = snellUvZToView(techMatrix(c), uv, f.viewZ);
   vec4 n1 = SNELL_TEXEL_FETCH(techFrontNormal, px, 0);
-  SnellTechniqueOptions o = techImageOptions(preset);
   SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
       p1.position, vec3(n1.x, n1.y, n1.z), 4.4f, techBackDepth, techBackNormal, techBackPyramid, techBackSurface(c),
-      techSceneDepth, techSceneNormal, techScenePyramid, techSceneColor, techSceneSurface(c), techEnv, o);
+      techSceneDepth, techSceneNormal, techScenePyramid, techSceneColor, techSceneSurface(c), techEnv,
+      techImageTechnique(preset), techImageMaterial(preset), snellView());
   return vec4(r.color.x, r.color.y, r.color.z, r.fellBack ? 2.0f : 1.0f);
 }
