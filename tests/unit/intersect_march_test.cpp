@@ -190,7 +190,7 @@ TEST(IntersectMarch, DdaThicknessLetsRaysPassBehind) {
   EXPECT_TRUE(finite(thin));
 }
 
-// Issue 7 regression (property test input #12805 of snellDdaMarch): a far end
+// Regression (property test input #12805 of snellDdaMarch): a far end
 // whose 1/w (~1e-21) is below the ulp of the origin's made k0 + s (k1 - k0)
 // cancel to 0 at s = 1, and the hit in the last step got a NaN position. The
 // hit must be a point of the ray at the sphere's back face (the analytic

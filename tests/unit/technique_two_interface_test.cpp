@@ -380,7 +380,7 @@ TEST(TechniqueTwoInterface, FallbackWhenTheExitLeavesTheScreen) {
   EXPECT_LT(glm::length(ex.color - glm::vec3(env)), 1e-6f);  // projection off screen: fade 0, environment
 }
 
-// Issue 7 regression (property test inputs #14557 of snellTwoInterfaceTrace and
+// Regression (property test inputs #14557 of snellTwoInterfaceTrace and
 // #12414 of snellTwoInterfaceRefraction): ISR with d_N = 1e30 puts P2 ~2e29
 // units away, on screen over the sphere, so the back hit was accepted and
 // pathLength = length(P2 - P1) overflowed to +inf. By contract such a hit
