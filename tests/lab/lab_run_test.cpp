@@ -82,6 +82,13 @@ TEST(LabRun, SphereSceneEndToEnd) {
   EXPECT_GT(single->mseFull, plane->mseFull);
   // The two-interface model is close to the full ray tracer on a sphere (no TIR from the camera).
   EXPECT_LT(r.mseTwoVsFull, 0.01);
+  // Nor inside: a chord of a sphere meets the surface at its entry angle, below the critical angle, so
+  // (but for grazing pixels of the tessellated sphere) no pixel meets TIR and following more interface
+  // events changes nothing.
+  EXPECT_LT(r.tirShare, 0.01);
+  ASSERT_EQ(r.modelFloors.size(), 3u);
+  for (const snell::lab::ModelFloor& f : r.modelFloors) EXPECT_NEAR(f.mseFull, r.mseTwoVsFull, 1e-4) << f.events;
+  EXPECT_EQ(r.modelFloors[0].events, 3);
   for (const char* f : {"table.md", "table.json", "overview.png", "ground_truth.png", "reference_two_interfaces.png",
                         "single.png", "plane-normal-1.png", "dda.png"})
     EXPECT_TRUE(fs::exists(dir.file("out") + "/" + f)) << f;

@@ -286,3 +286,72 @@ TEST(LabTracer, NonFiniteCamerasAndRaysAreRefusedBeforeEmbree) {
   ray.origin = dvec3(1e39, 0.0, 5.0);  // finite in double, inf as the float Embree takes
   labtest::errorOf([&] { tracer->principalPath(ray, 2, TirPolicy::Reflect); }, ErrorKind::Render);
 }
+
+namespace {
+
+// A right-angle prism (n = 1.5): its cross-section in x-z is the triangle (0, 0), (1, 0), (0, -1), extruded
+// over y in [-1, 1]; flat faces (one vertex set per face, so the interpolated normal is the face's), wound
+// outward.
+Mesh rightAnglePrism() {
+  Mesh m;
+  const auto face = [&m](std::vector<glm::vec3> corners, glm::vec3 outward) {
+    const auto base = static_cast<std::uint32_t>(m.positions.size());
+    for (const glm::vec3& c : corners) {
+      m.positions.push_back(c);
+      m.normals.push_back(glm::normalize(outward));
+    }
+    for (std::uint32_t i = 1; i + 1 < corners.size(); ++i) {
+      const bool outwardWinding =
+          glm::dot(glm::cross(corners[i] - corners[0], corners[i + 1] - corners[0]), outward) > 0.0f;
+      m.indices.insert(m.indices.end(), {base, base + (outwardWinding ? i : i + 1), base + (outwardWinding ? i + 1 : i)});
+    }
+  };
+  face({{0, -1, 0}, {1, -1, 0}, {1, 1, 0}, {0, 1, 0}}, {0, 0, 1});     // top leg
+  face({{0, -1, 0}, {0, 1, 0}, {0, 1, -1}, {0, -1, -1}}, {-1, 0, 0});  // side leg
+  face({{1, -1, 0}, {1, 1, 0}, {0, 1, -1}, {0, -1, -1}}, {1, 0, -1});  // hypotenuse
+  face({{0, -1, 0}, {1, -1, 0}, {0, -1, -1}}, {0, -1, 0});
+  face({{0, 1, 0}, {1, 1, 0}, {0, 1, -1}}, {0, 1, 0});
+  return m;
+}
+
+}  // namespace
+
+// The textbook TIR path: a ray down -z enters the top leg at normal incidence, meets the hypotenuse at
+// 45 degrees (beyond the critical angle, asin(1 / 1.5) = 41.8), reflects to -x and leaves the side leg at
+// normal incidence, after 1.0 inside (0.5 + 0.5 for x = 0.5, and x + (1 - x) for any x). A painting at
+// x = -3 is what that path sees; the two-interface model (the critical clamp at the hypotenuse) cannot.
+TEST(LabTracer, PrincipalPathFollowsTheRightAnglePrismsTotalInternalReflection) {
+  const snell::vec3 red(1.0f, 0.0f, 0.0f), sigma(0.2f, 0.5f, 1.0f);
+  const snell::Image tex = makeCheckerTexture(8, 8, snell::ivec2(1, 1), red, red);
+  const std::vector<Painting> paintings{
+      makePainting(snell::vec3(-3.0f, 0.0f, -0.5f), snell::vec2(6.0f, 6.0f), snell::vec3(0.0f, 90.0f, 0.0f), tex)};
+  const ReferenceTracer tracer(rightAnglePrism(), static_cast<float>(kIor), sigma, paintings,
+                               Environment::constant(snell::vec3(0.0f, 0.0f, 1.0f)));
+  TraceOptions opt;
+  opt.fresnel = false;
+  opt.mode = TraceMode::Principal;
+  for (double x : {0.3, 0.5, 0.7}) {
+    const Ray ray = rayAt(dvec3(x, 0.1, 3.0), dvec3(0.0, 0.0, -1.0));
+    opt.events = 3;
+    TraceStats stats;
+    const dvec3 c = tracer.radiance(ray, opt, &stats);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(c[k], static_cast<double>(red[k]) * std::exp(-static_cast<double>(sigma[k]) * 1.0), 1e-5)
+          << "x " << x << " channel " << k;
+    EXPECT_EQ(stats.tirEvents, 1u);
+    // More events change nothing once the path has left.
+    opt.events = 6;
+    const dvec3 c6 = tracer.radiance(ray, opt);
+    EXPECT_EQ(c6, c);
+    // Two events: the critical clamp at the hypotenuse, along it, out of the prism and not to the painting.
+    opt.events = 2;
+    const dvec3 c2 = tracer.radiance(ray, opt);
+    EXPECT_LT(c2.x, 0.5) << "x " << x;
+    opt.mode = TraceMode::TwoInterfaces;
+    EXPECT_EQ(tracer.radiance(ray, opt), c2);  // the two-interface reference is the 2-event principal path
+    opt.mode = TraceMode::Principal;
+  }
+  opt.events = 1;
+  labtest::errorOf([&] { tracer.radiance(rayAt(dvec3(0.5, 0.1, 3.0), dvec3(0.0, 0.0, -1.0)), opt); },
+                   ErrorKind::Render);
+}

@@ -114,11 +114,12 @@ Image downscale(const Image& img, int factor) {
 
 std::string markdownTable(const LabResult& r) {
   std::string s;
-  s += "| technique | MSE vs ray traced | MSE vs two-interface ref. | x bound | own error (MSE vs bound) | unshaded | "
+  s += "| technique | MSE vs ray traced | on TIR | MSE vs two-interface ref. | x bound | own error (MSE vs bound) | unshaded | "
        "invalid | fetches/px | time ratio | time (ms) | CPU-GPU max | CPU-GPU > 1/255 | CPU-GPU > 4/255 (ties) |\n";
-  s += "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  s += "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const TechniqueRow& t : r.rows) {
-    s += "| " + t.label + " | " + fmt("%.3g", t.mseFull) + " | " + fmt("%.3g", t.mseTwo) + " | " +
+    s += "| " + t.label + " | " + fmt("%.3g", t.mseFull) + " | " + fmt("%.3g", t.mseFullTir) + " | " +
+         fmt("%.3g", t.mseTwo) + " | " +
          fmt("%.2fx", t.boundRatio) + " | " + fmt("%.3g", t.mseBound) + " | " + fmt("%.2f %%", 100.0 * t.unshadedShare) +
          " | " + fmt("%.2f %%", 100.0 * t.invalidShare) + " | " + fmt("%.1f", t.fetchesPerPixel) + " | " +
          fmt("%.2fx", t.costRatio) + " | " + fmt("%.2f", t.medianMs) + " | " + fmt("%.1f/255", 255.0 * t.cpuGpuMaxAbs) +
@@ -135,6 +136,15 @@ std::string markdownTable(const LabResult& r) {
   s += "- model: the two-interface reference (two refractions, Fresnel reflection of the scene at the first "
        "surface, no internal bounces) is " + fmt("%.3g", r.mseTwoVsFull) + " from the full ray tracer; no technique "
        "that models two interfaces can get closer to the ray tracer than that.\n";
+  s += "- total internal reflection: " + fmt("%.1f %%", 100.0 * r.tirShare) + " of the object pixels meet TIR at "
+       "their second interface (every two-interface technique clamps there to the critical angle); on them the "
+       "two-interface reference is " + fmt("%.3g", r.mseTwoVsFullTir) + " from the full ray tracer (\"on TIR\" in "
+       "the table: each technique's). Following the principal path inside (refract where Snell allows, reflect on "
+       "TIR, the ray tracer):";
+  for (const ModelFloor& f : r.modelFloors)
+    s += " " + std::to_string(f.events) + " events " + fmt("%.3g", f.mseFull) + " (on TIR " + fmt("%.3g", f.mseFullTir) +
+         ")" + (&f == &r.modelFloors.back() ? "." : ",");
+  s += " That is the floor of a technique that follows that many interface events in image space.\n";
   if (bound) {
     s += "- information: the image-space bound (the same buffers, intersected as exhaustively as a march can: " +
          std::to_string(snellPresetImageSpaceBound().back.intersect.marchSteps) + " march steps + " +
@@ -198,6 +208,12 @@ void writeJson(const fs::path& path, const LabResult& r) {
   j["frames"] = r.frames;
   j["gpu"] = r.gpu;
   j["mse_two_interface_vs_full"] = r.mseTwoVsFull;
+  j["mse_two_interface_vs_full_on_tir"] = r.mseTwoVsFullTir;
+  j["tir_share"] = r.tirShare;
+  nlohmann::json floors = nlohmann::json::array();
+  for (const ModelFloor& f : r.modelFloors)
+    floors.push_back({{"events", f.events}, {"mse_vs_full", f.mseFull}, {"mse_vs_full_on_tir", f.mseFullTir}});
+  j["principal_path_floors"] = floors;
   j["bound_information_mse"] = r.boundInformationMse;
   j["bound_information_share"] = r.boundInformationShare;
   j["bound_buffer_mse"] = r.boundBufferMse;
@@ -208,6 +224,7 @@ void writeJson(const fs::path& path, const LabResult& r) {
     rows.push_back({{"technique", t.name},
                     {"label", t.label},
                     {"mse_vs_ray_traced", t.mseFull},
+                    {"mse_vs_ray_traced_on_tir", t.mseFullTir},
                     {"mse_vs_two_interface", t.mseTwo},
                     {"mse_vs_bound", t.mseBound},
                     {"ratio_to_bound", t.boundRatio},
@@ -249,7 +266,18 @@ std::vector<const SnellTechniqueInfo*> selectTechniques(const LabOptions& option
 struct References {
   std::unique_ptr<ReferenceTracer> tracer;
   TraceResult full, two;
+  Mask tir;  // object pixels with TIR on the principal path (LabResult::tirShare)
 };
+
+// The principal-path lengths whose model floor the lab reports: one bounce inside (3), two (4), four (6).
+constexpr int kFloorEvents[] = {3, 4, 6};
+
+Mask both(const Mask& a, const Mask& b) {
+  Mask m(a.width, a.height);
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) m.set(x, y, a.at(x, y) && b.at(x, y));
+  return m;
+}
 
 References traceReferences(const SceneFrame& frame, const LabOptions& options, LabResult& result) {
   References refs;
@@ -267,6 +295,17 @@ References traceReferences(const SceneFrame& frame, const LabOptions& options, L
     throw Error(ErrorKind::Render, "the ray tracer sees no pixel of the refractive object (is it in front of the "
                                    "camera, between the near and far planes?); no error can be measured");
   result.mseTwoVsFull = compareImages(refs.full.color, refs.two.color, refs.full.mask).mse;
+  refs.tir = both(refs.two.tir, refs.full.mask);
+  result.tirShare = static_cast<double>(refs.tir.count()) / static_cast<double>(result.objectPixels);
+  result.mseTwoVsFullTir = compareImages(refs.full.color, refs.two.color, refs.tir).mse;
+  to.mode = TraceMode::Principal;
+  for (int events : kFloorEvents) {
+    to.events = events;
+    const TraceResult principal = refs.tracer->render(frame.camera, to);
+    result.traceSeconds += principal.stats.seconds;
+    result.modelFloors.push_back({events, compareImages(refs.full.color, principal.color, refs.full.mask).mse,
+                                  compareImages(refs.full.color, principal.color, refs.tir).mse});
+  }
   return refs;
 }
 
@@ -473,6 +512,7 @@ TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const CpuShader& shade
   image = composite(tb.color, tb.normal, sb.sceneColor, shade.margin);
   row.mseFull = compareImages(refs.full.color, image, refs.full.mask).mse;
   row.mseTwo = compareImages(refs.two.color, image, refs.full.mask).mse;
+  row.mseFullTir = compareImages(refs.full.color, image, refs.tir).mse;
   return row;
 }
 

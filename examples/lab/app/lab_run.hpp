@@ -49,6 +49,15 @@ struct TechniqueRow {
   int cpuGpuBeyond4Ties = 0;    // of them, reproduced by the C++ build from inputs nudged by a few ulps
   int worstX = -1, worstY = -1;  // the pixel of cpuGpuMaxAbs
   double fetchMismatch = 0.0;  // share of object pixels whose CPU fetch count differs from the GPU's
+  double mseFullTir = 0.0;     // vs the full ray tracer on the object pixels with TIR (LabResult::tirShare)
+};
+
+// The model part of the error for a longer principal path (TraceMode::Principal): what an image-space
+// method that follows `events` interface events, bounces inside included, can reach at best.
+struct ModelFloor {
+  int events = 0;
+  double mseFull = 0.0;     // vs the full ray tracer, object pixels
+  double mseFullTir = 0.0;  // ... on the object pixels with TIR
 };
 
 struct LabResult {
@@ -57,6 +66,11 @@ struct LabResult {
   int guardBand = 0;  // texels the scene and back-face buffers extend beyond the viewport on every side
   std::size_t objectPixels = 0;
   double mseTwoVsFull = 0.0;  // the two-interface model's own error (model + TIR)
+  double mseTwoVsFullTir = 0.0;  // ... on the object pixels with TIR
+  // Object pixels whose principal path meets total internal reflection at its second interface (where
+  // every two-interface technique clamps to the critical angle), as a share of the object pixels.
+  double tirShare = 0.0;
+  std::vector<ModelFloor> modelFloors;  // principal paths of 3, 4 and 6 events
   // The image-space bound's error vs the two-interface reference, split by pixel: where the bound
   // found no exit in the buffers (off-screen or hidden: information the buffers lack) and the rest
   // (the buffers' resolution and depth discretization). Both are MSE contributions over the object

@@ -249,7 +249,9 @@ struct ReferenceTracer::Impl {
     return atten * L;
   }
 
-  glm::dvec3 traceTwo(const Ray& ray, const TraceOptions& opt, TraceStats& stats, bool* firstHitObject) const {
+  // The principal path for `events` interface events (TraceMode::Principal; TwoInterfaces is 2).
+  glm::dvec3 tracePrincipal(const Ray& ray, int events, const TraceOptions& opt, TraceStats& stats,
+                            bool* firstHitObject) const {
     const Hit h = intersect(full, true, ray.origin, ray.direction, ray.tNear, ray.tFar, stats);
     if (firstHitObject) *firstHitObject = h.kind == HitKind::Object;
     if (h.kind == HitKind::None) return env(ray.direction);
@@ -265,18 +267,30 @@ struct ReferenceTracer::Impl {
       const glm::dvec3 refl = reflectExact(d, s1.normal);
       L += F1 * backgroundRadiance(spawn(s1, refl), refl, stats);
     }
-    const Hit h2 = intersect(full, true, spawn(s1, t1.direction), t1.direction, 0.0, 1e30, stats);
-    glm::dvec3 Lt;
-    if (h2.kind == HitKind::None) {
-      ++stats.leaks;
-      Lt = env(t1.direction);
-    } else if (h2.kind == HitKind::Painting) {
-      Lt = paintingColor(h2) * beer(h2.t, opt);
-    } else {
-      const Surface s2 = objectSurface(h2);
-      const ExactRefraction t2 = refractExact(t1.direction, s2.normal, ior, TirPolicy::Critical);
-      if (t2.tir) ++stats.tirEvents;
-      Lt = beer(h2.t, opt) * backgroundRadiance(spawn(s2, t2.direction), t2.direction, stats);
+    // Inside: every later hit counts as an exit (eta = ior), as the image-space model treats its back face.
+    glm::dvec3 origin = spawn(s1, t1.direction), dir = t1.direction, throughput(1.0), Lt(0.0);
+    for (int k = 2; k <= events; ++k) {
+      const Hit hk = intersect(full, true, origin, dir, 0.0, 1e30, stats);
+      if (hk.kind == HitKind::None) {
+        ++stats.leaks;
+        Lt = throughput * env(dir);
+        break;
+      }
+      if (hk.kind == HitKind::Painting) {
+        Lt = throughput * (paintingColor(hk) * beer(hk.t, opt));
+        break;
+      }
+      const Surface sk = objectSurface(hk);
+      const bool last = k == events;
+      const ExactRefraction tk = refractExact(dir, sk.normal, ior, last ? TirPolicy::Critical : TirPolicy::Reflect);
+      if (tk.tir) ++stats.tirEvents;
+      throughput = throughput * beer(hk.t, opt);
+      if (last || !tk.tir) {
+        Lt = throughput * backgroundRadiance(spawn(sk, tk.direction), tk.direction, stats);
+        break;
+      }
+      origin = spawn(sk, tk.direction);
+      dir = tk.direction;
     }
     return L + (1.0 - F1) * Lt;
   }
@@ -306,7 +320,13 @@ glm::dvec3 ReferenceTracer::radiance(const Ray& ray, const TraceOptions& options
                                      bool* hitObject) const {
   TraceStats local;
   TraceStats& s = stats ? *stats : local;
-  if (options.mode == TraceMode::TwoInterfaces) return impl_->traceTwo(ray, options, s, hitObject);
+  if (options.mode == TraceMode::TwoInterfaces) return impl_->tracePrincipal(ray, 2, options, s, hitObject);
+  if (options.mode == TraceMode::Principal) {
+    if (options.events < 2)
+      throw Error(ErrorKind::Render, "ray tracer: a principal path needs at least 2 interface events (got " +
+                                         std::to_string(options.events) + ")");
+    return impl_->tracePrincipal(ray, options.events, options, s, hitObject);
+  }
   return impl_->traceFull(ray.origin, ray.direction, ray.tNear, ray.tFar, 0, 1.0, false, options, s, hitObject);
 }
 
@@ -317,10 +337,14 @@ TraceResult ReferenceTracer::render(const Camera& camera, const TraceOptions& op
   TraceResult result;
   result.color = Image(camera.width, camera.height, vec4(0.0f, 0.0f, 0.0f, 1.0f));
   result.mask = Mask(camera.width, camera.height);
+  result.tir = Mask(camera.width, camera.height);
   unsigned threads = options.threads > 0 ? static_cast<unsigned>(options.threads) : std::thread::hardware_concurrency();
   threads = std::max(1u, std::min(threads, static_cast<unsigned>(camera.height)));
-  ProgressBar bar(options.mode == TraceMode::Full ? "ray tracing" : "ray tracing (two interfaces)", camera.height,
-                  options.progress);
+  const std::string what = options.mode == TraceMode::Full            ? "ray tracing"
+                           : options.mode == TraceMode::TwoInterfaces ? "ray tracing (two interfaces)"
+                                                                      : "ray tracing (principal path, " +
+                                                                            std::to_string(options.events) + " events)";
+  ProgressBar bar(what, camera.height, options.progress);
   std::atomic<int> nextRow{0};
   std::mutex statsMutex;
   std::exception_ptr failure;
@@ -330,9 +354,11 @@ TraceResult ReferenceTracer::render(const Camera& camera, const TraceOptions& op
       for (int y = nextRow++; y < camera.height; y = nextRow++) {
         for (int x = 0; x < camera.width; ++x) {
           bool hitObject = false;
+          const std::uint64_t tirBefore = local.tirEvents;
           const glm::dvec3 c = radiance(primaryRay(camera, x, y), options, &local, &hitObject);
           result.color.at(x, y) = vec4(vec3(c), 1.0f);
           result.mask.set(x, y, hitObject);
+          result.tir.set(x, y, local.tirEvents != tirBefore);
           if (hitObject) ++local.objectPixels;
         }
         bar.advance();

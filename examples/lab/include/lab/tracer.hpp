@@ -30,13 +30,24 @@ enum class TraceMode {
   // refract out at the next surface the ray meets (TIR clamped to the critical
   // angle, as SNELL_TIR_CRITICAL), then look up the background (paintings,
   // else environment) without meeting the object again. With `fresnel`, the
-  // first surface's reflection of the background is added.
+  // first surface's reflection of the background is added. The principal
+  // path below with 2 events.
   TwoInterfaces,
+  // The principal path for at most TraceOptions::events interface events
+  // (the entry is the first): refract wherever Snell allows, reflect on TIR
+  // and go on inside, no Fresnel branching inside; the last event clamps TIR
+  // to the critical angle as the image-space techniques do. A ray that
+  // leaves, or is clamped at the last event, looks up the background
+  // (paintings, else environment) without meeting the object again: what an
+  // image-space method that follows bounces can reach (the model floor for
+  // that many events). `fresnel` adds the first surface's reflection.
+  Principal,
 };
 
 struct TraceOptions {
   TraceMode mode = TraceMode::Full;
   int maxDepth = 16;         // Full: interface events on one path (deeper: black)
+  int events = 2;            // Principal: interface events on the path (at least 2)
   double minWeight = 1e-4;   // Full: reflection branches below this throughput are dropped
   bool fresnel = true;       // false: transmission only (weight 1; Full: TIR still reflects)
   bool absorption = true;    // Beer-Lambert inside the object
@@ -60,6 +71,10 @@ struct TraceStats {
 struct TraceResult {
   Image color;  // linear RGB, alpha 1; row 0 at the bottom
   Mask mask;    // pixels whose primary ray hits the refractive object first
+  // Pixels whose path met total internal reflection inside the object (Full: on
+  // any branch; TwoInterfaces, Principal: on the principal path, the last
+  // event's critical clamp included).
+  Mask tir;
   TraceStats stats;
 };
 
