@@ -137,10 +137,11 @@ std::string markdownTable(const LabResult& r) {
        "surface, no internal bounces) is " + fmt("%.3g", r.mseTwoVsFull) + " from the full ray tracer; no technique "
        "that models two interfaces can get closer to the ray tracer than that.\n";
   s += "- total internal reflection: " + fmt("%.1f %%", 100.0 * r.tirShare) + " of the object pixels meet TIR at "
-       "their second interface (every two-interface technique clamps there to the critical angle); on them the "
-       "two-interface reference is " + fmt("%.3g", r.mseTwoVsFullTir) + " from the full ray tracer (\"on TIR\" in "
-       "the table: each technique's). Following the principal path inside (refract where Snell allows, reflect on "
-       "TIR, the ray tracer):";
+       "their second interface (every two-interface technique clamps there to the critical angle)" +
+       (r.tirShare > 0.0 ? "; on them the two-interface reference is " + fmt("%.3g", r.mseTwoVsFullTir) +
+                               " from the full ray tracer (\"on TIR\" in the table: each technique's)"
+                         : std::string(" (\"on TIR\" in the table is 0)")) +
+       ". Following the principal path inside (refract where Snell allows, reflect on TIR, the ray tracer):";
   for (const ModelFloor& f : r.modelFloors)
     s += " " + std::to_string(f.events) + " events " + fmt("%.3g", f.mseFull) + " (on TIR " + fmt("%.3g", f.mseFullTir) +
          ")" + (&f == &r.modelFloors.back() ? "." : ",");
