@@ -26,6 +26,8 @@ layout(binding = 4) uniform sampler2D sceneNormal;
 layout(binding = 5) uniform sampler2D scenePyramid;
 layout(binding = 6) uniform sampler2D sceneColor;
 layout(binding = 7) uniform sampler2D environment;
+layout(binding = 8) uniform sampler2D frontLayerDepth;
+layout(binding = 9) uniform sampler2D frontLayerNormal;
 // The frame's constants, the host's LabParams bytes as they are (std140).
 layout(std140, binding = 0) uniform LabUniforms { LabParams params; };
 
@@ -36,7 +38,7 @@ layout(location = 3) out vec4 normal;    // xyz interpolated front normal, w 1 (
 
 void main() {
   SnellTwoInterfaceResult r = labShade(LAB_TECHNIQUE, LAB_REFERENCE, vsPosition, vsNormal, vsDn, backDepth, backNormal,
-                                       backPyramid, sceneDepth, sceneNormal, scenePyramid, sceneColor,
+                                       backPyramid, frontLayerDepth, frontLayerNormal, sceneDepth, sceneNormal, scenePyramid, sceneColor,
                                        environment, params);
   color = vec4(r.color, 1.0f);
   stats = vec4(r.fellBack ? 1.0f : 0.0f, float(r.fetches), r.backHit ? 1.0f : 0.0f, r.exitHit.valid ? 1.0f : 0.0f);

@@ -8,14 +8,16 @@ description: the lab's per-pixel technique call (snell-lab, examples/lab): one
   none) and runs snellTwoInterfaceRefraction.
 use: LabParams p;  // the host fills every field (C++), or the uniform block LabUniforms holds it (GLSL)
      SnellTwoInterfaceResult r = labShade(SNELL_TECHNIQUE_PLANE_NORMAL_1, false, frontPosition, frontNormal,
-         dN, backDepth, backNormal, backPyramid, sceneDepth, sceneNormal, scenePyramid,
-         sceneColor, environment, p);
+         dN, backDepth, backNormal, backPyramid, frontLayerDepth, frontLayerNormal, sceneDepth, sceneNormal,
+         scenePyramid, sceneColor, environment, p);
   technique   SNELL_TECHNIQUE_* (shade/technique_presets.glsl)
   reference   the technique table's row is a Reference (the image-space
               bound): its exit slot marches over the whole scene
   frontPosition, frontNormal, dN: the front-face fragment (view space), Wyman's d_N
   back*       the back-face pass: depth (GL_GREATER, cleared to 0), view-space
               normals, its depth min/max pyramid
+  front*      the front-face pass: depth (GL_LESS, cleared to 1), view-space
+              normals (read by the techniques that bounce inside)
   scene*      the opaque scene without the object: depth (GL_LESS, cleared to
               1), view-space normals, pyramid, colour
   environment the equirectangular environment (world directions through
@@ -29,8 +31,9 @@ contract: every technique's exit slot reads the scene's buffers
   resolves R against the opaque scene, as the ray-traced reference does;
   SNELL_SOURCE_ENVIRONMENT the environment only) and the environment as its
   fallback. The
-  marches (linear, DDA, the image-space bound) in the back slot walk at most
-  p.backRange (the object's bounding-box diagonal), a reference's exit slot
+  marches (linear, DDA, the image-space bound) in the back slot and the
+  inside slot's march walk at most p.backRange (the object's bounding-box
+  diagonal), a reference's exit slot
   p.exitRange (the diagonal of the box around the object and the opaque
   scene); p.depthFilter BILINEAR reads both depth buffers bilinearly in every
   slot of every technique (the bound always does); every other parameter is
@@ -69,6 +72,7 @@ SNELL_FN SnellTechnique labTechnique(int technique, bool reference, LabParams p)
   SnellTechnique t = snellTechniquePreset(technique);
   t.back.intersect.marchMaxDistance = p.backRange;
   t.back.intersect.ddaMaxDistance = p.backRange;
+  t.inside.intersect.marchMaxDistance = p.backRange;
   if (reference) {
     t.exit.intersect.marchMaxDistance = p.exitRange;
   }
@@ -104,9 +108,10 @@ SNELL_FN SnellView labView(LabParams p) {
 
 SNELL_FN SnellTwoInterfaceResult labShade(int technique, bool reference, vec3 frontPosition, vec3 frontNormal, float dN,
                                           SNELL_TEX2D backDepth, SNELL_TEX2D backNormal, SNELL_TEX2D backPyramid,
-                                          SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid,
+                                          SNELL_TEX2D frontLayerDepth, SNELL_TEX2D frontLayerNormal, SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid,
                                           SNELL_TEX2D sceneColor, SNELL_ENVIRONMENT_TEX environment, LabParams p) {
   SnellDepthSurface back = snellDepthSurface(p.clipFromView, p.zNear, p.zFar, SNELL_DEPTH_GL, 0.0f);
+  SnellDepthSurface frontLayer = snellDepthSurface(p.clipFromView, p.zNear, p.zFar, SNELL_DEPTH_GL, 1.0f);
   SnellDepthSurface scene = snellDepthSurface(p.clipFromView, p.zNear, p.zFar, SNELL_DEPTH_GL, 1.0f);
   scene.closed = false;  // where the scene buffer is empty, the environment shows
   return snellTwoInterfaceRefraction(frontPosition, frontNormal, dN, SNELL_OBJECT_BUFFER_ARGS, SNELL_SCENE_BUFFER_ARGS,

@@ -18,6 +18,7 @@
 #include "intersect/binary_search.glsl"
 #include "intersect/linear_binary_search.glsl"
 #include "intersect/linear_march.glsl"
+#include "intersect/inside_march.glsl"
 #include "intersect/dda_march.glsl"
 #include "intersect/intersect_with.glsl"
 #endif

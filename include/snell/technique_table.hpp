@@ -58,6 +58,12 @@ inline const std::array<SnellTechniqueInfo, SNELL_TECHNIQUE_COUNT>& snellTechniq
       {SNELL_TECHNIQUE_IMAGE_SPACE_BOUND, "image-space-bound", "image-space bound",
        "the best any image-space method can do with these buffers (a reference, not a real-time method)",
        SnellTechniqueKind::Reference},
+      {SNELL_TECHNIQUE_PLANE_NORMAL_2_BOUNCES, "plane-normal-2-bounces", "normal plane, 2 it., bounces",
+       "normal plane that follows TIR inside (Davis & Wyman 2007: a march between front and back depth)",
+       SnellTechniqueKind::Search},
+      {SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES, "linear-march-bounces", "linear march, bounces",
+       "linear march that follows TIR inside (Davis & Wyman 2007: a march between front and back depth)",
+       SnellTechniqueKind::Search},
   }};
   return table;
 }

@@ -102,7 +102,7 @@ struct GpuLab::Impl {
   gpu::Program background, scene, back;
   gpu::DepthPyramidPass pyramidPass;
   std::vector<gpu::Program> refract;
-  gpu::Framebuffer sceneFb, backFb, frontFb;
+  gpu::Framebuffer sceneFb, backFb, objectFrontFb, frontFb;
   gpu::DepthPyramid scenePyramid, backPyramid;
   gpu::VertexArray vao;
   gpu::UniformBuffer labUniforms;
@@ -130,6 +130,7 @@ struct GpuLab::Impl {
         pyramidPass(gl, dirs.snellGlsl),
         sceneFb(gl, bufferWidth, bufferHeight, 2, true),
         backFb(gl, bufferWidth, bufferHeight, 1, true),
+        objectFrontFb(gl, bufferWidth, bufferHeight, 1, true),
         frontFb(gl, width, height, 4, true),
         scenePyramid(gl, bufferWidth, bufferHeight),
         backPyramid(gl, bufferWidth, bufferHeight),
@@ -155,7 +156,7 @@ struct GpuLab::Impl {
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     const GLint normalGl = k.normalFilter == NormalFilter::Linear ? GL_LINEAR : GL_NEAREST;
-    for (GLuint normalTexture : {backFb.colorTexture(0), sceneFb.colorTexture(1)}) {
+    for (GLuint normalTexture : {backFb.colorTexture(0), objectFrontFb.colorTexture(0), sceneFb.colorTexture(1)}) {
       gl.BindTexture(GL_TEXTURE_2D, normalTexture);
       gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, normalGl);
       gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, normalGl);
@@ -241,6 +242,12 @@ struct GpuLab::Impl {
     gl.CullFace(GL_BACK);
     gl.DepthFunc(GL_LESS);
     gpu::checkGl(gl, "back-face pass");
+    // (2b) The object's front faces, for the rays that bounce inside.
+    objectFrontFb.clearColor(0, vec4(0.0f));
+    objectFrontFb.clearDepth(1.0f);
+    objectFrontFb.bind();
+    gl.DrawArrays(GL_TRIANGLES, 0, vertexCount);
+    gpu::checkGl(gl, "front-face pass");
     // (3) Both depth pyramids.
     pyramidPass.build(backPyramid, backFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 0.0f);
     pyramidPass.build(scenePyramid, sceneFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 1.0f);
@@ -257,10 +264,11 @@ struct GpuLab::Impl {
     gl.DepthFunc(GL_LESS);
     gl.Enable(GL_CULL_FACE);
     gl.CullFace(GL_BACK);
-    const GLuint units[8] = {backFb.depthTexture(),   backFb.colorTexture(0),   backPyramid.texture(),
-                             sceneFb.depthTexture(),  sceneFb.colorTexture(1),  scenePyramid.texture(),
-                             sceneFb.colorTexture(0), environment.id()};
-    for (int u = 0; u < 8; ++u) {
+    const GLuint units[10] = {backFb.depthTexture(),   backFb.colorTexture(0),   backPyramid.texture(),
+                              sceneFb.depthTexture(),  sceneFb.colorTexture(1),  scenePyramid.texture(),
+                              sceneFb.colorTexture(0), environment.id(),         objectFrontFb.depthTexture(),
+                              objectFrontFb.colorTexture(0)};
+    for (int u = 0; u < 10; ++u) {
       gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(u));
       gl.BindTexture(GL_TEXTURE_2D, units[u]);
     }
@@ -300,6 +308,8 @@ StaticBuffers GpuLab::readStatic() const {
   b.sceneDepth = impl_->sceneFb.readDepth();
   b.backNormal = impl_->backFb.readColor(0);
   b.backDepth = impl_->backFb.readDepth();
+  b.frontNormal = impl_->objectFrontFb.readColor(0);
+  b.frontDepth = impl_->objectFrontFb.readDepth();
   return b;
 }
 

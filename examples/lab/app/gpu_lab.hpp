@@ -1,7 +1,8 @@
 // The lab's GL pipeline on one context (OSMesa or EGL, Mesa llvmpipe by
 // default): (1) the opaque scene (environment background, paintings: colour,
 // depth, view-space normal), (2) the refractive object's back faces (depth
-// GL_GREATER after clearing to 0, front faces culled, normals), (3) the depth
+// GL_GREATER after clearing to 0, front faces culled, normals) and its front
+// faces (depth GL_LESS after clearing to 1, normals), (3) the depth
 // min/max pyramids of both depth buffers (glsl/passes/depth_pyramid.frag),
 // (4) the front faces with one technique (examples/glsl/lab_refract.frag):
 // colour, per-pixel stats and the fragment inputs, in RGBA32F attachments.
@@ -33,6 +34,7 @@ struct ShaderDirs {
 struct StaticBuffers {
   Image sceneColor, sceneDepth, sceneNormal;  // depth in .x (window depth, GL convention, 1 = empty)
   Image backDepth, backNormal;                // depth in .x (0 = empty)
+  Image frontDepth, frontNormal;              // the object's front faces: depth in .x (1 = empty)
 };
 
 // Read back after pass 4.

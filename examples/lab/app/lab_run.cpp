@@ -56,6 +56,7 @@ constexpr int kTieUlps = 4;
 // The read-back buffers as the C++ side samples them (the same filters as GL).
 struct CpuBuffers {
   Texture2D backDepth, backNormal, backPyramid;
+  Texture2D frontDepth, frontNormal;
   Texture2D sceneDepth, sceneNormal, scenePyramid, sceneColor;
   Texture2D environment;
 };
@@ -65,6 +66,8 @@ CpuBuffers cpuBuffers(const StaticBuffers& b, const ShadeConstants& k, const Sce
   CpuBuffers c;
   c.backDepth = Texture2D(b.backDepth);
   c.backNormal = Texture2D(b.backNormal, normalFilter);
+  c.frontDepth = Texture2D(b.frontDepth);
+  c.frontNormal = Texture2D(b.frontNormal, normalFilter);
   c.sceneDepth = Texture2D(b.sceneDepth);
   c.sceneNormal = Texture2D(b.sceneNormal, normalFilter);
   c.sceneColor = Texture2D(b.sceneColor, Filter::Linear);
@@ -379,7 +382,7 @@ struct CpuShader {
   int margin;  // guard band of the buffers, texels per side
 
   SnellTwoInterfaceResult operator()(vec3 p1, vec3 n1, float dN) const {
-    return labShade(info.id, info.kind == SnellTechniqueKind::Reference, p1, n1, dN, cb.backDepth, cb.backNormal, cb.backPyramid, cb.sceneDepth, cb.sceneNormal,
+    return labShade(info.id, info.kind == SnellTechniqueKind::Reference, p1, n1, dN, cb.backDepth, cb.backNormal, cb.backPyramid, cb.frontDepth, cb.frontNormal, cb.sceneDepth, cb.sceneNormal,
                     cb.scenePyramid, cb.sceneColor, cb.environment, params);
   }
 

@@ -2,11 +2,12 @@
 description: the buffers a two-interface technique reads, as the parameter
   lists every technique function declares and the argument lists every call
   inside snell passes on. A layer of buffers is a depth texture, its
-  view-space normals, its depth min/max pyramid and the SnellDepthSurface
-  that says how to read them; the object's layers (today its back faces) and
-  the opaque scene's (its layer, its colour and the environment) each travel
-  as one list, so a new layer (a second back-face layer, the object's front
-  faces) is one edit here, not one per function and call site.
+  view-space normals, its depth min/max pyramid where a strategy needs one,
+  and the SnellDepthSurface that says how to read them; the object's layers
+  (its back faces and its front faces) and the opaque scene's (its layer,
+  its colour and the environment) each travel as one list, so a new layer
+  (a second back-face layer) is one edit here, not one per function and
+  call site inside snell.
 use: in a function that takes or forwards the buffers:
      SNELL_FN SnellTwoInterfacePath f(vec3 p, SNELL_OBJECT_BUFFERS, SNELL_SCENE_BUFFERS) {
        return g(p, SNELL_OBJECT_BUFFER_ARGS, SNELL_SCENE_BUFFER_ARGS);
@@ -17,7 +18,15 @@ options:
                         SNELL_TEX2D backPyramid, SnellDepthSurface back
                         (the back-face pass: depth cleared to the near value
                         and drawn with GL_GREATER, view-space normals, the
-                        pyramid of that depth, how to read the depth)
+                        pyramid of that depth, how to read the depth),
+                        SNELL_TEX2D frontLayerDepth, SNELL_TEX2D
+                        frontLayerNormal, SnellDepthSurface frontLayer (the
+                        front-face pass: depth
+                        cleared to the far value and drawn with GL_LESS,
+                        view-space normals, how to read the depth; read only
+                        by rays that bounce inside, SnellTechnique.bounces >
+                        0: any texture of the right kind may be bound when
+                        bounces is 0)
   SNELL_SCENE_BUFFERS   SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal,
                         SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor,
                         SnellDepthSurface scene, SNELL_ENVIRONMENT_TEX
@@ -41,8 +50,8 @@ contract: macros only, each on one line (GLSL 330 has no line continuation). Why
 #include "../intersect/depth_surface.glsl"
 #include "environment.glsl"
 
-#define SNELL_OBJECT_BUFFERS SNELL_TEX2D backDepth, SNELL_TEX2D backNormal, SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back
-#define SNELL_OBJECT_BUFFER_ARGS backDepth, backNormal, backPyramid, back
+#define SNELL_OBJECT_BUFFERS SNELL_TEX2D backDepth, SNELL_TEX2D backNormal, SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back, SNELL_TEX2D frontLayerDepth, SNELL_TEX2D frontLayerNormal, SNELL_IN(SnellDepthSurface) frontLayer
+#define SNELL_OBJECT_BUFFER_ARGS backDepth, backNormal, backPyramid, back, frontLayerDepth, frontLayerNormal, frontLayer
 
 #define SNELL_SCENE_BUFFERS SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor, SNELL_IN(SnellDepthSurface) scene, SNELL_ENVIRONMENT_TEX environment
 #define SNELL_SCENE_BUFFER_ARGS sceneDepth, sceneNormal, scenePyramid, sceneColor, scene, environment

@@ -3,9 +3,13 @@ description: what a two-interface refraction technique is made of, split by
   what each part describes and how long it lives:
   - SnellSlot: one place a ray is resolved (where it reads from, the
     intersection strategy and its parameters, what it shows when the buffers
-    give nothing). A technique has three: back (where T1 leaves the object),
+    give nothing). A technique has four: back (where T1 leaves the object),
     exit (what T2 sees), reflect (what the first surface's reflected ray R
-    sees). The exit and the reflection are the same call with their own slot.
+    sees, and a ray that leaves through the front faces after bouncing
+    inside), inside (where a ray reflected inside the object leaves it). The
+    exit and the reflection are the same call with their own slot.
+  - bounces: how many total internal reflections inside the object a ray
+    follows (0: none, the two-interface model).
   - SnellTechnique: the technique's choices, the set of slots (the presets,
     technique_presets.glsl, return one).
   - SnellMaterial: the object's optics (IORs, dispersion, absorption, TIR
@@ -39,7 +43,12 @@ contract (defaults):
   snellTechnique(): back = snellSlot(BUFFERS, CBS), exit =
     snellSlot(ENVIRONMENT, PLANE_NORMAL), reflect = snellSlot(ENVIRONMENT,
     LINEAR_MARCH) (the strategies are read only when the source becomes
-    BUFFERS).
+    BUFFERS), inside = snellSlot(BUFFERS, LINEAR_MARCH) (the march between
+    the front and back layers, intersect/inside_march.glsl, with the linear
+    march's marchSteps, marchBisections and marchMaxDistance: the one
+    strategy that brackets two layers at once; any other strategy or source
+    ends the path at the reflection, as a fallback), bounces = 0 (clamped to
+    [0, SNELL_MAX_BOUNCES], default 4, a compile-time bound).
   snellMaterial(): ior = 1.5, iorOutside = 1, dispersion = 1 (one trace; 3 =
     one per channel with iors, e.g. snellDispersionIors(1.5168f, 64.17f) from
     shade/dispersion.glsl), iors = (1.5, 1.5, 1.5), absorption = 0
@@ -76,10 +85,16 @@ struct SnellSlot {
   float edgeFadeWidth;
 };
 
+#ifndef SNELL_MAX_BOUNCES
+#  define SNELL_MAX_BOUNCES 4
+#endif
+
 struct SnellTechnique {
   SnellSlot back;
   SnellSlot exit;
   SnellSlot reflect;
+  SnellSlot inside;
+  int bounces;
 };
 
 struct SnellMaterial {
@@ -116,6 +131,8 @@ SNELL_FN SnellTechnique snellTechnique() {
   t.back = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_CBS);
   t.exit = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_PLANE_NORMAL);
   t.reflect = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_LINEAR_MARCH);
+  t.inside = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_LINEAR_MARCH);
+  t.bounces = 0;
   return t;
 }
 

@@ -32,6 +32,15 @@ presets (back slot / exit slot):
   snellPresetLinearMarch()         screen-space ray march, view-space steps +
                                    bisection / the same
   snellPresetDdaMarch()            perspective-correct pixel DDA march / the same
+  snellPresetPlaneNormalBounces(n) snellPresetPlaneNormal(n) that follows
+                                   TIR inside the object: bounces =
+                                   SNELL_PRESET_BOUNCES (2), the inside slot's
+                                   march SNELL_PRESET_INSIDE_STEPS (16) steps +
+                                   SNELL_PRESET_INSIDE_BISECTIONS (5)
+                                   bisections (set inside.intersect.
+                                   marchMaxDistance to the object's extent);
+                                   reads the front-face layer
+  snellPresetLinearMarchBounces()  snellPresetLinearMarch() with the same bounces
   snellPresetImageSpaceBound()     not a real-time method: the best any
                                    image-space technique can do with the same
                                    buffers, for measuring the others against:
@@ -58,6 +67,8 @@ the technique table (the one list of named techniques: snell-lab's
   SNELL_TECHNIQUE_LINEAR_MARCH    linear-march    snellPresetLinearMarch()
   SNELL_TECHNIQUE_DDA             dda             snellPresetDdaMarch()
   SNELL_TECHNIQUE_IMAGE_SPACE_BOUND  image-space-bound  snellPresetImageSpaceBound()
+  SNELL_TECHNIQUE_PLANE_NORMAL_2_BOUNCES  plane-normal-2-bounces  snellPresetPlaneNormalBounces(2)
+  SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES    linear-march-bounces    snellPresetLinearMarchBounces()
   SNELL_TECHNIQUE_COUNT           the number of ids (ids are 0 .. COUNT - 1)
   SnellTechnique t = snellTechniquePreset(SNELL_TECHNIQUE_PLANE_NORMAL_1);
   Adding a technique: a preset function here, an id, a branch in
@@ -71,7 +82,8 @@ contract: pure constructors, no texture access; iteration counts are stored as
 source: Oliveira & Brauwers 2007 (sec. 3.3, 5 steps; sec. 6, bounding box);
   Wyman 2005 via O&B 2007 sec. 2.1, eqs. 1-2; Mayer & Assarsson,
   "Constant-Time Light Refraction Simulation" (methods 1 and 2, step 5);
-  McGuire & Mara 2014 (DDA).
+  McGuire & Mara 2014 (DDA); Davis & Wyman 2007 (bounces inside between
+  front and back depth maps).
 */
 #ifndef SNELL_SHADE_TECHNIQUE_PRESETS_GLSL
 #define SNELL_SHADE_TECHNIQUE_PRESETS_GLSL
@@ -147,6 +159,35 @@ SNELL_FN SnellTechnique snellPresetImageSpaceBound() {
   return t;
 }
 
+#ifndef SNELL_PRESET_BOUNCES
+#  define SNELL_PRESET_BOUNCES 2
+#endif
+#ifndef SNELL_PRESET_INSIDE_STEPS
+#  define SNELL_PRESET_INSIDE_STEPS 16
+#endif
+#ifndef SNELL_PRESET_INSIDE_BISECTIONS
+#  define SNELL_PRESET_INSIDE_BISECTIONS 5
+#endif
+
+/* Davis & Wyman 2007 on the normal plane: TIR at the back face followed inside (the inside march between
+   the front and back layers) up to SNELL_PRESET_BOUNCES times */
+SNELL_FN SnellTechnique snellPresetPlaneNormalBounces(int iterations) {
+  SnellTechnique t = snellPresetPlaneNormal(iterations);
+  t.bounces = SNELL_PRESET_BOUNCES;
+  t.inside.intersect.marchSteps = SNELL_PRESET_INSIDE_STEPS;
+  t.inside.intersect.marchBisections = SNELL_PRESET_INSIDE_BISECTIONS;
+  return t;
+}
+
+/* The linear march in the back and exit slots, with bounces as snellPresetPlaneNormalBounces */
+SNELL_FN SnellTechnique snellPresetLinearMarchBounces() {
+  SnellTechnique t = snellPresetLinearMarch();
+  t.bounces = SNELL_PRESET_BOUNCES;
+  t.inside.intersect.marchSteps = SNELL_PRESET_INSIDE_STEPS;
+  t.inside.intersect.marchBisections = SNELL_PRESET_INSIDE_BISECTIONS;
+  return t;
+}
+
 #define SNELL_TECHNIQUE_SINGLE 0
 #define SNELL_TECHNIQUE_PLANE_NORMAL_0 1
 #define SNELL_TECHNIQUE_PLANE_NORMAL_1 2
@@ -157,7 +198,9 @@ SNELL_FN SnellTechnique snellPresetImageSpaceBound() {
 #define SNELL_TECHNIQUE_LINEAR_MARCH 7
 #define SNELL_TECHNIQUE_DDA 8
 #define SNELL_TECHNIQUE_IMAGE_SPACE_BOUND 9
-#define SNELL_TECHNIQUE_COUNT 10
+#define SNELL_TECHNIQUE_PLANE_NORMAL_2_BOUNCES 10
+#define SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES 11
+#define SNELL_TECHNIQUE_COUNT 12
 
 /* the technique table's constructor: id -> preset */
 SNELL_FN SnellTechnique snellTechniquePreset(int technique) {
@@ -190,6 +233,12 @@ SNELL_FN SnellTechnique snellTechniquePreset(int technique) {
   }
   if (technique == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND) {
     return snellPresetImageSpaceBound();
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_2_BOUNCES) {
+    return snellPresetPlaneNormalBounces(2);
+  }
+  if (technique == SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES) {
+    return snellPresetLinearMarchBounces();
   }
   return snellTechniquePresetSlots(-1, -1);
 }

@@ -76,6 +76,7 @@ source: C. Wyman, "An Approximate Image-Space Approach for Interactive
 #include "../intersect/depth_surface.glsl"
 #include "../intersect/hit_on_surface.glsl"
 #include "../intersect/intersect_with.glsl"
+#include "../intersect/inside_march.glsl"
 #include "technique_options.glsl"
 #include "technique_buffers.glsl"
 
@@ -88,18 +89,20 @@ struct SnellTwoInterfacePath {
   vec3 exitPoint;       // P2 (P1 when no back hit)
   vec3 exitNormal;      // N2, facing T1
   vec3 exitDirection;   // T2 (T1 on fallback)
-  vec2 exitUv;          // uv of P2 in the back buffers
-  float pathLength;     // |P2 - P1|
+  vec2 exitUv;          // uv of P2 in the back buffers (in the front buffers when exitFront)
+  float pathLength;     // |P2 - P1|, plus every segment after a bounce
   int fetches;
+  int bounces;          // total internal reflections followed inside
   bool hit;
   bool tir;
   bool fellBack;
   bool valid;
+  bool exitFront;       // the last interface is a front face (after a bounce): T2 heads to the camera's side
 };
 
 /* Wyman 2005 / Oliveira & Brauwers 2007 sec. 3: P1, T1 -> P2 (back-face buffer), N2 -> T2 */
 SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
-                                                      SNELL_OBJECT_BUFFERS, SNELL_IN(SnellSlot) slot, int tirPolicy) {
+                                                      SNELL_OBJECT_BUFFERS, SNELL_IN(SnellTechnique) t, int tirPolicy) {
   SnellTwoInterfacePath p;
   p.entryDirection = vec3(0.0f, 0.0f, 0.0f);
   p.exitPoint = vec3(0.0f, 0.0f, 0.0f);
@@ -108,10 +111,12 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitUv = vec2(0.0f, 0.0f);
   p.pathLength = 0.0f;
   p.fetches = 0;
+  p.bounces = 0;
   p.hit = false;
   p.tir = false;
   p.fellBack = true;
   p.valid = false;
+  p.exitFront = false;
   SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy);
   if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_FINITE(frontPosition.x) ||
       !SNELL_FINITE(frontPosition.y) || !SNELL_FINITE(frontPosition.z)) {
@@ -123,7 +128,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitDirection = t1;
   p.valid = true;
   SnellHit h = snellHitMiss(0);
-  if (slot.source == SNELL_SOURCE_WYMAN) {
+  if (t.back.source == SNELL_SOURCE_WYMAN) {
     SnellScreenPoint sp = snellViewToUv(back.clipFromView, frontPosition);
     if (sp.valid && frontPosition.z < 0.0f) {
       SnellSurfaceSample b = snellSampleSurface(backDepth, sp.uv, back);
@@ -134,8 +139,8 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
         h = snellHitOnSurface(frontPosition + d * t1, backDepth, back, 1);
       }
     }
-  } else if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
-    h = snellIntersectWith(frontPosition, t1, backDepth, backNormal, backPyramid, back, slot.intersect);
+  } else if (t.back.source != SNELL_SOURCE_ENVIRONMENT) {
+    h = snellIntersectWith(frontPosition, t1, backDepth, backNormal, backPyramid, back, t.back.intersect);
   }
   p.fetches = h.fetches;
   // length() squares first: it overflows beyond ~1.8e19 (Wyman's estimate with a huge dN).
@@ -161,9 +166,55 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     n = -n;
   }
   p.exitNormal = n;
-  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, tirPolicy);
+  int bounces = clamp(t.bounces, 0, SNELL_MAX_BOUNCES);
+  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, bounces > 0 ? SNELL_TIR_REFLECT : tirPolicy);
+  // Inside: each TIR reflects, the inside slot finds where the reflected ray meets a layer, and the
+  // last allowed interface takes the material's policy.
+  vec3 d = t1;
+  for (int k = 0; k < SNELL_MAX_BOUNCES; ++k) {
+    if (k >= bounces || !r2.tir) {
+      break;
+    }
+    if (t.inside.source != SNELL_SOURCE_BUFFERS || t.inside.intersect.strategy != SNELL_STRATEGY_LINEAR_MARCH) {
+      return p;
+    }
+    d = r2.direction;
+    SnellInsideHit ih = snellInsideMarch(p.exitPoint, d, backDepth, back, frontLayerDepth, frontLayer,
+                                         t.inside.intersect.marchMaxDistance, t.inside.intersect.marchSteps,
+                                         t.inside.intersect.marchBisections);
+    p.fetches = p.fetches + ih.hit.fetches;
+    p.bounces = k + 1;
+    float segment = length(ih.hit.position - p.exitPoint);
+    // No exit in the buffers: the ray leaves along the reflection from the last point (a fallback).
+    p.exitDirection = d;
+    p.tir = true;
+    if (!ih.hit.valid || !SNELL_FINITE(p.pathLength + segment)) {
+      return p;
+    }
+    p.exitPoint = ih.hit.position;
+    p.exitUv = ih.hit.uv;
+    p.exitFront = ih.front;
+    p.pathLength = p.pathLength + segment;
+#if SNELL_TWO_INTERFACE_NORMAL_SAMPLE
+    vec4 nk = ih.front ? SNELL_SAMPLE_LOD(frontLayerNormal, ih.hit.uv, 0.0f) : SNELL_SAMPLE_LOD(backNormal, ih.hit.uv, 0.0f);
+#else
+    vec4 nk = ih.front ? SNELL_TEXEL_FETCH(frontLayerNormal, snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(frontLayerNormal, 0)), 0)
+                       : SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
+#endif
+    p.fetches = p.fetches + 1;
+    n = snellSafeNormalize(vec3(nk.x, nk.y, nk.z));
+    if (dot(n, n) == 0.0f) {
+      return p;
+    }
+    if (dot(n, d) > 0.0f) {
+      n = -n;
+    }
+    p.exitNormal = n;
+    r2 = snellRefract(d, n, 1.0f / eta, k + 1 < bounces ? SNELL_TIR_REFLECT : tirPolicy);
+  }
   p.tir = r2.tir;
   if (!r2.valid || dot(r2.direction, r2.direction) == 0.0f) {
+    p.exitDirection = d;
     return p;
   }
   p.exitDirection = r2.direction;

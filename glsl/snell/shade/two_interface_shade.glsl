@@ -116,7 +116,8 @@ struct SnellTwoInterfaceResult {
   int fetches;
   bool backHit;        // P2 found in the back-face buffers
   bool fellBack;       // any fallback: back hit, TIR under ZERO, exit slot
-  bool tir;            // TIR at the second interface
+  bool tir;            // TIR at the last interface
+  int bounces;         // total internal reflections followed inside (SnellTechnique.bounces at most)
 };
 
 /* Mayer & Assarsson: a ray from the object resolved by one slot against the scene buffers or the environment */
@@ -176,9 +177,9 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   bool three = m.dispersion == 3;
   float eta = snellIorToEta(m.iorOutside, three ? m.iors.y : m.ior);
   SnellTwoInterfacePath p =
-      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
-  SnellTwoInterfaceExit e =
-      snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
+  SnellTwoInterfaceExit e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS,
+                                                  p.exitFront ? t.reflect : t.exit, m, v);
   vec3 transmitted = e.color * snellBeerLambert(m.absorption, p.pathLength);
   SnellTwoInterfaceResult r;
   r.exitPoint = p.exitPoint;
@@ -191,15 +192,16 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   r.backHit = p.hit;
   r.fellBack = p.fellBack || e.fellBack || !p.valid;
   r.tir = p.tir;
+  r.bounces = p.bounces;
   if (three) {
     SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.x),
-                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
-    SnellTwoInterfaceExit er =
-        snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
+    SnellTwoInterfaceExit er = snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, SNELL_SCENE_BUFFER_ARGS,
+                                                     pr.exitFront ? t.reflect : t.exit, m, v);
     SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.z),
-                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
-    SnellTwoInterfaceExit eb =
-        snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
+    SnellTwoInterfaceExit eb = snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, SNELL_SCENE_BUFFER_ARGS,
+                                                     pb.exitFront ? t.reflect : t.exit, m, v);
     transmitted.x = er.color.x * snellBeerLambert(m.absorption, pr.pathLength).x;
     transmitted.z = eb.color.z * snellBeerLambert(m.absorption, pb.pathLength).z;
     r.fetches = r.fetches + pr.fetches + er.fetches + pb.fetches + eb.fetches;
