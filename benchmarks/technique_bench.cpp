@@ -51,8 +51,7 @@ void twoInterface(benchmark::State& state, int technique) {
   for (auto _ : state) {
     for (const Pixel& p : px) {
       const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
-          p.p, p.n, 4.4f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(), s.plane.depth,
-          s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, t, m, v);
+          p.p, p.n, 4.4f, TECH_OBJECT_ARGS(s), TECH_SCENE_ARGS(s), t, m, v);
       benchmark::DoNotOptimize(r.color);
       fetches += r.fetches;
     }

@@ -143,9 +143,7 @@ void refractFrame(benchmark::State& state, int technique) {
       for (int y = next++; y < kFrameSize; y = next++)
         for (const FramePixel& p : f.rows[static_cast<std::size_t>(y)])
           color[static_cast<std::size_t>(p.index)] =
-              snell::snellTwoInterfaceRefraction(p.p, p.n, 4.4f, s.back.depth, s.backNormalMips, s.backPyramid,
-                                                 s.backSurface(), s.plane.depth, s.sceneNormalMips, s.scenePyramid,
-                                                 s.sceneColor, s.sceneSurface(), s.env, t, m, v)
+              snell::snellTwoInterfaceRefraction(p.p, p.n, 4.4f, TECH_OBJECT_ARGS(s), TECH_SCENE_ARGS(s), t, m, v)
                   .color;
     });
     benchmark::DoNotOptimize(color.data());

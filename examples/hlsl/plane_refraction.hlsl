@@ -45,6 +45,10 @@ Texture2D<float4> sceneNormal : register(t4);
 Texture2D<float4> scenePyramid : register(t5);
 Texture2D<float4> sceneColor : register(t6);
 Texture2D<float4> environment : register(t7);  // equirectangular
+// The object's front faces (depth and view-space normals): read only by a technique that follows rays
+// bouncing inside (t.bounces > 0); bind any texture otherwise.
+Texture2D<float4> frontLayerDepth : register(t8);
+Texture2D<float4> frontLayerNormal : register(t9);
 
 struct PSInput {
   float4 position : SV_Position;
@@ -55,6 +59,8 @@ struct PSInput {
 float4 main(PSInput input) : SV_Target {
   SnellDepthSurface back = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DEPTH_REVERSED, backEmptyDepth);
   SnellDepthSurface scene = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DEPTH_REVERSED, sceneEmptyDepth);
+  // Front faces clear to the far value, as the scene does.
+  SnellDepthSurface frontLayer = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DEPTH_REVERSED, sceneEmptyDepth);
 
   SnellTechnique t = snellPresetPlaneNormal(2);
   t.exit.source = SNELL_SOURCE_BUFFERS;         // refract the painting behind the object
@@ -69,7 +75,7 @@ float4 main(PSInput input) : SV_Target {
 
   SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
       input.viewPosition, input.viewNormal, 0.0f /* dN: Wyman's ISR only */,
-      backDepth, backNormal, backPyramid, back,
+      backDepth, backNormal, backPyramid, back, frontLayerDepth, frontLayerNormal, frontLayer,
       sceneDepth, sceneNormal, scenePyramid, sceneColor, scene, environment, t, m, v);
   return float4(r.color, 1.0f);
 }

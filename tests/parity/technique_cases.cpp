@@ -56,7 +56,7 @@ void buildTextures() {
   techScenePyramid = s.scenePyramid;
   techSceneColor = s.sceneColor;
   techEnv = s.env;
-  techFrontDepth = s.front.depth;  // read only by techImagePixel (tests/gpu/technique_image_test.cpp)
+  techFrontDepth = s.front.depth;  // the object's front layer, and techImagePixel's front-face buffers
   techFrontNormal = s.front.normals;
 }
 
@@ -125,6 +125,52 @@ std::vector<ParityIO> exitInputs(std::uint32_t seed) {
     if (g.chance(0.02f)) o = g.hostileVector();
     in.v[0] = glm::vec4(o, in.v[0].w);
     in.v[1] = glm::vec4(d, in.v[1].w);
+  }
+  return v;
+}
+
+// Rays inside the glass sphere (between its front and back layers), in every direction, with the march's
+// counts and distance; 1-2 % hostile origins, directions, distances and counts.
+std::vector<ParityIO> insideInputs(std::uint32_t seed) {
+  buildTextures();
+  InputGen g(seed);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    glm::vec3 o = glm::vec3(technique_test::kCentre) +
+                  float(technique_test::kRadius) * g.uniform(0.0f, 0.97f) * g.unitVector();
+    glm::vec3 d = g.unitVector();
+    float maxDistance = g.uniform(0.5f, 6.0f);
+    int steps = g.integer(1, 48);
+    const int refine = g.integer(0, 10);
+    const float k = g.uniform(0.0f, 1.0f);
+    if (k < 0.01f) o = g.hostileVector();
+    else if (k < 0.02f) d = g.hostileVector();
+    else if (k < 0.03f) d = glm::vec3(0.0f);
+    else if (k < 0.04f) maxDistance = g.hostile();
+    else if (k < 0.05f) steps = g.integer(-3, 2000);
+    ParityIO in{};
+    in.v[0] = glm::vec4(o, maxDistance);
+    in.v[1] = glm::vec4(d, float(steps));
+    in.v[2] = glm::vec4(float(refine), 0.0f, 0.0f, 0.0f);
+    in.v[3] = matrixEntries();
+    v.push_back(in);
+  }
+  return v;
+}
+
+// Points in front of, inside and behind the sphere at random uv (the layers read there).
+std::vector<ParityIO> insideSideInputs(std::uint32_t seed) {
+  buildTextures();
+  InputGen g(seed);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    ParityIO in{};
+    glm::vec3 p(g.uniform(-3.0f, 3.0f), g.uniform(-3.0f, 3.0f), g.uniform(-10.0f, -2.0f));
+    if (g.chance(0.02f)) p = g.hostileVector();
+    in.v[0] = glm::vec4(p, g.uniform(-1.0f, 1.0f));
+    in.v[1] = glm::vec4(g.uniform(-0.05f, 1.05f), g.uniform(-0.05f, 1.05f), 0.0f, 0.0f);
+    in.v[3] = matrixEntries();
+    v.push_back(in);
   }
   return v;
 }
@@ -410,6 +456,27 @@ SNELL_PARITY_CASE(snellPresetLinearMarch, [] { return smallIntInputs(818, 0, 1);
                   SnellTechnique t = snellPresetLinearMarch();
                   TECH_OPTIONS_OUT(t, snellMaterial(), snellView()))
 
+// The presets that bounce inside: the bounce count, the inside slot (source, strategy, counts, range) and the
+// back and exit strategies, exact (TECH_BOUNCE_OUT in cases/technique.glsl).
+#define TECH_BOUNCE_EXACT                                                                                          \
+  (int, bounces, 0, exact)(int, insideSource, 1, exact)(int, insideStrategy, 2, exact)(vec2, insideCounts, 3, exact) \
+  (float, insideMaxDistance, 5, exact)(int, backStrategy, 6, exact)(vec2, backCounts, 7, exact)                    \
+  (int, exitStrategy, 9, exact)
+
+SNELL_PARITY_CASE(snellPresetPlaneNormalBounces, [] { return smallIntInputs(831, -2, 12); },
+                  (int, iterations, 0),
+                  TECH_BOUNCE_EXACT,
+                  techExtras(),
+                  SnellTechnique t = snellPresetPlaneNormalBounces(iterations);
+                  TECH_BOUNCE_OUT(t))
+
+SNELL_PARITY_CASE(snellPresetLinearMarchBounces, [] { return smallIntInputs(832, 0, 1); },
+                  /* no inputs */,
+                  TECH_BOUNCE_EXACT,
+                  techExtras(),
+                  SnellTechnique t = snellPresetLinearMarchBounces();
+                  TECH_BOUNCE_OUT(t))
+
 SNELL_PARITY_CASE(snellPresetDdaMarch, [] { return smallIntInputs(819, 0, 1); },
                   /* no inputs */,
                   TECH_OPTIONS_EXACT,
@@ -468,7 +535,7 @@ SNELL_PARITY_CASE(snellIntersectWith, [] { return dispatchInputs(820); },
                   fetches = h.fetches;
                   position = h.position;)
 
-// Path flags and fetches exact. flags: hit + 2 tir + 4 fellBack + 8 valid.
+// Path flags and fetches exact. flags: hit + 2 tir + 4 fellBack + 8 valid + 16 exitFront + 32 bounces.
 SNELL_PARITY_CASE(snellTwoInterfaceTrace, [] { return techniqueInputs(821); },
                   TECH_RAY_INPUTS(entryPoint, entryNormal),
                   (vec3, exitDirection, 0, within(1e-4f, 1e-4f))(int, fetches, 3, exact)
@@ -479,17 +546,40 @@ SNELL_PARITY_CASE(snellTwoInterfaceTrace, [] { return techniqueInputs(821); },
                   SnellTechnique t = techTechnique(preset, steps, modes);
                   SnellMaterial m = techMaterial(ior, modes, roughness);
                   SnellTwoInterfacePath p = snellTwoInterfaceTrace(entryPoint, entryNormal, snellIorToEta(1.0f, m.ior),
-                                                                   dN, techBackDepth, techBackNormal, techBackPyramid,
-                                                                   techBackSurface(projection), t.back, m.tirPolicy);
+                                                                   dN, TECH_OBJECT_TEXTURES(projection), t, m.tirPolicy);
                   exitDirection = p.exitDirection;
                   fetches = p.fetches;
                   exitPoint = p.exitPoint;
                   pathLength = p.pathLength;
                   exitNormal = p.exitNormal;
                   flags = techFlag(p.hit) + 2.0f * techFlag(p.tir) + 4.0f * techFlag(p.fellBack) +
-                          8.0f * techFlag(p.valid);
+                          8.0f * techFlag(p.valid) + 16.0f * techFlag(p.exitFront) + 32.0f * float(p.bounces);
                   exitUv = p.exitUv;
                   entryDirectionZ = p.entryDirection.z;)
+
+// Rays inside the object: the hit's flags and fetches exact, position and uv 1e-4 (the bisection's last step
+// on a grazing ray moves with the GPU's rounding, as snellTwoInterfaceTrace's).
+SNELL_PARITY_CASE(snellInsideMarch, [] { return insideInputs(829); },
+                  (vec3, origin, 0)(float, maxDistance, 3)(vec3, dir, 4)(int, steps, 7)(int, refineSteps, 8)
+                  (vec4, projection, 12),
+                  (vec3, position, 0, within(1e-4f, 1e-4f))(int, fetches, 3, exact)(vec2, uv, 4, within(1e-4f, 1e-4f))
+                  (bool, valid, 6, exact)(bool, front, 7, exact),
+                  techExtras(),
+                  SnellInsideHit h = snellInsideMarch(origin, dir, techBackDepth, techBackSurface(projection),
+                                                      techFrontDepth, techFrontSurface(projection), maxDistance, steps,
+                                                      refineSteps);
+                  position = h.hit.position;
+                  fetches = h.hit.fetches;
+                  uv = h.hit.uv;
+                  valid = h.hit.valid;
+                  front = h.front;)
+
+SNELL_PARITY_CASE(snellInsideSide, [] { return insideSideInputs(830); },
+                  (vec3, at, 0)(float, dirZ, 3)(vec2, uv, 4)(vec4, projection, 12),
+                  (int, side, 0, exact),
+                  techExtras(),
+                  side = snellInsideSide(at, uv, techBackDepth, techBackSurface(projection), techFrontDepth,
+                                         techFrontSurface(projection), dirZ);)
 
 // Exit rays from back-face points (d_N unused). Fetches, hit valid, fellBack exact; colours 1e-4.
 SNELL_PARITY_CASE(snellTwoInterfaceExit, [] { return exitInputs(822); },
@@ -520,9 +610,8 @@ SNELL_PARITY_CASE(snellTwoInterfaceRefraction, [] { return techniqueInputs(823);
                   (bool, reflectionHit, 15, exact),
                   techExtras(),
                   SnellTwoInterfaceResult t = snellTwoInterfaceRefraction(
-                      entryPoint, entryNormal, dN, techBackDepth, techBackNormal, techBackPyramid,
-                      techBackSurface(projection), techSceneDepth, techSceneNormal, techScenePyramid, techSceneColor,
-                      techSceneSurface(projection), techEnv, techTechnique(preset, steps, modes),
+                      entryPoint, entryNormal, dN, TECH_OBJECT_TEXTURES(projection), TECH_SCENE_TEXTURES(projection),
+                      techTechnique(preset, steps, modes),
                       techMaterial(ior, modes, roughness), techView());
                   color = t.color;
                   fetches = t.fetches;

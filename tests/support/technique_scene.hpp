@@ -6,7 +6,8 @@
 // ray-sphere / ray-plane intersections).
 //
 // Buffers (all w x h, SNELL_DEPTH_GL, computed in double at pixel centres):
-//   front   the sphere's front hemisphere: depth (GL_LESS, empty 1), outward normals
+//   front   the sphere's front hemisphere: depth (GL_LESS, empty 1), outward normals (the
+//           object's front layer)
 //   back    sphereBack: depth (GL_GREATER, empty 0), outward normals, its pyramid,
 //           trilinear normal mips
 //   scene   the painting plane (empty 1 where missed), normals, pyramid, and a
@@ -61,8 +62,15 @@ struct Scene {
   snell::Texture2D backPyramid, backNormalMips, scenePyramid, sceneNormalMips, sceneColor, env;
 
   snell::SnellDepthSurface backSurface() const { return back.surface(); }
+  snell::SnellDepthSurface frontSurface() const { return front.surface(); }
   snell::SnellDepthSurface sceneSurface() const { return plane.surface(); }
 };
+
+// A Scene's buffers as the argument lists of SNELL_OBJECT_BUFFERS and SNELL_SCENE_BUFFERS
+// (glsl/snell/shade/technique_buffers.glsl), in their order: a new layer is one edit here.
+#define TECH_OBJECT_ARGS(s) \
+  (s).back.depth, (s).backNormalMips, (s).backPyramid, (s).backSurface(), (s).front.depth, (s).front.normals, (s).frontSurface()
+#define TECH_SCENE_ARGS(s) (s).plane.depth, (s).sceneNormalMips, (s).scenePyramid, (s).sceneColor, (s).sceneSurface(), (s).env
 
 inline Scene makeScene(int w, int h) {
   Scene s;

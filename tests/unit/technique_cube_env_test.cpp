@@ -30,7 +30,7 @@ TEST(TechniqueCubeEnvironment, ExitRayReadsTheCubeFace) {
       const technique_test::Exact e = technique_test::exactTrace(s.front, glm::dvec2((i + 0.5) / 96.0, (j + 0.5) / 96.0), 1.5);
       if (!e.hitsSphere) continue;
       const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
-          glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(),
+          glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, TECH_OBJECT_ARGS(s),
           s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), cube, t, m, snellView());
       const SnellCubeFace f = snellCubeFaceUv(r.exitDirection);
       ASSERT_TRUE(f.valid);

@@ -43,8 +43,7 @@ const Scene& scene() {
 }
 
 SnellTwoInterfacePath trace(const Scene& s, const Exact& e, const Options& o, float dN) {
-  return snellTwoInterfaceTrace(glm::vec3(e.p1), glm::vec3(e.n1), snellIorToEta(1.0f, float(kIor)), dN, s.back.depth,
-                                s.backNormalMips, s.backPyramid, s.backSurface(), o.t.back,
+  return snellTwoInterfaceTrace(glm::vec3(e.p1), glm::vec3(e.n1), snellIorToEta(1.0f, float(kIor)), dN, TECH_OBJECT_ARGS(s), o.t,
                                 o.m.tirPolicy);
 }
 
@@ -197,9 +196,7 @@ PaintingStats paintingErrors(const Options& o) {
       if (exactUv.x < 0.0 || exactUv.x > 1.0 || exactUv.y < 0.0 || exactUv.y > 1.0) continue;
       ++st.pixels;
       const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
-          glm::vec3(e.p1), glm::vec3(e.n1), float(2.0 * technique_test::kRadius), s.back.depth, s.backNormalMips,
-          s.backPyramid, s.backSurface(), s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor,
-          s.sceneSurface(), s.env, o.t, o.m, o.v);
+          glm::vec3(e.p1), glm::vec3(e.n1), float(2.0 * technique_test::kRadius), TECH_OBJECT_ARGS(s), TECH_SCENE_ARGS(s), o.t, o.m, o.v);
       st.totalFetches += r.fetches;
       const glm::dvec2 px(s.width, s.height);
       const bool behind = firstPlaneBehindP1(e);
@@ -317,8 +314,8 @@ TEST(TechniqueTwoInterface, BeerLambertUsesTheFoundChord) {
       const Exact e = technique_test::exactTrace(s.front, uv, kIor);
       if (!e.hitsSphere || e.tir) continue;
       const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
-          glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(),
-          s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o.t, o.m, o.v);
+          glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, TECH_OBJECT_ARGS(s),
+          TECH_SCENE_ARGS(s), o.t, o.m, o.v);
       if (r.fellBack) continue;
       ++n;
       const double chord = glm::length(e.p2 - e.p1);
@@ -352,7 +349,7 @@ TEST(TechniqueTwoInterface, FallbackWhenTheExitLeavesTheScreen) {
         const Exact e = technique_test::exactTrace(s.front, uv, kIor);
         if (!e.hitsSphere) continue;
         const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
-            glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(),
+            glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, TECH_OBJECT_ARGS(s),
             emptyDepth, s.sceneNormalMips, emptyPyramid, s.sceneColor, s.sceneSurface(), s.env, o.t, o.m, o.v);
         ++n;
         EXPECT_TRUE(r.fellBack);
@@ -372,8 +369,7 @@ TEST(TechniqueTwoInterface, FallbackWhenTheExitLeavesTheScreen) {
   o.t.exit.source = SNELL_SOURCE_BUFFERS;
   o.t.exit.fallback = SNELL_FALLBACK_EDGE_FADE;
   const SnellTwoInterfaceExit ex =
-      snellTwoInterfaceExit(glm::vec3(2.0f, 0.0f, -5.0f), glm::vec3(1.0f, 0.0f, -0.05f), s.plane.depth,
-                            s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o.t.exit, o.m, o.v);
+      snellTwoInterfaceExit(glm::vec3(2.0f, 0.0f, -5.0f), glm::vec3(1.0f, 0.0f, -0.05f), TECH_SCENE_ARGS(s), o.t.exit, o.m, o.v);
   EXPECT_TRUE(ex.fellBack);
   EXPECT_FALSE(ex.hit.valid);
   const glm::vec4 env = snellSampleEquirect(s.env, glm::normalize(glm::vec3(1.0f, 0.0f, -0.05f)), 0.0f);
@@ -398,8 +394,8 @@ TEST(TechniqueTwoInterface, BackHitBeyondFloatLengthFallsBack) {
     const glm::dvec3 v = glm::normalize(glm::dvec3(p1)), n = glm::normalize(glm::dvec3(n1));
     const glm::dvec3 t1 = glm::refract(v, glm::dot(v, n) > 0.0 ? -n : n, double(eta));
     auto run = [&](float dN) {
-      return snellTwoInterfaceTrace(p1, n1, eta, dN, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(),
-                                    isr.t.back, isr.m.tirPolicy);
+      return snellTwoInterfaceTrace(p1, n1, eta, dN, TECH_OBJECT_ARGS(s),
+                                    isr.t, isr.m.tirPolicy);
     };
     const SnellTwoInterfacePath far = run(1e30f);
     EXPECT_TRUE(far.valid);
@@ -422,8 +418,7 @@ TEST(TechniqueTwoInterface, BackHitBeyondFloatLengthFallsBack) {
     o.m.tirPolicy = SNELL_TIR_ZERO;
     o.t.exit.fallback = SNELL_FALLBACK_EDGE_FADE;
     const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
-        p1, n1, 1e30f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(), s.plane.depth,
-        s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o.t, o.m, o.v);
+        p1, n1, 1e30f, TECH_OBJECT_ARGS(s), TECH_SCENE_ARGS(s), o.t, o.m, o.v);
     EXPECT_FALSE(r.backHit);
     EXPECT_TRUE(r.fellBack);
     EXPECT_EQ(r.pathLength, 0.0f);
@@ -519,9 +514,7 @@ TEST(TechniqueTwoInterface, DispersionTracesThreeChannels) {
   const Exact e = technique_test::exactTrace(s.front, glm::dvec2(0.62, 0.55), kIor);
   ASSERT_TRUE(e.hitsSphere);
   auto run = [&](const Options& opt) {
-    return snellTwoInterfaceRefraction(glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, s.back.depth, s.backNormalMips,
-                                       s.backPyramid, s.backSurface(), s.plane.depth, s.sceneNormalMips,
-                                       s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, opt.t, opt.m, opt.v);
+    return snellTwoInterfaceRefraction(glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, TECH_OBJECT_ARGS(s), TECH_SCENE_ARGS(s), opt.t, opt.m, opt.v);
   };
   const SnellTwoInterfaceResult one = run(o);
   Options o3 = o;
@@ -548,8 +541,8 @@ TEST(TechniqueTwoInterface, RoughnessSelectsBlurredLevels) {
   o.v.sceneColorLevels = s.sceneColor.levelCount();
   const Exact e = technique_test::exactTrace(s.front, glm::dvec2(0.5, 0.5), kIor);
   const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
-      glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(),
-      s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o.t, o.m, o.v);
+      glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, TECH_OBJECT_ARGS(s),
+      TECH_SCENE_ARGS(s), o.t, o.m, o.v);
   ASSERT_TRUE(r.exitHit.valid);
   const glm::vec4 top = s.sceneColor.level(s.sceneColor.levelCount() - 1).at(0, 0);
   EXPECT_LT(glm::length(r.color - glm::vec3(top)), 1e-6f);
@@ -677,8 +670,8 @@ TEST(TechniqueReflection, FindsTheMirroredPaintingAtTheAnalyticPosition) {
         const double den = glm::dot(r, technique_test::kPlaneNormal);
         const double t = den != 0.0 ? glm::dot(technique_test::kPlanePoint - e.p1, technique_test::kPlaneNormal) / den : -1.0;
         const SnellTwoInterfaceResult res = snellTwoInterfaceRefraction(
-            glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(),
-            s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, o.t, o.m, o.v);
+            glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, TECH_OBJECT_ARGS(s),
+            TECH_SCENE_ARGS(s), o.t, o.m, o.v);
         const glm::dvec2 q = t > 0.0 ? s.plane.project(e.p1 + t * r) : glm::dvec2(-1.0);
         const bool onScreen = q.x > 0.0 && q.x < 1.0 && q.y > 0.0 && q.y < 1.0;
         if (!onScreen) {
@@ -706,8 +699,8 @@ TEST(TechniqueReflection, FindsTheMirroredPaintingAtTheAnalyticPosition) {
   Options env = snellPresetSingleSample();
   const Exact e = technique_test::exactTrace(s.front, glm::dvec2(0.5, 0.5), kIor);
   const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
-      glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, s.back.depth, s.backNormalMips, s.backPyramid, s.backSurface(),
-      s.plane.depth, s.sceneNormalMips, s.scenePyramid, s.sceneColor, s.sceneSurface(), s.env, env.t, env.m, env.v);
+      glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, TECH_OBJECT_ARGS(s),
+      TECH_SCENE_ARGS(s), env.t, env.m, env.v);
   EXPECT_FALSE(r.reflectionHit.valid);
   EXPECT_EQ(r.reflectionHit.fetches, 0);
 }

@@ -68,7 +68,8 @@ struct SnellInsideHit {
   bool front;  // left through the front layer (else the back layer)
 };
 
-/* 0 inside, 1 through the back layer, 2 through the front layer; -1 off screen */
+/* Which side of the object a point is on at uv: 0 inside, 1 through the back layer, 2 through the front layer
+   (an off-screen uv reads as empty in both layers: beside the silhouette) */
 SNELL_FN int snellInsideSide(vec3 p, vec2 uv, SNELL_TEX2D backDepth, SNELL_IN(SnellDepthSurface) back,
                              SNELL_TEX2D frontDepth, SNELL_IN(SnellDepthSurface) front, float dirZ) {
   SnellSurfaceSample b = snellSampleSurface(backDepth, uv, back);

@@ -17,6 +17,8 @@ uniform sampler2D techSceneNormal;
 uniform sampler2D techScenePyramid;
 uniform sampler2D techSceneColor;
 uniform sampler2D techEnv;
+uniform sampler2D techFrontDepth;
+uniform sampler2D techFrontNormal;
 #endif
 #if defined(SNELL_LANG_HLSL)
 Texture2D<float4> techBackDepth;
@@ -27,6 +29,8 @@ Texture2D<float4> techSceneNormal;
 Texture2D<float4> techScenePyramid;
 Texture2D<float4> techSceneColor;
 Texture2D<float4> techEnv;
+Texture2D<float4> techFrontDepth;
+Texture2D<float4> techFrontNormal;
 #endif
 
 SNELL_FN float techFlag(bool b) {
@@ -50,6 +54,14 @@ SNELL_FN SnellDepthSurface techBackSurface(vec4 c) {
 SNELL_FN SnellDepthSurface techSceneSurface(vec4 c) {
   return snellDepthSurface(techMatrix(c), 0.5f, 40.0f, SNELL_DEPTH_GL, 1.0f);
 }
+
+SNELL_FN SnellDepthSurface techFrontSurface(vec4 c) {
+  return snellDepthSurface(techMatrix(c), 0.5f, 40.0f, SNELL_DEPTH_GL, 1.0f);
+}
+
+/* The textures as the argument lists of SNELL_OBJECT_BUFFERS and SNELL_SCENE_BUFFERS, for projection entries c */
+#define TECH_OBJECT_TEXTURES(c) techBackDepth, techBackNormal, techBackPyramid, techBackSurface(c), techFrontDepth, techFrontNormal, techFrontSurface(c)
+#define TECH_SCENE_TEXTURES(c) techSceneDepth, techSceneNormal, techScenePyramid, techSceneColor, techSceneSurface(c), techEnv
 
 /* The ray cases' technique: a row of the technique table (ids 0 .. SNELL_TECHNIQUE_COUNT - 1, as the lab runs
    them), or one of the variants past it that sweep a count or use what no row does: TECH_DIR_STEPS (DIR with
@@ -153,16 +165,10 @@ SNELL_FN vec4 techOptionSums(SnellTechnique t, SnellMaterial m, SnellView v) {
 /* The options cases' outputs (TECH_OPTIONS_OUTPUTS in technique_cases.cpp) set from a technique `t`, material
    `m` and view `v`: the back and exit slots' strategy, counts and flags, the material's settings and the sums. */
 #define TECH_SLOTS_OUT(t) backStrategy = t.back.intersect.strategy; backCounts = techPackCounts(t.back.intersect); backFlags = techBackFlags(t.back); exitStrategy = t.exit.intersect.strategy; exitCounts = techPackCounts(t.exit.intersect); exitFlags = techExitFlags(t.exit);
+/* The bounce presets' outputs (TECH_BOUNCE_EXACT in technique_cases.cpp). */
+#define TECH_BOUNCE_OUT(t) bounces = t.bounces; insideSource = t.inside.source; insideStrategy = t.inside.intersect.strategy; insideCounts = vec2(float(t.inside.intersect.marchSteps), float(t.inside.intersect.marchBisections)); insideMaxDistance = t.inside.intersect.marchMaxDistance; backStrategy = t.back.intersect.strategy; backCounts = techPackCounts(t.back.intersect); exitStrategy = t.exit.intersect.strategy;
 #define TECH_OPTIONS_OUT(t, m, v) TECH_SLOTS_OUT(t) tirPolicy = m.tirPolicy; ior = m.ior; dispersion = m.dispersion; reflection = m.reflection; sums = techOptionSums(t, m, v);
 
-#if defined(SNELL_LANG_GLSL)
-uniform sampler2D techFrontDepth;
-uniform sampler2D techFrontNormal;
-#endif
-#if defined(SNELL_LANG_HLSL)
-Texture2D<float4> techFrontDepth;
-Texture2D<float4> techFrontNormal;
-#endif
 
 /* The full-frame test's techniques (tests/gpu/technique_image_test.cpp, which
    compiles one program per preset with the strategies its options call):
@@ -211,7 +217,7 @@ SNELL_FN SnellMaterial techImageMaterial(int preset) {
    technique (techImageTechnique(preset), techImageMaterial(preset)) the colour; outside the object, the
    painting (or the environment where the painting is missing). */
 SNELL_FN vec4 techImagePixel(ivec2 px, int preset, vec4 c) {
-  SnellDepthSurface front = snellDepthSurface(techMatrix(c), 0.5f, 40.0f, SNELL_DEPTH_GL, 1.0f);
+  SnellDepthSurface front = techFrontSurface(c);
   ivec2 size = SNELL_TEXTURE_SIZE(techFrontDepth, 0);
   vec2 uv = snellPixelToUv(px, size);
   SnellSurfaceSample f = snellSampleSurface(techFrontDepth, uv, front);
@@ -227,8 +233,7 @@ SNELL_FN vec4 techImagePixel(ivec2 px, int preset, vec4 c) {
   SnellViewPoint p1 = snellUvZToView(techMatrix(c), uv, f.viewZ);
   vec4 n1 = SNELL_TEXEL_FETCH(techFrontNormal, px, 0);
   SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
-      p1.position, vec3(n1.x, n1.y, n1.z), 4.4f, techBackDepth, techBackNormal, techBackPyramid, techBackSurface(c),
-      techSceneDepth, techSceneNormal, techScenePyramid, techSceneColor, techSceneSurface(c), techEnv,
+      p1.position, vec3(n1.x, n1.y, n1.z), 4.4f, TECH_OBJECT_TEXTURES(c), TECH_SCENE_TEXTURES(c),
       techImageTechnique(preset), techImageMaterial(preset), snellView());
   return vec4(r.color.x, r.color.y, r.color.z, r.fellBack ? 2.0f : 1.0f);
 }
