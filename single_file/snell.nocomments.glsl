@@ -1944,6 +1944,123 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
 
 #endif
 
+#ifndef SNELL_INTERSECT_INSIDE_MARCH_GLSL
+#define SNELL_INTERSECT_INSIDE_MARCH_GLSL
+
+struct SnellInsideHit {
+  SnellHit hit;
+  bool front;
+};
+
+SNELL_FN int snellInsideSide(vec3 p, vec2 uv, SNELL_TEX2D backDepth, SNELL_IN(SnellDepthSurface) back,
+                             SNELL_TEX2D frontDepth, SNELL_IN(SnellDepthSurface) front, float dirZ) {
+  SnellSurfaceSample b = snellSampleSurface(backDepth, uv, back);
+  SnellSurfaceSample f = snellSampleSurface(frontDepth, uv, front);
+  bool behindBack = b.valid && p.z <= b.viewZ;
+  bool beforeFront = f.valid && p.z >= f.viewZ;
+  if (behindBack && beforeFront) {
+    return (b.viewZ - p.z) <= (p.z - f.viewZ) ? 2 : 1;
+  }
+  if (behindBack) {
+    return 1;
+  }
+  if (beforeFront) {
+    return 2;
+  }
+  if (!b.valid && !f.valid) {
+    return dirZ > 0.0f ? 2 : 1;
+  }
+  return 0;
+}
+
+SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D backDepth, SNELL_IN(SnellDepthSurface) back,
+                                         SNELL_TEX2D frontDepth, SNELL_IN(SnellDepthSurface) front, float maxDistance,
+                                         int steps, int refineSteps) {
+  SnellInsideHit r;
+  r.hit = snellHitMiss(0);
+  r.front = false;
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
+      !SNELL_FINITE(maxDistance) || !(maxDistance > 0.0f)) {
+    return r;
+  }
+  float len = length(dir);
+  if (!SNELL_FINITE(len) || !(len >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  float tMax = maxDistance / len;
+  if (dir.z > 0.0f) {
+    float tNear = (-back.zNear - origin.z) / dir.z;
+    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+  }
+  if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
+    return r;
+  }
+  int n = clamp(steps, 1, SNELL_LINEAR_MARCH_MAX_STEPS);
+  int nr = clamp(refineSteps, 0, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS);
+  float dt = tMax / float(n);
+  int fetches = 0;
+  int side = 0;
+  float tHit = 0.0f;
+  float lo = 0.0f;
+  bool wasInside = false;
+  vec2 uvHit = vec2(0.0f, 0.0f);
+  for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
+    if (i > n) {
+      break;
+    }
+    float t = float(i) * dt;
+    vec3 p = origin + t * dir;
+    SnellScreenPoint sp = snellSurfaceViewToUv(back, p);
+    if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
+      r.hit = snellHitMiss(fetches);
+      return r;
+    }
+    side = snellInsideSide(p, sp.uv, backDepth, back, frontDepth, front, dir.z);
+    fetches = fetches + 2;
+    if (side == 0) {
+      wasInside = true;
+      lo = t;
+    } else if (wasInside) {
+      tHit = t;
+      uvHit = sp.uv;
+      break;
+    }
+  }
+  if (tHit == 0.0f) {
+    r.hit = snellHitMiss(fetches);
+    return r;
+  }
+  for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
+    if (j >= nr) {
+      break;
+    }
+    float mid = 0.5f * (lo + tHit);
+    vec3 q = origin + mid * dir;
+    SnellScreenPoint sq = snellSurfaceViewToUv(back, q);
+    int s = 0;
+    if (sq.valid && sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f) {
+      s = snellInsideSide(q, sq.uv, backDepth, back, frontDepth, front, dir.z);
+      fetches = fetches + 2;
+    }
+    if (s > 0) {
+      tHit = mid;
+      uvHit = sq.uv;
+      side = s;
+    } else {
+      lo = mid;
+    }
+  }
+  r.hit.uv = uvHit;
+  r.hit.position = origin + tHit * dir;
+  r.hit.valid = true;
+  r.hit.fetches = fetches;
+  r.front = side == 2;
+  return r;
+}
+
+#endif
+
 #ifndef SNELL_INTERSECT_DDA_MARCH_GLSL
 #define SNELL_INTERSECT_DDA_MARCH_GLSL
 
@@ -2760,10 +2877,16 @@ struct SnellSlot {
   float edgeFadeWidth;
 };
 
+#ifndef SNELL_MAX_BOUNCES
+#  define SNELL_MAX_BOUNCES 4
+#endif
+
 struct SnellTechnique {
   SnellSlot back;
   SnellSlot exit;
   SnellSlot reflect;
+  SnellSlot inside;
+  int bounces;
 };
 
 struct SnellMaterial {
@@ -2800,6 +2923,8 @@ SNELL_FN SnellTechnique snellTechnique() {
   t.back = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_CBS);
   t.exit = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_PLANE_NORMAL);
   t.reflect = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_LINEAR_MARCH);
+  t.inside = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_LINEAR_MARCH);
+  t.bounces = 0;
   return t;
 }
 
@@ -2831,8 +2956,8 @@ SNELL_FN SnellView snellView() {
 #ifndef SNELL_SHADE_TECHNIQUE_BUFFERS_GLSL
 #define SNELL_SHADE_TECHNIQUE_BUFFERS_GLSL
 
-#define SNELL_OBJECT_BUFFERS SNELL_TEX2D backDepth, SNELL_TEX2D backNormal, SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back
-#define SNELL_OBJECT_BUFFER_ARGS backDepth, backNormal, backPyramid, back
+#define SNELL_OBJECT_BUFFERS SNELL_TEX2D backDepth, SNELL_TEX2D backNormal, SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back, SNELL_TEX2D frontLayerDepth, SNELL_TEX2D frontLayerNormal, SNELL_IN(SnellDepthSurface) frontLayer
+#define SNELL_OBJECT_BUFFER_ARGS backDepth, backNormal, backPyramid, back, frontLayerDepth, frontLayerNormal, frontLayer
 
 #define SNELL_SCENE_BUFFERS SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor, SNELL_IN(SnellDepthSurface) scene, SNELL_ENVIRONMENT_TEX environment
 #define SNELL_SCENE_BUFFER_ARGS sceneDepth, sceneNormal, scenePyramid, sceneColor, scene, environment
@@ -2905,6 +3030,32 @@ SNELL_FN SnellTechnique snellPresetImageSpaceBound() {
   return t;
 }
 
+#ifndef SNELL_PRESET_BOUNCES
+#  define SNELL_PRESET_BOUNCES 2
+#endif
+#ifndef SNELL_PRESET_INSIDE_STEPS
+#  define SNELL_PRESET_INSIDE_STEPS 16
+#endif
+#ifndef SNELL_PRESET_INSIDE_BISECTIONS
+#  define SNELL_PRESET_INSIDE_BISECTIONS 5
+#endif
+
+SNELL_FN SnellTechnique snellPresetPlaneNormalBounces(int iterations) {
+  SnellTechnique t = snellPresetPlaneNormal(iterations);
+  t.bounces = SNELL_PRESET_BOUNCES;
+  t.inside.intersect.marchSteps = SNELL_PRESET_INSIDE_STEPS;
+  t.inside.intersect.marchBisections = SNELL_PRESET_INSIDE_BISECTIONS;
+  return t;
+}
+
+SNELL_FN SnellTechnique snellPresetLinearMarchBounces() {
+  SnellTechnique t = snellPresetLinearMarch();
+  t.bounces = SNELL_PRESET_BOUNCES;
+  t.inside.intersect.marchSteps = SNELL_PRESET_INSIDE_STEPS;
+  t.inside.intersect.marchBisections = SNELL_PRESET_INSIDE_BISECTIONS;
+  return t;
+}
+
 #define SNELL_TECHNIQUE_SINGLE 0
 #define SNELL_TECHNIQUE_PLANE_NORMAL_0 1
 #define SNELL_TECHNIQUE_PLANE_NORMAL_1 2
@@ -2915,7 +3066,9 @@ SNELL_FN SnellTechnique snellPresetImageSpaceBound() {
 #define SNELL_TECHNIQUE_LINEAR_MARCH 7
 #define SNELL_TECHNIQUE_DDA 8
 #define SNELL_TECHNIQUE_IMAGE_SPACE_BOUND 9
-#define SNELL_TECHNIQUE_COUNT 10
+#define SNELL_TECHNIQUE_PLANE_NORMAL_2_BOUNCES 10
+#define SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES 11
+#define SNELL_TECHNIQUE_COUNT 12
 
 SNELL_FN SnellTechnique snellTechniquePreset(int technique) {
   if (technique == SNELL_TECHNIQUE_SINGLE) {
@@ -2948,6 +3101,12 @@ SNELL_FN SnellTechnique snellTechniquePreset(int technique) {
   if (technique == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND) {
     return snellPresetImageSpaceBound();
   }
+  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_2_BOUNCES) {
+    return snellPresetPlaneNormalBounces(2);
+  }
+  if (technique == SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES) {
+    return snellPresetLinearMarchBounces();
+  }
   return snellTechniquePresetSlots(-1, -1);
 }
 
@@ -2968,14 +3127,16 @@ struct SnellTwoInterfacePath {
   vec2 exitUv;
   float pathLength;
   int fetches;
+  int bounces;
   bool hit;
   bool tir;
   bool fellBack;
   bool valid;
+  bool exitFront;
 };
 
 SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
-                                                      SNELL_OBJECT_BUFFERS, SNELL_IN(SnellSlot) slot, int tirPolicy) {
+                                                      SNELL_OBJECT_BUFFERS, SNELL_IN(SnellTechnique) t, int tirPolicy) {
   SnellTwoInterfacePath p;
   p.entryDirection = vec3(0.0f, 0.0f, 0.0f);
   p.exitPoint = vec3(0.0f, 0.0f, 0.0f);
@@ -2984,10 +3145,12 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitUv = vec2(0.0f, 0.0f);
   p.pathLength = 0.0f;
   p.fetches = 0;
+  p.bounces = 0;
   p.hit = false;
   p.tir = false;
   p.fellBack = true;
   p.valid = false;
+  p.exitFront = false;
   SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy);
   if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_FINITE(frontPosition.x) ||
       !SNELL_FINITE(frontPosition.y) || !SNELL_FINITE(frontPosition.z)) {
@@ -2999,7 +3162,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitDirection = t1;
   p.valid = true;
   SnellHit h = snellHitMiss(0);
-  if (slot.source == SNELL_SOURCE_WYMAN) {
+  if (t.back.source == SNELL_SOURCE_WYMAN) {
     SnellScreenPoint sp = snellViewToUv(back.clipFromView, frontPosition);
     if (sp.valid && frontPosition.z < 0.0f) {
       SnellSurfaceSample b = snellSampleSurface(backDepth, sp.uv, back);
@@ -3010,8 +3173,8 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
         h = snellHitOnSurface(frontPosition + d * t1, backDepth, back, 1);
       }
     }
-  } else if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
-    h = snellIntersectWith(frontPosition, t1, backDepth, backNormal, backPyramid, back, slot.intersect);
+  } else if (t.back.source != SNELL_SOURCE_ENVIRONMENT) {
+    h = snellIntersectWith(frontPosition, t1, backDepth, backNormal, backPyramid, back, t.back.intersect);
   }
   p.fetches = h.fetches;
   float pathLength = length(h.position - frontPosition);
@@ -3036,9 +3199,52 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     n = -n;
   }
   p.exitNormal = n;
-  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, tirPolicy);
+  int bounces = clamp(t.bounces, 0, SNELL_MAX_BOUNCES);
+  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, bounces > 0 ? SNELL_TIR_REFLECT : tirPolicy);
+  vec3 d = t1;
+  for (int k = 0; k < SNELL_MAX_BOUNCES; ++k) {
+    if (k >= bounces || !r2.tir) {
+      break;
+    }
+    if (t.inside.source != SNELL_SOURCE_BUFFERS || t.inside.intersect.strategy != SNELL_STRATEGY_LINEAR_MARCH) {
+      return p;
+    }
+    d = r2.direction;
+    SnellInsideHit ih = snellInsideMarch(p.exitPoint, d, backDepth, back, frontLayerDepth, frontLayer,
+                                         t.inside.intersect.marchMaxDistance, t.inside.intersect.marchSteps,
+                                         t.inside.intersect.marchBisections);
+    p.fetches = p.fetches + ih.hit.fetches;
+    p.bounces = k + 1;
+    float segment = length(ih.hit.position - p.exitPoint);
+    p.exitDirection = d;
+    p.tir = true;
+    if (!ih.hit.valid || !SNELL_FINITE(p.pathLength + segment)) {
+      return p;
+    }
+    p.exitPoint = ih.hit.position;
+    p.exitUv = ih.hit.uv;
+    p.exitFront = ih.front;
+    p.pathLength = p.pathLength + segment;
+#if SNELL_TWO_INTERFACE_NORMAL_SAMPLE
+    vec4 nk = ih.front ? SNELL_SAMPLE_LOD(frontLayerNormal, ih.hit.uv, 0.0f) : SNELL_SAMPLE_LOD(backNormal, ih.hit.uv, 0.0f);
+#else
+    vec4 nk = ih.front ? SNELL_TEXEL_FETCH(frontLayerNormal, snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(frontLayerNormal, 0)), 0)
+                       : SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
+#endif
+    p.fetches = p.fetches + 1;
+    n = snellSafeNormalize(vec3(nk.x, nk.y, nk.z));
+    if (dot(n, n) == 0.0f) {
+      return p;
+    }
+    if (dot(n, d) > 0.0f) {
+      n = -n;
+    }
+    p.exitNormal = n;
+    r2 = snellRefract(d, n, 1.0f / eta, k + 1 < bounces ? SNELL_TIR_REFLECT : tirPolicy);
+  }
   p.tir = r2.tir;
   if (!r2.valid || dot(r2.direction, r2.direction) == 0.0f) {
+    p.exitDirection = d;
     return p;
   }
   p.exitDirection = r2.direction;
@@ -3070,6 +3276,7 @@ struct SnellTwoInterfaceResult {
   bool backHit;
   bool fellBack;
   bool tir;
+  int bounces;
 };
 
 SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_SCENE_BUFFERS,
@@ -3127,9 +3334,9 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   bool three = m.dispersion == 3;
   float eta = snellIorToEta(m.iorOutside, three ? m.iors.y : m.ior);
   SnellTwoInterfacePath p =
-      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
-  SnellTwoInterfaceExit e =
-      snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
+  SnellTwoInterfaceExit e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS,
+                                                  p.exitFront ? t.reflect : t.exit, m, v);
   vec3 transmitted = e.color * snellBeerLambert(m.absorption, p.pathLength);
   SnellTwoInterfaceResult r;
   r.exitPoint = p.exitPoint;
@@ -3142,15 +3349,16 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   r.backHit = p.hit;
   r.fellBack = p.fellBack || e.fellBack || !p.valid;
   r.tir = p.tir;
+  r.bounces = p.bounces;
   if (three) {
     SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.x),
-                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
-    SnellTwoInterfaceExit er =
-        snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
+    SnellTwoInterfaceExit er = snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, SNELL_SCENE_BUFFER_ARGS,
+                                                     pr.exitFront ? t.reflect : t.exit, m, v);
     SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.z),
-                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
-    SnellTwoInterfaceExit eb =
-        snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
+    SnellTwoInterfaceExit eb = snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, SNELL_SCENE_BUFFER_ARGS,
+                                                     pb.exitFront ? t.reflect : t.exit, m, v);
     transmitted.x = er.color.x * snellBeerLambert(m.absorption, pr.pathLength).x;
     transmitted.z = eb.color.z * snellBeerLambert(m.absorption, pb.pathLength).z;
     r.fetches = r.fetches + pr.fetches + er.fetches + pb.fetches + eb.fetches;

@@ -1582,6 +1582,123 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
 
 #endif
 
+#ifndef SNELL_INTERSECT_INSIDE_MARCH_GLSL
+#define SNELL_INTERSECT_INSIDE_MARCH_GLSL
+
+struct SnellInsideHit {
+  SnellHit hit;
+  bool front;
+};
+
+SNELL_FN int snellInsideSide(vec3 p, vec2 uv, SNELL_TEX2D backDepth, SNELL_IN(SnellDepthSurface) back,
+                             SNELL_TEX2D frontDepth, SNELL_IN(SnellDepthSurface) front, float dirZ) {
+  SnellSurfaceSample b = snellSampleSurface(backDepth, uv, back);
+  SnellSurfaceSample f = snellSampleSurface(frontDepth, uv, front);
+  bool behindBack = b.valid && p.z <= b.viewZ;
+  bool beforeFront = f.valid && p.z >= f.viewZ;
+  if (behindBack && beforeFront) {
+    return (b.viewZ - p.z) <= (p.z - f.viewZ) ? 2 : 1;
+  }
+  if (behindBack) {
+    return 1;
+  }
+  if (beforeFront) {
+    return 2;
+  }
+  if (!b.valid && !f.valid) {
+    return dirZ > 0.0f ? 2 : 1;
+  }
+  return 0;
+}
+
+SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D backDepth, SNELL_IN(SnellDepthSurface) back,
+                                         SNELL_TEX2D frontDepth, SNELL_IN(SnellDepthSurface) front, float maxDistance,
+                                         int steps, int refineSteps) {
+  SnellInsideHit r;
+  r.hit = snellHitMiss(0);
+  r.front = false;
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
+      !SNELL_FINITE(maxDistance) || !(maxDistance > 0.0f)) {
+    return r;
+  }
+  float len = length(dir);
+  if (!SNELL_FINITE(len) || !(len >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  float tMax = maxDistance / len;
+  if (dir.z > 0.0f) {
+    float tNear = (-back.zNear - origin.z) / dir.z;
+    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+  }
+  if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
+    return r;
+  }
+  int n = clamp(steps, 1, SNELL_LINEAR_MARCH_MAX_STEPS);
+  int nr = clamp(refineSteps, 0, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS);
+  float dt = tMax / float(n);
+  int fetches = 0;
+  int side = 0;
+  float tHit = 0.0f;
+  float lo = 0.0f;
+  bool wasInside = false;
+  vec2 uvHit = vec2(0.0f, 0.0f);
+  for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
+    if (i > n) {
+      break;
+    }
+    float t = float(i) * dt;
+    vec3 p = origin + t * dir;
+    SnellScreenPoint sp = snellSurfaceViewToUv(back, p);
+    if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
+      r.hit = snellHitMiss(fetches);
+      return r;
+    }
+    side = snellInsideSide(p, sp.uv, backDepth, back, frontDepth, front, dir.z);
+    fetches = fetches + 2;
+    if (side == 0) {
+      wasInside = true;
+      lo = t;
+    } else if (wasInside) {
+      tHit = t;
+      uvHit = sp.uv;
+      break;
+    }
+  }
+  if (tHit == 0.0f) {
+    r.hit = snellHitMiss(fetches);
+    return r;
+  }
+  for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
+    if (j >= nr) {
+      break;
+    }
+    float mid = 0.5f * (lo + tHit);
+    vec3 q = origin + mid * dir;
+    SnellScreenPoint sq = snellSurfaceViewToUv(back, q);
+    int s = 0;
+    if (sq.valid && sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f) {
+      s = snellInsideSide(q, sq.uv, backDepth, back, frontDepth, front, dir.z);
+      fetches = fetches + 2;
+    }
+    if (s > 0) {
+      tHit = mid;
+      uvHit = sq.uv;
+      side = s;
+    } else {
+      lo = mid;
+    }
+  }
+  r.hit.uv = uvHit;
+  r.hit.position = origin + tHit * dir;
+  r.hit.valid = true;
+  r.hit.fetches = fetches;
+  r.front = side == 2;
+  return r;
+}
+
+#endif
+
 #ifndef SNELL_INTERSECT_DDA_MARCH_GLSL
 #define SNELL_INTERSECT_DDA_MARCH_GLSL
 

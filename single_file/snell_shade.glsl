@@ -1698,9 +1698,13 @@ description: what a two-interface refraction technique is made of, split by
   what each part describes and how long it lives:
   - SnellSlot: one place a ray is resolved (where it reads from, the
     intersection strategy and its parameters, what it shows when the buffers
-    give nothing). A technique has three: back (where T1 leaves the object),
+    give nothing). A technique has four: back (where T1 leaves the object),
     exit (what T2 sees), reflect (what the first surface's reflected ray R
-    sees). The exit and the reflection are the same call with their own slot.
+    sees, and a ray that leaves through the front faces after bouncing
+    inside), inside (where a ray reflected inside the object leaves it). The
+    exit and the reflection are the same call with their own slot.
+  - bounces: how many total internal reflections inside the object a ray
+    follows (0: none, the two-interface model).
   - SnellTechnique: the technique's choices, the set of slots (the presets,
     technique_presets.glsl, return one).
   - SnellMaterial: the object's optics (IORs, dispersion, absorption, TIR
@@ -1734,7 +1738,12 @@ contract (defaults):
   snellTechnique(): back = snellSlot(BUFFERS, CBS), exit =
     snellSlot(ENVIRONMENT, PLANE_NORMAL), reflect = snellSlot(ENVIRONMENT,
     LINEAR_MARCH) (the strategies are read only when the source becomes
-    BUFFERS).
+    BUFFERS), inside = snellSlot(BUFFERS, LINEAR_MARCH) (the march between
+    the front and back layers, intersect/inside_march.glsl, with the linear
+    march's marchSteps, marchBisections and marchMaxDistance: the one
+    strategy that brackets two layers at once; any other strategy or source
+    ends the path at the reflection, as a fallback), bounces = 0 (clamped to
+    [0, SNELL_MAX_BOUNCES], default 4, a compile-time bound).
   snellMaterial(): ior = 1.5, iorOutside = 1, dispersion = 1 (one trace; 3 =
     one per channel with iors, e.g. snellDispersionIors(1.5168f, 64.17f) from
     shade/dispersion.glsl), iors = (1.5, 1.5, 1.5), absorption = 0
@@ -4483,10 +4492,16 @@ struct SnellSlot {
   float edgeFadeWidth;
 };
 
+#ifndef SNELL_MAX_BOUNCES
+#  define SNELL_MAX_BOUNCES 4
+#endif
+
 struct SnellTechnique {
   SnellSlot back;
   SnellSlot exit;
   SnellSlot reflect;
+  SnellSlot inside;
+  int bounces;
 };
 
 struct SnellMaterial {
@@ -4523,6 +4538,8 @@ SNELL_FN SnellTechnique snellTechnique() {
   t.back = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_CBS);
   t.exit = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_PLANE_NORMAL);
   t.reflect = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_LINEAR_MARCH);
+  t.inside = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_LINEAR_MARCH);
+  t.bounces = 0;
   return t;
 }
 
@@ -4554,11 +4571,12 @@ SNELL_FN SnellView snellView() {
 description: the buffers a two-interface technique reads, as the parameter
   lists every technique function declares and the argument lists every call
   inside snell passes on. A layer of buffers is a depth texture, its
-  view-space normals, its depth min/max pyramid and the SnellDepthSurface
-  that says how to read them; the object's layers (today its back faces) and
-  the opaque scene's (its layer, its colour and the environment) each travel
-  as one list, so a new layer (a second back-face layer, the object's front
-  faces) is one edit here, not one per function and call site.
+  view-space normals, its depth min/max pyramid where a strategy needs one,
+  and the SnellDepthSurface that says how to read them; the object's layers
+  (its back faces and its front faces) and the opaque scene's (its layer,
+  its colour and the environment) each travel as one list, so a new layer
+  (a second back-face layer) is one edit here, not one per function and
+  call site inside snell.
 use: in a function that takes or forwards the buffers:
      SNELL_FN SnellTwoInterfacePath f(vec3 p, SNELL_OBJECT_BUFFERS, SNELL_SCENE_BUFFERS) {
        return g(p, SNELL_OBJECT_BUFFER_ARGS, SNELL_SCENE_BUFFER_ARGS);
@@ -4569,7 +4587,15 @@ options:
                         SNELL_TEX2D backPyramid, SnellDepthSurface back
                         (the back-face pass: depth cleared to the near value
                         and drawn with GL_GREATER, view-space normals, the
-                        pyramid of that depth, how to read the depth)
+                        pyramid of that depth, how to read the depth),
+                        SNELL_TEX2D frontLayerDepth, SNELL_TEX2D
+                        frontLayerNormal, SnellDepthSurface frontLayer (the
+                        front-face pass: depth
+                        cleared to the far value and drawn with GL_LESS,
+                        view-space normals, how to read the depth; read only
+                        by rays that bounce inside, SnellTechnique.bounces >
+                        0: any texture of the right kind may be bound when
+                        bounces is 0)
   SNELL_SCENE_BUFFERS   SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal,
                         SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor,
                         SnellDepthSurface scene, SNELL_ENVIRONMENT_TEX
@@ -4593,8 +4619,8 @@ contract: macros only, each on one line (GLSL 330 has no line continuation). Why
 
 
 
-#define SNELL_OBJECT_BUFFERS SNELL_TEX2D backDepth, SNELL_TEX2D backNormal, SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back
-#define SNELL_OBJECT_BUFFER_ARGS backDepth, backNormal, backPyramid, back
+#define SNELL_OBJECT_BUFFERS SNELL_TEX2D backDepth, SNELL_TEX2D backNormal, SNELL_TEX2D backPyramid, SNELL_IN(SnellDepthSurface) back, SNELL_TEX2D frontLayerDepth, SNELL_TEX2D frontLayerNormal, SNELL_IN(SnellDepthSurface) frontLayer
+#define SNELL_OBJECT_BUFFER_ARGS backDepth, backNormal, backPyramid, back, frontLayerDepth, frontLayerNormal, frontLayer
 
 #define SNELL_SCENE_BUFFERS SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor, SNELL_IN(SnellDepthSurface) scene, SNELL_ENVIRONMENT_TEX environment
 #define SNELL_SCENE_BUFFER_ARGS sceneDepth, sceneNormal, scenePyramid, sceneColor, scene, environment
@@ -4634,6 +4660,15 @@ presets (back slot / exit slot):
   snellPresetLinearMarch()         screen-space ray march, view-space steps +
                                    bisection / the same
   snellPresetDdaMarch()            perspective-correct pixel DDA march / the same
+  snellPresetPlaneNormalBounces(n) snellPresetPlaneNormal(n) that follows
+                                   TIR inside the object: bounces =
+                                   SNELL_PRESET_BOUNCES (2), the inside slot's
+                                   march SNELL_PRESET_INSIDE_STEPS (16) steps +
+                                   SNELL_PRESET_INSIDE_BISECTIONS (5)
+                                   bisections (set inside.intersect.
+                                   marchMaxDistance to the object's extent);
+                                   reads the front-face layer
+  snellPresetLinearMarchBounces()  snellPresetLinearMarch() with the same bounces
   snellPresetImageSpaceBound()     not a real-time method: the best any
                                    image-space technique can do with the same
                                    buffers, for measuring the others against:
@@ -4660,6 +4695,8 @@ the technique table (the one list of named techniques: snell-lab's
   SNELL_TECHNIQUE_LINEAR_MARCH    linear-march    snellPresetLinearMarch()
   SNELL_TECHNIQUE_DDA             dda             snellPresetDdaMarch()
   SNELL_TECHNIQUE_IMAGE_SPACE_BOUND  image-space-bound  snellPresetImageSpaceBound()
+  SNELL_TECHNIQUE_PLANE_NORMAL_2_BOUNCES  plane-normal-2-bounces  snellPresetPlaneNormalBounces(2)
+  SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES    linear-march-bounces    snellPresetLinearMarchBounces()
   SNELL_TECHNIQUE_COUNT           the number of ids (ids are 0 .. COUNT - 1)
   SnellTechnique t = snellTechniquePreset(SNELL_TECHNIQUE_PLANE_NORMAL_1);
   Adding a technique: a preset function here, an id, a branch in
@@ -4673,7 +4710,8 @@ contract: pure constructors, no texture access; iteration counts are stored as
 source: Oliveira & Brauwers 2007 (sec. 3.3, 5 steps; sec. 6, bounding box);
   Wyman 2005 via O&B 2007 sec. 2.1, eqs. 1-2; Mayer & Assarsson,
   "Constant-Time Light Refraction Simulation" (methods 1 and 2, step 5);
-  McGuire & Mara 2014 (DDA).
+  McGuire & Mara 2014 (DDA); Davis & Wyman 2007 (bounces inside between
+  front and back depth maps).
 */
 #ifndef SNELL_SHADE_TECHNIQUE_PRESETS_GLSL
 #define SNELL_SHADE_TECHNIQUE_PRESETS_GLSL
@@ -4749,6 +4787,35 @@ SNELL_FN SnellTechnique snellPresetImageSpaceBound() {
   return t;
 }
 
+#ifndef SNELL_PRESET_BOUNCES
+#  define SNELL_PRESET_BOUNCES 2
+#endif
+#ifndef SNELL_PRESET_INSIDE_STEPS
+#  define SNELL_PRESET_INSIDE_STEPS 16
+#endif
+#ifndef SNELL_PRESET_INSIDE_BISECTIONS
+#  define SNELL_PRESET_INSIDE_BISECTIONS 5
+#endif
+
+/* Davis & Wyman 2007 on the normal plane: TIR at the back face followed inside (the inside march between
+   the front and back layers) up to SNELL_PRESET_BOUNCES times */
+SNELL_FN SnellTechnique snellPresetPlaneNormalBounces(int iterations) {
+  SnellTechnique t = snellPresetPlaneNormal(iterations);
+  t.bounces = SNELL_PRESET_BOUNCES;
+  t.inside.intersect.marchSteps = SNELL_PRESET_INSIDE_STEPS;
+  t.inside.intersect.marchBisections = SNELL_PRESET_INSIDE_BISECTIONS;
+  return t;
+}
+
+/* The linear march in the back and exit slots, with bounces as snellPresetPlaneNormalBounces */
+SNELL_FN SnellTechnique snellPresetLinearMarchBounces() {
+  SnellTechnique t = snellPresetLinearMarch();
+  t.bounces = SNELL_PRESET_BOUNCES;
+  t.inside.intersect.marchSteps = SNELL_PRESET_INSIDE_STEPS;
+  t.inside.intersect.marchBisections = SNELL_PRESET_INSIDE_BISECTIONS;
+  return t;
+}
+
 #define SNELL_TECHNIQUE_SINGLE 0
 #define SNELL_TECHNIQUE_PLANE_NORMAL_0 1
 #define SNELL_TECHNIQUE_PLANE_NORMAL_1 2
@@ -4759,7 +4826,9 @@ SNELL_FN SnellTechnique snellPresetImageSpaceBound() {
 #define SNELL_TECHNIQUE_LINEAR_MARCH 7
 #define SNELL_TECHNIQUE_DDA 8
 #define SNELL_TECHNIQUE_IMAGE_SPACE_BOUND 9
-#define SNELL_TECHNIQUE_COUNT 10
+#define SNELL_TECHNIQUE_PLANE_NORMAL_2_BOUNCES 10
+#define SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES 11
+#define SNELL_TECHNIQUE_COUNT 12
 
 /* the technique table's constructor: id -> preset */
 SNELL_FN SnellTechnique snellTechniquePreset(int technique) {
@@ -4792,6 +4861,12 @@ SNELL_FN SnellTechnique snellTechniquePreset(int technique) {
   }
   if (technique == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND) {
     return snellPresetImageSpaceBound();
+  }
+  if (technique == SNELL_TECHNIQUE_PLANE_NORMAL_2_BOUNCES) {
+    return snellPresetPlaneNormalBounces(2);
+  }
+  if (technique == SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES) {
+    return snellPresetLinearMarchBounces();
   }
   return snellTechniquePresetSlots(-1, -1);
 }
@@ -4998,6 +5073,191 @@ SNELL_FN float snellWymanDistanceVec(vec3 incident, vec3 normal, vec3 refracted,
 
 
 
+/*
+description: where a ray inside a closed object leaves it, in image space:
+  a linear march with bisection between the object's two depth layers as the
+  camera sees them, its front faces and its back faces. A point is inside
+  while it lies between the two (behind the front depth, in front of the
+  back depth); the first step outside is refined by bisection and names the
+  layer the ray crossed. Davis & Wyman 2007 bounce inside with a binary
+  search between front and back depth maps; Oliveira & Brauwers 2007 (sec. 7)
+  sketch the same for TIR: front- and back-facing depth and normals, the ray
+  intersection procedure run again.
+use: SnellInsideHit h = snellInsideMarch(origin, dir, backDepth, back, frontDepth, front,
+                                         maxDistance, steps, refineSteps);
+  origin, dir        view-space ray starting inside the object (a point of
+                     the back or front layer after a total internal
+                     reflection, say); dir need not be normalized
+  backDepth, back    the back-face depth (GL_GREATER after clearing to the
+                     near value) and how to read it (depth_surface.glsl)
+  frontDepth, front  the front-face depth (GL_LESS after clearing to the far
+                     value), how to read it
+  maxDistance        view-space length of the marched part of the ray (the
+                     object's extent)
+  steps              equal steps of maxDistance / steps (two fetches each)
+  refineSteps        bisection steps inside the step that left (two fetches
+                     each while on screen)
+options: the linear march's bounds, SNELL_LINEAR_MARCH_MAX_STEPS (512) and
+  SNELL_LINEAR_MARCH_MAX_REFINE_STEPS (24): steps is clamped to [1, max],
+  refineSteps to [0, max].
+contract:
+  - samples t_i = i tMax / steps, i = 1 .. steps, tMax = maxDistance / |dir|,
+    cut at the near plane z = -back.zNear when dir.z > 0 (the origin itself
+    is not tested), each projected with back.clipFromView and read in both
+    layers at that uv (the two layers share the camera and the size).
+  - a sample is outside when it is on or behind the back layer (valid back
+    texel, z <= back viewZ: left through the back faces), on or in front of
+    the front layer (valid front texel, z >= front viewZ: left through the
+    front faces), or where both texels are empty (beside the silhouette).
+    The ray leaves at the first outside sample after an inside one: samples
+    before the first inside sample do not count (a ray that starts on a layer,
+    as after a reflection there, reads as outside within that layer's texel).
+  - the first sample that projects off screen ends the march: valid = false
+    (the exit is not in the buffers).
+  - refinement brackets [last inside t, t_i]; a midpoint outside moves hi, any other
+    (inside, off screen: no fetch) moves lo; the hit is hi: position, uv.
+    front = true when hi crossed the front layer only, or both texels are
+    empty and dir.z > 0 (a ray heading towards the camera leaves beside the
+    silhouette through the front); false for the back layer (both crossed: the
+    layer whose depth is nearer the point along z).
+  - valid = false with snellHitMiss numbers when no inside sample is followed
+    by an outside one (the ray stays inside over maxDistance, or never gets
+    inside); with 0 fetches when an input is NaN
+    or Inf, |dir| is 0 or denormal-small, maxDistance <= 0, or the whole ray
+    lies in front of the near plane.
+  - fetches: 2 per sample read, both layers.
+source: C. Davis & C. Wyman, "Interactive Refractions with Total Internal
+  Reflection", Graphics Interface 2007 (bounces between front and back depth
+  maps); M. M. Oliveira & M. Brauwers, "Real-Time Refraction Through
+  Deformable Objects", I3D 2007, sec. 7 (TIR as future work: front- and
+  back-facing buffers, the same intersection procedure); the linear march of
+  linear_march.glsl.
+*/
+#ifndef SNELL_INTERSECT_INSIDE_MARCH_GLSL
+#define SNELL_INTERSECT_INSIDE_MARCH_GLSL
+
+
+
+
+
+
+
+struct SnellInsideHit {
+  SnellHit hit;
+  bool front;  // left through the front layer (else the back layer)
+};
+
+/* Which side of the object a point is on at uv: 0 inside, 1 through the back layer, 2 through the front layer
+   (an off-screen uv reads as empty in both layers: beside the silhouette) */
+SNELL_FN int snellInsideSide(vec3 p, vec2 uv, SNELL_TEX2D backDepth, SNELL_IN(SnellDepthSurface) back,
+                             SNELL_TEX2D frontDepth, SNELL_IN(SnellDepthSurface) front, float dirZ) {
+  SnellSurfaceSample b = snellSampleSurface(backDepth, uv, back);
+  SnellSurfaceSample f = snellSampleSurface(frontDepth, uv, front);
+  bool behindBack = b.valid && p.z <= b.viewZ;
+  bool beforeFront = f.valid && p.z >= f.viewZ;
+  if (behindBack && beforeFront) {
+    return (b.viewZ - p.z) <= (p.z - f.viewZ) ? 2 : 1;
+  }
+  if (behindBack) {
+    return 1;
+  }
+  if (beforeFront) {
+    return 2;
+  }
+  if (!b.valid && !f.valid) {
+    return dirZ > 0.0f ? 2 : 1;
+  }
+  return 0;
+}
+
+/* Davis & Wyman 2007: a ray inside the object, marched between the front and back depth layers */
+SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D backDepth, SNELL_IN(SnellDepthSurface) back,
+                                         SNELL_TEX2D frontDepth, SNELL_IN(SnellDepthSurface) front, float maxDistance,
+                                         int steps, int refineSteps) {
+  SnellInsideHit r;
+  r.hit = snellHitMiss(0);
+  r.front = false;
+  if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
+      !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
+      !SNELL_FINITE(maxDistance) || !(maxDistance > 0.0f)) {
+    return r;
+  }
+  float len = length(dir);
+  if (!SNELL_FINITE(len) || !(len >= SNELL_FLT_MIN)) {
+    return r;
+  }
+  float tMax = maxDistance / len;
+  if (dir.z > 0.0f) {
+    float tNear = (-back.zNear - origin.z) / dir.z;
+    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+  }
+  if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
+    return r;
+  }
+  int n = clamp(steps, 1, SNELL_LINEAR_MARCH_MAX_STEPS);
+  int nr = clamp(refineSteps, 0, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS);
+  float dt = tMax / float(n);
+  int fetches = 0;
+  int side = 0;
+  float tHit = 0.0f;
+  float lo = 0.0f;
+  bool wasInside = false;
+  vec2 uvHit = vec2(0.0f, 0.0f);
+  for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
+    if (i > n) {
+      break;
+    }
+    float t = float(i) * dt;
+    vec3 p = origin + t * dir;
+    SnellScreenPoint sp = snellSurfaceViewToUv(back, p);
+    if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
+      r.hit = snellHitMiss(fetches);
+      return r;
+    }
+    side = snellInsideSide(p, sp.uv, backDepth, back, frontDepth, front, dir.z);
+    fetches = fetches + 2;
+    if (side == 0) {
+      wasInside = true;
+      lo = t;
+    } else if (wasInside) {
+      tHit = t;
+      uvHit = sp.uv;
+      break;
+    }
+  }
+  if (tHit == 0.0f) {
+    r.hit = snellHitMiss(fetches);
+    return r;
+  }
+  for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
+    if (j >= nr) {
+      break;
+    }
+    float mid = 0.5f * (lo + tHit);
+    vec3 q = origin + mid * dir;
+    SnellScreenPoint sq = snellSurfaceViewToUv(back, q);
+    int s = 0;
+    if (sq.valid && sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f) {
+      s = snellInsideSide(q, sq.uv, backDepth, back, frontDepth, front, dir.z);
+      fetches = fetches + 2;
+    }
+    if (s > 0) {
+      tHit = mid;
+      uvHit = sq.uv;
+      side = s;
+    } else {
+      lo = mid;
+    }
+  }
+  r.hit.uv = uvHit;
+  r.hit.position = origin + tHit * dir;
+  r.hit.valid = true;
+  r.hit.fetches = fetches;
+  r.front = side == 2;
+  return r;
+}
+
+#endif
 
 
 
@@ -5010,18 +5270,20 @@ struct SnellTwoInterfacePath {
   vec3 exitPoint;       // P2 (P1 when no back hit)
   vec3 exitNormal;      // N2, facing T1
   vec3 exitDirection;   // T2 (T1 on fallback)
-  vec2 exitUv;          // uv of P2 in the back buffers
-  float pathLength;     // |P2 - P1|
+  vec2 exitUv;          // uv of P2 in the back buffers (in the front buffers when exitFront)
+  float pathLength;     // |P2 - P1|, plus every segment after a bounce
   int fetches;
+  int bounces;          // total internal reflections followed inside
   bool hit;
   bool tir;
   bool fellBack;
   bool valid;
+  bool exitFront;       // the last interface is a front face (after a bounce): T2 heads to the camera's side
 };
 
 /* Wyman 2005 / Oliveira & Brauwers 2007 sec. 3: P1, T1 -> P2 (back-face buffer), N2 -> T2 */
 SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
-                                                      SNELL_OBJECT_BUFFERS, SNELL_IN(SnellSlot) slot, int tirPolicy) {
+                                                      SNELL_OBJECT_BUFFERS, SNELL_IN(SnellTechnique) t, int tirPolicy) {
   SnellTwoInterfacePath p;
   p.entryDirection = vec3(0.0f, 0.0f, 0.0f);
   p.exitPoint = vec3(0.0f, 0.0f, 0.0f);
@@ -5030,10 +5292,12 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitUv = vec2(0.0f, 0.0f);
   p.pathLength = 0.0f;
   p.fetches = 0;
+  p.bounces = 0;
   p.hit = false;
   p.tir = false;
   p.fellBack = true;
   p.valid = false;
+  p.exitFront = false;
   SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy);
   if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_FINITE(frontPosition.x) ||
       !SNELL_FINITE(frontPosition.y) || !SNELL_FINITE(frontPosition.z)) {
@@ -5045,7 +5309,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitDirection = t1;
   p.valid = true;
   SnellHit h = snellHitMiss(0);
-  if (slot.source == SNELL_SOURCE_WYMAN) {
+  if (t.back.source == SNELL_SOURCE_WYMAN) {
     SnellScreenPoint sp = snellViewToUv(back.clipFromView, frontPosition);
     if (sp.valid && frontPosition.z < 0.0f) {
       SnellSurfaceSample b = snellSampleSurface(backDepth, sp.uv, back);
@@ -5056,8 +5320,8 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
         h = snellHitOnSurface(frontPosition + d * t1, backDepth, back, 1);
       }
     }
-  } else if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
-    h = snellIntersectWith(frontPosition, t1, backDepth, backNormal, backPyramid, back, slot.intersect);
+  } else if (t.back.source != SNELL_SOURCE_ENVIRONMENT) {
+    h = snellIntersectWith(frontPosition, t1, backDepth, backNormal, backPyramid, back, t.back.intersect);
   }
   p.fetches = h.fetches;
   // length() squares first: it overflows beyond ~1.8e19 (Wyman's estimate with a huge dN).
@@ -5083,9 +5347,55 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     n = -n;
   }
   p.exitNormal = n;
-  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, tirPolicy);
+  int bounces = clamp(t.bounces, 0, SNELL_MAX_BOUNCES);
+  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, bounces > 0 ? SNELL_TIR_REFLECT : tirPolicy);
+  // Inside: each TIR reflects, the inside slot finds where the reflected ray meets a layer, and the
+  // last allowed interface takes the material's policy.
+  vec3 d = t1;
+  for (int k = 0; k < SNELL_MAX_BOUNCES; ++k) {
+    if (k >= bounces || !r2.tir) {
+      break;
+    }
+    if (t.inside.source != SNELL_SOURCE_BUFFERS || t.inside.intersect.strategy != SNELL_STRATEGY_LINEAR_MARCH) {
+      return p;
+    }
+    d = r2.direction;
+    SnellInsideHit ih = snellInsideMarch(p.exitPoint, d, backDepth, back, frontLayerDepth, frontLayer,
+                                         t.inside.intersect.marchMaxDistance, t.inside.intersect.marchSteps,
+                                         t.inside.intersect.marchBisections);
+    p.fetches = p.fetches + ih.hit.fetches;
+    p.bounces = k + 1;
+    float segment = length(ih.hit.position - p.exitPoint);
+    // No exit in the buffers: the ray leaves along the reflection from the last point (a fallback).
+    p.exitDirection = d;
+    p.tir = true;
+    if (!ih.hit.valid || !SNELL_FINITE(p.pathLength + segment)) {
+      return p;
+    }
+    p.exitPoint = ih.hit.position;
+    p.exitUv = ih.hit.uv;
+    p.exitFront = ih.front;
+    p.pathLength = p.pathLength + segment;
+#if SNELL_TWO_INTERFACE_NORMAL_SAMPLE
+    vec4 nk = ih.front ? SNELL_SAMPLE_LOD(frontLayerNormal, ih.hit.uv, 0.0f) : SNELL_SAMPLE_LOD(backNormal, ih.hit.uv, 0.0f);
+#else
+    vec4 nk = ih.front ? SNELL_TEXEL_FETCH(frontLayerNormal, snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(frontLayerNormal, 0)), 0)
+                       : SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
+#endif
+    p.fetches = p.fetches + 1;
+    n = snellSafeNormalize(vec3(nk.x, nk.y, nk.z));
+    if (dot(n, n) == 0.0f) {
+      return p;
+    }
+    if (dot(n, d) > 0.0f) {
+      n = -n;
+    }
+    p.exitNormal = n;
+    r2 = snellRefract(d, n, 1.0f / eta, k + 1 < bounces ? SNELL_TIR_REFLECT : tirPolicy);
+  }
   p.tir = r2.tir;
   if (!r2.valid || dot(r2.direction, r2.direction) == 0.0f) {
+    p.exitDirection = d;
     return p;
   }
   p.exitDirection = r2.direction;
@@ -5313,7 +5623,8 @@ struct SnellTwoInterfaceResult {
   int fetches;
   bool backHit;        // P2 found in the back-face buffers
   bool fellBack;       // any fallback: back hit, TIR under ZERO, exit slot
-  bool tir;            // TIR at the second interface
+  bool tir;            // TIR at the last interface
+  int bounces;         // total internal reflections followed inside (SnellTechnique.bounces at most)
 };
 
 /* Mayer & Assarsson: a ray from the object resolved by one slot against the scene buffers or the environment */
@@ -5373,9 +5684,9 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   bool three = m.dispersion == 3;
   float eta = snellIorToEta(m.iorOutside, three ? m.iors.y : m.ior);
   SnellTwoInterfacePath p =
-      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
-  SnellTwoInterfaceExit e =
-      snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
+  SnellTwoInterfaceExit e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS,
+                                                  p.exitFront ? t.reflect : t.exit, m, v);
   vec3 transmitted = e.color * snellBeerLambert(m.absorption, p.pathLength);
   SnellTwoInterfaceResult r;
   r.exitPoint = p.exitPoint;
@@ -5388,15 +5699,16 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   r.backHit = p.hit;
   r.fellBack = p.fellBack || e.fellBack || !p.valid;
   r.tir = p.tir;
+  r.bounces = p.bounces;
   if (three) {
     SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.x),
-                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
-    SnellTwoInterfaceExit er =
-        snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
+    SnellTwoInterfaceExit er = snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, SNELL_SCENE_BUFFER_ARGS,
+                                                     pr.exitFront ? t.reflect : t.exit, m, v);
     SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.z),
-                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t.back, m.tirPolicy);
-    SnellTwoInterfaceExit eb =
-        snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, SNELL_SCENE_BUFFER_ARGS, t.exit, m, v);
+                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
+    SnellTwoInterfaceExit eb = snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, SNELL_SCENE_BUFFER_ARGS,
+                                                     pb.exitFront ? t.reflect : t.exit, m, v);
     transmitted.x = er.color.x * snellBeerLambert(m.absorption, pr.pathLength).x;
     transmitted.z = eb.color.z * snellBeerLambert(m.absorption, pb.pathLength).z;
     r.fetches = r.fetches + pr.fetches + er.fetches + pb.fetches + eb.fetches;

@@ -18,6 +18,7 @@ struct Expected {
   const char* name;
   int backSource;  // SNELL_SOURCE_BUFFERS or SNELL_SOURCE_WYMAN
   int back, backSteps, exit, exitSteps;  // steps: the strategy's own count (iterations, steps); 0 for single sample
+  int bounces = 0;                       // total internal reflections followed inside the object
 };
 
 // snell-lab --technique names and table.json "technique" values: scripts and saved tables use them, keep them.
@@ -32,6 +33,9 @@ const Expected kExpected[] = {
     {"linear-march", SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_LINEAR_MARCH, 32, SNELL_STRATEGY_LINEAR_MARCH, 32},
     {"dda", SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_DDA, 256, SNELL_STRATEGY_DDA, 256},
     {"image-space-bound", SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_LINEAR_MARCH, 512, SNELL_STRATEGY_LINEAR_MARCH, 512},
+    // Davis & Wyman 2007's bounces inside on the normal plane and the linear march.
+    {"plane-normal-2-bounces", SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_PLANE_NORMAL, 2, SNELL_STRATEGY_PLANE_NORMAL, 2, 2},
+    {"linear-march-bounces", SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_LINEAR_MARCH, 32, SNELL_STRATEGY_LINEAR_MARCH, 32, 2},
 };
 
 // The count each strategy is known by (what the lab's labels and the papers name).
@@ -72,6 +76,9 @@ TEST(TechniqueTable, EachPresetHasThePublishedSlots) {
     EXPECT_EQ(mainCount(o.back.intersect), e.backSteps) << t.name;
     EXPECT_EQ(o.exit.intersect.strategy, e.exit) << t.name;
     EXPECT_EQ(mainCount(o.exit.intersect), e.exitSteps) << t.name;
+    EXPECT_EQ(o.bounces, e.bounces) << t.name;
+    EXPECT_EQ(o.inside.source, SNELL_SOURCE_BUFFERS) << t.name;
+    EXPECT_EQ(o.inside.intersect.strategy, SNELL_STRATEGY_LINEAR_MARCH) << t.name;
     EXPECT_EQ(o.back.intersect.rangeSource, SNELL_RANGE_PYRAMID) << t.name;
     // A preset chooses strategies only: the exit and reflect slots keep the environment, whatever the host
     // points them at.

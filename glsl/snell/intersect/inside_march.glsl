@@ -34,16 +34,20 @@ contract:
     texel, z <= back viewZ: left through the back faces), on or in front of
     the front layer (valid front texel, z >= front viewZ: left through the
     front faces), or where both texels are empty (beside the silhouette).
+    The ray leaves at the first outside sample after an inside one: samples
+    before the first inside sample do not count (a ray that starts on a layer,
+    as after a reflection there, reads as outside within that layer's texel).
   - the first sample that projects off screen ends the march: valid = false
     (the exit is not in the buffers).
-  - refinement brackets [t_(i-1), t_i]; a midpoint outside moves hi, any other
+  - refinement brackets [last inside t, t_i]; a midpoint outside moves hi, any other
     (inside, off screen: no fetch) moves lo; the hit is hi: position, uv.
     front = true when hi crossed the front layer only, or both texels are
     empty and dir.z > 0 (a ray heading towards the camera leaves beside the
     silhouette through the front); false for the back layer (both crossed: the
     layer whose depth is nearer the point along z).
-  - valid = false with snellHitMiss numbers when no sample is outside (the
-    ray stays inside over maxDistance); with 0 fetches when an input is NaN
+  - valid = false with snellHitMiss numbers when no inside sample is followed
+    by an outside one (the ray stays inside over maxDistance, or never gets
+    inside); with 0 fetches when an input is NaN
     or Inf, |dir| is 0 or denormal-small, maxDistance <= 0, or the whole ray
     lies in front of the near plane.
   - fetches: 2 per sample read, both layers.
@@ -121,6 +125,8 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
   int fetches = 0;
   int side = 0;
   float tHit = 0.0f;
+  float lo = 0.0f;
+  bool wasInside = false;
   vec2 uvHit = vec2(0.0f, 0.0f);
   for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
     if (i > n) {
@@ -135,17 +141,19 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
     }
     side = snellInsideSide(p, sp.uv, backDepth, back, frontDepth, front, dir.z);
     fetches = fetches + 2;
-    if (side > 0) {
+    if (side == 0) {
+      wasInside = true;
+      lo = t;
+    } else if (wasInside) {
       tHit = t;
       uvHit = sp.uv;
       break;
     }
   }
-  if (side <= 0) {
+  if (tHit == 0.0f) {
     r.hit = snellHitMiss(fetches);
     return r;
   }
-  float lo = tHit - dt;
   for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
     if (j >= nr) {
       break;

@@ -1,0 +1,191 @@
+// Rays inside the object: the inside march against the glass sphere's two
+// analytic layers (the exit is the far root of the ray-sphere equation), and
+// the bounce loop through a right-angle prism whose textbook path (enter the
+// top leg, total internal reflection at the hypotenuse, leave through the
+// side leg) is computed here in double precision from the planes, independent
+// of snell: glm::refract / glm::reflect and ray-plane intersections.
+#include <snell/snell.hpp>
+
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "support/depth_scenes.hpp"
+#include "support/technique_scene.hpp"
+
+namespace {
+
+using namespace snell;
+using glm::dvec3;
+
+// The prism in view space: cross-section in x-z the right triangle A (-1.5, -4), B (-0.5, -4), C (-1.5, -5)
+// (right angle at A), extruded over y in [-1.2, 1.2]. Faces as (outward normal n, offset d): inside where
+// n.p <= d.
+struct Plane {
+  dvec3 n;
+  double d;
+};
+const std::vector<Plane>& prismPlanes() {
+  static const std::vector<Plane> planes = {
+      {dvec3(0, 0, 1), -4.0},                                    // top leg z = -4, facing the camera
+      {dvec3(-1, 0, 0), 1.5},                                    // side leg x = -1.5 (a back face from here)
+      {glm::normalize(dvec3(1, 0, -1)), (-0.5 + 4.0) / std::sqrt(2.0)},  // hypotenuse through B and C
+      {dvec3(0, 1, 0), 1.2},
+      {dvec3(0, -1, 0), 1.2},
+  };
+  return planes;
+}
+
+// Entry (front) or exit (back) of the line s q, s > 0, with the convex prism.
+snell_test::AnalyticSample prismLayer(dvec3 q, bool back) {
+  double sNear = 0.0, sFar = 1e30;
+  dvec3 nNear(0.0), nFar(0.0);
+  for (const Plane& p : prismPlanes()) {
+    const double denom = glm::dot(p.n, q);
+    if (denom == 0.0) {
+      if (p.d < 0.0) return {};
+      continue;
+    }
+    const double s = p.d / denom;
+    if (denom < 0.0 && s > sNear) {
+      sNear = s;
+      nNear = p.n;
+    } else if (denom > 0.0 && s < sFar) {
+      sFar = s;
+      nFar = p.n;
+    }
+  }
+  snell_test::AnalyticSample r;
+  if (!(sNear > 0.0 && sNear < sFar && glm::dot(nNear, nNear) > 0.0)) return r;
+  r.s = back ? sFar : sNear;
+  r.normal = back ? nFar : nNear;
+  r.valid = true;
+  return r;
+}
+
+// Where a ray from inside the prism leaves it: the nearest plane it heads out of.
+std::optional<std::pair<dvec3, dvec3>> prismExit(dvec3 o, dvec3 d) {
+  double best = 1e30;
+  dvec3 n(0.0);
+  for (const Plane& p : prismPlanes()) {
+    const double denom = glm::dot(p.n, d);
+    if (denom <= 0.0) continue;
+    const double t = (p.d - glm::dot(p.n, o)) / denom;
+    if (t > 1e-9 && t < best) {
+      best = t;
+      n = p.n;
+    }
+  }
+  if (best >= 1e30) return std::nullopt;
+  return std::make_pair(o + best * d, n);
+}
+
+struct PrismBuffers {
+  snell_test::DepthScene front, back;
+  Texture2D backPyramid;
+};
+
+PrismBuffers prismBuffers(int size) {
+  PrismBuffers b;
+  b.front = snell_test::detail::makeScene("prismFront", size, size, SNELL_DEPTH_GL, false, snell_test::kScenePlane,
+                                          [](dvec3 q) { return prismLayer(q, false); });
+  b.back = snell_test::detail::makeScene("prismBack", size, size, SNELL_DEPTH_GL, true, snell_test::kScenePlane,
+                                         [](dvec3 q) { return prismLayer(q, true); });
+  b.backPyramid = snellBuildDepthPyramid(b.back.depth, b.back.surface());
+  return b;
+}
+
+TEST(TechniqueBounce, InsideMarchFindsTheSpheresFarRootOnTheRightLayer) {
+  const technique_test::Scene s = technique_test::makeScene(256, 256);
+  const dvec3 c = technique_test::kCentre;
+  const double R = technique_test::kRadius;
+  const double px = 1.0 / 256.0;
+  // Bilinear depth reads: a nearest read puts a curved layer up to a texel off.
+  SnellDepthSurface back = s.backSurface(), front = s.frontSurface();
+  back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  front.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  int n = 0, towardsCamera = 0;
+  for (int i = 0; i < 400; ++i) {
+    // Deterministic directions and origins spread through the sphere's inner 80 %.
+    const double a = 2.399963 * i, z = 1.0 - 2.0 * (i + 0.5) / 400.0;
+    const dvec3 d(std::sqrt(1.0 - z * z) * std::cos(a), std::sqrt(1.0 - z * z) * std::sin(a), z);
+    const dvec3 o = c + 0.8 * R * dvec3(std::sin(1.7 * i), std::cos(2.3 * i), std::sin(0.9 * i + 1.0)) / std::sqrt(3.0);
+    const double b = glm::dot(o - c, d), q = glm::dot(o - c, o - c) - R * R;
+    const dvec3 exit = o + (-b + std::sqrt(b * b - q)) * d;
+    const dvec3 outward = (exit - c) / R;
+    const double facing = glm::dot(outward, glm::normalize(exit));
+    if (std::abs(facing) < 0.25) continue;  // near the silhouette the layers are steep: an edge case, not this test
+    const SnellInsideHit h = snellInsideMarch(glm::vec3(o), glm::vec3(d), s.back.depth, back, s.front.depth, front,
+                                              float(2.0 * R), 128, 12);
+    ASSERT_TRUE(h.hit.valid) << i;
+    EXPECT_EQ(h.front, facing < 0.0) << i;  // the exit faces the camera: found on the front layer
+    towardsCamera += facing < 0.0;
+    const glm::dvec2 want = s.front.project(exit), got = s.front.project(dvec3(h.hit.position));
+    EXPECT_LT(glm::length(want - got), 0.5 * px) << i;
+    ++n;
+  }
+  EXPECT_GT(n, 200);
+  EXPECT_GT(towardsCamera, 60);
+}
+
+TEST(TechniqueBounce, RightAnglePrismBounceLandsWhereTheGeometrySays) {
+  const int size = 256;
+  const PrismBuffers b = prismBuffers(size);
+  const double eta = 1.0 / 1.5, px = 1.0 / size;
+  SnellTechnique t = snellPresetLinearMarch();
+  t.back.intersect.marchSteps = 256;
+  t.back.intersect.marchBisections = 16;
+  t.back.intersect.marchMaxDistance = 3.0f;
+  t.inside.intersect.marchSteps = 256;
+  t.inside.intersect.marchBisections = 16;
+  t.inside.intersect.marchMaxDistance = 3.0f;
+  int n = 0;
+  for (int j = 8; j < size; j += 8)
+    for (int i = 8; i < size; i += 8) {
+      const glm::dvec2 uv((i + 0.5) / size, (j + 0.5) / size);
+      const dvec3 q = b.front.pixelRay(uv);
+      const snell_test::AnalyticSample f = prismLayer(q, false);
+      if (!f.valid || f.normal.z != 1.0) continue;
+      // The analytic path: refract at the top leg, meet the hypotenuse, reflect (TIR), leave.
+      const dvec3 p1 = f.s * q, v = glm::normalize(q);
+      const dvec3 t1 = glm::refract(v, f.normal, eta);
+      const auto h1 = prismExit(p1 + 1e-9 * t1, t1);
+      if (!h1 || h1->second.x <= 0.0) continue;  // only paths that meet the hypotenuse first
+      const dvec3 r = glm::reflect(t1, h1->second);
+      if (glm::length(glm::refract(t1, -h1->second, 1.0 / eta)) > 0.0) continue;  // not TIR
+      const auto h2 = prismExit(h1->first + 1e-9 * r, r);
+      if (!h2 || h2->second.x != -1.0) continue;  // leaves through the side leg
+      const dvec3 t2 = glm::refract(r, -h2->second, 1.0 / eta);
+      ASSERT_GT(glm::length(t2), 0.0);
+      const auto trace = [&](int bounces) {
+        SnellTechnique tb = t;
+        tb.bounces = bounces;
+        return snellTwoInterfaceTrace(glm::vec3(p1), glm::vec3(f.normal), float(eta), 0.0f, b.back.depth,
+                                      b.back.normals, b.backPyramid, b.back.surface(), b.front.depth, b.front.normals,
+                                      b.front.surface(), tb, SNELL_TIR_CRITICAL);
+      };
+      const SnellTwoInterfacePath one = trace(1);
+      ASSERT_TRUE(one.valid);
+      EXPECT_EQ(one.bounces, 1) << i << " " << j;
+      EXPECT_FALSE(one.exitFront);
+      EXPECT_FALSE(one.fellBack);
+      EXPECT_FALSE(one.tir);
+      EXPECT_LT(glm::length(b.front.project(h2->first) - b.front.project(dvec3(one.exitPoint))), 0.5 * px) << i << " " << j;
+      EXPECT_GT(glm::dot(glm::dvec3(one.exitDirection), t2), std::cos(0.01)) << i << " " << j;
+      const double inside = glm::length(h1->first - p1) + glm::length(h2->first - h1->first);
+      EXPECT_NEAR(one.pathLength, inside, 0.02) << i << " " << j;
+      // No bounce: the two-interface model clamps at the hypotenuse, as before.
+      const SnellTwoInterfacePath none = trace(0);
+      EXPECT_EQ(none.bounces, 0);
+      EXPECT_TRUE(none.tir);
+      EXPECT_LT(glm::length(glm::dvec3(none.exitPoint) - h1->first), 0.01);
+      ++n;
+    }
+  EXPECT_GT(n, 20);
+}
+
+}  // namespace
