@@ -4877,11 +4877,13 @@ description: the geometry of two-interface refraction: refract the view ray at
   the front face, find where the refracted ray T1 leaves the object in the
   back-face depth buffer (with the back slot's intersection strategy, or, in
   Wyman's variant, by his distance interpolation), refract again with the
-  back-face normal found there. The
-  exit ray (P2, T2) is then resolved by two_interface_shade.glsl against the
-  opaque scene or the environment.
+  back-face normal found there; with t.bounces > 0, a total internal
+  reflection there (and at each later exit) is followed inside the object
+  instead of clamped. The exit ray (P2, T2) is then resolved by
+  two_interface_shade.glsl against the opaque scene or the environment.
 use: SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN,
-         backDepth, backNormal, backPyramid, back, t.back, m.tirPolicy);
+         backDepth, backNormal, backPyramid, back, frontLayerDepth, frontLayerNormal, frontLayer,
+         t, m.tirPolicy);
   frontPosition  P1: view-space position of the front-face fragment (camera at
                  the origin, so the view ray V is frontPosition itself)
   frontNormal    N1: its normal (either orientation, any length)
@@ -4894,10 +4896,14 @@ use: SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal
                  pass: depth (GL_GREATER after clearing to the near value),
                  view-space normals, the depth min/max pyramid of that depth
                  (snellBuildDepthPyramid / glsl/passes/depth_pyramid.frag), and
-                 how to read the depth (emptyDepth = the clear value)
-  slot           the back slot (technique_options.glsl): its source and its
-                 intersector
-  tirPolicy      SNELL_TIR_ZERO / _CRITICAL / _REFLECT, both interfaces
+                 how to read the depth (emptyDepth = the clear value); then
+                 the front-face pass (depth drawn with GL_LESS after clearing
+                 to the far value, view-space normals, how to read it), read
+                 only when t.bounces > 0
+  t              the technique (technique_options.glsl): its back slot (source
+                 and intersector), its inside slot and bounce count
+  tirPolicy      SNELL_TIR_ZERO / _CRITICAL / _REFLECT, at the first interface
+                 and the last one the path meets
 options: technique_options.glsl, and
   SNELL_TWO_INTERFACE_NORMAL_SAMPLE  how N2 is read from backNormal at the hit
                  uv: 1 (default) SNELL_SAMPLE_LOD at level 0 with the texture's
@@ -4930,13 +4936,34 @@ contract:
     normal, or TIR under SNELL_TIR_ZERO: the ray leaves as if the second
     interface did not bend it: exitPoint = P2 when found, else P1,
     exitDirection = T1, pathLength = |P2 - P1| when P2 was found, else 0.
-  - fetches: the strategy's count plus the normal fetch.
+  - bounces (t.bounces = B > 0, clamped to [0, SNELL_MAX_BOUNCES]): at the
+    back hit and at each later exit but the (B + 1)-th, TIR reflects (R =
+    reflect(T, N)) instead of following tirPolicy: the inside slot
+    (SNELL_SOURCE_BUFFERS with SNELL_STRATEGY_LINEAR_MARCH: snellInsideMarch
+    from the exit point along R between the back layer and the front layer,
+    with inside.intersect's marchMaxDistance, marchSteps, marchBisections)
+    finds where R leaves; N there is read from that layer's normals (as N2,
+    1 fetch), flipped to face R, and the ray refracts out, or reflects again,
+    the last allowed interface under tirPolicy. bounces = the reflections
+    followed; exitPoint, exitUv, exitNormal are the last interface's;
+    exitFront = the last interface is a front face (T2 heads towards the
+    camera's side: two_interface_shade.glsl resolves it with the reflect
+    slot); pathLength adds every segment inside; tir = TIR at the last
+    interface. A reflection the inside march cannot follow (no exit in the
+    buffers, a zero normal there, a path length that overflows, an inside slot
+    of another source or strategy) ends the path as a fallback (fellBack =
+    true): it leaves from the last interface point along R. bounces = 0 is
+    the two-interface path above, bit for bit.
+  - fetches: the strategy's count plus the normal fetch, plus each bounce's
+    march and normal fetch.
 source: C. Wyman, "An Approximate Image-Space Approach for Interactive
   Refraction", SIGGRAPH 2005 (two interfaces, back-face normal and depth
   buffers); M. M. Oliveira & M. Brauwers, "Real-Time Refraction Through
   Deformable Objects", I3D 2007, sec. 2.1 (eqs. 1-2), sec. 3 (intersecting T1
   with the back-face depth map, N2 from the normal map at the hit), sec. 5
-  (critical-angle TIR policy).
+  (critical-angle TIR policy); C. Davis & C. Wyman, "Interactive Refractions
+  with Total Internal Reflection", Graphics Interface 2007 (bounces inside
+  between front and back depth maps).
 */
 #ifndef SNELL_SHADE_TWO_INTERFACE_GLSL
 #define SNELL_SHADE_TWO_INTERFACE_GLSL
@@ -5461,10 +5488,13 @@ contract (snellTwoInterfaceExit(origin, dir, ..., slot, m, v)):
 contract (snellTwoInterfaceRefraction):
   - one trace with eta = snellIorToEta(m.iorOutside, m.ior) (m.dispersion != 3),
     or three (m.dispersion == 3), with m.iors.x/.y/.z for red/green/blue, each
-    channel taken from its own trace; the back slot t.back finds P2, the exit
-    slot t.exit resolves (P2, T2); the reported geometry (exit point,
-    direction, hit, path length, tir, backHit) is the single / green trace's;
-    fetches and fellBack (any) cover all traces.
+    channel taken from its own trace; the back slot t.back finds P2 (with
+    t.bounces > 0 the trace follows TIR inside, two_interface.glsl), the exit
+    slot t.exit resolves (P2, T2), or the reflect slot t.reflect when the
+    path left through a front face (after a bounce: T2 heads towards the
+    camera's side); the reported geometry (exit point, direction, hit, path
+    length, tir, bounces, backHit) is the single / green trace's; fetches and
+    fellBack (any) cover all traces.
   - transmitted = exit color * snellBeerLambert(m.absorption, pathLength) per
     channel, pathLength = |P2 - P1| of that channel's trace (0 on fallback
     without a back hit; finite: a back hit whose |P2 - P1| overflows a float
@@ -5475,8 +5505,8 @@ contract (snellTwoInterfaceRefraction):
     along R, or the scene colour where the reflect slot's intersector finds
     the scene, else its fallback); its fetches added, its hit in
     reflectionHit; color = F bg(R) + (1 - F) transmitted. Else F = 0, color =
-    transmitted. The second interface's Fresnel loss and internally reflected
-    light are not modelled.
+    transmitted. The Fresnel loss at the later interfaces, and the light they
+    reflect back inside where Snell allows refraction, are not modelled.
   - an invalid path (NaN / zero inputs): color 0, fellBack true, the
     reflection still added when R is defined.
 source: Wyman 2005 and Oliveira & Brauwers 2007 (two interfaces, distant

@@ -3,11 +3,13 @@ description: the geometry of two-interface refraction: refract the view ray at
   the front face, find where the refracted ray T1 leaves the object in the
   back-face depth buffer (with the back slot's intersection strategy, or, in
   Wyman's variant, by his distance interpolation), refract again with the
-  back-face normal found there. The
-  exit ray (P2, T2) is then resolved by two_interface_shade.glsl against the
-  opaque scene or the environment.
+  back-face normal found there; with t.bounces > 0, a total internal
+  reflection there (and at each later exit) is followed inside the object
+  instead of clamped. The exit ray (P2, T2) is then resolved by
+  two_interface_shade.glsl against the opaque scene or the environment.
 use: SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN,
-         backDepth, backNormal, backPyramid, back, t.back, m.tirPolicy);
+         backDepth, backNormal, backPyramid, back, frontLayerDepth, frontLayerNormal, frontLayer,
+         t, m.tirPolicy);
   frontPosition  P1: view-space position of the front-face fragment (camera at
                  the origin, so the view ray V is frontPosition itself)
   frontNormal    N1: its normal (either orientation, any length)
@@ -20,10 +22,14 @@ use: SnellTwoInterfacePath p = snellTwoInterfaceTrace(frontPosition, frontNormal
                  pass: depth (GL_GREATER after clearing to the near value),
                  view-space normals, the depth min/max pyramid of that depth
                  (snellBuildDepthPyramid / glsl/passes/depth_pyramid.frag), and
-                 how to read the depth (emptyDepth = the clear value)
-  slot           the back slot (technique_options.glsl): its source and its
-                 intersector
-  tirPolicy      SNELL_TIR_ZERO / _CRITICAL / _REFLECT, both interfaces
+                 how to read the depth (emptyDepth = the clear value); then
+                 the front-face pass (depth drawn with GL_LESS after clearing
+                 to the far value, view-space normals, how to read it), read
+                 only when t.bounces > 0
+  t              the technique (technique_options.glsl): its back slot (source
+                 and intersector), its inside slot and bounce count
+  tirPolicy      SNELL_TIR_ZERO / _CRITICAL / _REFLECT, at the first interface
+                 and the last one the path meets
 options: technique_options.glsl, and
   SNELL_TWO_INTERFACE_NORMAL_SAMPLE  how N2 is read from backNormal at the hit
                  uv: 1 (default) SNELL_SAMPLE_LOD at level 0 with the texture's
@@ -56,13 +62,34 @@ contract:
     normal, or TIR under SNELL_TIR_ZERO: the ray leaves as if the second
     interface did not bend it: exitPoint = P2 when found, else P1,
     exitDirection = T1, pathLength = |P2 - P1| when P2 was found, else 0.
-  - fetches: the strategy's count plus the normal fetch.
+  - bounces (t.bounces = B > 0, clamped to [0, SNELL_MAX_BOUNCES]): at the
+    back hit and at each later exit but the (B + 1)-th, TIR reflects (R =
+    reflect(T, N)) instead of following tirPolicy: the inside slot
+    (SNELL_SOURCE_BUFFERS with SNELL_STRATEGY_LINEAR_MARCH: snellInsideMarch
+    from the exit point along R between the back layer and the front layer,
+    with inside.intersect's marchMaxDistance, marchSteps, marchBisections)
+    finds where R leaves; N there is read from that layer's normals (as N2,
+    1 fetch), flipped to face R, and the ray refracts out, or reflects again,
+    the last allowed interface under tirPolicy. bounces = the reflections
+    followed; exitPoint, exitUv, exitNormal are the last interface's;
+    exitFront = the last interface is a front face (T2 heads towards the
+    camera's side: two_interface_shade.glsl resolves it with the reflect
+    slot); pathLength adds every segment inside; tir = TIR at the last
+    interface. A reflection the inside march cannot follow (no exit in the
+    buffers, a zero normal there, a path length that overflows, an inside slot
+    of another source or strategy) ends the path as a fallback (fellBack =
+    true): it leaves from the last interface point along R. bounces = 0 is
+    the two-interface path above, bit for bit.
+  - fetches: the strategy's count plus the normal fetch, plus each bounce's
+    march and normal fetch.
 source: C. Wyman, "An Approximate Image-Space Approach for Interactive
   Refraction", SIGGRAPH 2005 (two interfaces, back-face normal and depth
   buffers); M. M. Oliveira & M. Brauwers, "Real-Time Refraction Through
   Deformable Objects", I3D 2007, sec. 2.1 (eqs. 1-2), sec. 3 (intersecting T1
   with the back-face depth map, N2 from the normal map at the hit), sec. 5
-  (critical-angle TIR policy).
+  (critical-angle TIR policy); C. Davis & C. Wyman, "Interactive Refractions
+  with Total Internal Reflection", Graphics Interface 2007 (bounces inside
+  between front and back depth maps).
 */
 #ifndef SNELL_SHADE_TWO_INTERFACE_GLSL
 #define SNELL_SHADE_TWO_INTERFACE_GLSL

@@ -55,10 +55,13 @@ contract (snellTwoInterfaceExit(origin, dir, ..., slot, m, v)):
 contract (snellTwoInterfaceRefraction):
   - one trace with eta = snellIorToEta(m.iorOutside, m.ior) (m.dispersion != 3),
     or three (m.dispersion == 3), with m.iors.x/.y/.z for red/green/blue, each
-    channel taken from its own trace; the back slot t.back finds P2, the exit
-    slot t.exit resolves (P2, T2); the reported geometry (exit point,
-    direction, hit, path length, tir, backHit) is the single / green trace's;
-    fetches and fellBack (any) cover all traces.
+    channel taken from its own trace; the back slot t.back finds P2 (with
+    t.bounces > 0 the trace follows TIR inside, two_interface.glsl), the exit
+    slot t.exit resolves (P2, T2), or the reflect slot t.reflect when the
+    path left through a front face (after a bounce: T2 heads towards the
+    camera's side); the reported geometry (exit point, direction, hit, path
+    length, tir, bounces, backHit) is the single / green trace's; fetches and
+    fellBack (any) cover all traces.
   - transmitted = exit color * snellBeerLambert(m.absorption, pathLength) per
     channel, pathLength = |P2 - P1| of that channel's trace (0 on fallback
     without a back hit; finite: a back hit whose |P2 - P1| overflows a float
@@ -69,8 +72,8 @@ contract (snellTwoInterfaceRefraction):
     along R, or the scene colour where the reflect slot's intersector finds
     the scene, else its fallback); its fetches added, its hit in
     reflectionHit; color = F bg(R) + (1 - F) transmitted. Else F = 0, color =
-    transmitted. The second interface's Fresnel loss and internally reflected
-    light are not modelled.
+    transmitted. The Fresnel loss at the later interfaces, and the light they
+    reflect back inside where Snell allows refraction, are not modelled.
   - an invalid path (NaN / zero inputs): color 0, fellBack true, the
     reflection still added when R is defined.
 source: Wyman 2005 and Oliveira & Brauwers 2007 (two interfaces, distant
