@@ -4662,7 +4662,7 @@ presets (back slot / exit slot):
   snellPresetDdaMarch()            perspective-correct pixel DDA march / the same
   snellPresetPlaneNormalBounces(n) snellPresetPlaneNormal(n) that follows
                                    TIR inside the object: bounces =
-                                   SNELL_PRESET_BOUNCES (2), the inside slot's
+                                   SNELL_PRESET_BOUNCES (4), the inside slot's
                                    march SNELL_PRESET_INSIDE_STEPS (16) steps +
                                    SNELL_PRESET_INSIDE_BISECTIONS (5)
                                    bisections (set inside.intersect.
@@ -4788,7 +4788,7 @@ SNELL_FN SnellTechnique snellPresetImageSpaceBound() {
 }
 
 #ifndef SNELL_PRESET_BOUNCES
-#  define SNELL_PRESET_BOUNCES 2
+#  define SNELL_PRESET_BOUNCES 4
 #endif
 #ifndef SNELL_PRESET_INSIDE_STEPS
 #  define SNELL_PRESET_INSIDE_STEPS 16

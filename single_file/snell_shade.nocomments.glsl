@@ -2644,7 +2644,7 @@ SNELL_FN SnellTechnique snellPresetImageSpaceBound() {
 }
 
 #ifndef SNELL_PRESET_BOUNCES
-#  define SNELL_PRESET_BOUNCES 2
+#  define SNELL_PRESET_BOUNCES 4
 #endif
 #ifndef SNELL_PRESET_INSIDE_STEPS
 #  define SNELL_PRESET_INSIDE_STEPS 16
