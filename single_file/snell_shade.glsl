@@ -4945,7 +4945,7 @@ contract:
     finds where R leaves; N there is read from that layer's normals (as N2,
     1 fetch), flipped to face R, and the ray refracts out, or reflects again,
     the last allowed interface under tirPolicy. bounces = the reflections
-    followed; exitPoint, exitUv, exitNormal are the last interface's;
+    taken (one that ends as a fallback counts); exitPoint, exitUv, exitNormal are the last interface's;
     exitFront = the last interface is a front face (T2 heads towards the
     camera's side: two_interface_shade.glsl resolves it with the reflect
     slot); pathLength adds every segment inside; tir = TIR at the last
@@ -5383,19 +5383,19 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     if (k >= bounces || !r2.tir) {
       break;
     }
+    // From here a path that cannot be followed leaves along the reflection from the last point (a fallback).
+    d = r2.direction;
+    p.exitDirection = d;
+    p.tir = true;
+    p.bounces = k + 1;
     if (t.inside.source != SNELL_SOURCE_BUFFERS || t.inside.intersect.strategy != SNELL_STRATEGY_LINEAR_MARCH) {
       return p;
     }
-    d = r2.direction;
     SnellInsideHit ih = snellInsideMarch(p.exitPoint, d, backDepth, back, frontLayerDepth, frontLayer,
                                          t.inside.intersect.marchMaxDistance, t.inside.intersect.marchSteps,
                                          t.inside.intersect.marchBisections);
     p.fetches = p.fetches + ih.hit.fetches;
-    p.bounces = k + 1;
     float segment = length(ih.hit.position - p.exitPoint);
-    // No exit in the buffers: the ray leaves along the reflection from the last point (a fallback).
-    p.exitDirection = d;
-    p.tir = true;
     if (!ih.hit.valid || !SNELL_FINITE(p.pathLength + segment)) {
       return p;
     }
@@ -5404,10 +5404,13 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     p.exitFront = ih.front;
     p.pathLength = p.pathLength + segment;
 #if SNELL_TWO_INTERFACE_NORMAL_SAMPLE
-    vec4 nk = ih.front ? SNELL_SAMPLE_LOD(frontLayerNormal, ih.hit.uv, 0.0f) : SNELL_SAMPLE_LOD(backNormal, ih.hit.uv, 0.0f);
+    vec4 nk = ih.front ? SNELL_SAMPLE_LOD(frontLayerNormal, ih.hit.uv, 0.0f)
+                       : SNELL_SAMPLE_LOD(backNormal, ih.hit.uv, 0.0f);
 #else
-    vec4 nk = ih.front ? SNELL_TEXEL_FETCH(frontLayerNormal, snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(frontLayerNormal, 0)), 0)
-                       : SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
+    vec4 nk = ih.front
+                  ? SNELL_TEXEL_FETCH(frontLayerNormal,
+                                      snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(frontLayerNormal, 0)), 0)
+                  : SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
 #endif
     p.fetches = p.fetches + 1;
     n = snellSafeNormalize(vec3(nk.x, nk.y, nk.z));
@@ -5494,7 +5497,10 @@ contract (snellTwoInterfaceRefraction):
     path left through a front face (after a bounce: T2 heads towards the
     camera's side); the reported geometry (exit point, direction, hit, path
     length, tir, bounces, backHit) is the single / green trace's; fetches and
-    fellBack (any) cover all traces.
+    fellBack (any) cover all traces. fellBack: the path fell back
+    (two_interface.glsl) or the exit slot did; a reflect slot that resolves a
+    path leaving through a front face and finds no scene shows the
+    environment, as the first surface's reflection does, and is no fallback.
   - transmitted = exit color * snellBeerLambert(m.absorption, pathLength) per
     channel, pathLength = |P2 - P1| of that channel's trace (0 on fallback
     without a back hit; finite: a back hit whose |P2 - P1| overflows a float
@@ -5652,7 +5658,7 @@ struct SnellTwoInterfaceResult {
   float fresnel;       // F at the first interface (0 without reflection)
   int fetches;
   bool backHit;        // P2 found in the back-face buffers
-  bool fellBack;       // any fallback: back hit, TIR under ZERO, exit slot
+  bool fellBack;       // any fallback: back hit, TIR under ZERO, a bounce not followed, exit slot
   bool tir;            // TIR at the last interface
   int bounces;         // total internal reflections followed inside (SnellTechnique.bounces at most)
 };
@@ -5727,7 +5733,9 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   r.fresnel = 0.0f;
   r.fetches = p.fetches + e.fetches;
   r.backHit = p.hit;
-  r.fellBack = p.fellBack || e.fellBack || !p.valid;
+  // A path that left through a front face sees the environment where the reflect slot finds no scene, as
+  // the first surface's reflection does: not a fallback.
+  r.fellBack = p.fellBack || (e.fellBack && !p.exitFront) || !p.valid;
   r.tir = p.tir;
   r.bounces = p.bounces;
   if (three) {
@@ -5742,7 +5750,8 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     transmitted.x = er.color.x * snellBeerLambert(m.absorption, pr.pathLength).x;
     transmitted.z = eb.color.z * snellBeerLambert(m.absorption, pb.pathLength).z;
     r.fetches = r.fetches + pr.fetches + er.fetches + pb.fetches + eb.fetches;
-    r.fellBack = r.fellBack || pr.fellBack || er.fellBack || pb.fellBack || eb.fellBack;
+    r.fellBack = r.fellBack || pr.fellBack || (er.fellBack && !pr.exitFront) || pb.fellBack ||
+                 (eb.fellBack && !pb.exitFront);
   }
   r.color = transmitted;
   vec3 vv = snellSafeNormalize(frontPosition);

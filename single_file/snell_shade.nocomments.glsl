@@ -2997,18 +2997,18 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     if (k >= bounces || !r2.tir) {
       break;
     }
+    d = r2.direction;
+    p.exitDirection = d;
+    p.tir = true;
+    p.bounces = k + 1;
     if (t.inside.source != SNELL_SOURCE_BUFFERS || t.inside.intersect.strategy != SNELL_STRATEGY_LINEAR_MARCH) {
       return p;
     }
-    d = r2.direction;
     SnellInsideHit ih = snellInsideMarch(p.exitPoint, d, backDepth, back, frontLayerDepth, frontLayer,
                                          t.inside.intersect.marchMaxDistance, t.inside.intersect.marchSteps,
                                          t.inside.intersect.marchBisections);
     p.fetches = p.fetches + ih.hit.fetches;
-    p.bounces = k + 1;
     float segment = length(ih.hit.position - p.exitPoint);
-    p.exitDirection = d;
-    p.tir = true;
     if (!ih.hit.valid || !SNELL_FINITE(p.pathLength + segment)) {
       return p;
     }
@@ -3017,10 +3017,13 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     p.exitFront = ih.front;
     p.pathLength = p.pathLength + segment;
 #if SNELL_TWO_INTERFACE_NORMAL_SAMPLE
-    vec4 nk = ih.front ? SNELL_SAMPLE_LOD(frontLayerNormal, ih.hit.uv, 0.0f) : SNELL_SAMPLE_LOD(backNormal, ih.hit.uv, 0.0f);
+    vec4 nk = ih.front ? SNELL_SAMPLE_LOD(frontLayerNormal, ih.hit.uv, 0.0f)
+                       : SNELL_SAMPLE_LOD(backNormal, ih.hit.uv, 0.0f);
 #else
-    vec4 nk = ih.front ? SNELL_TEXEL_FETCH(frontLayerNormal, snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(frontLayerNormal, 0)), 0)
-                       : SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
+    vec4 nk = ih.front
+                  ? SNELL_TEXEL_FETCH(frontLayerNormal,
+                                      snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(frontLayerNormal, 0)), 0)
+                  : SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
 #endif
     p.fetches = p.fetches + 1;
     n = snellSafeNormalize(vec3(nk.x, nk.y, nk.z));
@@ -3177,7 +3180,7 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   r.fresnel = 0.0f;
   r.fetches = p.fetches + e.fetches;
   r.backHit = p.hit;
-  r.fellBack = p.fellBack || e.fellBack || !p.valid;
+  r.fellBack = p.fellBack || (e.fellBack && !p.exitFront) || !p.valid;
   r.tir = p.tir;
   r.bounces = p.bounces;
   if (three) {
@@ -3192,7 +3195,8 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     transmitted.x = er.color.x * snellBeerLambert(m.absorption, pr.pathLength).x;
     transmitted.z = eb.color.z * snellBeerLambert(m.absorption, pb.pathLength).z;
     r.fetches = r.fetches + pr.fetches + er.fetches + pb.fetches + eb.fetches;
-    r.fellBack = r.fellBack || pr.fellBack || er.fellBack || pb.fellBack || eb.fellBack;
+    r.fellBack = r.fellBack || pr.fellBack || (er.fellBack && !pr.exitFront) || pb.fellBack ||
+                 (eb.fellBack && !pb.exitFront);
   }
   r.color = transmitted;
   vec3 vv = snellSafeNormalize(frontPosition);

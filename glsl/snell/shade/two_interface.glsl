@@ -71,7 +71,7 @@ contract:
     finds where R leaves; N there is read from that layer's normals (as N2,
     1 fetch), flipped to face R, and the ray refracts out, or reflects again,
     the last allowed interface under tirPolicy. bounces = the reflections
-    followed; exitPoint, exitUv, exitNormal are the last interface's;
+    taken (one that ends as a fallback counts); exitPoint, exitUv, exitNormal are the last interface's;
     exitFront = the last interface is a front face (T2 heads towards the
     camera's side: two_interface_shade.glsl resolves it with the reflect
     slot); pathLength adds every segment inside; tir = TIR at the last
@@ -202,19 +202,19 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     if (k >= bounces || !r2.tir) {
       break;
     }
+    // From here a path that cannot be followed leaves along the reflection from the last point (a fallback).
+    d = r2.direction;
+    p.exitDirection = d;
+    p.tir = true;
+    p.bounces = k + 1;
     if (t.inside.source != SNELL_SOURCE_BUFFERS || t.inside.intersect.strategy != SNELL_STRATEGY_LINEAR_MARCH) {
       return p;
     }
-    d = r2.direction;
     SnellInsideHit ih = snellInsideMarch(p.exitPoint, d, backDepth, back, frontLayerDepth, frontLayer,
                                          t.inside.intersect.marchMaxDistance, t.inside.intersect.marchSteps,
                                          t.inside.intersect.marchBisections);
     p.fetches = p.fetches + ih.hit.fetches;
-    p.bounces = k + 1;
     float segment = length(ih.hit.position - p.exitPoint);
-    // No exit in the buffers: the ray leaves along the reflection from the last point (a fallback).
-    p.exitDirection = d;
-    p.tir = true;
     if (!ih.hit.valid || !SNELL_FINITE(p.pathLength + segment)) {
       return p;
     }
@@ -223,10 +223,13 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     p.exitFront = ih.front;
     p.pathLength = p.pathLength + segment;
 #if SNELL_TWO_INTERFACE_NORMAL_SAMPLE
-    vec4 nk = ih.front ? SNELL_SAMPLE_LOD(frontLayerNormal, ih.hit.uv, 0.0f) : SNELL_SAMPLE_LOD(backNormal, ih.hit.uv, 0.0f);
+    vec4 nk = ih.front ? SNELL_SAMPLE_LOD(frontLayerNormal, ih.hit.uv, 0.0f)
+                       : SNELL_SAMPLE_LOD(backNormal, ih.hit.uv, 0.0f);
 #else
-    vec4 nk = ih.front ? SNELL_TEXEL_FETCH(frontLayerNormal, snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(frontLayerNormal, 0)), 0)
-                       : SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
+    vec4 nk = ih.front
+                  ? SNELL_TEXEL_FETCH(frontLayerNormal,
+                                      snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(frontLayerNormal, 0)), 0)
+                  : SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
 #endif
     p.fetches = p.fetches + 1;
     n = snellSafeNormalize(vec3(nk.x, nk.y, nk.z));

@@ -61,7 +61,10 @@ contract (snellTwoInterfaceRefraction):
     path left through a front face (after a bounce: T2 heads towards the
     camera's side); the reported geometry (exit point, direction, hit, path
     length, tir, bounces, backHit) is the single / green trace's; fetches and
-    fellBack (any) cover all traces.
+    fellBack (any) cover all traces. fellBack: the path fell back
+    (two_interface.glsl) or the exit slot did; a reflect slot that resolves a
+    path leaving through a front face and finds no scene shows the
+    environment, as the first surface's reflection does, and is no fallback.
   - transmitted = exit color * snellBeerLambert(m.absorption, pathLength) per
     channel, pathLength = |P2 - P1| of that channel's trace (0 on fallback
     without a back hit; finite: a back hit whose |P2 - P1| overflows a float
@@ -118,7 +121,7 @@ struct SnellTwoInterfaceResult {
   float fresnel;       // F at the first interface (0 without reflection)
   int fetches;
   bool backHit;        // P2 found in the back-face buffers
-  bool fellBack;       // any fallback: back hit, TIR under ZERO, exit slot
+  bool fellBack;       // any fallback: back hit, TIR under ZERO, a bounce not followed, exit slot
   bool tir;            // TIR at the last interface
   int bounces;         // total internal reflections followed inside (SnellTechnique.bounces at most)
 };
@@ -193,7 +196,9 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   r.fresnel = 0.0f;
   r.fetches = p.fetches + e.fetches;
   r.backHit = p.hit;
-  r.fellBack = p.fellBack || e.fellBack || !p.valid;
+  // A path that left through a front face sees the environment where the reflect slot finds no scene, as
+  // the first surface's reflection does: not a fallback.
+  r.fellBack = p.fellBack || (e.fellBack && !p.exitFront) || !p.valid;
   r.tir = p.tir;
   r.bounces = p.bounces;
   if (three) {
@@ -208,7 +213,8 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     transmitted.x = er.color.x * snellBeerLambert(m.absorption, pr.pathLength).x;
     transmitted.z = eb.color.z * snellBeerLambert(m.absorption, pb.pathLength).z;
     r.fetches = r.fetches + pr.fetches + er.fetches + pb.fetches + eb.fetches;
-    r.fellBack = r.fellBack || pr.fellBack || er.fellBack || pb.fellBack || eb.fellBack;
+    r.fellBack = r.fellBack || pr.fellBack || (er.fellBack && !pr.exitFront) || pb.fellBack ||
+                 (eb.fellBack && !pb.exitFront);
   }
   r.color = transmitted;
   vec3 vv = snellSafeNormalize(frontPosition);
