@@ -2976,26 +2976,37 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitPoint = h.position;
   p.exitUv = h.uv;
   p.pathLength = pathLength;
-#if SNELL_TWO_INTERFACE_NORMAL_SAMPLE
-  vec4 n2 = SNELL_SAMPLE_LOD(backNormal, h.uv, 0.0f);
-#else
-  vec4 n2 = SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(h.uv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
-#endif
-  p.fetches = p.fetches + 1;
-  vec3 n = snellSafeNormalize(vec3(n2.x, n2.y, n2.z));
-  if (dot(n, n) == 0.0f) {
-    return p;
-  }
-  if (dot(n, t1) > 0.0f) {
-    n = -n;
-  }
-  p.exitNormal = n;
   int bounces = clamp(t.bounces, 0, SNELL_MAX_BOUNCES);
-  SnellRefraction r2 = snellRefract(t1, n, 1.0f / eta, bounces > 0 ? SNELL_TIR_REFLECT : tirPolicy);
   vec3 d = t1;
-  for (int k = 0; k < SNELL_MAX_BOUNCES; ++k) {
-    if (k >= bounces || !r2.tir) {
-      break;
+  for (int k = 0; k <= SNELL_MAX_BOUNCES; ++k) {
+#if SNELL_TWO_INTERFACE_NORMAL_SAMPLE
+    vec4 nk = p.exitFront ? SNELL_SAMPLE_LOD(frontLayerNormal, p.exitUv, 0.0f)
+                          : SNELL_SAMPLE_LOD(backNormal, p.exitUv, 0.0f);
+#else
+    vec4 nk = p.exitFront
+                  ? SNELL_TEXEL_FETCH(frontLayerNormal,
+                                      snellUvToPixel(p.exitUv, SNELL_TEXTURE_SIZE(frontLayerNormal, 0)), 0)
+                  : SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(p.exitUv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
+#endif
+    p.fetches = p.fetches + 1;
+    vec3 n = snellSafeNormalize(vec3(nk.x, nk.y, nk.z));
+    if (dot(n, n) == 0.0f) {
+      return p;
+    }
+    if (dot(n, d) > 0.0f) {
+      n = -n;
+    }
+    p.exitNormal = n;
+    bool last = k >= bounces;
+    SnellRefraction r2 = snellRefract(d, n, 1.0f / eta, last ? tirPolicy : SNELL_TIR_REFLECT);
+    if (last || !r2.tir) {
+      p.tir = r2.tir;
+      if (!r2.valid || dot(r2.direction, r2.direction) == 0.0f) {
+        return p;
+      }
+      p.exitDirection = r2.direction;
+      p.fellBack = false;
+      return p;
     }
     d = r2.direction;
     p.exitDirection = d;
@@ -3016,33 +3027,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     p.exitUv = ih.hit.uv;
     p.exitFront = ih.front;
     p.pathLength = p.pathLength + segment;
-#if SNELL_TWO_INTERFACE_NORMAL_SAMPLE
-    vec4 nk = ih.front ? SNELL_SAMPLE_LOD(frontLayerNormal, ih.hit.uv, 0.0f)
-                       : SNELL_SAMPLE_LOD(backNormal, ih.hit.uv, 0.0f);
-#else
-    vec4 nk = ih.front
-                  ? SNELL_TEXEL_FETCH(frontLayerNormal,
-                                      snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(frontLayerNormal, 0)), 0)
-                  : SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(ih.hit.uv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
-#endif
-    p.fetches = p.fetches + 1;
-    n = snellSafeNormalize(vec3(nk.x, nk.y, nk.z));
-    if (dot(n, n) == 0.0f) {
-      return p;
-    }
-    if (dot(n, d) > 0.0f) {
-      n = -n;
-    }
-    p.exitNormal = n;
-    r2 = snellRefract(d, n, 1.0f / eta, k + 1 < bounces ? SNELL_TIR_REFLECT : tirPolicy);
   }
-  p.tir = r2.tir;
-  if (!r2.valid || dot(r2.direction, r2.direction) == 0.0f) {
-    p.exitDirection = d;
-    return p;
-  }
-  p.exitDirection = r2.direction;
-  p.fellBack = false;
   return p;
 }
 
