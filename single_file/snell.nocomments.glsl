@@ -1947,6 +1947,10 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
 #ifndef SNELL_INTERSECT_INSIDE_MARCH_GLSL
 #define SNELL_INTERSECT_INSIDE_MARCH_GLSL
 
+#ifndef SNELL_INSIDE_FIRST_STEP_HALVINGS
+#  define SNELL_INSIDE_FIRST_STEP_HALVINGS 3
+#endif
+
 struct SnellInsideHit {
   SnellHit hit;
   bool front;
@@ -1973,20 +1977,35 @@ SNELL_FN int snellInsideSide(vec3 p, vec2 uv, SNELL_TEX2D backDepth, SNELL_IN(Sn
   return 0;
 }
 
-SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D backDepth, SNELL_IN(SnellDepthSurface) back,
-                                         SNELL_TEX2D frontDepth, SNELL_IN(SnellDepthSurface) front, float maxDistance,
-                                         int steps, int refineSteps) {
-  SnellInsideHit r;
-  r.hit = snellHitMiss(0);
-  r.front = false;
+struct SnellInsideBracket {
+  float lo;
+  float hi;
+  vec2 uv;
+  vec2 loUv;
+  int side;
+  int fetches;
+  bool valid;
+};
+
+SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2D backDepth,
+                                               SNELL_IN(SnellDepthSurface) back, SNELL_TEX2D frontDepth,
+                                               SNELL_IN(SnellDepthSurface) front, float maxDistance, int steps) {
+  SnellInsideBracket b;
+  b.lo = 0.0f;
+  b.hi = 0.0f;
+  b.uv = vec2(0.0f, 0.0f);
+  b.loUv = vec2(0.0f, 0.0f);
+  b.side = 0;
+  b.fetches = 0;
+  b.valid = false;
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
       !SNELL_FINITE(maxDistance) || !(maxDistance > 0.0f)) {
-    return r;
+    return b;
   }
   float len = length(dir);
   if (!SNELL_FINITE(len) || !(len >= SNELL_FLT_MIN)) {
-    return r;
+    return b;
   }
   float tMax = maxDistance / len;
   if (dir.z > 0.0f) {
@@ -1994,17 +2013,11 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
     tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
   }
   if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
-    return r;
+    return b;
   }
   int n = clamp(steps, 1, SNELL_LINEAR_MARCH_MAX_STEPS);
-  int nr = clamp(refineSteps, 0, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS);
   float dt = tMax / float(n);
-  int fetches = 0;
-  int side = 0;
-  float tHit = 0.0f;
-  float lo = 0.0f;
   bool wasInside = false;
-  vec2 uvHit = vec2(0.0f, 0.0f);
   for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
     if (i > n) {
       break;
@@ -2013,24 +2026,71 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
     vec3 p = origin + t * dir;
     SnellScreenPoint sp = snellSurfaceViewToUv(back, p);
     if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
-      r.hit = snellHitMiss(fetches);
-      return r;
+      b.lo = 0.0f;
+      b.loUv = vec2(0.0f, 0.0f);
+      return b;
     }
-    side = snellInsideSide(p, sp.uv, backDepth, back, frontDepth, front, dir.z);
-    fetches = fetches + 2;
+    int side = snellInsideSide(p, sp.uv, backDepth, back, frontDepth, front, dir.z);
+    b.fetches = b.fetches + 2;
     if (side == 0) {
       wasInside = true;
-      lo = t;
+      b.lo = t;
+      b.loUv = sp.uv;
     } else if (wasInside) {
-      tHit = t;
-      uvHit = sp.uv;
-      break;
+      b.hi = t;
+      b.uv = sp.uv;
+      b.side = side;
+      b.valid = true;
+      return b;
+    } else if (i == 1) {
+      float hiT = t;
+      vec2 hiUv = sp.uv;
+      int hiSide = side;
+      for (int h = 1; h <= SNELL_INSIDE_FIRST_STEP_HALVINGS; ++h) {
+        float th = 0.5f * hiT;
+        vec3 q = origin + th * dir;
+        SnellScreenPoint sq = snellSurfaceViewToUv(back, q);
+        if (!sq.valid || !(sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f)) {
+          break;
+        }
+        int s = snellInsideSide(q, sq.uv, backDepth, back, frontDepth, front, dir.z);
+        b.fetches = b.fetches + 2;
+        if (s == 0) {
+          b.lo = th;
+          b.loUv = sq.uv;
+          b.hi = hiT;
+          b.uv = hiUv;
+          b.side = hiSide;
+          b.valid = true;
+          return b;
+        }
+        hiT = th;
+        hiUv = sq.uv;
+        hiSide = s;
+      }
     }
   }
-  if (tHit == 0.0f) {
-    r.hit = snellHitMiss(fetches);
+  b.lo = 0.0f;
+  b.loUv = vec2(0.0f, 0.0f);
+  return b;
+}
+
+SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D backDepth, SNELL_IN(SnellDepthSurface) back,
+                                         SNELL_TEX2D frontDepth, SNELL_IN(SnellDepthSurface) front, float maxDistance,
+                                         int steps, int refineSteps) {
+  SnellInsideHit r;
+  r.front = false;
+  SnellInsideBracket b = snellInsideBracket(origin, dir, backDepth, back, frontDepth, front, maxDistance, steps);
+  r.hit = snellHitMiss(b.fetches);
+  if (!b.valid) {
     return r;
   }
+  int nr = clamp(refineSteps, 0, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS);
+  int fetches = b.fetches;
+  int side = b.side;
+  float lo = b.lo;
+  float tHit = b.hi;
+  vec2 uvHit = b.uv;
   for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
     if (j >= nr) {
       break;
@@ -2056,6 +2116,72 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
   r.hit.valid = true;
   r.hit.fetches = fetches;
   r.front = side == 2;
+  return r;
+}
+
+#endif
+
+#ifndef SNELL_INTERSECT_INSIDE_PLANE_GLSL
+#define SNELL_INTERSECT_INSIDE_PLANE_GLSL
+
+SNELL_FN SnellInsideHit snellInsidePlane(vec3 origin, vec3 dir, SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
+                                         SNELL_IN(SnellDepthSurface) back, SNELL_TEX2D frontDepth,
+                                         SNELL_TEX2D frontNormal, SNELL_IN(SnellDepthSurface) front,
+                                         float maxDistance, int steps, int iterations) {
+  SnellInsideHit r;
+  r.front = false;
+  SnellInsideBracket b = snellInsideBracket(origin, dir, backDepth, back, frontDepth, front, maxDistance, steps);
+  r.hit = snellHitMiss(b.fetches);
+  if (!b.valid) {
+    return r;
+  }
+  bool onFront = b.side == 2;
+  int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
+  int fetches = b.fetches;
+  float t = b.hi;
+  vec2 uv = b.uv;
+  vec2 readUv = b.uv;
+  bool readFront = onFront;
+  int planes = 0;
+  int misses = 0;
+  for (int k = 1; k <= SNELL_PLANE_MAX_ITERATIONS + 2; ++k) {
+    if (planes >= n) {
+      break;
+    }
+    SnellSurfacePoint s =
+        readFront ? snellSurfacePoint(frontDepth, readUv, front) : snellSurfacePoint(backDepth, readUv, back);
+    fetches = fetches + 1;
+    bool kept = false;
+    if (s.valid) {
+      vec4 nk = readFront ? SNELL_SAMPLE_LOD(frontNormal, s.uv, 0.0f) : SNELL_SAMPLE_LOD(backNormal, s.uv, 0.0f);
+      fetches = fetches + 1;
+      SnellRayPlaneHit ph = snellRayPlane(origin, dir, s.position, vec3(nk.x, nk.y, nk.z));
+      if (ph.valid && ph.t >= b.lo && ph.t <= b.hi) {
+        SnellScreenPoint sp = snellSurfaceViewToUv(back, ph.position);
+        if (sp.valid && sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f) {
+          t = ph.t;
+          uv = sp.uv;
+          readUv = sp.uv;
+          onFront = readFront;
+          planes = planes + 1;
+          kept = true;
+        }
+      }
+    }
+    if (!kept) {
+      if (planes > 0 || misses >= 2) {
+        break;
+      }
+      misses = misses + 1;
+      readUv = b.loUv;
+      readFront = misses == 1 ? onFront : !onFront;
+    }
+  }
+  r.hit.position = origin + t * dir;
+  r.hit.uv = uv;
+  r.hit.valid = true;
+  r.hit.fetches = fetches;
+  r.front = onFront;
   return r;
 }
 
@@ -3056,6 +3182,14 @@ SNELL_FN SnellTechnique snellPresetLinearMarchBounces() {
   return t;
 }
 
+SNELL_FN SnellTechnique snellPresetImageSpaceBoundBounces() {
+  SnellTechnique t = snellPresetImageSpaceBound();
+  t.bounces = SNELL_PRESET_BOUNCES;
+  t.inside.intersect.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  t.inside.intersect.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  return t;
+}
+
 #define SNELL_TECHNIQUE_SINGLE 0
 #define SNELL_TECHNIQUE_PLANE_NORMAL_0 1
 #define SNELL_TECHNIQUE_PLANE_NORMAL_1 2
@@ -3068,7 +3202,8 @@ SNELL_FN SnellTechnique snellPresetLinearMarchBounces() {
 #define SNELL_TECHNIQUE_IMAGE_SPACE_BOUND 9
 #define SNELL_TECHNIQUE_PLANE_NORMAL_2_BOUNCES 10
 #define SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES 11
-#define SNELL_TECHNIQUE_COUNT 12
+#define SNELL_TECHNIQUE_IMAGE_SPACE_BOUND_BOUNCES 12
+#define SNELL_TECHNIQUE_COUNT 13
 
 SNELL_FN SnellTechnique snellTechniquePreset(int technique) {
   if (technique == SNELL_TECHNIQUE_SINGLE) {
@@ -3106,6 +3241,9 @@ SNELL_FN SnellTechnique snellTechniquePreset(int technique) {
   }
   if (technique == SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES) {
     return snellPresetLinearMarchBounces();
+  }
+  if (technique == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND_BOUNCES) {
+    return snellPresetImageSpaceBoundBounces();
   }
   return snellTechniquePresetSlots(-1, -1);
 }
@@ -3221,12 +3359,21 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     p.exitDirection = d;
     p.tir = true;
     p.bounces = k + 1;
-    if (t.inside.source != SNELL_SOURCE_BUFFERS || t.inside.intersect.strategy != SNELL_STRATEGY_LINEAR_MARCH) {
+    bool insidePlane = t.inside.intersect.strategy == SNELL_STRATEGY_PLANE_NORMAL;
+    if (t.inside.source != SNELL_SOURCE_BUFFERS ||
+        (!insidePlane && t.inside.intersect.strategy != SNELL_STRATEGY_LINEAR_MARCH)) {
       return p;
     }
-    SnellInsideHit ih = snellInsideMarch(p.exitPoint, d, backDepth, back, frontLayerDepth, frontLayer,
-                                         t.inside.intersect.marchMaxDistance, t.inside.intersect.marchSteps,
-                                         t.inside.intersect.marchBisections);
+    SnellInsideHit ih;
+    if (insidePlane) {
+      ih = snellInsidePlane(p.exitPoint, d, backDepth, backNormal, back, frontLayerDepth, frontLayerNormal, frontLayer,
+                            t.inside.intersect.marchMaxDistance, t.inside.intersect.marchSteps,
+                            t.inside.intersect.planeIterations);
+    } else {
+      ih = snellInsideMarch(p.exitPoint, d, backDepth, back, frontLayerDepth, frontLayer,
+                            t.inside.intersect.marchMaxDistance, t.inside.intersect.marchSteps,
+                            t.inside.intersect.marchBisections);
+    }
     p.fetches = p.fetches + ih.hit.fetches;
     float segment = length(ih.hit.position - p.exitPoint);
     if (!ih.hit.valid || !SNELL_FINITE(p.pathLength + segment)) {

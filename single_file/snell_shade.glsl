@@ -1740,8 +1740,18 @@ contract (defaults):
     LINEAR_MARCH) (the strategies are read only when the source becomes
     BUFFERS), inside = snellSlot(BUFFERS, LINEAR_MARCH) (the march between
     the front and back layers, intersect/inside_march.glsl, with the linear
-    march's marchSteps, marchBisections and marchMaxDistance: the one
-    strategy that brackets two layers at once; any other strategy or source
+    march's marchSteps, marchBisections and marchMaxDistance; PLANE_NORMAL:
+    that march's bracket, then the normal plane on the layer it crossed,
+    planeIterations times, intersect/inside_plane.glsl. Only these two
+    work from inside: a ray inside starts on a layer, so a strategy that
+    reads the surface at the ray origin's pixel (single sample, the plane
+    methods' first plane, the far start) reads the face it leaves from, and
+    one that tests the ray against one layer (CBS, the binary searches, DDA)
+    cannot tell when it leaves: inside, it is behind the front layer and in
+    front of the back one at once. CBS's binary search, run on the two-layer
+    test, is the march's bisection (a march of few steps is its
+    bracket). Any other
+    strategy or source
     ends the path at the reflection, as a fallback), bounces = 0 (clamped to
     [0, SNELL_MAX_BOUNCES], default 4, a compile-time bound).
   snellMaterial(): ior = 1.5, iorOutside = 1, dispersion = 1 (one trace; 3 =
@@ -4669,6 +4679,11 @@ presets (back slot / exit slot):
                                    marchMaxDistance to the object's extent);
                                    reads the front-face layer
   snellPresetLinearMarchBounces()  snellPresetLinearMarch() with the same bounces
+  snellPresetImageSpaceBoundBounces()  the image-space bound below with the
+                                   same bounces, its inside march at the
+                                   linear march's compile-time limits too:
+                                   what the bounce techniques are measured
+                                   against
   snellPresetImageSpaceBound()     not a real-time method: the best any
                                    image-space technique can do with the same
                                    buffers, for measuring the others against:
@@ -4697,6 +4712,7 @@ the technique table (the one list of named techniques: snell-lab's
   SNELL_TECHNIQUE_IMAGE_SPACE_BOUND  image-space-bound  snellPresetImageSpaceBound()
   SNELL_TECHNIQUE_PLANE_NORMAL_2_BOUNCES  plane-normal-2-bounces  snellPresetPlaneNormalBounces(2)
   SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES    linear-march-bounces    snellPresetLinearMarchBounces()
+  SNELL_TECHNIQUE_IMAGE_SPACE_BOUND_BOUNCES  image-space-bound-bounces  snellPresetImageSpaceBoundBounces()
   SNELL_TECHNIQUE_COUNT           the number of ids (ids are 0 .. COUNT - 1)
   SnellTechnique t = snellTechniquePreset(SNELL_TECHNIQUE_PLANE_NORMAL_1);
   Adding a technique: a preset function here, an id, a branch in
@@ -4816,6 +4832,16 @@ SNELL_FN SnellTechnique snellPresetLinearMarchBounces() {
   return t;
 }
 
+/* The image-space bound that follows TIR inside: the inside march exhaustive as well, so a bounce technique's
+   "x bound" compares it with the best any image-space method does on the same buffers and bounce count */
+SNELL_FN SnellTechnique snellPresetImageSpaceBoundBounces() {
+  SnellTechnique t = snellPresetImageSpaceBound();
+  t.bounces = SNELL_PRESET_BOUNCES;
+  t.inside.intersect.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  t.inside.intersect.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  return t;
+}
+
 #define SNELL_TECHNIQUE_SINGLE 0
 #define SNELL_TECHNIQUE_PLANE_NORMAL_0 1
 #define SNELL_TECHNIQUE_PLANE_NORMAL_1 2
@@ -4828,7 +4854,8 @@ SNELL_FN SnellTechnique snellPresetLinearMarchBounces() {
 #define SNELL_TECHNIQUE_IMAGE_SPACE_BOUND 9
 #define SNELL_TECHNIQUE_PLANE_NORMAL_2_BOUNCES 10
 #define SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES 11
-#define SNELL_TECHNIQUE_COUNT 12
+#define SNELL_TECHNIQUE_IMAGE_SPACE_BOUND_BOUNCES 12
+#define SNELL_TECHNIQUE_COUNT 13
 
 /* the technique table's constructor: id -> preset */
 SNELL_FN SnellTechnique snellTechniquePreset(int technique) {
@@ -4867,6 +4894,9 @@ SNELL_FN SnellTechnique snellTechniquePreset(int technique) {
   }
   if (technique == SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES) {
     return snellPresetLinearMarchBounces();
+  }
+  if (technique == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND_BOUNCES) {
+    return snellPresetImageSpaceBoundBounces();
   }
   return snellTechniquePresetSlots(-1, -1);
 }
@@ -4941,8 +4971,9 @@ contract:
     reflect(T, N)) instead of following tirPolicy: the inside slot
     (SNELL_SOURCE_BUFFERS with SNELL_STRATEGY_LINEAR_MARCH: snellInsideMarch
     from the exit point along R between the back layer and the front layer,
-    with inside.intersect's marchMaxDistance, marchSteps, marchBisections)
-    finds where R leaves; N there is read from that layer's normals (as N2,
+    with inside.intersect's marchMaxDistance, marchSteps, marchBisections;
+    with SNELL_STRATEGY_PLANE_NORMAL: snellInsidePlane with marchMaxDistance,
+    marchSteps, planeIterations) finds where R leaves; N there is read from that layer's normals (as N2,
     1 fetch), flipped to face R, and the ray refracts out, or reflects again,
     the last allowed interface under tirPolicy. bounces = the reflections
     taken (one that ends as a fallback counts); exitPoint, exitUv, exitNormal are the last interface's;
@@ -5112,6 +5143,8 @@ description: where a ray inside a closed object leaves it, in image space:
   intersection procedure run again.
 use: SnellInsideHit h = snellInsideMarch(origin, dir, backDepth, back, frontDepth, front,
                                          maxDistance, steps, refineSteps);
+     SnellInsideBracket b = snellInsideBracket(origin, dir, backDepth, back, frontDepth, front,
+                                               maxDistance, steps);   // the march alone
   origin, dir        view-space ray starting inside the object (a point of
                      the back or front layer after a total internal
                      reflection, say); dir need not be normalized
@@ -5126,7 +5159,8 @@ use: SnellInsideHit h = snellInsideMarch(origin, dir, backDepth, back, frontDept
                      each while on screen)
 options: the linear march's bounds, SNELL_LINEAR_MARCH_MAX_STEPS (512) and
   SNELL_LINEAR_MARCH_MAX_REFINE_STEPS (24): steps is clamped to [1, max],
-  refineSteps to [0, max].
+  refineSteps to [0, max]; SNELL_INSIDE_FIRST_STEP_HALVINGS (3): the
+  samples that halve a first step that has already left.
 contract:
   - samples t_i = i tMax / steps, i = 1 .. steps, tMax = maxDistance / |dir|,
     cut at the near plane z = -back.zNear when dir.z > 0 (the origin itself
@@ -5139,9 +5173,15 @@ contract:
     The ray leaves at the first outside sample after an inside one: samples
     before the first inside sample do not count (a ray that starts on a layer,
     as after a reflection there, reads as outside within that layer's texel).
+    When the first sample t_1 is outside, the first step is halved first:
+    t_1 / 2, t_1 / 4, ... up to SNELL_INSIDE_FIRST_STEP_HALVINGS (3) samples
+    (2 fetches each, an off-screen one ends the halving); the first inside
+    one is the last inside sample and the halving sample before it (t_1 at
+    first) the outside one: a chord shorter than a step is still found. When
+    none is inside, the march goes on from t_2 as above.
   - the first sample that projects off screen ends the march: valid = false
     (the exit is not in the buffers).
-  - refinement brackets [last inside t, t_i]; a midpoint outside moves hi, any other
+  - refinement brackets [last inside t, first outside t after it]; a midpoint outside moves hi, any other
     (inside, off screen: no fetch) moves lo; the hit is hi: position, uv.
     front = true when hi crossed the front layer only, or both texels are
     empty and dir.z > 0 (a ray heading towards the camera leaves beside the
@@ -5153,6 +5193,11 @@ contract:
     or Inf, |dir| is 0 or denormal-small, maxDistance <= 0, or the whole ray
     lies in front of the near plane.
   - fetches: 2 per sample read, both layers.
+  - snellInsideBracket: the samples above without the refinement: valid, lo
+    (the last inside sample's t), hi (the first outside one's), uv and side
+    (1 back, 2 front: snellInsideSide at hi), loUv (lo's uv) and fetches as
+    above; on every miss valid = false, lo = hi = 0, both uvs 0, side 0,
+    fetches those read.
 source: C. Davis & C. Wyman, "Interactive Refractions with Total Internal
   Reflection", Graphics Interface 2007 (bounces between front and back depth
   maps); M. M. Oliveira & M. Brauwers, "Real-Time Refraction Through
@@ -5168,6 +5213,10 @@ source: C. Davis & C. Wyman, "Interactive Refractions with Total Internal
 
 
 
+
+#ifndef SNELL_INSIDE_FIRST_STEP_HALVINGS
+#  define SNELL_INSIDE_FIRST_STEP_HALVINGS 3
+#endif
 
 struct SnellInsideHit {
   SnellHit hit;
@@ -5197,21 +5246,38 @@ SNELL_FN int snellInsideSide(vec3 p, vec2 uv, SNELL_TEX2D backDepth, SNELL_IN(Sn
   return 0;
 }
 
-/* Davis & Wyman 2007: a ray inside the object, marched between the front and back depth layers */
-SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D backDepth, SNELL_IN(SnellDepthSurface) back,
-                                         SNELL_TEX2D frontDepth, SNELL_IN(SnellDepthSurface) front, float maxDistance,
-                                         int steps, int refineSteps) {
-  SnellInsideHit r;
-  r.hit = snellHitMiss(0);
-  r.front = false;
+/* Where the ray leaves, to within one step: the last inside sample (lo) and the first outside one after it (hi) */
+struct SnellInsideBracket {
+  float lo;      // t of the last inside sample (in units of |dir|)
+  float hi;      // t of the first outside sample after it
+  vec2 uv;       // hi's uv
+  vec2 loUv;     // lo's uv (on the object: both layers hold a surface there)
+  int side;      // snellInsideSide at hi: 1 back layer, 2 front layer
+  int fetches;
+  bool valid;    // false: no inside sample followed by an outside one (or bad input, off screen)
+};
+
+/* The march part of snellInsideMarch (its contract's samples, before the refinement), shared with
+   snellInsidePlane */
+SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2D backDepth,
+                                               SNELL_IN(SnellDepthSurface) back, SNELL_TEX2D frontDepth,
+                                               SNELL_IN(SnellDepthSurface) front, float maxDistance, int steps) {
+  SnellInsideBracket b;
+  b.lo = 0.0f;
+  b.hi = 0.0f;
+  b.uv = vec2(0.0f, 0.0f);
+  b.loUv = vec2(0.0f, 0.0f);
+  b.side = 0;
+  b.fetches = 0;
+  b.valid = false;
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
       !SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z) ||
       !SNELL_FINITE(maxDistance) || !(maxDistance > 0.0f)) {
-    return r;
+    return b;
   }
   float len = length(dir);
   if (!SNELL_FINITE(len) || !(len >= SNELL_FLT_MIN)) {
-    return r;
+    return b;
   }
   float tMax = maxDistance / len;
   if (dir.z > 0.0f) {
@@ -5219,17 +5285,11 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
     tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
   }
   if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
-    return r;
+    return b;
   }
   int n = clamp(steps, 1, SNELL_LINEAR_MARCH_MAX_STEPS);
-  int nr = clamp(refineSteps, 0, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS);
   float dt = tMax / float(n);
-  int fetches = 0;
-  int side = 0;
-  float tHit = 0.0f;
-  float lo = 0.0f;
   bool wasInside = false;
-  vec2 uvHit = vec2(0.0f, 0.0f);
   for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
     if (i > n) {
       break;
@@ -5238,24 +5298,74 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
     vec3 p = origin + t * dir;
     SnellScreenPoint sp = snellSurfaceViewToUv(back, p);
     if (!sp.valid || !(sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f)) {
-      r.hit = snellHitMiss(fetches);
-      return r;
+      b.lo = 0.0f;
+      b.loUv = vec2(0.0f, 0.0f);
+      return b;
     }
-    side = snellInsideSide(p, sp.uv, backDepth, back, frontDepth, front, dir.z);
-    fetches = fetches + 2;
+    int side = snellInsideSide(p, sp.uv, backDepth, back, frontDepth, front, dir.z);
+    b.fetches = b.fetches + 2;
     if (side == 0) {
       wasInside = true;
-      lo = t;
+      b.lo = t;
+      b.loUv = sp.uv;
     } else if (wasInside) {
-      tHit = t;
-      uvHit = sp.uv;
-      break;
+      b.hi = t;
+      b.uv = sp.uv;
+      b.side = side;
+      b.valid = true;
+      return b;
+    } else if (i == 1) {
+      // The first sample has already left (a chord shorter than a step, at a corner or a thin part): the first
+      // step is halved until a sample is inside, so a coarse march still brackets the exit.
+      float hiT = t;
+      vec2 hiUv = sp.uv;
+      int hiSide = side;
+      for (int h = 1; h <= SNELL_INSIDE_FIRST_STEP_HALVINGS; ++h) {
+        float th = 0.5f * hiT;
+        vec3 q = origin + th * dir;
+        SnellScreenPoint sq = snellSurfaceViewToUv(back, q);
+        if (!sq.valid || !(sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f)) {
+          break;
+        }
+        int s = snellInsideSide(q, sq.uv, backDepth, back, frontDepth, front, dir.z);
+        b.fetches = b.fetches + 2;
+        if (s == 0) {
+          b.lo = th;
+          b.loUv = sq.uv;
+          b.hi = hiT;
+          b.uv = hiUv;
+          b.side = hiSide;
+          b.valid = true;
+          return b;
+        }
+        hiT = th;
+        hiUv = sq.uv;
+        hiSide = s;
+      }
     }
   }
-  if (tHit == 0.0f) {
-    r.hit = snellHitMiss(fetches);
+  b.lo = 0.0f;
+  b.loUv = vec2(0.0f, 0.0f);
+  return b;
+}
+
+/* Davis & Wyman 2007: a ray inside the object, marched between the front and back depth layers */
+SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D backDepth, SNELL_IN(SnellDepthSurface) back,
+                                         SNELL_TEX2D frontDepth, SNELL_IN(SnellDepthSurface) front, float maxDistance,
+                                         int steps, int refineSteps) {
+  SnellInsideHit r;
+  r.front = false;
+  SnellInsideBracket b = snellInsideBracket(origin, dir, backDepth, back, frontDepth, front, maxDistance, steps);
+  r.hit = snellHitMiss(b.fetches);
+  if (!b.valid) {
     return r;
   }
+  int nr = clamp(refineSteps, 0, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS);
+  int fetches = b.fetches;
+  int side = b.side;
+  float lo = b.lo;
+  float tHit = b.hi;
+  vec2 uvHit = b.uv;
   for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
     if (j >= nr) {
       break;
@@ -5281,6 +5391,139 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
   r.hit.valid = true;
   r.hit.fetches = fetches;
   r.front = side == 2;
+  return r;
+}
+
+#endif
+/*
+description: where a ray inside a closed object leaves it, with Mayer &
+  Assarsson's normal-based plane in place of the bisection: a coarse march
+  between the object's two depth layers brackets the exit (the last inside
+  sample, the first outside one: snellInsideBracket), then the layer the ray
+  crossed is read at the outside sample (depth and normal) and the ray is
+  intersected with that tangent plane, re-read where it lands and
+  intersected again, `iterations` times (their step 5). Exact on planar
+  faces from the first plane; a few march steps replace the march's
+  bisections. Why the plane is not started at the ray origin as on the back
+  slot: a ray inside starts on a layer (the point of the last total internal
+  reflection), so the layer at its own pixel is the face it leaves from,
+  whose plane it meets at t = 0; its exit lies elsewhere on screen, which
+  only a search finds.
+use: SnellInsideHit h = snellInsidePlane(origin, dir, backDepth, backNormal, back,
+                                         frontDepth, frontNormal, front, maxDistance, steps, iterations);
+  origin, dir        view-space ray starting inside the object; dir any length
+  backDepth, backNormal, back    the back-face depth (GL_GREATER after
+                     clearing to the near value), its view-space normals
+                     (xyz, any length, either orientation; read at level 0
+                     with the texture's filter) and how to read the depth
+  frontDepth, frontNormal, front the front faces' (GL_LESS after clearing to
+                     the far value)
+  maxDistance        view-space length of the marched part of the ray
+  steps              march steps (snellInsideMarch's), clamped to
+                     [1, SNELL_LINEAR_MARCH_MAX_STEPS]
+  iterations         planes, clamped to [0, SNELL_PLANE_MAX_ITERATIONS]; 0 is
+                     the bracket's outside sample
+contract:
+  - the bracket is snellInsideBracket(origin, dir, ..., maxDistance, steps)
+    (inside_march.glsl); when it is invalid: valid = false, snellHitMiss with
+    its fetches.
+  - plane k (k = 1 .. iterations) on the layer the bracket crossed (its side):
+    B_k = snellSurfacePoint of that layer's depth at uv_(k-1) (uv_0 the
+    bracket's uv, the outside sample's pixel; when plane 1 read there is not
+    kept, it is read again at the bracket's loUv, the last inside sample's
+    pixel, where the object is, and then on the other layer at loUv, whose
+    plane, when kept, makes that layer the side; then each kept hit's
+    projection), n_k = xyz of its normals read at
+    B_k's texel centre, level 0 (SNELL_SAMPLE_LOD); t_k = snellRayPlane(origin,
+    dir, B_k, n_k).t. The plane is kept only when it is met inside the
+    bracket, lo <= t_k <= hi (a tangent plane met outside it describes another
+    part of the layer) and t_k's point projects on screen; otherwise the
+    iterations stop at the last kept t (the bracket's hi at first).
+  - the hit: position origin + t dir, uv its projection (the bracket's uv when
+    no plane was kept), valid = true, front = the side is the front layer (the
+    bracket's side, or the other layer's when its plane 1 was kept).
+  - fetches: the bracket's, plus 2 per plane read (depth and normal; 1 when
+    the depth texel is empty), plane 1's second and third reads included.
+  - bad input (NaN or Inf, zero dir, maxDistance <= 0): the bracket's miss,
+    0 fetches; never NaN.
+source: C. Mayer, U. Assarsson, "Constant-Time Light Refraction Simulation",
+  "Method 1: Normal-based" and step 5; C. Davis & C. Wyman, "Interactive
+  Refractions with Total Internal Reflection", Graphics Interface 2007 (the
+  search between front and back depth maps).
+*/
+#ifndef SNELL_INTERSECT_INSIDE_PLANE_GLSL
+#define SNELL_INTERSECT_INSIDE_PLANE_GLSL
+
+
+
+
+
+
+
+
+
+/* Mayer & Assarsson's normal plane on the layer a march between the two layers crossed (Davis & Wyman 2007) */
+SNELL_FN SnellInsideHit snellInsidePlane(vec3 origin, vec3 dir, SNELL_TEX2D backDepth, SNELL_TEX2D backNormal,
+                                         SNELL_IN(SnellDepthSurface) back, SNELL_TEX2D frontDepth,
+                                         SNELL_TEX2D frontNormal, SNELL_IN(SnellDepthSurface) front,
+                                         float maxDistance, int steps, int iterations) {
+  SnellInsideHit r;
+  r.front = false;
+  SnellInsideBracket b = snellInsideBracket(origin, dir, backDepth, back, frontDepth, front, maxDistance, steps);
+  r.hit = snellHitMiss(b.fetches);
+  if (!b.valid) {
+    return r;
+  }
+  bool onFront = b.side == 2;
+  int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
+  int fetches = b.fetches;
+  float t = b.hi;
+  vec2 uv = b.uv;
+  // Plane 1 is read at the outside sample's pixel, else at the last inside one's, else on the other layer
+  // there: beside the silhouette the outside pixel holds neither layer (and the side is the guess of
+  // snellInsideSide), near an edge of the object the inside pixel may hold the face the ray comes from.
+  vec2 readUv = b.uv;
+  bool readFront = onFront;
+  int planes = 0;
+  int misses = 0;
+  for (int k = 1; k <= SNELL_PLANE_MAX_ITERATIONS + 2; ++k) {
+    if (planes >= n) {
+      break;
+    }
+    SnellSurfacePoint s =
+        readFront ? snellSurfacePoint(frontDepth, readUv, front) : snellSurfacePoint(backDepth, readUv, back);
+    fetches = fetches + 1;
+    bool kept = false;
+    if (s.valid) {
+      vec4 nk = readFront ? SNELL_SAMPLE_LOD(frontNormal, s.uv, 0.0f) : SNELL_SAMPLE_LOD(backNormal, s.uv, 0.0f);
+      fetches = fetches + 1;
+      SnellRayPlaneHit ph = snellRayPlane(origin, dir, s.position, vec3(nk.x, nk.y, nk.z));
+      if (ph.valid && ph.t >= b.lo && ph.t <= b.hi) {
+        SnellScreenPoint sp = snellSurfaceViewToUv(back, ph.position);
+        if (sp.valid && sp.uv.x >= 0.0f && sp.uv.x <= 1.0f && sp.uv.y >= 0.0f && sp.uv.y <= 1.0f) {
+          t = ph.t;
+          uv = sp.uv;
+          readUv = sp.uv;
+          onFront = readFront;
+          planes = planes + 1;
+          kept = true;
+        }
+      }
+    }
+    if (!kept) {
+      if (planes > 0 || misses >= 2) {
+        break;
+      }
+      misses = misses + 1;
+      readUv = b.loUv;
+      readFront = misses == 1 ? onFront : !onFront;
+    }
+  }
+  r.hit.position = origin + t * dir;
+  r.hit.uv = uv;
+  r.hit.valid = true;
+  r.hit.fetches = fetches;
+  r.front = onFront;
   return r;
 }
 
@@ -5399,12 +5642,21 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     p.exitDirection = d;
     p.tir = true;
     p.bounces = k + 1;
-    if (t.inside.source != SNELL_SOURCE_BUFFERS || t.inside.intersect.strategy != SNELL_STRATEGY_LINEAR_MARCH) {
+    bool insidePlane = t.inside.intersect.strategy == SNELL_STRATEGY_PLANE_NORMAL;
+    if (t.inside.source != SNELL_SOURCE_BUFFERS ||
+        (!insidePlane && t.inside.intersect.strategy != SNELL_STRATEGY_LINEAR_MARCH)) {
       return p;
     }
-    SnellInsideHit ih = snellInsideMarch(p.exitPoint, d, backDepth, back, frontLayerDepth, frontLayer,
-                                         t.inside.intersect.marchMaxDistance, t.inside.intersect.marchSteps,
-                                         t.inside.intersect.marchBisections);
+    SnellInsideHit ih;
+    if (insidePlane) {
+      ih = snellInsidePlane(p.exitPoint, d, backDepth, backNormal, back, frontLayerDepth, frontLayerNormal, frontLayer,
+                            t.inside.intersect.marchMaxDistance, t.inside.intersect.marchSteps,
+                            t.inside.intersect.planeIterations);
+    } else {
+      ih = snellInsideMarch(p.exitPoint, d, backDepth, back, frontLayerDepth, frontLayer,
+                            t.inside.intersect.marchMaxDistance, t.inside.intersect.marchSteps,
+                            t.inside.intersect.marchBisections);
+    }
     p.fetches = p.fetches + ih.hit.fetches;
     float segment = length(ih.hit.position - p.exitPoint);
     if (!ih.hit.valid || !SNELL_FINITE(p.pathLength + segment)) {

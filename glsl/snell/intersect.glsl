@@ -19,6 +19,7 @@
 #include "intersect/linear_binary_search.glsl"
 #include "intersect/linear_march.glsl"
 #include "intersect/inside_march.glsl"
+#include "intersect/inside_plane.glsl"
 #include "intersect/dda_march.glsl"
 #include "intersect/intersect_with.glsl"
 #endif

@@ -64,6 +64,9 @@ inline const std::array<SnellTechniqueInfo, SNELL_TECHNIQUE_COUNT>& snellTechniq
       {SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES, "linear-march-bounces", "linear march, bounces",
        "linear march that follows TIR inside (Davis & Wyman 2007: a march between front and back depth)",
        SnellTechniqueKind::Search},
+      {SNELL_TECHNIQUE_IMAGE_SPACE_BOUND_BOUNCES, "image-space-bound-bounces", "image-space bound, bounces",
+       "the image-space bound that follows TIR inside as exhaustively (the reference of the bounce techniques)",
+       SnellTechniqueKind::Reference},
   }};
   return table;
 }
@@ -85,6 +88,14 @@ inline const SnellTechniqueInfo* snellFindTechnique(int id) {
 // Whether the technique reads Wyman's per-vertex d_N (its preset's back slot source).
 inline bool snellTechniqueNeedsDn(const SnellTechniqueInfo& t) {
   return snellTechniquePreset(t.id).back.source == SNELL_SOURCE_WYMAN;
+}
+
+// How many total internal reflections the technique follows inside (its preset's bounces, clamped as
+// snellTwoInterfaceTrace clamps them): 0 for a two-interface technique. A Reference row with B
+// bounces is the image-space bound of the rows with B.
+inline int snellTechniqueBounces(const SnellTechniqueInfo& t) {
+  const int b = snellTechniquePreset(t.id).bounces;
+  return b < 0 ? 0 : (b > SNELL_MAX_BOUNCES ? SNELL_MAX_BOUNCES : b);
 }
 
 // The SNELL_INTERSECT_STRATEGIES bits (bit k = strategy k) of the slots this
@@ -150,11 +161,26 @@ inline std::string snellDescribeBack(const SnellTechnique& t) {
   return snellDescribeIntersect(t.back.intersect);
 }
 
-// "method; back faces: ...; exit: ..." for --help and the docs, from the preset.
+// How a technique that bounces finds where a reflected ray leaves: its inside slot (the two strategies
+// snellTwoInterfaceTrace runs there; the march's bracket of the plane counts as its view-space steps).
+inline std::string snellDescribeInside(const SnellTechnique& t) {
+  const SnellIntersectOptions& o = t.inside.intersect;
+  const std::string bounces = std::to_string(t.bounces) + (t.bounces == 1 ? " bounce" : " bounces");
+  if (t.inside.source == SNELL_SOURCE_BUFFERS && o.strategy == SNELL_STRATEGY_PLANE_NORMAL)
+    return bounces + ", each a march of " + std::to_string(o.marchSteps) + " steps between the front and back layers, "
+           "then the normal plane, " + std::to_string(o.planeIterations) + " iterations";
+  if (t.inside.source == SNELL_SOURCE_BUFFERS && o.strategy == SNELL_STRATEGY_LINEAR_MARCH)
+    return bounces + ", each a march of " + std::to_string(o.marchSteps) + " steps + " +
+           std::to_string(o.marchBisections) + " bisections between the front and back layers";
+  return bounces + ", none followed (the inside slot has no strategy that works from inside)";
+}
+
+// "method; back faces: ...; exit: ...[; inside: ...]" for --help and the docs, from the preset.
 inline std::string snellDescribeTechnique(const SnellTechniqueInfo& t) {
   const SnellTechnique o = snellTechniquePreset(t.id);
   const std::string back = snellDescribeBack(o), exit = snellDescribeIntersect(o.exit.intersect);
-  return std::string(t.method) + "; back faces: " + back + "; exit: " + (exit == back ? "the same" : exit);
+  return std::string(t.method) + "; back faces: " + back + "; exit: " + (exit == back ? "the same" : exit) +
+         (o.bounces > 0 ? "; inside: " + snellDescribeInside(o) : std::string());
 }
 
 }  // namespace snell

@@ -73,6 +73,16 @@ TEST(LabRun, SphereSceneEndToEnd) {
   EXPECT_GT(single->boundRatio, 1.0);
   EXPECT_GT(r.row("linear-march")->boundRatio, 1.0);
   EXPECT_NEAR(r.boundInformationMse + r.boundBufferMse, bound->mseTwo, 1e-9);
+  // The bounce rows are measured against the bound with bounces, on the model they follow (the principal
+  // path of 2 + 4 events); the two-interface rows on theirs.
+  const TechniqueRow* bounceBound = r.row("image-space-bound-bounces");
+  ASSERT_NE(bounceBound, nullptr);
+  EXPECT_EQ(bounceBound->mseBound, 0.0);
+  EXPECT_DOUBLE_EQ(bounceBound->boundRatio, 1.0);
+  EXPECT_EQ(bounceBound->modelEvents, 6);
+  EXPECT_EQ(r.row("plane-normal-2-bounces")->bounces, 4);
+  EXPECT_EQ(single->modelEvents, 2);
+  EXPECT_EQ(single->mseModel, single->mseTwo);
   for (const TechniqueRow& t : r.rows) EXPECT_EQ(t.unshadedShare, 0.0) << t.name;  // the whole sphere is in view
   ASSERT_NE(single, nullptr);
   ASSERT_NE(plane, nullptr);
@@ -114,6 +124,23 @@ TEST(LabRun, EglBackendAgreesWithTheDefault) {
     EXPECT_NEAR(a.rows[i].mseFull, b.rows[i].mseFull, 1e-6) << a.rows[i].name;
     EXPECT_EQ(b.rows[i].cpuGpuBeyond4Pixels, b.rows[i].cpuGpuBeyond4Ties) << b.rows[i].name;
   }
+}
+
+// A technique that bounces brings the bound with its bounces; the two-interface bound runs as always.
+TEST(LabRun, ABounceTechniqueIsMeasuredAgainstTheBoundWithBounces) {
+  LabOptions o = options64("");
+  o.techniques = {"plane-normal-2-bounces"};
+  o.frames = 1;
+  const LabResult r = snell::lab::runLab(o);
+  ASSERT_EQ(r.rows.size(), 3u);
+  EXPECT_EQ(r.rows[0].name, "image-space-bound");
+  EXPECT_EQ(r.rows[1].name, "plane-normal-2-bounces");
+  EXPECT_EQ(r.rows[2].name, "image-space-bound-bounces");
+  EXPECT_EQ(r.rows[1].modelEvents, 6);
+  EXPECT_EQ(r.boundRow(), &r.rows[0]);
+  // Its own error is against the bound with bounces, not the two-interface one.
+  EXPECT_GT(r.rows[1].mseBound, 0.0);
+  EXPECT_DOUBLE_EQ(r.rows[1].boundRatio, r.rows[1].mseModel / r.rows[2].mseModel);
 }
 
 // The near plane cuts the whole front of the sphere: the ray tracer still sees the object (its rays start

@@ -99,10 +99,11 @@ std::vector<ParityIO> techniqueInputs(std::uint32_t seed) {
     if (k < 0.01f) p = g.hostileVector();
     else if (k < 0.02f) n = g.hostileVector();
     else if (k < 0.03f) n = glm::vec3(0.0f);
-    // Every row of the technique table but the image-space bound (the linear march with 16x the steps: its
+    // Every row of the technique table but the image-space bounds (the linear march with 16x the steps: their
     // CPU-GPU agreement is the lab's whole-frame comparison), and techPreset's variants past the table.
     int preset = g.integer(0, SNELL_TECHNIQUE_COUNT + 4);
-    if (preset == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND) preset = SNELL_TECHNIQUE_COUNT + g.integer(0, 4);
+    if (preset == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND || preset == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND_BOUNCES)
+      preset = SNELL_TECHNIQUE_COUNT + g.integer(0, 4);
     ParityIO in{};
     in.v[0] = glm::vec4(p, float(preset));
     in.v[1] = glm::vec4(n, float(g.integer(0, 8)));
@@ -491,6 +492,13 @@ SNELL_PARITY_CASE(snellPresetImageSpaceBound, [] { return smallIntInputs(825, 0,
                   SnellTechnique t = snellPresetImageSpaceBound();
                   TECH_OPTIONS_OUT(t, snellMaterial(), snellView()))
 
+SNELL_PARITY_CASE(snellPresetImageSpaceBoundBounces, [] { return smallIntInputs(835, 0, 1); },
+                  /* no inputs */,
+                  TECH_BOUNCE_EXACT,
+                  techExtras(),
+                  SnellTechnique t = snellPresetImageSpaceBoundBounces();
+                  TECH_BOUNCE_OUT(t))
+
 // Every id of the technique table and a few outside it.
 SNELL_PARITY_CASE(snellTechniquePreset, [] { return smallIntInputs(824, -2, SNELL_TECHNIQUE_COUNT + 2); },
                   (int, id, 0),
@@ -568,6 +576,40 @@ SNELL_PARITY_CASE(snellInsideMarch, [] { return insideInputs(829); },
                   SnellInsideHit h = snellInsideMarch(origin, dir, techBackDepth, techBackSurface(projection),
                                                       techFrontDepth, techFrontSurface(projection), maxDistance, steps,
                                                       refineSteps);
+                  position = h.hit.position;
+                  fetches = h.hit.fetches;
+                  uv = h.hit.uv;
+                  valid = h.hit.valid;
+                  front = h.front;)
+
+// The march alone: lo and hi are sample positions (i dt, or a halving's), exact but for rounding.
+SNELL_PARITY_CASE(snellInsideBracket, [] { return insideInputs(833); },
+                  (vec3, origin, 0)(float, maxDistance, 3)(vec3, dir, 4)(int, steps, 7)(vec4, projection, 12),
+                  (float, lo, 0, within(1e-5f, 1e-5f))(float, hi, 1, within(1e-5f, 1e-5f))(int, side, 2, exact)
+                  (int, fetches, 3, exact)(vec2, uv, 4, within(1e-5f, 1e-5f))(bool, valid, 6, exact)
+                  (vec2, loUv, 8, within(1e-5f, 1e-5f)),
+                  techExtras(),
+                  SnellInsideBracket b = snellInsideBracket(origin, dir, techBackDepth, techBackSurface(projection),
+                                                            techFrontDepth, techFrontSurface(projection), maxDistance,
+                                                            steps);
+                  lo = b.lo;
+                  hi = b.hi;
+                  side = b.side;
+                  fetches = b.fetches;
+                  uv = b.uv;
+                  valid = b.valid;
+                  loUv = b.loUv;)
+
+// The normal plane after the march (iterations: the march case's refine count, past the clamp too).
+SNELL_PARITY_CASE(snellInsidePlane, [] { return insideInputs(834); },
+                  (vec3, origin, 0)(float, maxDistance, 3)(vec3, dir, 4)(int, steps, 7)(int, iterations, 8)
+                  (vec4, projection, 12),
+                  (vec3, position, 0, within(1e-4f, 1e-4f))(int, fetches, 3, exact)(vec2, uv, 4, within(1e-4f, 1e-4f))
+                  (bool, valid, 6, exact)(bool, front, 7, exact),
+                  techExtras(),
+                  SnellInsideHit h = snellInsidePlane(origin, dir, techBackDepth, techBackNormal,
+                                                      techBackSurface(projection), techFrontDepth, techFrontNormal,
+                                                      techFrontSurface(projection), maxDistance, steps, iterations);
                   position = h.hit.position;
                   fetches = h.hit.fetches;
                   uv = h.hit.uv;

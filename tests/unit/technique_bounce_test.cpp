@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <vector>
 
@@ -99,6 +100,7 @@ PrismBuffers prismBuffers(int size) {
   return b;
 }
 
+// Both inside strategies: the march with bisection, and the normal plane after a short march.
 TEST(TechniqueBounce, InsideMarchFindsTheSpheresFarRootOnTheRightLayer) {
   const technique_test::Scene s = technique_test::makeScene(256, 256);
   const dvec3 c = technique_test::kCentre;
@@ -108,7 +110,7 @@ TEST(TechniqueBounce, InsideMarchFindsTheSpheresFarRootOnTheRightLayer) {
   SnellDepthSurface back = s.backSurface(), front = s.frontSurface();
   back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
   front.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-  int n = 0, towardsCamera = 0;
+  int n = 0, towardsCamera = 0, planeMisses = 0, planeBeyondHalf = 0, planeOff = 0;
   for (int i = 0; i < 400; ++i) {
     // Deterministic directions and origins spread through the sphere's inner 80 %.
     const double a = 2.399963 * i, z = 1.0 - 2.0 * (i + 0.5) / 400.0;
@@ -121,15 +123,35 @@ TEST(TechniqueBounce, InsideMarchFindsTheSpheresFarRootOnTheRightLayer) {
     if (std::abs(facing) < 0.25) continue;  // near the silhouette the layers are steep: an edge case, not this test
     const SnellInsideHit h = snellInsideMarch(glm::vec3(o), glm::vec3(d), s.back.depth, back, s.front.depth, front,
                                               float(2.0 * R), 128, 12);
+    // The normal plane on the crossed layer after 12 march steps: at most 38 fetches (with the halvings) instead of 280.
+    const SnellInsideHit hp = snellInsidePlane(glm::vec3(o), glm::vec3(d), s.back.depth, s.back.normals, back,
+                                               s.front.depth, s.front.normals, front, float(2.0 * R), 12, 3);
+    const glm::dvec2 want = s.front.project(exit);
     ASSERT_TRUE(h.hit.valid) << i;
     EXPECT_EQ(h.front, facing < 0.0) << i;  // the exit faces the camera: found on the front layer
+    EXPECT_LT(glm::length(want - s.front.project(dvec3(h.hit.position))), 0.5 * px) << i;
+    // The plane's coarse bracket can lose a ray whose early samples read outside (near the buffer's edge);
+    // where it finds the exit, the tangent planes put it where the march does.
+    EXPECT_LE(hp.hit.fetches, 2 * (12 + 3) + 2 * 4);
+    if (!hp.hit.valid) {
+      ++planeMisses;
+    } else {
+      // Near the silhouette the coarse bracket's outside sample may fall beside the object (no layer
+      // there: the side is a guess) and the other layer's plane miss the bracket: a wrong layer, off.
+      const double e = glm::length(want - s.front.project(dvec3(hp.hit.position)));
+      planeOff += hp.front != (facing < 0.0) || e >= 1.5 * px;
+      planeBeyondHalf += e >= 0.5 * px;
+    }
     towardsCamera += facing < 0.0;
-    const glm::dvec2 want = s.front.project(exit), got = s.front.project(dvec3(h.hit.position));
-    EXPECT_LT(glm::length(want - got), 0.5 * px) << i;
     ++n;
   }
   EXPECT_GT(n, 200);
   EXPECT_GT(towardsCamera, 60);
+  std::printf("[inside plane] sphere: %d rays, %d missed, %d beyond 0.5 px, %d on the wrong layer or beyond 1.5 px\n",
+              n, planeMisses, planeBeyondHalf, planeOff);
+  EXPECT_LE(planeMisses, n / 100);
+  EXPECT_LE(planeBeyondHalf, n / 100);
+  EXPECT_LE(planeOff, n / 200);
 }
 
 TEST(TechniqueBounce, RightAnglePrismBounceLandsWhereTheGeometrySays) {
@@ -143,6 +165,12 @@ TEST(TechniqueBounce, RightAnglePrismBounceLandsWhereTheGeometrySays) {
   t.inside.intersect.marchSteps = 256;
   t.inside.intersect.marchBisections = 16;
   t.inside.intersect.marchMaxDistance = 3.0f;
+  // The normal plane inside: exact on the prism's planar faces after a march of 16 steps (its first step
+  // must stay shorter than the chord: a march whose first sample is already outside finds no exit).
+  SnellTechnique tp = t;
+  tp.inside.intersect.strategy = SNELL_STRATEGY_PLANE_NORMAL;
+  tp.inside.intersect.marchSteps = 16;
+  tp.inside.intersect.planeIterations = 1;
   int n = 0;
   for (int j = 8; j < size; j += 8)
     for (int i = 8; i < size; i += 8) {
@@ -161,25 +189,29 @@ TEST(TechniqueBounce, RightAnglePrismBounceLandsWhereTheGeometrySays) {
       if (!h2 || h2->second.x != -1.0) continue;  // leaves through the side leg
       const dvec3 t2 = glm::refract(r, -h2->second, 1.0 / eta);
       ASSERT_GT(glm::length(t2), 0.0);
-      const auto trace = [&](int bounces) {
-        SnellTechnique tb = t;
+      const auto trace = [&](int bounces, const SnellTechnique& with) {
+        SnellTechnique tb = with;
         tb.bounces = bounces;
         return snellTwoInterfaceTrace(glm::vec3(p1), glm::vec3(f.normal), float(eta), 0.0f, b.back.depth,
                                       b.back.normals, b.backPyramid, b.back.surface(), b.front.depth, b.front.normals,
                                       b.front.surface(), tb, SNELL_TIR_CRITICAL);
       };
-      const SnellTwoInterfacePath one = trace(1);
-      ASSERT_TRUE(one.valid);
-      EXPECT_EQ(one.bounces, 1) << i << " " << j;
-      EXPECT_FALSE(one.exitFront);
-      EXPECT_FALSE(one.fellBack);
-      EXPECT_FALSE(one.tir);
-      EXPECT_LT(glm::length(b.front.project(h2->first) - b.front.project(dvec3(one.exitPoint))), 0.5 * px) << i << " " << j;
-      EXPECT_GT(glm::dot(glm::dvec3(one.exitDirection), t2), std::cos(0.01)) << i << " " << j;
-      const double inside = glm::length(h1->first - p1) + glm::length(h2->first - h1->first);
-      EXPECT_NEAR(one.pathLength, inside, 0.02) << i << " " << j;
+      for (const SnellTechnique* with : {&t, &tp}) {
+        const SnellTwoInterfacePath one = trace(1, *with);
+        ASSERT_TRUE(one.valid);
+        SCOPED_TRACE(with == &t ? "inside march" : "inside plane");
+        EXPECT_EQ(one.bounces, 1) << i << " " << j;
+        EXPECT_FALSE(one.exitFront);
+        EXPECT_FALSE(one.fellBack);
+        EXPECT_FALSE(one.tir);
+        EXPECT_LT(glm::length(b.front.project(h2->first) - b.front.project(dvec3(one.exitPoint))), 0.5 * px)
+            << i << " " << j;
+        EXPECT_GT(glm::dot(glm::dvec3(one.exitDirection), t2), std::cos(0.01)) << i << " " << j;
+        const double inside = glm::length(h1->first - p1) + glm::length(h2->first - h1->first);
+        EXPECT_NEAR(one.pathLength, inside, 0.02) << i << " " << j;
+      }
       // No bounce: the two-interface model clamps at the hypotenuse, as before.
-      const SnellTwoInterfacePath none = trace(0);
+      const SnellTwoInterfacePath none = trace(0, t);
       EXPECT_EQ(none.bounces, 0);
       EXPECT_TRUE(none.tir);
       EXPECT_LT(glm::length(glm::dvec3(none.exitPoint) - h1->first), 0.01);

@@ -36,6 +36,9 @@ const Expected kExpected[] = {
     // Davis & Wyman 2007's bounces inside on the normal plane and the linear march.
     {"plane-normal-2-bounces", SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_PLANE_NORMAL, 2, SNELL_STRATEGY_PLANE_NORMAL, 2, 4},
     {"linear-march-bounces", SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_LINEAR_MARCH, 32, SNELL_STRATEGY_LINEAR_MARCH, 32, 4},
+    // The bound of the bounce rows: the same bounce count, every march (the inside one too) at its limits.
+    {"image-space-bound-bounces", SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_LINEAR_MARCH, 512, SNELL_STRATEGY_LINEAR_MARCH,
+     512, 4},
 };
 
 // The count each strategy is known by (what the lab's labels and the papers name).
@@ -77,6 +80,7 @@ TEST(TechniqueTable, EachPresetHasThePublishedSlots) {
     EXPECT_EQ(o.exit.intersect.strategy, e.exit) << t.name;
     EXPECT_EQ(mainCount(o.exit.intersect), e.exitSteps) << t.name;
     EXPECT_EQ(o.bounces, e.bounces) << t.name;
+    EXPECT_EQ(snellTechniqueBounces(t), e.bounces) << t.name;
     EXPECT_EQ(o.inside.source, SNELL_SOURCE_BUFFERS) << t.name;
     EXPECT_EQ(o.inside.intersect.strategy, SNELL_STRATEGY_LINEAR_MARCH) << t.name;
     EXPECT_EQ(o.back.intersect.rangeSource, SNELL_RANGE_PYRAMID) << t.name;
@@ -108,6 +112,18 @@ TEST(TechniqueTable, DescriptionsComeFromTheOptions) {
   EXPECT_EQ(snellDescribeTechnique(snellTechniqueTable()[SNELL_TECHNIQUE_ISR]),
             "Wyman 2005, distance interpolation; back faces: distance interpolation between d_V and the per-vertex "
             "d_N; exit: single sample");
+  // A technique that bounces names its inside slot; the plane inside names its bracket and its planes.
+  EXPECT_EQ(snellDescribeTechnique(snellTechniqueTable()[SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES]),
+            "linear march that follows TIR inside (Davis & Wyman 2007: a march between front and back depth); back "
+            "faces: linear march, 32 view-space steps + 4 bisections over 10; exit: the same; inside: 4 bounces, each "
+            "a march of 16 steps + 5 bisections between the front and back layers");
+  SnellTechnique plane = snellPresetPlaneNormalBounces(2);
+  plane.inside.intersect.strategy = SNELL_STRATEGY_PLANE_NORMAL;
+  plane.inside.intersect.planeIterations = 2;
+  EXPECT_EQ(snellDescribeInside(plane), "4 bounces, each a march of 16 steps between the front and back layers, then "
+                                        "the normal plane, 2 iterations");
+  plane.inside.intersect.strategy = SNELL_STRATEGY_CBS;
+  EXPECT_EQ(snellDescribeInside(plane), "4 bounces, none followed (the inside slot has no strategy that works from inside)");
 }
 
 TEST(TechniqueTable, StrategiesUsedNamesTheSlotsTheOptionsCall) {
@@ -149,7 +165,7 @@ TEST(TechniqueTable, StrategiesUsedNamesTheSlotsTheOptionsCall) {
 // What a host reads from the rows instead of ids and names: one cost unit
 // (single sample, the GPU Gems baseline every time ratio is to), one poster row
 // (Mayer & Assarsson's published comparison is normal plane, 1 iteration, vs
-// single sample), one reference (the image-space bound), and d_N exactly for
+// single sample), the references (the image-space bound, and the bound with bounces), and d_N exactly for
 // Wyman's method (kExpected's back method, not the table's).
 TEST(TechniqueTable, RowsSayWhatAHostTreatsSpecially) {
   int units = 0, posters = 0, references = 0;
@@ -160,13 +176,27 @@ TEST(TechniqueTable, RowsSayWhatAHostTreatsSpecially) {
     references += t.kind == SnellTechniqueKind::Reference;
     EXPECT_EQ(t.costUnit, std::string(e.name) == "single") << e.name;
     EXPECT_EQ(t.posterRow, std::string(e.name) == "plane-normal-1") << e.name;
-    EXPECT_EQ(t.kind == SnellTechniqueKind::Reference, std::string(e.name) == "image-space-bound") << e.name;
+    EXPECT_EQ(t.kind == SnellTechniqueKind::Reference, std::string(e.name).rfind("image-space-bound", 0) == 0) << e.name;
     EXPECT_EQ(snellTechniqueNeedsDn(t), e.backSource == SNELL_SOURCE_WYMAN) << e.name;
     EXPECT_EQ(snellFindTechnique(t.id), &t);
   }
   EXPECT_EQ(units, 1);
   EXPECT_EQ(posters, 1);
-  EXPECT_EQ(references, 1);
+  EXPECT_EQ(references, 2);  // one per bounce count a row follows: 0 and SNELL_PRESET_BOUNCES
   EXPECT_EQ(snellFindTechnique(SNELL_TECHNIQUE_COUNT), nullptr);
   EXPECT_EQ(snellFindTechnique(-1), nullptr);
+}
+
+// "x bound" keeps its meaning for the bounce rows: their bound follows as many bounces, and its inside
+// march is as exhaustive as its back and exit marches; every other slot is the two-interface bound's.
+TEST(TechniqueTable, TheBoundWithBouncesIsTheBoundThatMarchesInsideAtItsLimits) {
+  const SnellTechnique b = snellPresetImageSpaceBound(), bb = snellPresetImageSpaceBoundBounces();
+  EXPECT_EQ(bb.bounces, snellPresetPlaneNormalBounces(2).bounces);
+  EXPECT_EQ(bb.inside.intersect.marchSteps, SNELL_LINEAR_MARCH_MAX_STEPS);
+  EXPECT_EQ(bb.inside.intersect.marchBisections, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS);
+  EXPECT_GT(bb.inside.intersect.marchSteps, snellPresetPlaneNormalBounces(2).inside.intersect.marchSteps);
+  EXPECT_EQ(bb.back.intersect.marchSteps, b.back.intersect.marchSteps);
+  EXPECT_EQ(bb.back.intersect.depthFilter, b.back.intersect.depthFilter);
+  EXPECT_EQ(bb.exit.intersect.marchSteps, b.exit.intersect.marchSteps);
+  EXPECT_EQ(bb.exit.intersect.marchBisections, b.exit.intersect.marchBisections);
 }

@@ -24,7 +24,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <map>
 #include <memory>
+#include <set>
 #include <thread>
 
 namespace snell::lab {
@@ -160,7 +163,10 @@ std::string markdownTable(const LabResult& r) {
          " elsewhere (buffer resolution, depth and normal reads).\n";
     s += "- the technique itself: \"own error\" is its MSE against the bound's image; \"x bound\" is its MSE vs the "
          "two-interface reference over the bound's (1.00x: as good as any image-space method with these buffers; "
-         "a plane method, which also reads the normals, can land slightly below).\n";
+         "a plane method, which also reads the normals, can land slightly below). A technique that follows B bounces "
+         "inside is measured against the image-space bound with B bounces (its inside march as exhaustive), and its "
+         "\"x bound\" compares the two on the model they both follow: the principal path of 2 + B interface events "
+         "(the ray tracer's, above).\n";
   }
   s += "\nunshaded: object pixels the technique's front-face pass did not cover (they show the scene behind). "
        "invalid: pixels that fell back (no back-face or exit hit: environment along the ray). Time: the refraction "
@@ -230,6 +236,9 @@ void writeJson(const fs::path& path, const LabResult& r) {
                     {"mse_vs_ray_traced", t.mseFull},
                     {"mse_vs_ray_traced_on_tir", t.mseFullTir},
                     {"mse_vs_two_interface", t.mseTwo},
+                    {"bounces", t.bounces},
+                    {"model_events", t.modelEvents},
+                    {"mse_vs_model", t.mseModel},
                     {"mse_vs_bound", t.mseBound},
                     {"ratio_to_bound", t.boundRatio},
                     {"unshaded_share", t.unshadedShare},
@@ -254,15 +263,25 @@ void writeJson(const fs::path& path, const LabResult& r) {
 
 // ---- The stages of one lab run, in order (runLab below). ----
 
-// Stage 1: the requested rows of the technique table, in table order, and always the image-space
-// bound (every other row is measured against it). Before the scene loads: a typo should not cost a
-// ray trace.
+// Stage 1: the requested rows of the technique table, in table order, and the image-space bounds
+// they are measured against: always the two-interface one, the one with B bounces when a row with B
+// runs. Before the scene loads: a typo should not cost a ray trace.
 std::vector<const SnellTechniqueInfo*> selectTechniques(const LabOptions& options) {
+  const auto asked = [&](const SnellTechniqueInfo& t) {
+    return options.techniques.empty() ||
+           std::find(options.techniques.begin(), options.techniques.end(), t.name) != options.techniques.end();
+  };
+  const auto someRowBounces = [&](int bounces) {
+    for (const SnellTechniqueInfo& t : snellTechniqueTable())
+      if (t.kind != SnellTechniqueKind::Reference && asked(t) && snellTechniqueBounces(t) == bounces) return true;
+    return false;
+  };
   std::vector<const SnellTechniqueInfo*> techniques;
-  for (const SnellTechniqueInfo& t : snellTechniqueTable())
-    if (options.techniques.empty() || t.kind == SnellTechniqueKind::Reference ||
-        std::find(options.techniques.begin(), options.techniques.end(), t.name) != options.techniques.end())
-      techniques.push_back(&t);
+  for (const SnellTechniqueInfo& t : snellTechniqueTable()) {
+    const bool bound = t.kind == SnellTechniqueKind::Reference &&
+                       (snellTechniqueBounces(t) == 0 || someRowBounces(snellTechniqueBounces(t)));
+    if (bound || (t.kind != SnellTechniqueKind::Reference && asked(t))) techniques.push_back(&t);
+  }
   return techniques;
 }
 
@@ -271,6 +290,11 @@ struct References {
   std::unique_ptr<ReferenceTracer> tracer;
   TraceResult full, two;
   Mask tir;  // object pixels with TIR on the principal path (LabResult::tirShare)
+  // The principal path of 2 + B events for each bounce count B > 0 a row follows: the model reference
+  // of those rows, as `two` is of the two-interface ones.
+  std::map<int, TraceResult> principal;
+
+  const TraceResult& modelOf(int bounces) const { return bounces > 0 ? principal.at(2 + bounces) : two; }
 };
 
 // The principal-path lengths whose model floor the lab reports: one bounce inside (3), two (4), four (6).
@@ -283,7 +307,8 @@ Mask both(const Mask& a, const Mask& b) {
   return m;
 }
 
-References traceReferences(const SceneFrame& frame, const LabOptions& options, LabResult& result) {
+References traceReferences(const SceneFrame& frame, const std::vector<const SnellTechniqueInfo*>& techniques,
+                            const LabOptions& options, LabResult& result) {
   References refs;
   refs.tracer = std::make_unique<ReferenceTracer>(frame);
   TraceOptions to;
@@ -303,12 +328,19 @@ References traceReferences(const SceneFrame& frame, const LabOptions& options, L
   result.tirShare = static_cast<double>(refs.tir.count()) / static_cast<double>(result.objectPixels);
   result.mseTwoVsFullTir = compareImages(refs.full.color, refs.two.color, refs.tir).mse;
   to.mode = TraceMode::Principal;
-  for (int events : kFloorEvents) {
-    to.events = events;
-    const TraceResult principal = refs.tracer->render(frame.camera, to);
+  std::set<int> kept;  // the events of the rows' models
+  for (const SnellTechniqueInfo* t : techniques)
+    if (snellTechniqueBounces(*t) > 0) kept.insert(2 + snellTechniqueBounces(*t));
+  std::set<int> events(std::begin(kFloorEvents), std::end(kFloorEvents));
+  events.insert(kept.begin(), kept.end());
+  for (int e : events) {
+    to.events = e;
+    TraceResult principal = refs.tracer->render(frame.camera, to);
     result.traceSeconds += principal.stats.seconds;
-    result.modelFloors.push_back({events, compareImages(refs.full.color, principal.color, refs.full.mask).mse,
-                                  compareImages(refs.full.color, principal.color, refs.tir).mse});
+    if (std::find(std::begin(kFloorEvents), std::end(kFloorEvents), e) != std::end(kFloorEvents))
+      result.modelFloors.push_back({e, compareImages(refs.full.color, principal.color, refs.full.mask).mse,
+                                    compareImages(refs.full.color, principal.color, refs.tir).mse});
+    if (kept.count(e)) refs.principal.emplace(e, std::move(principal));
   }
   return refs;
 }
@@ -517,6 +549,9 @@ TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const CpuShader& shade
   row.mseFull = compareImages(refs.full.color, image, refs.full.mask).mse;
   row.mseTwo = compareImages(refs.two.color, image, refs.full.mask).mse;
   row.mseFullTir = compareImages(refs.full.color, image, refs.tir).mse;
+  row.bounces = snellTechniqueBounces(shade.info);
+  row.modelEvents = 2 + row.bounces;
+  row.mseModel = compareImages(refs.modelOf(row.bounces).color, image, refs.full.mask).mse;
   return row;
 }
 
@@ -524,8 +559,15 @@ TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const CpuShader& shade
 // whose path the buffers do not hold (missingInformation) and the rest.
 void scoreAgainstTheBound(const std::vector<const SnellTechniqueInfo*>& techniques, const std::vector<Image>& images,
                           const Mask& missing, const References& refs, LabResult& result) {
-  std::size_t b = 0;
-  while (b < techniques.size() && techniques[b]->kind != SnellTechniqueKind::Reference) ++b;
+  // The bound of the rows with `bounces` (selectTechniques runs one for every count a row has).
+  const auto boundOf = [&](int bounces) {
+    std::size_t b = 0;
+    while (b < techniques.size() &&
+           !(techniques[b]->kind == SnellTechniqueKind::Reference && snellTechniqueBounces(*techniques[b]) == bounces))
+      ++b;
+    return b;
+  };
+  const std::size_t b = boundOf(0);
   if (b == techniques.size()) return;
   const Mask& object = refs.full.mask;
   const double n = std::max<double>(1.0, static_cast<double>(object.count()));
@@ -545,11 +587,13 @@ void scoreAgainstTheBound(const std::vector<const SnellTechniqueInfo*>& techniqu
   result.boundInformationMse = information / n;
   result.boundBufferMse = buffer / n;
   result.boundInformationShare = static_cast<double>(informationPixels) / n;
-  const double boundMse = result.rows[b].mseTwo;
   for (std::size_t i = 0; i < techniques.size(); ++i) {
     TechniqueRow& row = result.rows[i];
-    row.mseBound = compareImages(images[b], images[i], object).mse;
-    row.boundRatio = boundMse > 0.0 ? row.mseTwo / boundMse : 0.0;
+    const std::size_t own = boundOf(row.bounces);
+    if (own == techniques.size()) continue;
+    const double boundMse = result.rows[own].mseModel;
+    row.mseBound = compareImages(images[own], images[i], object).mse;
+    row.boundRatio = boundMse > 0.0 ? row.mseModel / boundMse : 0.0;
   }
 }
 
@@ -667,7 +711,7 @@ LabResult runLab(const LabOptions& options) {
   result.height = frame.camera.height;
   result.frames = options.frames;
 
-  const References refs = traceReferences(frame, options, result);
+  const References refs = traceReferences(frame, techniques, options, result);
 
   // Stage 3: the GPU passes that do not depend on the technique (scene, back faces, pyramids), once:
   // the frame is static. Their read-back buffers are what the C++ side shades from.

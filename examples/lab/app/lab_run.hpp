@@ -15,7 +15,9 @@ namespace snell::lab {
 
 struct LabOptions {
   std::string scenePath;
-  std::vector<std::string> techniques;  // command-line names; empty: all. The image-space bound always runs.
+  // Command-line names; empty: all. The image-space bound always runs, and the bound with bounces does
+  // when a technique that bounces does.
+  std::vector<std::string> techniques;
   int width = 0, height = 0;            // 0: the scene's resolution
   int frames = 15;                      // timed frames (median), all techniques interleaved
   std::string backend = "auto";         // auto | osmesa | egl
@@ -33,8 +35,11 @@ struct TechniqueRow {
   std::string name, label;
   double mseFull = 0.0;        // vs the full ray tracer (Fresnel + TIR), object pixels
   double mseTwo = 0.0;         // vs the two-interface reference
-  double mseBound = 0.0;       // vs the image-space bound's image: the technique's own error
-  double boundRatio = 0.0;     // mseTwo / the bound's mseTwo (1 = as good as any image-space method)
+  int bounces = 0;             // the preset's bounce count (0: a two-interface technique)
+  int modelEvents = 2;         // the interface events of the model it follows: 2 + bounces
+  double mseModel = 0.0;       // vs that model's reference: mseTwo, or the principal path of modelEvents
+  double mseBound = 0.0;       // vs its image-space bound's image (the bound with its bounces): its own error
+  double boundRatio = 0.0;     // mseModel / its bound's mseModel (1 = as good as any image-space method)
   double unshadedShare = 0.0;  // object pixels (ray tracer's mask) the technique's front pass did not shade
   double invalidShare = 0.0;   // object pixels whose technique fell back (no back or exit hit, TIR)
   double backMissShare = 0.0;  // ... of them: no hit in the back-face buffer
@@ -97,8 +102,13 @@ struct LabResult {
     }
     return nullptr;
   }
+  // The image-space bound of the two-interface techniques (bounces 0).
   const TechniqueRow* boundRow() const {
-    return rowWhere([](const SnellTechniqueInfo& t) { return t.kind == SnellTechniqueKind::Reference; });
+    for (const TechniqueRow& r : rows) {
+      const SnellTechniqueInfo* info = snellFindTechnique(r.name);
+      if (info != nullptr && info->kind == SnellTechniqueKind::Reference && r.bounces == 0) return &r;
+    }
+    return nullptr;
   }
   const TechniqueRow* costUnitRow() const { return rowWhere([](const SnellTechniqueInfo& t) { return t.costUnit; }); }
   const TechniqueRow* posterRow() const { return rowWhere([](const SnellTechniqueInfo& t) { return t.posterRow; }); }

@@ -45,8 +45,18 @@ contract (defaults):
     LINEAR_MARCH) (the strategies are read only when the source becomes
     BUFFERS), inside = snellSlot(BUFFERS, LINEAR_MARCH) (the march between
     the front and back layers, intersect/inside_march.glsl, with the linear
-    march's marchSteps, marchBisections and marchMaxDistance: the one
-    strategy that brackets two layers at once; any other strategy or source
+    march's marchSteps, marchBisections and marchMaxDistance; PLANE_NORMAL:
+    that march's bracket, then the normal plane on the layer it crossed,
+    planeIterations times, intersect/inside_plane.glsl. Only these two
+    work from inside: a ray inside starts on a layer, so a strategy that
+    reads the surface at the ray origin's pixel (single sample, the plane
+    methods' first plane, the far start) reads the face it leaves from, and
+    one that tests the ray against one layer (CBS, the binary searches, DDA)
+    cannot tell when it leaves: inside, it is behind the front layer and in
+    front of the back one at once. CBS's binary search, run on the two-layer
+    test, is the march's bisection (a march of few steps is its
+    bracket). Any other
+    strategy or source
     ends the path at the reflection, as a fallback), bounces = 0 (clamped to
     [0, SNELL_MAX_BOUNCES], default 4, a compile-time bound).
   snellMaterial(): ior = 1.5, iorOutside = 1, dispersion = 1 (one trace; 3 =

@@ -41,6 +41,11 @@ presets (back slot / exit slot):
                                    marchMaxDistance to the object's extent);
                                    reads the front-face layer
   snellPresetLinearMarchBounces()  snellPresetLinearMarch() with the same bounces
+  snellPresetImageSpaceBoundBounces()  the image-space bound below with the
+                                   same bounces, its inside march at the
+                                   linear march's compile-time limits too:
+                                   what the bounce techniques are measured
+                                   against
   snellPresetImageSpaceBound()     not a real-time method: the best any
                                    image-space technique can do with the same
                                    buffers, for measuring the others against:
@@ -69,6 +74,7 @@ the technique table (the one list of named techniques: snell-lab's
   SNELL_TECHNIQUE_IMAGE_SPACE_BOUND  image-space-bound  snellPresetImageSpaceBound()
   SNELL_TECHNIQUE_PLANE_NORMAL_2_BOUNCES  plane-normal-2-bounces  snellPresetPlaneNormalBounces(2)
   SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES    linear-march-bounces    snellPresetLinearMarchBounces()
+  SNELL_TECHNIQUE_IMAGE_SPACE_BOUND_BOUNCES  image-space-bound-bounces  snellPresetImageSpaceBoundBounces()
   SNELL_TECHNIQUE_COUNT           the number of ids (ids are 0 .. COUNT - 1)
   SnellTechnique t = snellTechniquePreset(SNELL_TECHNIQUE_PLANE_NORMAL_1);
   Adding a technique: a preset function here, an id, a branch in
@@ -188,6 +194,16 @@ SNELL_FN SnellTechnique snellPresetLinearMarchBounces() {
   return t;
 }
 
+/* The image-space bound that follows TIR inside: the inside march exhaustive as well, so a bounce technique's
+   "x bound" compares it with the best any image-space method does on the same buffers and bounce count */
+SNELL_FN SnellTechnique snellPresetImageSpaceBoundBounces() {
+  SnellTechnique t = snellPresetImageSpaceBound();
+  t.bounces = SNELL_PRESET_BOUNCES;
+  t.inside.intersect.marchSteps = SNELL_LINEAR_MARCH_MAX_STEPS;
+  t.inside.intersect.marchBisections = SNELL_LINEAR_MARCH_MAX_REFINE_STEPS;
+  return t;
+}
+
 #define SNELL_TECHNIQUE_SINGLE 0
 #define SNELL_TECHNIQUE_PLANE_NORMAL_0 1
 #define SNELL_TECHNIQUE_PLANE_NORMAL_1 2
@@ -200,7 +216,8 @@ SNELL_FN SnellTechnique snellPresetLinearMarchBounces() {
 #define SNELL_TECHNIQUE_IMAGE_SPACE_BOUND 9
 #define SNELL_TECHNIQUE_PLANE_NORMAL_2_BOUNCES 10
 #define SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES 11
-#define SNELL_TECHNIQUE_COUNT 12
+#define SNELL_TECHNIQUE_IMAGE_SPACE_BOUND_BOUNCES 12
+#define SNELL_TECHNIQUE_COUNT 13
 
 /* the technique table's constructor: id -> preset */
 SNELL_FN SnellTechnique snellTechniquePreset(int technique) {
@@ -239,6 +256,9 @@ SNELL_FN SnellTechnique snellTechniquePreset(int technique) {
   }
   if (technique == SNELL_TECHNIQUE_LINEAR_MARCH_BOUNCES) {
     return snellPresetLinearMarchBounces();
+  }
+  if (technique == SNELL_TECHNIQUE_IMAGE_SPACE_BOUND_BOUNCES) {
+    return snellPresetImageSpaceBoundBounces();
   }
   return snellTechniquePresetSlots(-1, -1);
 }

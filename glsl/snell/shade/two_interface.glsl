@@ -67,8 +67,9 @@ contract:
     reflect(T, N)) instead of following tirPolicy: the inside slot
     (SNELL_SOURCE_BUFFERS with SNELL_STRATEGY_LINEAR_MARCH: snellInsideMarch
     from the exit point along R between the back layer and the front layer,
-    with inside.intersect's marchMaxDistance, marchSteps, marchBisections)
-    finds where R leaves; N there is read from that layer's normals (as N2,
+    with inside.intersect's marchMaxDistance, marchSteps, marchBisections;
+    with SNELL_STRATEGY_PLANE_NORMAL: snellInsidePlane with marchMaxDistance,
+    marchSteps, planeIterations) finds where R leaves; N there is read from that layer's normals (as N2,
     1 fetch), flipped to face R, and the ray refracts out, or reflects again,
     the last allowed interface under tirPolicy. bounces = the reflections
     taken (one that ends as a fallback counts); exitPoint, exitUv, exitNormal are the last interface's;
@@ -104,6 +105,7 @@ source: C. Wyman, "An Approximate Image-Space Approach for Interactive
 #include "../intersect/hit_on_surface.glsl"
 #include "../intersect/intersect_with.glsl"
 #include "../intersect/inside_march.glsl"
+#include "../intersect/inside_plane.glsl"
 #include "technique_options.glsl"
 #include "technique_buffers.glsl"
 
@@ -218,12 +220,21 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
     p.exitDirection = d;
     p.tir = true;
     p.bounces = k + 1;
-    if (t.inside.source != SNELL_SOURCE_BUFFERS || t.inside.intersect.strategy != SNELL_STRATEGY_LINEAR_MARCH) {
+    bool insidePlane = t.inside.intersect.strategy == SNELL_STRATEGY_PLANE_NORMAL;
+    if (t.inside.source != SNELL_SOURCE_BUFFERS ||
+        (!insidePlane && t.inside.intersect.strategy != SNELL_STRATEGY_LINEAR_MARCH)) {
       return p;
     }
-    SnellInsideHit ih = snellInsideMarch(p.exitPoint, d, backDepth, back, frontLayerDepth, frontLayer,
-                                         t.inside.intersect.marchMaxDistance, t.inside.intersect.marchSteps,
-                                         t.inside.intersect.marchBisections);
+    SnellInsideHit ih;
+    if (insidePlane) {
+      ih = snellInsidePlane(p.exitPoint, d, backDepth, backNormal, back, frontLayerDepth, frontLayerNormal, frontLayer,
+                            t.inside.intersect.marchMaxDistance, t.inside.intersect.marchSteps,
+                            t.inside.intersect.planeIterations);
+    } else {
+      ih = snellInsideMarch(p.exitPoint, d, backDepth, back, frontLayerDepth, frontLayer,
+                            t.inside.intersect.marchMaxDistance, t.inside.intersect.marchSteps,
+                            t.inside.intersect.marchBisections);
+    }
     p.fetches = p.fetches + ih.hit.fetches;
     float segment = length(ih.hit.position - p.exitPoint);
     if (!ih.hit.valid || !SNELL_FINITE(p.pathLength + segment)) {
