@@ -3531,10 +3531,13 @@ contract:
     as after a reflection there, reads as outside within that layer's texel).
     When the first sample t_1 is outside, the first step is halved first:
     t_1 / 2, t_1 / 4, ... up to SNELL_INSIDE_FIRST_STEP_HALVINGS (3) samples
-    (2 fetches each, an off-screen one ends the halving); the first inside
-    one is the last inside sample and the halving sample before it (t_1 at
-    first) the outside one: a chord shorter than a step is still found. When
-    none is inside, the march goes on from t_2 as above.
+    (2 fetches each); the halving ends at a sample off screen or less than a
+    texel (of backDepth at back.lod, in x and in y) from the origin's
+    projection (not read: there the layer the ray starts on reads as
+    outside), or when the origin does not project. The first inside one is
+    the last inside sample and the halving sample before it (t_1 at first)
+    the outside one: a chord shorter than a step is still found. When none
+    is inside, the march goes on from t_2 as above.
   - the first sample that projects off screen ends the march: valid = false
     (the exit is not in the buffers).
   - refinement brackets [last inside t, first outside t after it]; a midpoint outside moves hi, any other
@@ -3673,14 +3676,22 @@ SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2
     } else if (i == 1) {
       // The first sample has already left (a chord shorter than a step, at a corner or a thin part): the first
       // step is halved until a sample is inside, so a coarse march still brackets the exit.
+      // Only while the sample is a texel or more from the origin's pixel: within it, the layer the ray
+      // starts on reads as outside (the march's rule above), and an inside reading there is noise.
       float hiT = t;
       vec2 hiUv = sp.uv;
       int hiSide = side;
+      SnellScreenPoint so = snellSurfaceViewToUv(back, origin);
+      vec2 texels = vec2(SNELL_TEXTURE_SIZE(backDepth, back.lod));
       for (int h = 1; h <= SNELL_INSIDE_FIRST_STEP_HALVINGS; ++h) {
         float th = 0.5f * hiT;
         vec3 q = origin + th * dir;
         SnellScreenPoint sq = snellSurfaceViewToUv(back, q);
-        if (!sq.valid || !(sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f)) {
+        if (!so.valid || !sq.valid || !(sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f)) {
+          break;
+        }
+        vec2 away = abs(sq.uv - so.uv) * texels;
+        if (!(max(away.x, away.y) >= 1.0f)) {
           break;
         }
         int s = snellInsideSide(q, sq.uv, backDepth, back, frontDepth, front, dir.z);

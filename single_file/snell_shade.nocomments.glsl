@@ -2903,11 +2903,17 @@ SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2
       float hiT = t;
       vec2 hiUv = sp.uv;
       int hiSide = side;
+      SnellScreenPoint so = snellSurfaceViewToUv(back, origin);
+      vec2 texels = vec2(SNELL_TEXTURE_SIZE(backDepth, back.lod));
       for (int h = 1; h <= SNELL_INSIDE_FIRST_STEP_HALVINGS; ++h) {
         float th = 0.5f * hiT;
         vec3 q = origin + th * dir;
         SnellScreenPoint sq = snellSurfaceViewToUv(back, q);
-        if (!sq.valid || !(sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f)) {
+        if (!so.valid || !sq.valid || !(sq.uv.x >= 0.0f && sq.uv.x <= 1.0f && sq.uv.y >= 0.0f && sq.uv.y <= 1.0f)) {
+          break;
+        }
+        vec2 away = abs(sq.uv - so.uv) * texels;
+        if (!(max(away.x, away.y) >= 1.0f)) {
           break;
         }
         int s = snellInsideSide(q, sq.uv, backDepth, back, frontDepth, front, dir.z);

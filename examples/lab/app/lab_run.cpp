@@ -160,7 +160,10 @@ std::string markdownTable(const LabResult& r) {
          " from the two-interface reference: " + fmt("%.3g", r.boundInformationMse) + " on the " +
          fmt("%.1f %%", 100.0 * r.boundInformationShare) + " of object pixels whose exact path the buffers do not hold "
          "(its exit point or its hit on the scene outside the buffers or hidden behind a nearer surface), " + fmt("%.3g", r.boundBufferMse) +
-         " elsewhere (buffer resolution, depth and normal reads).\n";
+         " elsewhere (buffer resolution, depth and normal reads). Of the former, " +
+         fmt("%.1f %%", 100.0 * r.boundMiddleLayerShare) + " of object pixels (" + fmt("%.3g", r.boundMiddleLayerMse) +
+         ") leave through a back face in front of the farthest one at their pixel (a middle layer of a concave object): "
+         "at most what a second, depth-peeled back-face layer would buy the bound.\n";
     s += "- the technique itself: \"own error\" is its MSE against the bound's image; \"x bound\" is its MSE vs the "
          "two-interface reference over the bound's (1.00x: as good as any image-space method with these buffers; "
          "a plane method, which also reads the normals, can land slightly below). A technique that follows B bounces "
@@ -227,6 +230,8 @@ void writeJson(const fs::path& path, const LabResult& r) {
   j["bound_information_mse"] = r.boundInformationMse;
   j["bound_information_share"] = r.boundInformationShare;
   j["bound_buffer_mse"] = r.boundBufferMse;
+  j["bound_middle_layer_mse"] = r.boundMiddleLayerMse;
+  j["bound_middle_layer_share"] = r.boundMiddleLayerShare;
   j["trace_seconds"] = r.traceSeconds;
   j["static_passes_ms"] = r.staticPassMs;
   nlohmann::json rows = nlohmann::json::array();
@@ -349,10 +354,18 @@ References traceReferences(const SceneFrame& frame, const std::vector<const Snel
 // the exact exit point P2 (critical-angle TIR, as the techniques) off screen or not the farthest back
 // face at its pixel (a middle layer of a concave object), or the exit ray's hit on the opaque scene off
 // screen or behind a nearer surface. Rays that leave into the environment lack nothing.
-Mask missingInformation(const References& refs, const SceneFrame& frame, const StaticBuffers& sb,
-                        const ShadeConstants& k) {
+struct MissingInformation {
+  Mask any;
+  // Of them, the pixels whose P2 is on screen but in front of the farthest back face there: a middle
+  // layer of a concave object, what a second (depth-peeled) back-face buffer could hold.
+  Mask middleLayer;
+};
+
+MissingInformation missingInformation(const References& refs, const SceneFrame& frame, const StaticBuffers& sb,
+                                      const ShadeConstants& k) {
   const Mask& object = refs.full.mask;
-  Mask missing(object.width, object.height);
+  MissingInformation info{Mask(object.width, object.height), Mask(object.width, object.height)};
+  Mask& missing = info.any;
   // What the buffers hold: the viewport and the guard band around it.
   const int W = sb.backDepth.width, H = sb.backDepth.height;
   const glm::dmat4 clipFromWorld = glm::dmat4(k.params.clipFromView) * glm::dmat4(k.viewFromWorld);
@@ -383,6 +396,9 @@ Mask missingInformation(const References& refs, const SceneFrame& frame, const S
       if (!texel(p2, &bx, &by) || sb.backDepth.at(bx, by).x <= 0.0f ||
           std::abs(viewDistance(p2) - bufferDistance(sb.backDepth, bx, by)) > backTolerance) {
         missing.set(x, y, true);
+        if (texel(p2, &bx, &by) && sb.backDepth.at(bx, by).x > 0.0f &&
+            viewDistance(p2) < bufferDistance(sb.backDepth, bx, by) - backTolerance)
+          info.middleLayer.set(x, y, true);
         continue;
       }
       Ray out;
@@ -395,7 +411,7 @@ Mask missingInformation(const References& refs, const SceneFrame& frame, const S
       if (!texel(ev[0].point, &sx, &sy) || bufferDistance(sb.sceneDepth, sx, sy) < d * (1.0 - 1e-2))
         missing.set(x, y, true);
     }
-  return missing;
+  return info;
 }
 
 // Wyman's d_N per vertex, when a technique reads it (else none: the shaders read 0).
@@ -558,7 +574,7 @@ TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const CpuShader& shade
 // Stage 4c: every row against the image-space bound, and the bound's own error split into the pixels
 // whose path the buffers do not hold (missingInformation) and the rest.
 void scoreAgainstTheBound(const std::vector<const SnellTechniqueInfo*>& techniques, const std::vector<Image>& images,
-                          const Mask& missing, const References& refs, LabResult& result) {
+                          const MissingInformation& missing, const References& refs, LabResult& result) {
   // The bound of the rows with `bounces` (selectTechniques runs one for every count a row has).
   const auto boundOf = [&](int bounces) {
     std::size_t b = 0;
@@ -571,13 +587,17 @@ void scoreAgainstTheBound(const std::vector<const SnellTechniqueInfo*>& techniqu
   if (b == techniques.size()) return;
   const Mask& object = refs.full.mask;
   const double n = std::max<double>(1.0, static_cast<double>(object.count()));
-  double information = 0.0, buffer = 0.0;
-  std::size_t informationPixels = 0;
+  double information = 0.0, buffer = 0.0, middle = 0.0;
+  std::size_t informationPixels = 0, middlePixels = 0;
   for (int y = 0; y < object.height; ++y)
     for (int x = 0; x < object.width; ++x) {
       if (!object.at(x, y)) continue;
       const double e = pixelSquaredError(refs.two.color.at(x, y), images[b].at(x, y));
-      if (missing.at(x, y)) {
+      if (missing.middleLayer.at(x, y)) {
+        middle += e;
+        ++middlePixels;
+      }
+      if (missing.any.at(x, y)) {
         information += e;
         ++informationPixels;
       } else {
@@ -587,6 +607,8 @@ void scoreAgainstTheBound(const std::vector<const SnellTechniqueInfo*>& techniqu
   result.boundInformationMse = information / n;
   result.boundBufferMse = buffer / n;
   result.boundInformationShare = static_cast<double>(informationPixels) / n;
+  result.boundMiddleLayerMse = middle / n;
+  result.boundMiddleLayerShare = static_cast<double>(middlePixels) / n;
   for (std::size_t i = 0; i < techniques.size(); ++i) {
     TechniqueRow& row = result.rows[i];
     const std::size_t own = boundOf(row.bounces);

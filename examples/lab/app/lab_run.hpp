@@ -81,6 +81,10 @@ struct LabResult {
   // (the buffers' resolution and depth discretization). Both are MSE contributions over the object
   // pixels, so they add up to the bound's mseTwo.
   double boundInformationMse = 0.0, boundInformationShare = 0.0, boundBufferMse = 0.0;
+  // Of the information part, the pixels whose exit P2 is a back face in front of the farthest one at its
+  // pixel (a middle layer of a concave object): an upper bound of what a second, depth-peeled back-face
+  // buffer would buy the bound.
+  double boundMiddleLayerMse = 0.0, boundMiddleLayerShare = 0.0;
   double traceSeconds = 0.0, staticPassMs = 0.0, totalSeconds = 0.0;
   int frames = 0;
   std::string gpu;

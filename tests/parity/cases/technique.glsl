@@ -98,7 +98,9 @@ SNELL_FN SnellTechnique techPreset(int preset, int steps) {
 
 /* The ray cases' technique, material and view: techPreset(preset, steps) with the given IOR and roughness;
    mode bits: 1 exit slot to the scene, 2 edge-fade fallback, 4 dispersion (3 traces), 8 no reflection, 16 TIR
-   policy ZERO, 32 REFLECT, 64 absorption, 128 reflect slot to the scene (with the exit slot's intersector). */
+   policy ZERO, 32 REFLECT, 64 absorption, 128 reflect slot to the scene (with the exit slot's intersector), 256
+   the normal plane inside (steps planes after a 12-step march), 512 a hostile bounce count (steps < 4: steps - 2,
+   so -2 .. 1; else steps * 250, far past SNELL_MAX_BOUNCES). */
 SNELL_FN SnellTechnique techTechnique(int preset, int steps, int modes) {
   SnellTechnique t = techPreset(preset, steps);
   t.exit.source = techBit(modes, 1) ? SNELL_SOURCE_BUFFERS : SNELL_SOURCE_ENVIRONMENT;
@@ -106,6 +108,14 @@ SNELL_FN SnellTechnique techTechnique(int preset, int steps, int modes) {
   if (techBit(modes, 128)) {
     t.reflect.source = SNELL_SOURCE_BUFFERS;
     t.reflect.intersect = t.exit.intersect;
+  }
+  if (techBit(modes, 256)) {
+    t.inside.intersect.strategy = SNELL_STRATEGY_PLANE_NORMAL;
+    t.inside.intersect.marchSteps = 12;
+    t.inside.intersect.planeIterations = steps;
+  }
+  if (techBit(modes, 512)) {
+    t.bounces = steps < 4 ? steps - 2 : steps * 250;
   }
   return t;
 }
