@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include "support/convex_prism.hpp"
 #include "support/depth_scenes.hpp"
 #include "support/technique_scene.hpp"
 
@@ -24,65 +25,21 @@ using namespace snell;
 using glm::dvec3;
 
 // The prism in view space: cross-section in x-z the right triangle A (-1.5, -4), B (-0.5, -4), C (-1.5, -5)
-// (right angle at A), extruded over y in [-1.2, 1.2]. Faces as (outward normal n, offset d): inside where
-// n.p <= d.
-struct Plane {
-  dvec3 n;
-  double d;
-};
-const std::vector<Plane>& prismPlanes() {
-  static const std::vector<Plane> planes = {
-      {dvec3(0, 0, 1), -4.0},                                    // top leg z = -4, facing the camera
-      {dvec3(-1, 0, 0), 1.5},                                    // side leg x = -1.5 (a back face from here)
-      {glm::normalize(dvec3(1, 0, -1)), (-0.5 + 4.0) / std::sqrt(2.0)},  // hypotenuse through B and C
-      {dvec3(0, 1, 0), 1.2},
-      {dvec3(0, -1, 0), 1.2},
-  };
-  return planes;
+// (right angle at A), extruded over y in [-1.2, 1.2].
+const snell_test::Prism& prism() {
+  static const snell_test::Prism p{{{-1.5, -4.0}, {-0.5, -4.0}, {-1.5, -5.0}}, 1.2};
+  return p;
 }
 
-// Entry (front) or exit (back) of the line s q, s > 0, with the convex prism.
+// Entry (front) or exit (back) of the line s q, s > 0, with the prism.
 snell_test::AnalyticSample prismLayer(dvec3 q, bool back) {
-  double sNear = 0.0, sFar = 1e30;
-  dvec3 nNear(0.0), nFar(0.0);
-  for (const Plane& p : prismPlanes()) {
-    const double denom = glm::dot(p.n, q);
-    if (denom == 0.0) {
-      if (p.d < 0.0) return {};
-      continue;
-    }
-    const double s = p.d / denom;
-    if (denom < 0.0 && s > sNear) {
-      sNear = s;
-      nNear = p.n;
-    } else if (denom > 0.0 && s < sFar) {
-      sFar = s;
-      nFar = p.n;
-    }
-  }
   snell_test::AnalyticSample r;
-  if (!(sNear > 0.0 && sNear < sFar && glm::dot(nNear, nNear) > 0.0)) return r;
-  r.s = back ? sFar : sNear;
-  r.normal = back ? nFar : nNear;
+  const auto hit = prism().entry(q, back);
+  if (!hit) return r;
+  r.s = hit->first;
+  r.normal = hit->second;
   r.valid = true;
   return r;
-}
-
-// Where a ray from inside the prism leaves it: the nearest plane it heads out of.
-std::optional<std::pair<dvec3, dvec3>> prismExit(dvec3 o, dvec3 d) {
-  double best = 1e30;
-  dvec3 n(0.0);
-  for (const Plane& p : prismPlanes()) {
-    const double denom = glm::dot(p.n, d);
-    if (denom <= 0.0) continue;
-    const double t = (p.d - glm::dot(p.n, o)) / denom;
-    if (t > 1e-9 && t < best) {
-      best = t;
-      n = p.n;
-    }
-  }
-  if (best >= 1e30) return std::nullopt;
-  return std::make_pair(o + best * d, n);
 }
 
 struct PrismBuffers {
@@ -181,11 +138,11 @@ TEST(TechniqueBounce, RightAnglePrismBounceLandsWhereTheGeometrySays) {
       // The analytic path: refract at the top leg, meet the hypotenuse, reflect (TIR), leave.
       const dvec3 p1 = f.s * q, v = glm::normalize(q);
       const dvec3 t1 = glm::refract(v, f.normal, eta);
-      const auto h1 = prismExit(p1 + 1e-9 * t1, t1);
+      const auto h1 = prism().exit(p1 + 1e-9 * t1, t1);
       if (!h1 || h1->second.x <= 0.0) continue;  // only paths that meet the hypotenuse first
       const dvec3 r = glm::reflect(t1, h1->second);
       if (glm::length(glm::refract(t1, -h1->second, 1.0 / eta)) > 0.0) continue;  // not TIR
-      const auto h2 = prismExit(h1->first + 1e-9 * r, r);
+      const auto h2 = prism().exit(h1->first + 1e-9 * r, r);
       if (!h2 || h2->second.x != -1.0) continue;  // leaves through the side leg
       const dvec3 t2 = glm::refract(r, -h2->second, 1.0 / eta);
       ASSERT_GT(glm::length(t2), 0.0);
