@@ -1,13 +1,15 @@
 // The runtimes every parity case runs on, shared by the parity suite
 // (parity_main.cpp) and the GPU property test (tests/property): GLSL on each
 // GL backend, HLSL cross-compiled through SPIR-V, Vulkan GLSL on a Vulkan
-// device. A new runtime (WebGPU, WebGL 2) is one more ParityRuntime here.
+// device, WGSL on a WebGPU device. A new runtime (WebGL 2) is one more
+// ParityRuntime here.
 #pragma once
 
 #include <snell/gpu/context.hpp>
 #include <snell/gpu/hlsl.hpp>
 #include <snell/gpu/parity.hpp>
 #include <snell/gpu/parity_vulkan.hpp>
+#include <snell/gpu/parity_webgpu.hpp>
 
 #include <filesystem>
 #include <iostream>
@@ -136,6 +138,30 @@ class VulkanRuntime final : public ParityRuntime {
   }
 };
 
+// The WebGPU runtime's tools (tools/webgpu, its npm packages installed by scripts/install-deps.sh).
+#ifndef SNELL_WEBGPU_TOOLS_DIR
+#define SNELL_WEBGPU_TOOLS_DIR SNELL_SOURCE_DIR "/tools/webgpu"
+#endif
+inline snell::gpu::WebGpuTools webGpuTools() {
+  snell::gpu::WebGpuTools t;
+  t.toolsDir = SNELL_WEBGPU_TOOLS_DIR;
+  t.deno = (t.toolsDir / "node_modules" / "@deno" / "linux-x64-glibc" / "deno").string();
+  return t;
+}
+
+// The case file as WGSL (glslang -V, naga), run as compute on Deno's WebGPU (lavapipe here).
+class WebGpuRuntime final : public ParityRuntime {
+ public:
+  std::string suite() const override { return "ParityWebGpu"; }
+  std::string tag() const override { return "[parity-webgpu]"; }
+  std::string where() const override { return "webgpu"; }
+  std::vector<ParityIO> run(const CaseSpec& spec, const std::vector<ParityIO>& inputs) const override {
+    return snell::gpu::runParityWebGpu(webGpuTools(), {kRoot / "glsl", kRoot / "tests" / "parity" / "cases"},
+                                       spec.glslFile, spec.entry, inputs, spec.textures, hlslWorkDir() / "webgpu",
+                                       hlslTools(), spec.entrySource);
+  }
+};
+
 // Every runtime, in the order their suites run.
 inline const std::vector<std::unique_ptr<ParityRuntime>>& parityRuntimes() {
   static const std::vector<std::unique_ptr<ParityRuntime>> all = [] {
@@ -143,6 +169,7 @@ inline const std::vector<std::unique_ptr<ParityRuntime>>& parityRuntimes() {
     for (Backend backend : snell::gpu::kGlBackends) r.push_back(std::make_unique<GlslRuntime>(backend));
     r.push_back(std::make_unique<HlslRuntime>());
     r.push_back(std::make_unique<VulkanRuntime>());
+    r.push_back(std::make_unique<WebGpuRuntime>());
     return r;
   }();
   return all;

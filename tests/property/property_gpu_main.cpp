@@ -54,13 +54,15 @@ std::size_t gpuInputs() {
   }
   return static_cast<std::size_t>(n);
 }
-// The runtimes the hostile inputs run on: GLSL on OSMesa and Vulkan GLSL on
-// the Vulkan device (the parity suite's, parity_runtimes.hpp).
+// The runtimes the hostile inputs run on: GLSL on OSMesa, Vulkan GLSL on the
+// Vulkan device and WGSL on the WebGPU device (the parity suite's,
+// parity_runtimes.hpp).
 const std::vector<const ParityRuntime*>& propertyRuntimes() {
   static const std::vector<const ParityRuntime*> all = [] {
     static const GlslRuntime gl(snell::gpu::Backend::OSMesa);
     static const VulkanRuntime vulkan;
-    return std::vector<const ParityRuntime*>{&gl, &vulkan};
+    static const WebGpuRuntime webgpu;
+    return std::vector<const ParityRuntime*>{&gl, &vulkan, &webgpu};
   }();
   return all;
 }
