@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs what snell's build, tests and examples need on Debian 12, if missing.
-# Run as root (or with sudo). Only Debian packages; nothing is downloaded otherwise.
+# Run as root (or with sudo). Debian packages with apt-get, and the WebGPU
+# runtime's npm packages (Deno, naga) from tools/webgpu's committed lockfile;
+# nothing is downloaded otherwise.
 set -euo pipefail
 packages=(
   cmake g++ make pkg-config
@@ -18,16 +20,27 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# Node.js and npm install the WebGPU runtime's packages (any Node.js that has npm: Debian's, or one
+# that bundles npm).
+command -v npm > /dev/null || missing+=(nodejs npm)
 if [ ${#missing[@]} -eq 0 ]; then
   echo "snell: all build dependencies are installed"
-  exit 0
+else
+  if [ "$(id -u)" -ne 0 ]; then
+    echo "snell: missing packages: ${missing[*]}" >&2
+    echo "snell: run this script as root (sudo bash scripts/install-deps.sh)" >&2
+    exit 1
+  fi
+  echo "snell: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -q
+  apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
-if [ "$(id -u)" -ne 0 ]; then
-  echo "snell: missing packages: ${missing[*]}" >&2
-  echo "snell: run this script as root (sudo bash scripts/install-deps.sh)" >&2
-  exit 1
+
+# The WebGPU parity runtime: Deno (its WebGPU runs WGSL on lavapipe) and naga (SPIR-V to WGSL), pinned
+# by tools/webgpu/package-lock.json; again whenever the lockfile changed since the last install.
+webgpu="$(cd "$(dirname "$0")/.." && pwd)/tools/webgpu"
+if [ ! -f "$webgpu/node_modules/.package-lock.json" ] || [ "$webgpu/package-lock.json" -nt "$webgpu/node_modules/.package-lock.json" ]; then
+  echo "snell: installing the WebGPU runtime's npm packages (tools/webgpu)"
+  npm ci --prefix "$webgpu" --no-audit --no-fund --loglevel=error
 fi
-echo "snell: installing ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-apt-get update -q
-apt-get install -y -q --no-install-recommends "${missing[@]}"
