@@ -158,8 +158,13 @@ contract: macros only.
    HLSL and has different linkage rules in C++. */
 #define SNELL_PI 3.14159265358979f
 #define SNELL_EPS 1e-6f
-/* Largest finite float; results that would be infinite are clamped to it. */
-#define SNELL_FLT_MAX 3.402823466e38f
+/* Largest finite float; results that would be infinite are clamped to it. A
+   host may define it first with the same value in another spelling: the
+   WebGPU prelude does (naga writes this literal with 39 digits, which Tint
+   rejects as not representable). */
+#ifndef SNELL_FLT_MAX
+#  define SNELL_FLT_MAX 3.402823466e38f
+#endif
 /* Smallest normal float. Divisors and "positive" tests use it instead of 0:
    GPUs may flush denormals to zero, so a denormal input is treated as 0 in
    every language (same flags on CPU and GPU). */

@@ -95,7 +95,10 @@
 
 #define SNELL_PI 3.14159265358979f
 #define SNELL_EPS 1e-6f
-#define SNELL_FLT_MAX 3.402823466e38f
+
+#ifndef SNELL_FLT_MAX
+#  define SNELL_FLT_MAX 3.402823466e38f
+#endif
 
 #define SNELL_FLT_MIN 1.175494351e-38f
 

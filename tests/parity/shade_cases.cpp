@@ -695,7 +695,7 @@ SNELL_PARITY_CASE(snellRefractiveTextureMap, rtmInputs,
                   p.uvMax = 0.3f;
                   SnellRefractiveTextureMapHit h3 = snellRefractiveTextureMap(vertex, normal, eye, p);
                   p.policy = SNELL_RTM_SHRINK;
-                  p.uvMin = uintBitsToFloat(0x7fc00000u);  // quiet NaN
+                  p.uvMin = uintBitsToFloat(0x7fc00000u + 0u * floatBitsToUint(restY));  // quiet NaN, not a constant (Tint rejects a constant NaN)
                   p.uvMax = 2.0f;
                   SnellRefractiveTextureMapHit h4 = snellRefractiveTextureMap(vertex, normal, eye, p);
                   uvClamp = h1.uv;

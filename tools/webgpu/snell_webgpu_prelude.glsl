@@ -6,6 +6,8 @@
      both become bit tests on floatBitsToUint: exact for every float, and
      immune to a compiler that assumes no NaN. The function-like macros also
      cover SNELL_FINITE and every direct call in snell's bodies.
+   - SNELL_FLT_MAX by its bits (below), so the WGSL has no literal Tint
+     rejects.
    - `precise` stays: glslang marks the operations NoContraction, which naga
      drops (WGSL cannot say it); on lavapipe the results equal the Vulkan
      runtime's bit for bit.
@@ -26,5 +28,8 @@ bvec3 snellWebgpuIsInf(vec3 x) { return equal(floatBitsToUint(x) & uvec3(0x7ffff
 bvec4 snellWebgpuIsInf(vec4 x) { return equal(floatBitsToUint(x) & uvec4(0x7fffffffu), uvec4(0x7f800000u)); }
 #define isnan(x) snellWebgpuIsNan(x)
 #define isinf(x) snellWebgpuIsInf(x)
+/* The largest finite float by its bits: naga writes the decimal literal with 39
+   digits, which Tint (Dawn, Chrome) rejects as not representable in f32. */
+#define SNELL_FLT_MAX uintBitsToFloat(0x7f7fffffu)
 
 #endif

@@ -6,7 +6,8 @@
 //   tools/webgpu/snell-wgsl [--check] [-I DIR]... [-D NAME[=VALUE]]... SHADER.(comp|frag|vert) -o OUT.wgsl
 //
 // --check: also compile the WGSL on this machine's WebGPU device (Deno's wgpu)
-// and fail on any error it reports.
+// and with Tint (Dawn's and Chrome's compiler, tint_check.mjs), and fail on
+// any error either reports.
 // snell's glsl/ and this directory (the WebGPU prelude) are always on the
 // include path. Textures: WGSL has no combined samplers and naga rejects a
 // sampler2D passed to a function, so define SNELL_TEX2D and the sampling
@@ -86,7 +87,12 @@ try {
         errors.map((m) => `  ${m.lineNum}:${m.linePos} ${m.message}`).join("\n"));
       Deno.exit(1);
     }
-    console.log(`snell-wgsl: ${output} compiles on ${adapter.info.description}`);
+    const tint = new Deno.Command("node", { args: [`${here}tint_check.mjs`, output], stderr: "piped" }).outputSync();
+    if (!tint.success) {
+      console.error(new TextDecoder().decode(tint.stderr));
+      Deno.exit(1);
+    }
+    console.log(`snell-wgsl: ${output} compiles on ${adapter.info.description} and with Tint`);
   }
 } finally {
   Deno.removeSync(spv);

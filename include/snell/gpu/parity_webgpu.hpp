@@ -14,8 +14,10 @@
 //     (bindings 16 + 2k, 17 + 2k, with that texture's filters) by an if chain;
 //   - the case count is a uniform at binding 2 (Deno's WebGPU has no push
 //     constants).
-// The device side is tools/webgpu/run_parity.ts (naga and the dispatch);
-// the npm packages deno and naga-wasm, installed from tools/webgpu's lockfile.
+// The device side is tools/webgpu/run_parity.ts (naga and the dispatch), and
+// every WGSL also goes through Tint (tools/webgpu/tint_check.mjs, dawn.node's
+// null backend): the npm packages deno, naga-wasm and webgpu, installed from
+// tools/webgpu's lockfile.
 #pragma once
 
 #include "hlsl.hpp"  // runTool, the tools' names, file helpers
@@ -191,6 +193,9 @@ inline std::vector<ParityIO> runParityWebGpu(const WebGpuTools& webgpu,
   if (t.exitCode != 0)
     throw Error("the WebGPU runtime failed on " + job.string() + " (deno exit " + std::to_string(t.exitCode) + "):\n" +
                 detail::indent(t.output));
+  // The same WGSL through Tint (Dawn's compiler, Chrome's): the two WGSL compilers disagree on some input.
+  t = runTool("node", {(webgpu.toolsDir / "tint_check.mjs").string(), (job / "shader.wgsl").string()}, "nodejs");
+  if (t.exitCode != 0) throw Error("Tint rejects the WGSL of " + job.string() + ":\n" + detail::indent(t.output));
   const std::string bytes = detail::readTextFile(job / "results.f32");
   if (bytes.size() != inputs.size() * sizeof(ParityIO))
     throw Error("the WebGPU runtime wrote " + std::to_string(bytes.size()) + " bytes of results for " +
