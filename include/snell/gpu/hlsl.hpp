@@ -177,6 +177,25 @@ inline std::vector<std::string> combinedSamplerUniforms(const std::string& glsl)
   return names;
 }
 
+
+// glslang -V (Vulkan 1.1 SPIR-V) with `options` and the include directories, then spirv-val: the
+// Vulkan and WebGPU parity runtimes compile their compute shaders this way. Throws with the tool's
+// output on failure.
+inline void compileVulkanSpirv(const HlslTools& tools, const std::filesystem::path& source,
+                               const std::filesystem::path& spv, std::vector<std::string> options,
+                               const std::vector<std::filesystem::path>& includeDirs) {
+  std::vector<std::string> args = {"-V", "--target-env", "vulkan1.1", "-o", spv.string()};
+  args.insert(args.end(), options.begin(), options.end());
+  for (const std::filesystem::path& d : includeDirs) args.push_back("-I" + d.string());
+  args.push_back(source.string());
+  ToolResult t = runTool(tools.glslangValidator, args, "glslang-tools");
+  if (t.exitCode != 0)
+    throw Error("glslangValidator -V failed on " + source.string() + " (exit " + std::to_string(t.exitCode) + "):\n" +
+                indent(t.output));
+  t = runTool(tools.spirvVal, {"--target-env", "vulkan1.1", spv.string()}, "spirv-tools");
+  if (t.exitCode != 0) throw Error("spirv-val rejected " + spv.string() + ":\n" + indent(t.output));
+}
+
 }  // namespace detail
 
 // HLSL compute source -> validated SPIR-V -> GLSL 450. `name` names the

@@ -69,17 +69,10 @@ inline std::vector<ParityIO> runParityVulkan(const VulkanCompute& vk, const std:
   const fs::path source = workDir / (name + ".comp"), spv = workDir / (name + ".spv"),
                  reflect = workDir / (name + ".json");
   detail::writeTextFile(source, parityShaderSource(caseFile, entry, entrySource, ParityDialect::Vulkan));
-  std::vector<std::string> args = {"-V", "--target-env", "vulkan1.1", "--auto-map-bindings", "--shift-texture-binding",
-                                   std::to_string(kParityVulkanFirstSampler), "-o", spv.string()};
-  for (const fs::path& d : includeDirs) args.push_back("-I" + d.string());
-  args.push_back(source.string());
-  ToolResult t = runTool(tools.glslangValidator, args, "glslang-tools");
-  if (t.exitCode != 0)
-    throw Error("glslangValidator -V failed on " + source.string() + " (exit " + std::to_string(t.exitCode) + "):\n" +
-                detail::indent(t.output));
-  t = runTool(tools.spirvVal, {"--target-env", "vulkan1.1", spv.string()}, "spirv-tools");
-  if (t.exitCode != 0) throw Error("spirv-val rejected " + spv.string() + ":\n" + detail::indent(t.output));
-  t = runTool(tools.spirvCross, {spv.string(), "--reflect", "--output", reflect.string()}, "spirv-cross");
+  detail::compileVulkanSpirv(tools, source, spv,
+                             {"--auto-map-bindings", "--shift-texture-binding", std::to_string(kParityVulkanFirstSampler)},
+                             includeDirs);
+  ToolResult t = runTool(tools.spirvCross, {spv.string(), "--reflect", "--output", reflect.string()}, "spirv-cross");
   if (t.exitCode != 0) throw Error("spirv-cross --reflect failed on " + spv.string() + ":\n" + detail::indent(t.output));
   const std::map<std::string, std::uint32_t> samplers = detail::liveSamplerBindings(detail::readTextFile(reflect));
 

@@ -142,16 +142,7 @@ inline std::vector<ParityIO> runParityWebGpu(const WebGpuTools& webgpu,
   s += "}\n";
   const fs::path source = job / "shader.comp", spv = job / "shader.spv";
   detail::writeTextFile(source, s);
-  std::vector<std::string> args = {"-V", "--target-env", "vulkan1.1", "-o", spv.string(), "-I" + cases.string(),
-                                   "-I" + webgpu.toolsDir.string()};
-  for (const fs::path& d : includeDirs) args.push_back("-I" + d.string());
-  args.push_back(source.string());
-  ToolResult t = runTool(tools.glslangValidator, args, "glslang-tools");
-  if (t.exitCode != 0)
-    throw Error("glslangValidator -V failed on " + source.string() + " (exit " + std::to_string(t.exitCode) + "):\n" +
-                detail::indent(t.output));
-  t = runTool(tools.spirvVal, {"--target-env", "vulkan1.1", spv.string()}, "spirv-tools");
-  if (t.exitCode != 0) throw Error("spirv-val rejected " + spv.string() + ":\n" + detail::indent(t.output));
+  detail::compileVulkanSpirv(tools, source, spv, {"-I" + cases.string(), "-I" + webgpu.toolsDir.string()}, includeDirs);
 
   // The job: the slots' textures (every level, level 0 first), the inputs, the count. A texture the case
   // file declares but this case does not give gets one black texel: naga drops what the entry never
@@ -186,7 +177,7 @@ inline std::vector<ParityIO> runParityWebGpu(const WebGpuTools& webgpu,
     throw Error("the WebGPU runtime needs Deno and naga from npm: no " + webgpu.deno + " or " +
                 (webgpu.toolsDir / "node_modules" / "naga-wasm").string() + " (run `npm ci` in " +
                 webgpu.toolsDir.string() + "; scripts/install-deps.sh does)");
-  t = runTool(webgpu.deno,
+  ToolResult t = runTool(webgpu.deno,
               {"run", "--quiet", "--allow-read", "--allow-write", "--allow-env", "--node-modules-dir=manual",
                (webgpu.toolsDir / "run_parity.ts").string(), job.string()},
               "deno");
