@@ -68,7 +68,7 @@ int checkBounces(const Prism& prism, const dvec3& enterNormal, const dvec3& tirN
   tp.inside.intersect.marchSteps = 16;
   tp.inside.intersect.planeIterations = 2;
   const double eta = 1.0 / 1.5, px = 1.0 / 256.0;
-  const glm::dmat4 clip(k.params.clipFromView);
+  const glm::dmat4 clip(k.params.clipFromView), viewFromClip = glm::inverse(clip);
   const auto uvOf = [&](dvec3 p) {
     const glm::dvec4 c = clip * glm::dvec4(p, 1.0);
     return dvec2(0.5 * (c.x / c.w + 1.0), 0.5 * (c.y / c.w + 1.0));
@@ -78,7 +78,7 @@ int checkBounces(const Prism& prism, const dvec3& enterNormal, const dvec3& tirN
     for (int i = 4; i < 256; i += 6) {
       // The pixel centre's ray.
       const glm::dvec4 ndc((i + 0.5) / 128.0 - 1.0, (j + 0.5) / 128.0 - 1.0, -1.0, 1.0);
-      glm::dvec4 v = glm::inverse(clip) * ndc;
+      glm::dvec4 v = viewFromClip * ndc;
       const dvec3 q = glm::normalize(dvec3(v) / v.w);
       const auto f = prism.entry(q);
       if (!f || glm::length(f->second - enterNormal) > 1e-9) continue;
@@ -100,7 +100,7 @@ int checkBounces(const Prism& prism, const dvec3& enterNormal, const dvec3& tirN
         for (int dy = -1; dy <= 1; ++dy)
           for (int dx = -1; dx <= 1; ++dx) {
             const glm::dvec4 c(2.0 * (uv.x + dx * px) - 1.0, 2.0 * (uv.y + dy * px) - 1.0, -1.0, 1.0);
-            const glm::dvec4 w = glm::inverse(clip) * c;
+            const glm::dvec4 w = viewFromClip * c;
             const auto b = prism.entry(dvec3(w) / w.w, true);
             if (b && glm::length(b->second - faceNormal) > 1e-9) return true;
           }

@@ -11,7 +11,7 @@
 // count (a uniform: Deno's WebGPU has no push constants), 16 + 2k texture k,
 // 17 + 2k its sampler. Any failure (translation, no adapter, a WebGPU error)
 // exits with status 1 and a message on stderr.
-import { parseSpirv, validate, writeWgsl, NagaError } from "naga-wasm";
+import { spirvToWgsl } from "./naga_wgsl.ts";
 
 type Tex = { levels: [number, number][]; mag: string; min: string; mip: string };
 type Job = { count: number; textures: Tex[] };
@@ -27,14 +27,9 @@ const job: Job = JSON.parse(Deno.readTextFileSync(`${dir}/job.json`));
 
 let wgsl = "";
 try {
-  const module = parseSpirv(new Uint8Array(Deno.readFileSync(`${dir}/shader.spv`)));
-  const info = validate(module);
-  wgsl = writeWgsl(module, info);
-  module.free();
-  info.free();
+  wgsl = spirvToWgsl(Deno.readFileSync(`${dir}/shader.spv`));
 } catch (e) {
-  fail(`naga cannot translate ${dir}/shader.spv to WGSL: ` +
-    (e instanceof NagaError ? `${e.kind}: ${e.message}\n${e.formatted}` : String(e)));
+  fail(`naga cannot translate ${dir}/shader.spv to WGSL: ${(e as Error).message}`);
 }
 Deno.writeTextFileSync(`${dir}/shader.wgsl`, wgsl);
 

@@ -14,7 +14,7 @@
 // hooks for your bindings before including snell (examples/webgpu/refract.frag
 // shows the pattern: a texture is a slot number, each slot a texture2D and its
 // own sampler). Exit status 1 with the tool's message on any failure.
-import { parseSpirv, validate, writeWgsl, NagaError } from "naga-wasm";
+import { spirvToWgsl } from "./naga_wgsl.ts";
 
 const here = new URL(".", import.meta.url).pathname;
 const snellGlsl = `${here}../../glsl`;
@@ -62,14 +62,9 @@ try {
   run("spirv-val", ["--target-env", "vulkan1.1", spv], "spirv-tools");
   let wgsl = "";
   try {
-    const module = parseSpirv(new Uint8Array(Deno.readFileSync(spv)));
-    const info = validate(module);
-    wgsl = writeWgsl(module, info);
-    module.free();
-    info.free();
+    wgsl = spirvToWgsl(Deno.readFileSync(spv));
   } catch (e) {
-    console.error(`snell-wgsl: naga cannot translate ${input}: ` +
-      (e instanceof NagaError ? `${e.kind}: ${e.message}\n${e.formatted}` : String(e)));
+    console.error(`snell-wgsl: naga cannot translate ${input}: ${(e as Error).message}`);
     Deno.exit(1);
   }
   Deno.writeTextFileSync(output, `// WGSL from ${input.split("/").pop()} by snell-wgsl (glslang -V, naga)\n` + wgsl);

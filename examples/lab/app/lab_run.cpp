@@ -393,12 +393,12 @@ MissingInformation missingInformation(const References& refs, const SceneFrame& 
         continue;  // not a two-interface path (grazing or open mesh): nothing to classify
       int bx = 0, by = 0;
       const glm::dvec3 p2 = in[1].point;
-      if (!texel(p2, &bx, &by) || sb.backDepth.at(bx, by).x <= 0.0f ||
-          std::abs(viewDistance(p2) - bufferDistance(sb.backDepth, bx, by)) > backTolerance) {
+      // P2's distance in front of (< 0) or behind the back face the buffer holds at its texel.
+      const bool hasBack = texel(p2, &bx, &by) && sb.backDepth.at(bx, by).x > 0.0f;
+      const double gap = hasBack ? viewDistance(p2) - bufferDistance(sb.backDepth, bx, by) : 0.0;
+      if (!hasBack || std::abs(gap) > backTolerance) {
         missing.set(x, y, true);
-        if (texel(p2, &bx, &by) && sb.backDepth.at(bx, by).x > 0.0f &&
-            viewDistance(p2) < bufferDistance(sb.backDepth, bx, by) - backTolerance)
-          info.middleLayer.set(x, y, true);
+        if (hasBack && gap < -backTolerance) info.middleLayer.set(x, y, true);
         continue;
       }
       Ray out;

@@ -108,11 +108,9 @@ struct LabResult {
   }
   // The image-space bound of the two-interface techniques (bounces 0).
   const TechniqueRow* boundRow() const {
-    for (const TechniqueRow& r : rows) {
-      const SnellTechniqueInfo* info = snellFindTechnique(r.name);
-      if (info != nullptr && info->kind == SnellTechniqueKind::Reference && r.bounces == 0) return &r;
-    }
-    return nullptr;
+    return rowWhere([](const SnellTechniqueInfo& t) {
+      return t.kind == SnellTechniqueKind::Reference && snellTechniqueBounces(t) == 0;
+    });
   }
   const TechniqueRow* costUnitRow() const { return rowWhere([](const SnellTechniqueInfo& t) { return t.costUnit; }); }
   const TechniqueRow* posterRow() const { return rowWhere([](const SnellTechniqueInfo& t) { return t.posterRow; }); }

@@ -178,6 +178,15 @@ inline std::vector<std::string> combinedSamplerUniforms(const std::string& glsl)
 }
 
 
+// The text of the parity case file `caseFile`, from the first of `includeDirs` that has it; `who` names
+// the caller in the error when none does.
+inline std::string readCaseFile(const std::vector<std::filesystem::path>& includeDirs, const std::string& caseFile,
+                                const std::string& who) {
+  for (const std::filesystem::path& d : includeDirs)
+    if (std::filesystem::exists(d / caseFile)) return readTextFile(d / caseFile);
+  throw Error(who + ": case file " + caseFile + " not found in the include directories");
+}
+
 // glslang -V (Vulkan 1.1 SPIR-V) with `options` and the include directories, then spirv-val: the
 // Vulkan and WebGPU parity runtimes compile their compute shaders this way. Throws with the tool's
 // output on failure.
@@ -333,14 +342,7 @@ inline std::vector<ParityIO> runParityHlsl(const Context& ctx, const std::vector
                                            const std::string& entrySource = {}) {
   namespace fs = std::filesystem;
   // Does the case file declare its HLSL textures itself?
-  std::string caseText;
-  for (const fs::path& d : includeDirs) {
-    if (fs::exists(d / caseFile)) {
-      caseText = detail::readTextFile(d / caseFile);
-      break;
-    }
-  }
-  if (caseText.empty()) throw Error("runParityHlsl: case file " + caseFile + " not found in the include directories");
+  const std::string caseText = detail::readCaseFile(includeDirs, caseFile, "runParityHlsl");
   // If not, declare the GLSL sampler uniforms it has (any #if block) and the
   // case's textures as HLSL textures.
   std::vector<std::string> declare;

@@ -107,13 +107,7 @@ inline std::vector<ParityIO> runParityWebGpu(const WebGpuTools& webgpu,
   if (ec) throw Error("runParityWebGpu: cannot create " + job.string() + ": " + ec.message());
 
   // The case file with its samplers turned into slot numbers, first on the include path.
-  std::string caseText;
-  for (const fs::path& d : includeDirs)
-    if (fs::exists(d / caseFile)) {
-      caseText = detail::readTextFile(d / caseFile);
-      break;
-    }
-  if (caseText.empty()) throw Error("runParityWebGpu: no " + caseFile + " in the include directories");
+  const std::string caseText = detail::readCaseFile(includeDirs, caseFile, "runParityWebGpu");
   static const std::regex decl(R"(uniform\s+sampler2D\s+(\w+)\s*;)");
   std::vector<std::string> slots;
   std::string rewritten;
