@@ -9,6 +9,7 @@
 #include <snell/gpu/hlsl.hpp>
 #include <snell/gpu/parity.hpp>
 #include <snell/gpu/parity_vulkan.hpp>
+#include <snell/gpu/parity_webgl.hpp>
 #include <snell/gpu/parity_webgpu.hpp>
 
 #include <filesystem>
@@ -162,6 +163,35 @@ class WebGpuRuntime final : public ParityRuntime {
   }
 };
 
+// The WebGL 2 runtime's tools: tools/webgl, Node.js and Chromium from PATH.
+#ifndef SNELL_WEBGL_TOOLS_DIR
+#define SNELL_WEBGL_TOOLS_DIR SNELL_SOURCE_DIR "/tools/webgl"
+#endif
+inline snell::gpu::WebGlTools webGlTools() {
+  snell::gpu::WebGlTools t;
+  t.toolsDir = SNELL_WEBGL_TOOLS_DIR;
+  return t;
+}
+
+// The case file as an ES 3.00 fragment shader in headless Chromium's WebGL 2
+// (ANGLE on SwiftShader here). The renderer string is printed once per run.
+class WebGlRuntime final : public ParityRuntime {
+ public:
+  std::string suite() const override { return "ParityWebGl"; }
+  std::string tag() const override { return "[parity-webgl]"; }
+  std::string where() const override { return "webgl2"; }
+  std::vector<ParityIO> run(const CaseSpec& spec, const std::vector<ParityIO>& inputs) const override {
+    std::string renderer;
+    std::vector<ParityIO> out = snell::gpu::runParityWebGl(
+        webGlTools(), {kRoot / "glsl", kRoot / "tests" / "parity" / "cases"}, spec.glslFile, spec.entry, inputs,
+        spec.textures, hlslWorkDir() / "webgl", spec.entrySource, &renderer);
+    static bool printed = false;
+    if (!printed) std::cout << "[parity-webgl] renderer: " << renderer << "\n";
+    printed = true;
+    return out;
+  }
+};
+
 // Every runtime, in the order their suites run.
 inline const std::vector<std::unique_ptr<ParityRuntime>>& parityRuntimes() {
   static const std::vector<std::unique_ptr<ParityRuntime>> all = [] {
@@ -170,6 +200,7 @@ inline const std::vector<std::unique_ptr<ParityRuntime>>& parityRuntimes() {
     r.push_back(std::make_unique<HlslRuntime>());
     r.push_back(std::make_unique<VulkanRuntime>());
     r.push_back(std::make_unique<WebGpuRuntime>());
+    r.push_back(std::make_unique<WebGlRuntime>());
     return r;
   }();
   return all;

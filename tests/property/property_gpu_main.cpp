@@ -55,14 +55,15 @@ std::size_t gpuInputs() {
   return static_cast<std::size_t>(n);
 }
 // The runtimes the hostile inputs run on: GLSL on OSMesa, Vulkan GLSL on the
-// Vulkan device and WGSL on the WebGPU device (the parity suite's,
-// parity_runtimes.hpp).
+// Vulkan device, WGSL on the WebGPU device and ES 3.00 in Chromium's WebGL 2
+// (the parity suite's, parity_runtimes.hpp).
 const std::vector<const ParityRuntime*>& propertyRuntimes() {
   static const std::vector<const ParityRuntime*> all = [] {
     static const GlslRuntime gl(snell::gpu::Backend::OSMesa);
     static const VulkanRuntime vulkan;
     static const WebGpuRuntime webgpu;
-    return std::vector<const ParityRuntime*>{&gl, &vulkan, &webgpu};
+    static const WebGlRuntime webgl;
+    return std::vector<const ParityRuntime*>{&gl, &vulkan, &webgpu, &webgl};
   }();
   return all;
 }

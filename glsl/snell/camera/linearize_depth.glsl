@@ -22,7 +22,7 @@ contract (v = view distance, d = depth value, n = zNear, f = zFar):
   - snellLinearizeDepth returns 0.0f (never a valid distance, every valid one is
     >= n > 0) when: depthValue is NaN, zNear is not a finite positive number, zFar
     is not finite or not > zNear (finite conventions only), or the convention is
-    unknown. A denormal zNear counts as 0 (GPUs may flush it).
+    unknown. A denormal zNear or depthValue counts as 0 (GPUs may flush it).
   - snellDelinearizeDepth returns a value in [0,1]; the distance is clamped into
     [n, f] (finite conventions) or [n, +inf) first, so points nearer than the near
     plane, at or behind the camera (v <= 0), give the near-plane value and points
@@ -59,7 +59,7 @@ SNELL_FN_INLINE float snellLinearizeDepth(float depthValue, float zNear, float z
   } else if (convention == SNELL_DEPTH_INFINITE_GL) {
     v = d < 1.0f ? zNear / (1.0f - d) : SNELL_FLT_MAX;
   } else if (convention == SNELL_DEPTH_INFINITE_REVERSED) {
-    v = d > 0.0f ? zNear / d : SNELL_FLT_MAX;
+    v = d >= SNELL_FLT_MIN ? zNear / d : SNELL_FLT_MAX;  // a denormal depth is 0, the far plane
   } else {
     return 0.0f;
   }

@@ -18,6 +18,9 @@ contract: with A = 1 / (aspect tan(fovy/2)), B = 1 / tan(fovy/2), the matrix map
   The window depth each one produces is the one of linearize_depth.glsl.
   The inverse maps (xc, yc, zc, wc) to (xc/A, yc/B, -wc, (zc + C wc)/D) exactly
   (no general 4x4 inversion; HLSL has none).
+  tan(fovy/2) is snell's own polynomial (Cephes tanf), within 1.7e-7 relative of
+  tan on (0, pi/2) and the same on every runtime: glm::perspective's entries A
+  and B are matched within 3 ulp, the others bit for bit.
   All three return the zero matrix (every projected point then has w = 0, so
   snellClipToNdc and friends report valid = false) when fovy is not in (0, pi),
   tan(fovy/2) is not finite positive, aspect or zNear are not finite positive,
@@ -45,11 +48,24 @@ SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, f
   if (!infinite && (!SNELL_FINITE(zFar) || !(zFar > zNear))) {
     return zero;
   }
-  float tanHalfFovy = tan(fovy / 2.0f);
+  // tan(fovy / 2) by snell's own polynomial, not tan(): GLSL leaves tan's precision to the
+  // implementation, and WebGL 2 on SwiftShader is 6e-5 off, more than a projection can afford.
+  // Cephes' tanf (S. L. Moshier): the polynomial on [0, pi/4] and tan x = 1 / tan(pi/2 - x)
+  // above it, pi/2 in two parts so that pi/2 - x keeps its digits near pi/2.
+  float halfFovy = fovy / 2.0f;
+  bool upper = halfFovy > 0.78539818525f;  // float(pi/2) / 2: float(pi/2) - x is exact above it
+  float r = halfFovy;
+  if (upper) {
+    r = (1.57079637050628662f - halfFovy) - 4.37113900018624283e-8f;
+  }
+  float r2 = r * r;
+  float tanR = ((((((9.38540185543e-3f * r2 + 3.11992232697e-3f) * r2 + 2.44301354525e-2f) * r2 +
+                   5.34112807005e-2f) * r2 + 1.33387994085e-1f) * r2 + 3.33331568548e-1f) * r2) * r + r;
+  float tanHalfFovy = upper ? 1.0f / tanR : tanR;
   if (!SNELL_FINITE(tanHalfFovy) || !(tanHalfFovy > 0.0f)) {
     return zero;
   }
-  // Same operation order as glm::perspective, so the GL matrix matches it in float.
+  // Same operation order as glm::perspective: the GL matrix matches it within tan's error.
   float a = 1.0f / (aspect * tanHalfFovy);
   float b = 1.0f / tanHalfFovy;
   float c = 0.0f;

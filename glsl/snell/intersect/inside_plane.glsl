@@ -93,8 +93,12 @@ SNELL_FN SnellInsideHit snellInsidePlane(vec3 origin, vec3 dir, SNELL_TEX2D back
     if (planes >= n) {
       break;
     }
-    SnellSurfacePoint s =
-        readFront ? snellSurfacePoint(frontDepth, readUv, front) : snellSurfacePoint(backDepth, readUv, back);
+    SnellSurfacePoint s;  // not ?: : WebGL rejects it on structs
+    if (readFront) {
+      s = snellSurfacePoint(frontDepth, readUv, front);
+    } else {
+      s = snellSurfacePoint(backDepth, readUv, back);
+    }
     fetches = fetches + 1;
     bool kept = false;
     if (s.valid) {

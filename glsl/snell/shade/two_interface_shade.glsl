@@ -184,8 +184,14 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   float eta = snellIorToEta(m.iorOutside, three ? m.iors.y : m.ior);
   SnellTwoInterfacePath p =
       snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
-  SnellTwoInterfaceExit e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS,
-                                                  p.exitFront ? t.reflect : t.exit, m, v);
+  // A path that left through a front face is resolved by the reflect slot (an if: WebGL rejects ?: on
+  // structs).
+  SnellSlot leave = t.exit;
+  if (p.exitFront) {
+    leave = t.reflect;
+  }
+  SnellTwoInterfaceExit e =
+      snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, leave, m, v);
   vec3 transmitted = e.color * snellBeerLambert(m.absorption, p.pathLength);
   SnellTwoInterfaceResult r;
   r.exitPoint = p.exitPoint;
@@ -204,12 +210,20 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   if (three) {
     SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.x),
                                                       dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
-    SnellTwoInterfaceExit er = snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, SNELL_SCENE_BUFFER_ARGS,
-                                                     pr.exitFront ? t.reflect : t.exit, m, v);
+    SnellSlot leaveR = t.exit;
+    if (pr.exitFront) {
+      leaveR = t.reflect;
+    }
+    SnellTwoInterfaceExit er =
+        snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, SNELL_SCENE_BUFFER_ARGS, leaveR, m, v);
     SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.z),
                                                       dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
-    SnellTwoInterfaceExit eb = snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, SNELL_SCENE_BUFFER_ARGS,
-                                                     pb.exitFront ? t.reflect : t.exit, m, v);
+    SnellSlot leaveB = t.exit;
+    if (pb.exitFront) {
+      leaveB = t.reflect;
+    }
+    SnellTwoInterfaceExit eb =
+        snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, SNELL_SCENE_BUFFER_ARGS, leaveB, m, v);
     transmitted.x = er.color.x * snellBeerLambert(m.absorption, pr.pathLength).x;
     transmitted.z = eb.color.z * snellBeerLambert(m.absorption, pb.pathLength).z;
     r.fetches = r.fetches + pr.fetches + er.fetches + pb.fetches + eb.fetches;

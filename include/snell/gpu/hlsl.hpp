@@ -160,6 +160,12 @@ inline void writeTextFile(const std::filesystem::path& p, const std::string& tex
   if (!out) throw Error("cannot write " + p.string());
 }
 
+inline void writeFloats(const std::filesystem::path& p, const float* data, std::size_t count) {
+  std::ofstream out(p, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(count * sizeof(float)));
+  if (!out.flush()) throw Error("cannot write " + p.string());
+}
+
 inline std::string indent(const std::string& text) {
   std::string out = "    ";
   for (char c : text) {

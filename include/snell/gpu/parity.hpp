@@ -66,6 +66,26 @@ struct ParityTexture {
 constexpr int kParityLocalSize = 64;
 
 namespace detail {
+// A texture's filters as the job files of the WebGPU and WebGL 2 runtimes name them.
+inline const char* filterName(Filter f) { return f == Filter::Linear ? "linear" : "nearest"; }
+inline const char* mipFilterName(MipFilter f) {
+  return f == MipFilter::Linear ? "linear" : (f == MipFilter::Nearest ? "nearest" : "none");
+}
+
+// A texture for those runtimes' device side: every level's RGBA32F texels
+// (level 0 first) in `texels`, and the JSON members naming the levels' sizes
+// and the filters: "levels": [[w, h], ...], "mag": .., "min": .., "mip": ..
+inline std::string textureJob(const snell::Texture2D& tex, std::vector<float>& texels) {
+  std::string levels;
+  for (int l = 0; l < tex.levelCount(); ++l) {
+    const snell::Image& img = tex.level(l);
+    levels += std::string(l ? ", " : "") + "[" + std::to_string(img.width) + ", " + std::to_string(img.height) + "]";
+    for (const glm::vec4& v : img.texels) texels.insert(texels.end(), {v.x, v.y, v.z, v.w});
+  }
+  return "\"levels\": [" + levels + "], \"mag\": \"" + filterName(tex.magFilter) + "\", \"min\": \"" +
+         filterName(tex.minFilter) + "\", \"mip\": \"" + mipFilterName(tex.mipFilter) + "\"";
+}
+
 // The statements the GLSL and the HLSL parity mains share (both languages spell
 // them alike): run `entry` on input i, store its four vectors as result i.
 inline std::string parityCallAndStore(const std::string& entry) {

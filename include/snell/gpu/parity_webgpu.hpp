@@ -44,11 +44,6 @@ constexpr int kParityWebGpuFirstTexture = 16;
 
 namespace detail {
 
-inline const char* webGpuFilter(Filter f) { return f == Filter::Linear ? "linear" : "nearest"; }
-inline const char* webGpuMipFilter(MipFilter f) {
-  return f == MipFilter::Linear ? "linear" : (f == MipFilter::Nearest ? "nearest" : "none");
-}
-
 // The hooks for `slots` textures: a texture is its slot number.
 inline std::string webGpuTextureHooks(std::size_t slots) {
   if (slots == 0) return {};
@@ -78,12 +73,6 @@ inline std::string webGpuTextureHooks(std::size_t slots) {
   s += "ivec2 snellWebgpuTextureSize0(int t) {\n" +
        chain("textureSize(sampler2D(snellWebgpuTexK, snellWebgpuSmpK), 0)", "ivec2(0, 0)") + "}\n";
   return s;
-}
-
-inline void writeFloats(const std::filesystem::path& p, const float* data, std::size_t count) {
-  std::ofstream out(p, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(count * sizeof(float)));
-  if (!out.flush()) throw Error("runParityWebGpu: cannot write " + p.string());
 }
 
 }  // namespace detail
@@ -151,16 +140,8 @@ inline std::vector<ParityIO> runParityWebGpu(const WebGpuTools& webgpu,
       throw Error("runParityWebGpu: texture '" + slots[k] + "' is null");
     const Texture2D& tex = found ? *found->texture : unused;
     std::vector<float> data;
-    std::string levels;
-    for (int l = 0; l < tex.levelCount(); ++l) {
-      const Image& img = tex.level(l);
-      levels += std::string(l ? ", " : "") + "[" + std::to_string(img.width) + ", " + std::to_string(img.height) + "]";
-      for (const glm::vec4& v : img.texels) data.insert(data.end(), {v.x, v.y, v.z, v.w});
-    }
+    json += std::string(k ? ", " : "") + "{" + detail::textureJob(tex, data) + "}";
     detail::writeFloats(job / ("tex_" + std::to_string(k) + ".f32"), data.data(), data.size());
-    json += std::string(k ? ", " : "") + "{\"levels\": [" + levels + "], \"mag\": \"" + detail::webGpuFilter(tex.magFilter) +
-            "\", \"min\": \"" + detail::webGpuFilter(tex.minFilter) + "\", \"mip\": \"" +
-            detail::webGpuMipFilter(tex.mipFilter) + "\"}";
   }
   detail::writeTextFile(job / "job.json", json + "]}\n");
   static_assert(sizeof(ParityIO) == 16 * sizeof(float), "ParityIO is 16 packed floats");

@@ -1,0 +1,98 @@
+// The WebGL 2 parity runtime's browser side (include/snell/gpu/parity_webgl.hpp
+// writes the job and reads the results): serves parity_page.js and the job on
+// 127.0.0.1, starts one headless Chromium on that page, and writes what the
+// page posts back.
+//
+//   node run_parity.mjs JOB_DIR [CHROMIUM]
+//
+// JOB_DIR holds job.json ({count, columns, textures: [{uniform, levels:
+// [[w, h], ...], mag, min, mip}]}), shader.frag (ES 3.00, flattened),
+// inputs.f32 (16 floats per case) and tex_<k>.f32 (every level's RGBA32F
+// texels, level 0 first). Writes results.f32 (16 floats per case) and
+// renderer.txt. Any failure (no Chromium, no WebGL 2, a compile error, a
+// timeout) exits with status 1 and a message on stderr.
+import { spawn } from "node:child_process";
+import fs from "node:fs";
+import http from "node:http";
+import os from "node:os";
+import path from "node:path";
+import { fileURLToPath } from "node:url";
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const [dir, chromium = "chromium"] = process.argv.slice(2);
+// SwiftShader compiles a whole technique in tens of seconds; a page that says nothing for this long is stuck.
+const timeoutMs = Number(process.env.SNELL_WEBGL_TIMEOUT_MS ?? 600000);
+
+let browser = null;
+let profile = null;
+let finishing = false;
+// Chromium is killed and waited for before its profile folder is removed (its helper processes
+// still write there while they go down).
+function finish(status, message) {
+  if (finishing) return;
+  finishing = true;
+  if (message) console.error(`run_parity.mjs: ${message}`);
+  const done = () => {
+    try {
+      if (profile) fs.rmSync(profile, { recursive: true, force: true, maxRetries: 10, retryDelay: 100 });
+    } catch (e) {
+      console.error(`run_parity.mjs: cannot remove ${profile}: ${e.message}`);
+    }
+    process.exit(status);
+  };
+  if (browser && browser.exitCode === null && browser.signalCode === null) {
+    browser.once("exit", done);
+    browser.kill("SIGKILL");
+  } else {
+    done();
+  }
+}
+if (!dir) finish(1, "usage: run_parity.mjs JOB_DIR [CHROMIUM]");
+if (!fs.existsSync(path.join(dir, "job.json"))) finish(1, `no job.json in ${dir}`);
+
+const page = '<!doctype html><meta charset="utf-8"><title>snell parity</title><script type="module" src="/parity_page.js"></script>';
+const jobFiles = /^\/job\/(job\.json|shader\.frag|inputs\.f32|tex_\d+\.f32)$/;
+const server = http.createServer((req, res) => {
+  const body = [];
+  req.on("data", (d) => body.push(d));
+  req.on("end", () => {
+    const data = Buffer.concat(body);
+    let m;
+    if (req.method === "GET" && req.url === "/") {
+      res.writeHead(200, { "content-type": "text/html" }).end(page);
+    } else if (req.method === "GET" && req.url === "/parity_page.js") {
+      res.writeHead(200, { "content-type": "text/javascript" }).end(fs.readFileSync(path.join(here, "parity_page.js")));
+    } else if (req.method === "GET" && (m = jobFiles.exec(req.url))) {
+      res.writeHead(200, { "content-type": "application/octet-stream" }).end(fs.readFileSync(path.join(dir, m[1])));
+    } else if (req.method === "POST" && req.url === "/renderer") {
+      fs.writeFileSync(path.join(dir, "renderer.txt"), data.toString() + "\n");
+      res.end();
+    } else if (req.method === "POST" && req.url === "/results") {
+      fs.writeFileSync(path.join(dir, "results.f32"), data);
+      res.end();
+      server.close();
+      finish(0);
+    } else if (req.method === "POST" && req.url === "/error") {
+      res.end();
+      finish(1, data.toString());
+    } else {
+      res.writeHead(404).end();
+    }
+  });
+});
+
+server.listen(0, "127.0.0.1", () => {
+  const url = `http://127.0.0.1:${server.address().port}/`;
+  profile = fs.mkdtempSync(path.join(os.tmpdir(), "snell-webgl-"));
+  // SwiftShader through ANGLE: WebGL 2 with no GPU, the same on every machine.
+  const args = ["--headless=new", "--no-sandbox", "--no-first-run", "--no-default-browser-check", "--disable-extensions",
+    "--use-angle=swiftshader", "--enable-unsafe-swiftshader", `--user-data-dir=${profile}`, url];
+  let log = "";
+  browser = spawn(chromium, args, { stdio: ["ignore", "ignore", "pipe"] });
+  browser.stderr.on("data", (d) => { log = (log + d).slice(-4000); });
+  browser.on("error", (e) =>
+    finish(1, `cannot start ${chromium}: ${e.message} (install Debian's chromium: apt-get install chromium)`));
+  browser.on("exit", (code, signal) =>
+    finish(1, `Chromium exited (${signal ?? code}) before the page posted its results; its last output:\n${log}`));
+});
+setTimeout(() => finish(1, `no results after ${timeoutMs / 1000} s (SNELL_WEBGL_TIMEOUT_MS)`), timeoutMs).unref();
