@@ -373,11 +373,19 @@ SNELL_PARITY_CASE(snellSampleSurface, [] { return uvInputs(607, true); },
                   SnellDepthSurface s = planeParitySurface(sceneB, entries);
                   s.lod = lod;
                   s.depthFilter = depthFilter;
-                  SnellSurfaceSample x;
+                  SnellSurfaceSample x;  // no ?: on structs: WebGL rejects it
                   if (sceneB) {
-                    x = s.lod > 0 ? snellSampleSurface(planePyramidB, uv, s) : snellSampleSurface(planeDepthB, uv, s);
+                    if (s.lod > 0) {
+                      x = snellSampleSurface(planePyramidB, uv, s);
+                    } else {
+                      x = snellSampleSurface(planeDepthB, uv, s);
+                    }
                   } else {
-                    x = s.lod > 0 ? snellSampleSurface(planePyramidA, uv, s) : snellSampleSurface(planeDepthA, uv, s);
+                    if (s.lod > 0) {
+                      x = snellSampleSurface(planePyramidA, uv, s);
+                    } else {
+                      x = snellSampleSurface(planeDepthA, uv, s);
+                    }
                   }
                   viewZ = x.viewZ;
                   valid = x.valid;)

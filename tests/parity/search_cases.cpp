@@ -192,34 +192,42 @@ SNELL_PARITY_CASE(snellConservativeBinarySearch, [] { return rayInputs(Kind::Sea
                   SEARCH_HIT_OUT,
                   sampling(),
                   SnellDepthSurface s = searchParitySurface(sceneB, entries);
+                  SnellHit h;  // no ?: on structs: WebGL rejects it
                   if (sceneB) {
-                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
-                                              ? snellConservativeBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest)
-                                              : snellConservativeBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest,
-                                                                              int(option1)));
+                    if (option1 < 0.0f) {
+                      h = snellConservativeBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest);
+                    } else {
+                      h = snellConservativeBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest, int(option1));
+                    }
                   } else {
-                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
-                                              ? snellConservativeBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest)
-                                              : snellConservativeBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest,
-                                                                              int(option1)));
-                  })
+                    if (option1 < 0.0f) {
+                      h = snellConservativeBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest);
+                    } else {
+                      h = snellConservativeBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest, int(option1));
+                    }
+                  }
+                  SEARCH_PARITY_SET_HIT(h);)
 // option1 = steps.
 SNELL_PARITY_CASE(snellBinarySearch, [] { return rayInputs(Kind::Search, 43); },
                   SEARCH_RAY_IN,
                   SEARCH_HIT_OUT,
                   sampling(),
                   SnellDepthSurface s = searchParitySurface(sceneB, entries);
+                  SnellHit h;  // no ?: on structs: WebGL rejects it
                   if (sceneB) {
-                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
-                                              ? snellBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest)
-                                              : snellBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest,
-                                                                  int(option1)));
+                    if (option1 < 0.0f) {
+                      h = snellBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest);
+                    } else {
+                      h = snellBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest, int(option1));
+                    }
                   } else {
-                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
-                                              ? snellBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest)
-                                              : snellBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest,
-                                                                  int(option1)));
-                  })
+                    if (option1 < 0.0f) {
+                      h = snellBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest);
+                    } else {
+                      h = snellBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest, int(option1));
+                    }
+                  }
+                  SEARCH_PARITY_SET_HIT(h);)
 // option1 = steps, option2 = lo, option3 = hi; the hit so far is a miss (its uv
 // and position mark "not moved").
 SNELL_PARITY_CASE(snellBisectTexRay, bisectInputs,
@@ -230,8 +238,11 @@ SNELL_PARITY_CASE(snellBisectTexRay, bisectInputs,
                   SnellTexRay r = snellSearchSegment(origin, dir, zNearest, zFarthest, s.clipFromView);
                   SnellHit h = snellHitMiss(0);
                   if (r.valid) {
-                    h = sceneB ? snellBisectTexRay(r, searchTexSilhouette, s, option2, option3, int(option1), h)
-                               : snellBisectTexRay(r, searchTexSphere, s, option2, option3, int(option1), h);
+                    if (sceneB) {
+                      h = snellBisectTexRay(r, searchTexSilhouette, s, option2, option3, int(option1), h);
+                    } else {
+                      h = snellBisectTexRay(r, searchTexSphere, s, option2, option3, int(option1), h);
+                    }
                   }
                   SEARCH_PARITY_SET_HIT(h);)
 // option1 = linearSteps, option2 = binarySteps.
@@ -240,50 +251,62 @@ SNELL_PARITY_CASE(snellLinearBinarySearch, [] { return rayInputs(Kind::LinearSea
                   SEARCH_HIT_OUT,
                   sampling(),
                   SnellDepthSurface s = searchParitySurface(sceneB, entries);
+                  SnellHit h;  // no ?: on structs: WebGL rejects it
                   if (sceneB) {
-                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
-                                              ? snellLinearBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest)
-                                              : snellLinearBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest,
-                                                                        int(option1), int(option2)));
+                    if (option1 < 0.0f) {
+                      h = snellLinearBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest);
+                    } else {
+                      h = snellLinearBinarySearch(origin, dir, searchTexSilhouette, s, zNearest, zFarthest, int(option1), int(option2));
+                    }
                   } else {
-                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
-                                              ? snellLinearBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest)
-                                              : snellLinearBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest,
-                                                                        int(option1), int(option2)));
-                  })
+                    if (option1 < 0.0f) {
+                      h = snellLinearBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest);
+                    } else {
+                      h = snellLinearBinarySearch(origin, dir, searchTexSphere, s, zNearest, zFarthest, int(option1), int(option2));
+                    }
+                  }
+                  SEARCH_PARITY_SET_HIT(h);)
 // option1 = steps, option2 = refineSteps, option3 = maxDistance.
 SNELL_PARITY_CASE(snellLinearMarch, [] { return rayInputs(Kind::LinearMarch, 45); },
                   SEARCH_RAY_IN,
                   SEARCH_HIT_OUT,
                   sampling(),
                   SnellDepthSurface s = searchParitySurface(sceneB, entries);
+                  SnellHit h;  // no ?: on structs: WebGL rejects it
                   if (sceneB) {
-                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
-                                              ? snellLinearMarch(origin, dir, searchTexSilhouette, s)
-                                              : snellLinearMarch(origin, dir, searchTexSilhouette, s, option3, int(option1),
-                                                                 int(option2)));
+                    if (option1 < 0.0f) {
+                      h = snellLinearMarch(origin, dir, searchTexSilhouette, s);
+                    } else {
+                      h = snellLinearMarch(origin, dir, searchTexSilhouette, s, option3, int(option1), int(option2));
+                    }
                   } else {
-                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
-                                              ? snellLinearMarch(origin, dir, searchTexSphere, s)
-                                              : snellLinearMarch(origin, dir, searchTexSphere, s, option3, int(option1),
-                                                                 int(option2)));
-                  })
+                    if (option1 < 0.0f) {
+                      h = snellLinearMarch(origin, dir, searchTexSphere, s);
+                    } else {
+                      h = snellLinearMarch(origin, dir, searchTexSphere, s, option3, int(option1), int(option2));
+                    }
+                  }
+                  SEARCH_PARITY_SET_HIT(h);)
 // option1 = steps, option2 = stride, option3 = maxDistance, zNearest = thickness.
 SNELL_PARITY_CASE(snellDdaMarch, [] { return rayInputs(Kind::Dda, 46); },
                   SEARCH_RAY_IN,
                   SEARCH_HIT_OUT,
                   sampling(),
                   SnellDepthSurface s = searchParitySurface(sceneB, entries);
+                  SnellHit h;  // no ?: on structs: WebGL rejects it
                   if (sceneB) {
-                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
-                                              ? snellDdaMarch(origin, dir, searchTexSilhouette, s)
-                                              : snellDdaMarch(origin, dir, searchTexSilhouette, s, option3, zNearest, option2,
-                                                              int(option1)));
+                    if (option1 < 0.0f) {
+                      h = snellDdaMarch(origin, dir, searchTexSilhouette, s);
+                    } else {
+                      h = snellDdaMarch(origin, dir, searchTexSilhouette, s, option3, zNearest, option2, int(option1));
+                    }
                   } else {
-                    SEARCH_PARITY_SET_HIT(option1 < 0.0f
-                                              ? snellDdaMarch(origin, dir, searchTexSphere, s)
-                                              : snellDdaMarch(origin, dir, searchTexSphere, s, option3, zNearest, option2,
-                                                              int(option1)));
-                  })
+                    if (option1 < 0.0f) {
+                      h = snellDdaMarch(origin, dir, searchTexSphere, s);
+                    } else {
+                      h = snellDdaMarch(origin, dir, searchTexSphere, s, option3, zNearest, option2, int(option1));
+                    }
+                  }
+                  SEARCH_PARITY_SET_HIT(h);)
 
 }  // namespace parity_search

@@ -613,8 +613,12 @@ SNELL_PARITY_CASE(snellIce, iceInputs,
                   (vec3, refracted, 0, within(1e-5f, 1e-5f))(float, fresnel, 3, within(1e-5f, 1e-5f))
                   (vec3, reflected, 4, within(1e-5f, 1e-5f))(bool, valid, 7, exact),
                   {},
-                  SnellIce s = useDefaults ? snellIce(eye, frontNormal, backNormal)
-                                           : snellIce(eye, frontNormal, backNormal, weight, eta);
+                  SnellIce s;  // no ?: on structs: WebGL rejects it
+                  if (useDefaults) {
+                    s = snellIce(eye, frontNormal, backNormal);
+                  } else {
+                    s = snellIce(eye, frontNormal, backNormal, weight, eta);
+                  }
                   refracted = s.refracted;
                   fresnel = s.fresnel;
                   reflected = s.reflected;

@@ -337,8 +337,12 @@ SNELL_PARITY_CASE(snellDepthRangeFromPyramid, [] { return smallIntInputs(809, 0,
                   (float, zNearest, 0, within(1e-6f, 1e-6f))(float, zFarthest, 1, within(1e-6f, 1e-6f))
                   (bool, valid, 2, exact),
                   techExtras(),
-                  SnellDepthRange r = toScene ? snellDepthRangeFromPyramid(techScenePyramid)
-                                              : snellDepthRangeFromPyramid(techBackPyramid);
+                  SnellDepthRange r;  // no ?: on structs: WebGL rejects it
+                  if (toScene) {
+                    r = snellDepthRangeFromPyramid(techScenePyramid);
+                  } else {
+                    r = snellDepthRangeFromPyramid(techBackPyramid);
+                  }
                   zNearest = r.zNearest;
                   zFarthest = r.zFarthest;
                   valid = r.valid;)

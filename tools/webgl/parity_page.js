@@ -21,6 +21,7 @@ async function run() {
   if (linear && !gl.getExtension("OES_texture_float_linear"))
     throw new Error("no OES_texture_float_linear, which a LINEAR RGBA32F texture needs");
 
+  const compileStarted = performance.now();
   const compile = (type, text, what) => {
     const s = gl.createShader(type);
     gl.shaderSource(s, text);
@@ -38,6 +39,7 @@ async function run() {
   gl.linkProgram(program);
   if (!gl.getProgramParameter(program, gl.LINK_STATUS)) throw new Error(`the program does not link:\n${gl.getProgramInfoLog(program)}`);
   gl.useProgram(program);
+  if (gl.isContextLost()) throw new Error("the WebGL context was lost while compiling the case's shader");
 
   const columns = job.columns;
   const rows = Math.max(1, Math.ceil(job.count / columns));
@@ -97,17 +99,27 @@ async function run() {
   gl.viewport(0, 0, columns, rows);
   gl.disable(gl.BLEND);
   gl.disable(gl.DITHER);
-  gl.drawArrays(gl.TRIANGLES, 0, 3);
+  gl.enable(gl.SCISSOR_TEST);
 
+  // One row of cases per draw, each read back before the next: a single draw of a whole technique over
+  // every case outlasts Chromium's GPU watchdog, which then loses the context.
   const results = new Float32Array(16 * job.count);
-  const plane = new Float32Array(4 * columns * rows);
-  for (let a = 0; a < 4; ++a) {
-    gl.readBuffer(gl.COLOR_ATTACHMENT0 + a);
-    gl.readPixels(0, 0, columns, rows, gl.RGBA, gl.FLOAT, plane);
-    for (let i = 0; i < job.count; ++i) results.set(plane.subarray(4 * i, 4 * i + 4), 16 * i + 4 * a);
+  const row = new Float32Array(4 * columns);
+  const started = performance.now();
+  for (let y = 0; y < rows; ++y) {
+    gl.scissor(0, y, columns, 1);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+    for (let a = 0; a < 4; ++a) {
+      gl.readBuffer(gl.COLOR_ATTACHMENT0 + a);
+      gl.readPixels(0, y, columns, 1, gl.RGBA, gl.FLOAT, row);
+      for (let x = 0, i = y * columns; x < columns && i < job.count; ++x, ++i)
+        results.set(row.subarray(4 * x, 4 * x + 4), 16 * i + 4 * a);
+    }
+    if (gl.isContextLost()) throw new Error(`the WebGL context was lost at row ${y} of ${rows}`);
   }
   const error = gl.getError();
   if (error !== gl.NO_ERROR) throw new Error(`WebGL error 0x${error.toString(16)}`);
+  await post("/log", `compile and link ${(started - compileStarted).toFixed(0)} ms, ${rows} draws ${(performance.now() - started).toFixed(0)} ms`);
   await post("/results", results);
 }
 

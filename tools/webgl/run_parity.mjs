@@ -40,12 +40,16 @@ function finish(status, message) {
     }
     process.exit(status);
   };
-  if (browser && browser.exitCode === null && browser.signalCode === null) {
-    browser.once("exit", done);
-    browser.kill("SIGKILL");
-  } else {
-    done();
+  if (browser) {
+    // The whole process group: Chromium's GPU and renderer processes outlive a killed browser process.
+    try {
+      process.kill(-browser.pid, "SIGKILL");
+    } catch {
+      // already gone
+    }
   }
+  if (browser && browser.exitCode === null && browser.signalCode === null) browser.once("exit", () => setTimeout(done, 50));
+  else done();
 }
 if (!dir) finish(1, "usage: run_parity.mjs JOB_DIR [CHROMIUM]");
 if (!fs.existsSync(path.join(dir, "job.json"))) finish(1, `no job.json in ${dir}`);
@@ -66,6 +70,9 @@ const server = http.createServer((req, res) => {
       res.writeHead(200, { "content-type": "application/octet-stream" }).end(fs.readFileSync(path.join(dir, m[1])));
     } else if (req.method === "POST" && req.url === "/renderer") {
       fs.writeFileSync(path.join(dir, "renderer.txt"), data.toString() + "\n");
+      res.end();
+    } else if (req.method === "POST" && req.url === "/log") {
+      fs.writeFileSync(path.join(dir, "timing.txt"), data.toString() + "\n");
       res.end();
     } else if (req.method === "POST" && req.url === "/results") {
       fs.writeFileSync(path.join(dir, "results.f32"), data);
@@ -88,8 +95,13 @@ server.listen(0, "127.0.0.1", () => {
   const args = ["--headless=new", "--no-sandbox", "--no-first-run", "--no-default-browser-check", "--disable-extensions",
     "--use-angle=swiftshader", "--enable-unsafe-swiftshader", `--user-data-dir=${profile}`, url];
   let log = "";
-  browser = spawn(chromium, args, { stdio: ["ignore", "ignore", "pipe"] });
-  browser.stderr.on("data", (d) => { log = (log + d).slice(-4000); });
+  browser = spawn(chromium, args, { stdio: ["ignore", "ignore", "pipe"], detached: true });
+  browser.stderr.on("data", (d) => {
+    log = (log + d).slice(-4000);
+    // A crashed GPU process loses the page's context; the page may not learn of it before it reads back.
+    if (/GPU process exited unexpectedly/.test(log))
+      finish(1, `Chromium's GPU process crashed running the case's shader; its last output:\n${log.split("\n").filter((l) => !/dbus/.test(l)).join("\n")}`);
+  });
   browser.on("error", (e) =>
     finish(1, `cannot start ${chromium}: ${e.message} (install Debian's chromium: apt-get install chromium)`));
   browser.on("exit", (code, signal) =>

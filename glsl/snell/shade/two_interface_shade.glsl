@@ -182,53 +182,58 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
                                                              SNELL_IN(SnellView) v) {
   bool three = m.dispersion == 3;
   float eta = snellIorToEta(m.iorOutside, three ? m.iors.y : m.ior);
-  SnellTwoInterfacePath p =
-      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
-  // A path that left through a front face is resolved by the reflect slot (an if: WebGL rejects ?: on
-  // structs).
-  SnellSlot leave = t.exit;
-  if (p.exitFront) {
-    leave = t.reflect;
-  }
-  SnellTwoInterfaceExit e =
-      snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, leave, m, v);
-  vec3 transmitted = e.color * snellBeerLambert(m.absorption, p.pathLength);
   SnellTwoInterfaceResult r;
-  r.exitPoint = p.exitPoint;
-  r.exitDirection = p.exitDirection;
-  r.exitHit = e.hit;
   r.reflectionHit = snellHitMiss(0);
-  r.pathLength = p.pathLength;
   r.fresnel = 0.0f;
-  r.fetches = p.fetches + e.fetches;
-  r.backHit = p.hit;
-  // A path that left through a front face sees the environment where the reflect slot finds no scene, as
-  // the first surface's reflection does: not a fallback.
-  r.fellBack = p.fellBack || (e.fellBack && !p.exitFront) || !p.valid;
-  r.tir = p.tir;
-  r.bounces = p.bounces;
-  if (three) {
-    SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.x),
-                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
-    SnellSlot leaveR = t.exit;
-    if (pr.exitFront) {
-      leaveR = t.reflect;
+  vec3 transmitted = vec3(0.0f, 0.0f, 0.0f);
+  // The green (or only) channel's path gives every field; with dispersion, red and blue follow their own
+  // paths for their colour. One loop, not three copies of the trace: WebGL 2 on SwiftShader runs out of
+  // shader stack with three, and every browser compiles a third of the code.
+  int channels = three ? 3 : 1;
+  for (int k = 0; k < 3; ++k) {
+    if (k >= channels) {
+      break;
     }
-    SnellTwoInterfaceExit er =
-        snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, SNELL_SCENE_BUFFER_ARGS, leaveR, m, v);
-    SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.z),
-                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
-    SnellSlot leaveB = t.exit;
-    if (pb.exitFront) {
-      leaveB = t.reflect;
+    float etaK = eta;
+    if (k == 1) {
+      etaK = snellIorToEta(m.iorOutside, m.iors.x);
+    } else if (k == 2) {
+      etaK = snellIorToEta(m.iorOutside, m.iors.z);
     }
-    SnellTwoInterfaceExit eb =
-        snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, SNELL_SCENE_BUFFER_ARGS, leaveB, m, v);
-    transmitted.x = er.color.x * snellBeerLambert(m.absorption, pr.pathLength).x;
-    transmitted.z = eb.color.z * snellBeerLambert(m.absorption, pb.pathLength).z;
-    r.fetches = r.fetches + pr.fetches + er.fetches + pb.fetches + eb.fetches;
-    r.fellBack = r.fellBack || pr.fellBack || (er.fellBack && !pr.exitFront) || pb.fellBack ||
-                 (eb.fellBack && !pb.exitFront);
+    SnellTwoInterfacePath p =
+        snellTwoInterfaceTrace(frontPosition, frontNormal, etaK, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
+    // A path that left through a front face is resolved by the reflect slot (an if: WebGL rejects ?: on
+    // structs).
+    SnellSlot leave = t.exit;
+    if (p.exitFront) {
+      leave = t.reflect;
+    }
+    SnellTwoInterfaceExit e =
+        snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, leave, m, v);
+    vec3 c = e.color * snellBeerLambert(m.absorption, p.pathLength);
+    // Where the reflect slot finds no scene after a front-face exit, the environment is what is there,
+    // as for the first surface's reflection: not a fallback.
+    bool fellBack = p.fellBack || (e.fellBack && !p.exitFront);
+    if (k == 0) {
+      transmitted = c;
+      r.exitPoint = p.exitPoint;
+      r.exitDirection = p.exitDirection;
+      r.exitHit = e.hit;
+      r.pathLength = p.pathLength;
+      r.fetches = p.fetches + e.fetches;
+      r.backHit = p.hit;
+      r.fellBack = fellBack || !p.valid;
+      r.tir = p.tir;
+      r.bounces = p.bounces;
+    } else {
+      if (k == 1) {
+        transmitted.x = c.x;
+      } else {
+        transmitted.z = c.z;
+      }
+      r.fetches = r.fetches + p.fetches + e.fetches;
+      r.fellBack = r.fellBack || fellBack;
+    }
   }
   r.color = transmitted;
   vec3 vv = snellSafeNormalize(frontPosition);
