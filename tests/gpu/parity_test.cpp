@@ -194,6 +194,32 @@ TEST(CompareParity, ContinuousTolerance) {
   EXPECT_EQ(compareParity({io({1.0f, 100.0f, 0.0f, 1e-7f}, glm::vec4(5.0f))}, cpu, 0, 5, 0.0f, 0.0f).mismatches, 1u);
 }
 
+// A runtime that flushed a denormal input matches the C++ result on the flushed input: counted apart,
+// not a mismatch; a result that matches neither is one, and names both C++ results.
+TEST(CompareParity, FlushedDenormalInputs) {
+  const ParityIO in = io(glm::vec4(1e-39f, 2.0f, -1e-40f, 0.0f));
+  ASSERT_TRUE(snell::gpu::hasDenormal(in));
+  const ParityIO flushed = snell::gpu::flushDenormals(in);
+  EXPECT_EQ(flushed.v[0].x, 0.0f);
+  EXPECT_TRUE(std::signbit(flushed.v[0].z));
+  EXPECT_EQ(flushed.v[0].y, 2.0f);
+  EXPECT_FALSE(snell::gpu::hasDenormal(flushed));
+  // The "function": x / 1e-38 (a denormal scaled up into a normal result).
+  const std::vector<ParityIO> cpu = {io(glm::vec4(in.v[0].x / 1e-38f))}, cpuFlushed = {io(glm::vec4(flushed.v[0].x / 1e-38f))};
+  const std::vector<ParityIO> inputs = {in};
+  auto r = compareParity({io(glm::vec4(0.0f))}, cpu, {{0, "q", false, 1e-6f, 1e-6f}}, &inputs, &cpuFlushed);
+  EXPECT_EQ(r.mismatches, 0u);
+  EXPECT_EQ(r.flushedMatches, 1u);
+  r = compareParity({io(glm::vec4(0.1f))}, cpu, {{0, "q", false, 1e-6f, 1e-6f}}, &inputs, &cpuFlushed);
+  EXPECT_EQ(r.mismatches, 0u);
+  EXPECT_EQ(r.flushedMatches, 0u);
+  r = compareParity({io(glm::vec4(0.05f))}, cpu, {{0, "q", false, 1e-6f, 1e-6f}}, &inputs, &cpuFlushed);
+  EXPECT_EQ(r.mismatches, 1u);
+  EXPECT_NE(r.firstMismatchText.find("on the flushed inputs"), std::string::npos) << r.firstMismatchText;
+  // Without the flushed results the flushing runtime mismatches.
+  EXPECT_EQ(compareParity({io(glm::vec4(0.0f))}, cpu, {{0, "q", false, 1e-6f, 1e-6f}}, &inputs).mismatches, 1u);
+}
+
 TEST(CompareParity, DiscreteOutputsMustBeEqual) {
   const std::vector<ParityIO> cpu = {io({0.5f, 1.0f, 0.0f, 0.0f}), io({0.5f, 0.0f, 3.0f, 0.0f})};
   // Output 1 is a flag, output 2 a step count: discrete mask 0b0110.

@@ -446,13 +446,18 @@ SNELL_PARITY_CASE(snellTexRayAlpha, [] { return texRayInputs(314); },
                   valid = r.valid;)
 // uv = t's + alpha dt inherits t's and dt of the setup: abs 1e-4 as there. For pz
 // near the eye alpha is huge (1e17 for pz = -1e-30) and multiplies the rounding
-// of dt = t'e - t's, a cancelling difference: relative 1e-4 (seen: 1.5e-5).
+// of dt = t'e - t's, a cancelling difference: relative 1e-4 (seen: 1.5e-5 where
+// division is correctly rounded), plus 4e-7 |alpha| (|t's| + |t'e|), what a
+// division within GLSL ES's 2.5 ulp (SwiftShader's) can add to dt, times alpha
+// (`condition`, reported for it).
 SNELL_PARITY_CASE(snellTexRayUv, [] { return texRayInputs(316); },
                   CAMERA_TEX_RAY_IN,
-                  (vec2, uv, 0, within(1e-4f, 1e-4f))(bool, valid, 2, exact),
+                  (vec2, uv, 0, within(1e-4f, 1e-4f, 4e-7f, 3))(bool, valid, 2, exact)
+                  (vec2, condition, 3, within(1e-4f, 1e-3f)),
                   {},
                   SnellTexRay r = cameraParityTexRay(camera, convention, p1, t1, zNearest, zFarthest);
                   uv = snellTexRayUv(r, pz);
-                  valid = r.valid;)
+                  valid = r.valid;
+                  condition = abs(snellTexRayAlpha(r, pz)) * (abs(r.ts) + abs(r.ts + r.dt));)
 
 }  // namespace parity_camera

@@ -34,7 +34,9 @@
 // (float k is v[k / 4][k % 4]); inputs may not overlap, nor may outputs.
 // Outputs: `exact` (bools, ints, texel indices, flags: equal, NaN == NaN) or
 // `within(abs, rel)` (|gpu - cpu| <= abs + rel |cpu|; NaN and inf matched
-// exactly). The body may not contain preprocessor lines (it is one macro
+// exactly), or `within(abs, rel, scaled, first)`: plus scaled times the C++
+// value of the output floats from `first` (component by component), for an
+// ill-conditioned output whose condition the case also outputs. The body may not contain preprocessor lines (it is one macro
 // argument); helpers, textures and macros shared by a family's cases live in
 // its cases/<family>.glsl (a macro defined only in the .cpp compiles in C++
 // and fails on the GPU, which sees the body unexpanded, on one line). Names
@@ -195,7 +197,9 @@ inline CaseSpec describeCase(const char* function, const char* caseFile,
   place(outs, outNames, "output");
   for (const CaseVar& v : outs)
     for (int k = v.first; k < v.first + caseTypeWidth(v.type) && k < 16; ++k)
-      if (k >= 0) c.outputs.push_back({k, outNames[k], v.check.exact, v.check.abs, v.check.rel});
+      if (k >= 0)
+        c.outputs.push_back({k, outNames[k], v.check.exact, v.check.abs, v.check.rel, v.check.scaled,
+                             v.check.scaleFirst < 0 ? -1 : v.check.scaleFirst + (k - v.first)});
   // A name selects all its floats, name.x (.y, .z, .w) one of them.
   auto mask = [&](const std::vector<std::string>& names, const std::string (&slots)[16]) {
     std::uint16_t m = 0;
@@ -214,8 +218,10 @@ inline CaseSpec describeCase(const char* function, const char* caseFile,
     const std::string t = v.type;
     if (!v.check.exact && (t == "bool" || t == "int" || t == "ivec2"))
       error += std::string("output ") + v.name + ": a " + t + " is compared exactly, not within a tolerance; ";
-    if (!v.check.exact && !(v.check.abs >= 0.0f && v.check.rel >= 0.0f))
+    if (!v.check.exact && !(v.check.abs >= 0.0f && v.check.rel >= 0.0f && v.check.scaled >= 0.0f))
       error += std::string("output ") + v.name + ": tolerances must be >= 0; ";
+    if (v.check.scaleFirst >= 0 && (v.check.scaleFirst + caseTypeWidth(v.type) > 16 || outNames[v.check.scaleFirst].empty()))
+      error += std::string("output ") + v.name + ": its scale reads floats no output covers; ";
   }
   for (const std::vector<CaseVar>* vars : {&ins, &outs})
     for (const CaseVar& v : *vars)

@@ -22,14 +22,21 @@ namespace snell_parity {
 using snell::gpu::ParityIO;
 
 // How an output float is compared (snell::gpu::ParityOutput): exactly, or
-// within |gpu - cpu| <= abs + rel * |cpu|.
+// within |gpu - cpu| <= abs + rel * |cpu| (+ scaled * |cpu of the output's
+// float at scaleFirst + its component|, for an output whose conditioning the
+// case reports as another output).
 struct Check {
   bool exact;
   float abs, rel;
+  float scaled = 0.0f;
+  int scaleFirst = -1;
 };
 namespace checks {
 inline constexpr Check exact{true, 0.0f, 0.0f};
 constexpr Check within(float abs, float rel) { return Check{false, abs, rel}; }
+constexpr Check within(float abs, float rel, float scaled, int scaleFirst) {
+  return Check{false, abs, rel, scaled, scaleFirst};
+}
 }  // namespace checks
 
 // A documented exception to "every output is finite" (the property tests): a

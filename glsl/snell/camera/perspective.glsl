@@ -25,7 +25,8 @@ contract: with A = 1 / (aspect tan(fovy/2)), B = 1 / tan(fovy/2), the matrix map
   snellClipToNdc and friends report valid = false) when fovy is not in (0, pi),
   tan(fovy/2) is not finite positive, aspect or zNear are not finite positive,
   zFar is not finite or not > zNear (finite conventions), the convention is
-  unknown, or an entry would overflow or be denormal (a GPU may flush it to 0).
+  unknown, or an entry would overflow or be denormal (a GPU may flush it to 0);
+  a denormal fovy or aspect counts as 0.
   GL is the convention of the paper's equations (Oliveira & Brauwers 2007, sec.
   3.2.1: "the projection matrix used by OpenGL", clip w = -z).
 source: GLM 0.9.9 ext/matrix_clip_space.inl (perspectiveRH_NO, perspectiveRH_ZO,
@@ -41,7 +42,7 @@ SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, f
   mat4 zero = SNELL_CAMERA_MAT4_COLUMNS(zero4, zero4, zero4, zero4);
   bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
   if (convention < 0 || convention >= SNELL_DEPTH_CONVENTION_COUNT || !SNELL_FINITE(fovy) ||
-      !(fovy > 0.0f) || !(fovy < SNELL_PI) || !SNELL_FINITE(aspect) || !(aspect > 0.0f) ||
+      !(fovy >= SNELL_FLT_MIN) || !(fovy < SNELL_PI) || !SNELL_FINITE(aspect) || !(aspect >= SNELL_FLT_MIN) ||
       !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
     return zero;
   }

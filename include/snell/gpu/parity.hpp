@@ -205,11 +205,31 @@ inline std::vector<ParityIO> runParityGpu(const Context& ctx, const std::vector<
 // Counts are per case: a case mismatches if any of its outputs does.
 struct ParityReport {
   std::size_t cases = 0, mismatches = 0;
+  // Cases that matched only the C++ result on their inputs with denormals flushed to 0 (see
+  // flushDenormals): the runtime flushed a denormal input.
+  std::size_t flushedMatches = 0;
   float maxAbs = 0, maxRel = 0;  // over finite continuous outputs; maxRel only where |cpu| > absTol
   std::size_t firstMismatch = SIZE_MAX;
   std::string firstMismatchText;
   bool ok() const { return mismatches == 0; }
 };
+
+// The prelude's rule for data (positions, directions, matrix entries): a runtime may flush a
+// denormal to 0 (SwiftShader, most GPUs) or keep it (llvmpipe, the CPU), and the result is the
+// function's on either. The input with every denormal replaced by a zero of its sign.
+inline ParityIO flushDenormals(const ParityIO& in) {
+  ParityIO r = in;
+  for (glm::vec4& v : r.v)
+    for (int k = 0; k < 4; ++k)
+      if (v[k] != 0.0f && std::fabs(v[k]) < 1.175494351e-38f) v[k] = std::copysign(0.0f, v[k]);
+  return r;
+}
+inline bool hasDenormal(const ParityIO& in) {
+  for (const glm::vec4& v : in.v)
+    for (int k = 0; k < 4; ++k)
+      if (v[k] != 0.0f && std::fabs(v[k]) < 1.175494351e-38f) return true;
+  return false;
+}
 
 namespace detail {
 inline std::string formatFloat(float f) {
@@ -236,55 +256,100 @@ struct ParityOutput {
   std::string name;
   bool exact = false;
   float abs = 0.0f, rel = 0.0f;
+  // An ill-conditioned output's tolerance grows by scaled * |cpu float scaleIndex| (another output
+  // of the case that measures the conditioning); scaleIndex -1: none.
+  float scaled = 0.0f;
+  int scaleIndex = -1;
 };
 
+namespace detail {
+// One output of one case: whether it matches, its |diff| (finite continuous outputs, else -1) and,
+// for a mismatch, why.
+inline bool parityOutputMatches(float g, const ParityIO& cpu, const ParityOutput& o, float& diff, std::string& why) {
+  const float c = cpu.v[o.index / 4][o.index % 4];
+  diff = -1.0f;
+  if (std::isnan(g) || std::isnan(c)) return std::isnan(g) && std::isnan(c);
+  if (o.exact || std::isinf(g) || std::isinf(c)) return g == c;
+  diff = std::fabs(g - c);
+  float tol = o.abs + o.rel * std::fabs(c);
+  if (o.scaleIndex >= 0) tol += o.scaled * std::fabs(cpu.v[o.scaleIndex / 4][o.scaleIndex % 4]);
+  why = " (|diff| " + formatFloat(diff) + " > tol " + formatFloat(tol) + ")";
+  return diff <= tol;
+}
+}  // namespace detail
+
 // Compares the listed output floats of every case. `inputs`, if given, are
-// printed with the first mismatch.
+// printed with the first mismatch. `cpuFlushed`, if given, is the C++ result on
+// each input with its denormals flushed (flushDenormals): a case that does not
+// match `cpu` but matches it in every output counts in flushedMatches, not as
+// a mismatch.
 inline ParityReport compareParity(const std::vector<ParityIO>& gpu, const std::vector<ParityIO>& cpu,
                                   const std::vector<ParityOutput>& outputs,
-                                  const std::vector<ParityIO>* inputs = nullptr) {
+                                  const std::vector<ParityIO>* inputs = nullptr,
+                                  const std::vector<ParityIO>* cpuFlushed = nullptr) {
   if (gpu.size() != cpu.size())
     throw std::invalid_argument("compareParity: " + std::to_string(gpu.size()) + " GPU results but " +
                                 std::to_string(cpu.size()) + " CPU results");
   for (const ParityOutput& o : outputs)
-    if (o.index < 0 || o.index > 15) throw std::invalid_argument("compareParity: output index must be in 0..15");
+    if (o.index < 0 || o.index > 15 || o.scaleIndex < -1 || o.scaleIndex > 15)
+      throw std::invalid_argument("compareParity: output and scale indices must be in 0..15");
   if (inputs && inputs->size() != gpu.size())
     throw std::invalid_argument("compareParity: inputs and results differ in count");
+  if (cpuFlushed && cpuFlushed->size() != gpu.size())
+    throw std::invalid_argument("compareParity: flushed-input results and results differ in count");
   ParityReport r;
   r.cases = gpu.size();
+  // Whether case i matches `ref` in every output; its largest differences go to maxAbs/maxRel.
+  auto caseMatches = [&](std::size_t i, const ParityIO& ref, float& maxAbs, float& maxRel) {
+    bool all = true;
+    for (const ParityOutput& o : outputs) {
+      const int k = o.index;
+      float diff = 0.0f;
+      std::string why;
+      const float c = ref.v[k / 4][k % 4];
+      all = detail::parityOutputMatches(gpu[i].v[k / 4][k % 4], ref, o, diff, why) && all;
+      if (diff >= 0.0f) {
+        maxAbs = std::max(maxAbs, diff);
+        if (std::fabs(c) > o.abs) maxRel = std::max(maxRel, diff / std::fabs(c));
+      }
+    }
+    return all;
+  };
   for (std::size_t i = 0; i < gpu.size(); ++i) {
-    bool caseBad = false;
+    float a = 0.0f, rel = 0.0f;
+    if (caseMatches(i, cpu[i], a, rel)) {
+      r.maxAbs = std::max(r.maxAbs, a);
+      r.maxRel = std::max(r.maxRel, rel);
+      continue;
+    }
+    float fa = 0.0f, frel = 0.0f;
+    if (cpuFlushed && caseMatches(i, (*cpuFlushed)[i], fa, frel)) {
+      ++r.flushedMatches;
+      r.maxAbs = std::max(r.maxAbs, fa);
+      r.maxRel = std::max(r.maxRel, frel);
+      continue;
+    }
+    r.maxAbs = std::max(r.maxAbs, a);
+    r.maxRel = std::max(r.maxRel, rel);
+    ++r.mismatches;
+    if (r.firstMismatch != SIZE_MAX) continue;
     for (const ParityOutput& o : outputs) {
       const int k = o.index;
       const float g = gpu[i].v[k / 4][k % 4];
       const float c = cpu[i].v[k / 4][k % 4];
-      bool good;
+      float diff = 0.0f;
       std::string why;
-      if (std::isnan(g) || std::isnan(c)) {
-        good = std::isnan(g) && std::isnan(c);
-      } else if (o.exact || std::isinf(g) || std::isinf(c)) {
-        good = g == c;
-      } else {
-        const float diff = std::fabs(g - c);
-        const float tol = o.abs + o.rel * std::fabs(c);
-        good = diff <= tol;
-        r.maxAbs = std::max(r.maxAbs, diff);
-        if (std::fabs(c) > o.abs) r.maxRel = std::max(r.maxRel, diff / std::fabs(c));
-        why = " (|diff| " + detail::formatFloat(diff) + " > tol " + detail::formatFloat(tol) + ")";
-      }
-      if (good) continue;
-      if (!caseBad && r.firstMismatch == SIZE_MAX) {
-        r.firstMismatch = i;
-        r.firstMismatchText = "case " + std::to_string(i) + ", output " + std::to_string(k) +
-                              (o.name.empty() ? std::string() : " '" + o.name + "'") + " (v[" +
-                              std::to_string(k / 4) + "]." + "xyzw"[k % 4] + ", " + (o.exact ? "discrete" : "continuous") +
-                              "): gpu " + detail::formatFloat(g) + ", cpu " + detail::formatFloat(c) + why;
-        if (inputs) r.firstMismatchText += "; inputs " + detail::formatIO((*inputs)[i]);
-        r.firstMismatchText += "; gpu outputs " + detail::formatIO(gpu[i]) + ", cpu outputs " + detail::formatIO(cpu[i]);
-      }
-      caseBad = true;
+      if (detail::parityOutputMatches(g, cpu[i], o, diff, why)) continue;
+      r.firstMismatch = i;
+      r.firstMismatchText = "case " + std::to_string(i) + ", output " + std::to_string(k) +
+                            (o.name.empty() ? std::string() : " '" + o.name + "'") + " (v[" + std::to_string(k / 4) +
+                            "]." + "xyzw"[k % 4] + ", " + (o.exact ? "discrete" : "continuous") + "): gpu " +
+                            detail::formatFloat(g) + ", cpu " + detail::formatFloat(c) + (diff >= 0.0f ? why : "");
+      if (inputs) r.firstMismatchText += "; inputs " + detail::formatIO((*inputs)[i]);
+      r.firstMismatchText += "; gpu outputs " + detail::formatIO(gpu[i]) + ", cpu outputs " + detail::formatIO(cpu[i]);
+      if (cpuFlushed) r.firstMismatchText += ", cpu outputs on the flushed inputs " + detail::formatIO((*cpuFlushed)[i]);
+      break;
     }
-    if (caseBad) ++r.mismatches;
   }
   return r;
 }
