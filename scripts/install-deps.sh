@@ -15,13 +15,14 @@ packages=(
   libspng-dev libjpeg62-turbo-dev libopenexr-dev  # the lab's image decoders (PNG, JPEG, OpenEXR)
   clang-14 libclang-rt-14-dev valgrind  # libFuzzer targets (tests/fuzz), the GPU leak check
   apngasm                         # the gallery's animated PNGs (scripts/gallery.sh)
+  chromium                        # headless: the WebGL 2 parity runs (SwiftShader, no GPU)
 )
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-# Node.js and npm install the WebGPU runtime's packages (any Node.js that has npm: Debian's, or one
-# that bundles npm).
+# Node.js and npm install the WebGPU runtime's packages and serve the WebGL 2 runtime's page (any
+# Node.js that has npm: Debian's, or one that bundles npm).
 command -v npm > /dev/null || missing+=(nodejs npm)
 if [ ${#missing[@]} -eq 0 ]; then
   echo "snell: all build dependencies are installed"

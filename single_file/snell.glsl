@@ -169,8 +169,13 @@ contract: macros only.
 #  define SNELL_FLT_MAX 3.402823466e38f
 #endif
 /* Smallest normal float. Divisors and "positive" tests use it instead of 0:
-   GPUs may flush denormals to zero, so a denormal input is treated as 0 in
-   every language (same flags on CPU and GPU). */
+   GPUs may flush denormals to zero, so a denormal parameter whose contract says so
+   (eta, zNear, fovy, aspect, clip w, ...) is treated as 0 in every
+   language (same flags on CPU and GPU). Denormal data (positions, directions,
+   matrix entries) is not flushed, which would cost every call: a runtime that
+   flushes (SwiftShader, most GPUs) gives the function's result on 0 there, one
+   that keeps it (llvmpipe, the CPU) the result on the denormal, and the parity
+   suite accepts either (and counts the cases: "flushed="). */
 #define SNELL_FLT_MIN 1.175494351e-38f
 /* True when the float x is neither NaN nor +-Inf. C++: std::isfinite, the
    same answer in one test instead of two (7 % of a plane ray's
@@ -964,7 +969,7 @@ contract (v = view distance, d = depth value, n = zNear, f = zFar):
   - snellLinearizeDepth returns 0.0f (never a valid distance, every valid one is
     >= n > 0) when: depthValue is NaN, zNear is not a finite positive number, zFar
     is not finite or not > zNear (finite conventions only), or the convention is
-    unknown. A denormal zNear counts as 0 (GPUs may flush it).
+    unknown. A denormal zNear or depthValue counts as 0 (GPUs may flush it).
   - snellDelinearizeDepth returns a value in [0,1]; the distance is clamped into
     [n, f] (finite conventions) or [n, +inf) first, so points nearer than the near
     plane, at or behind the camera (v <= 0), give the near-plane value and points
@@ -1001,7 +1006,7 @@ SNELL_FN_INLINE float snellLinearizeDepth(float depthValue, float zNear, float z
   } else if (convention == SNELL_DEPTH_INFINITE_GL) {
     v = d < 1.0f ? zNear / (1.0f - d) : SNELL_FLT_MAX;
   } else if (convention == SNELL_DEPTH_INFINITE_REVERSED) {
-    v = d > 0.0f ? zNear / d : SNELL_FLT_MAX;
+    v = d >= SNELL_FLT_MIN ? zNear / d : SNELL_FLT_MAX;  // a denormal depth is 0, the far plane
   } else {
     return 0.0f;
   }
@@ -1102,11 +1107,15 @@ contract: with A = 1 / (aspect tan(fovy/2)), B = 1 / tan(fovy/2), the matrix map
   The window depth each one produces is the one of linearize_depth.glsl.
   The inverse maps (xc, yc, zc, wc) to (xc/A, yc/B, -wc, (zc + C wc)/D) exactly
   (no general 4x4 inversion; HLSL has none).
+  tan(fovy/2) is snell's own polynomial (Cephes tanf), within 1.7e-7 relative of
+  tan on (0, pi/2) and the same on every runtime: glm::perspective's entries A
+  and B are matched within 3 ulp, the others bit for bit.
   All three return the zero matrix (every projected point then has w = 0, so
   snellClipToNdc and friends report valid = false) when fovy is not in (0, pi),
   tan(fovy/2) is not finite positive, aspect or zNear are not finite positive,
   zFar is not finite or not > zNear (finite conventions), the convention is
-  unknown, or an entry would overflow or be denormal (a GPU may flush it to 0).
+  unknown, or an entry would overflow or be denormal (a GPU may flush it to 0);
+  a denormal fovy or aspect counts as 0.
   GL is the convention of the paper's equations (Oliveira & Brauwers 2007, sec.
   3.2.1: "the projection matrix used by OpenGL", clip w = -z).
 source: GLM 0.9.9 ext/matrix_clip_space.inl (perspectiveRH_NO, perspectiveRH_ZO,
@@ -1122,18 +1131,31 @@ SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, f
   mat4 zero = SNELL_CAMERA_MAT4_COLUMNS(zero4, zero4, zero4, zero4);
   bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
   if (convention < 0 || convention >= SNELL_DEPTH_CONVENTION_COUNT || !SNELL_FINITE(fovy) ||
-      !(fovy > 0.0f) || !(fovy < SNELL_PI) || !SNELL_FINITE(aspect) || !(aspect > 0.0f) ||
+      !(fovy >= SNELL_FLT_MIN) || !(fovy < SNELL_PI) || !SNELL_FINITE(aspect) || !(aspect >= SNELL_FLT_MIN) ||
       !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
     return zero;
   }
   if (!infinite && (!SNELL_FINITE(zFar) || !(zFar > zNear))) {
     return zero;
   }
-  float tanHalfFovy = tan(fovy / 2.0f);
+  // tan(fovy / 2) by snell's own polynomial, not tan(): GLSL leaves tan's precision to the
+  // implementation, and WebGL 2 on SwiftShader is 6e-5 off, more than a projection can afford.
+  // Cephes' tanf (S. L. Moshier): the polynomial on [0, pi/4] and tan x = 1 / tan(pi/2 - x)
+  // above it, pi/2 in two parts so that pi/2 - x keeps its digits near pi/2.
+  float halfFovy = fovy / 2.0f;
+  bool upper = halfFovy > 0.78539818525f;  // float(pi/2) / 2: float(pi/2) - x is exact above it
+  float r = halfFovy;
+  if (upper) {
+    r = (1.57079637050628662f - halfFovy) - 4.37113900018624283e-8f;
+  }
+  float r2 = r * r;
+  float tanR = ((((((9.38540185543e-3f * r2 + 3.11992232697e-3f) * r2 + 2.44301354525e-2f) * r2 +
+                   5.34112807005e-2f) * r2 + 1.33387994085e-1f) * r2 + 3.33331568548e-1f) * r2) * r + r;
+  float tanHalfFovy = upper ? 1.0f / tanR : tanR;
   if (!SNELL_FINITE(tanHalfFovy) || !(tanHalfFovy > 0.0f)) {
     return zero;
   }
-  // Same operation order as glm::perspective, so the GL matrix matches it in float.
+  // Same operation order as glm::perspective: the GL matrix matches it within tan's error.
   float a = 1.0f / (aspect * tanHalfFovy);
   float b = 1.0f / tanHalfFovy;
   float c = 0.0f;
@@ -3862,8 +3884,12 @@ SNELL_FN SnellInsideHit snellInsidePlane(vec3 origin, vec3 dir, SNELL_TEX2D back
     if (planes >= n) {
       break;
     }
-    SnellSurfacePoint s =
-        readFront ? snellSurfacePoint(frontDepth, readUv, front) : snellSurfacePoint(backDepth, readUv, back);
+    SnellSurfacePoint s;  // not ?: : WebGL rejects it on structs
+    if (readFront) {
+      s = snellSurfacePoint(frontDepth, readUv, front);
+    } else {
+      s = snellSurfacePoint(backDepth, readUv, back);
+    }
     fetches = fetches + 1;
     bool kept = false;
     if (s.valid) {
@@ -6311,39 +6337,58 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
                                                              SNELL_IN(SnellView) v) {
   bool three = m.dispersion == 3;
   float eta = snellIorToEta(m.iorOutside, three ? m.iors.y : m.ior);
-  SnellTwoInterfacePath p =
-      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
-  SnellTwoInterfaceExit e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS,
-                                                  p.exitFront ? t.reflect : t.exit, m, v);
-  vec3 transmitted = e.color * snellBeerLambert(m.absorption, p.pathLength);
   SnellTwoInterfaceResult r;
-  r.exitPoint = p.exitPoint;
-  r.exitDirection = p.exitDirection;
-  r.exitHit = e.hit;
   r.reflectionHit = snellHitMiss(0);
-  r.pathLength = p.pathLength;
   r.fresnel = 0.0f;
-  r.fetches = p.fetches + e.fetches;
-  r.backHit = p.hit;
-  // A path that left through a front face sees the environment where the reflect slot finds no scene, as
-  // the first surface's reflection does: not a fallback.
-  r.fellBack = p.fellBack || (e.fellBack && !p.exitFront) || !p.valid;
-  r.tir = p.tir;
-  r.bounces = p.bounces;
-  if (three) {
-    SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.x),
-                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
-    SnellTwoInterfaceExit er = snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, SNELL_SCENE_BUFFER_ARGS,
-                                                     pr.exitFront ? t.reflect : t.exit, m, v);
-    SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.z),
-                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
-    SnellTwoInterfaceExit eb = snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, SNELL_SCENE_BUFFER_ARGS,
-                                                     pb.exitFront ? t.reflect : t.exit, m, v);
-    transmitted.x = er.color.x * snellBeerLambert(m.absorption, pr.pathLength).x;
-    transmitted.z = eb.color.z * snellBeerLambert(m.absorption, pb.pathLength).z;
-    r.fetches = r.fetches + pr.fetches + er.fetches + pb.fetches + eb.fetches;
-    r.fellBack = r.fellBack || pr.fellBack || (er.fellBack && !pr.exitFront) || pb.fellBack ||
-                 (eb.fellBack && !pb.exitFront);
+  vec3 transmitted = vec3(0.0f, 0.0f, 0.0f);
+  // The green (or only) channel's path gives every field; with dispersion, red and blue follow their own
+  // paths for their colour. One loop, not three copies of the trace: WebGL 2 on SwiftShader runs out of
+  // shader stack with three, and every browser compiles a third of the code.
+  int channels = three ? 3 : 1;
+  for (int k = 0; k < 3; ++k) {
+    if (k >= channels) {
+      break;
+    }
+    float etaK = eta;
+    if (k == 1) {
+      etaK = snellIorToEta(m.iorOutside, m.iors.x);
+    } else if (k == 2) {
+      etaK = snellIorToEta(m.iorOutside, m.iors.z);
+    }
+    SnellTwoInterfacePath p =
+        snellTwoInterfaceTrace(frontPosition, frontNormal, etaK, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
+    // A path that left through a front face is resolved by the reflect slot (an if: WebGL rejects ?: on
+    // structs).
+    SnellSlot leave = t.exit;
+    if (p.exitFront) {
+      leave = t.reflect;
+    }
+    SnellTwoInterfaceExit e =
+        snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, leave, m, v);
+    vec3 c = e.color * snellBeerLambert(m.absorption, p.pathLength);
+    // Where the reflect slot finds no scene after a front-face exit, the environment is what is there,
+    // as for the first surface's reflection: not a fallback.
+    bool fellBack = p.fellBack || (e.fellBack && !p.exitFront);
+    if (k == 0) {
+      transmitted = c;
+      r.exitPoint = p.exitPoint;
+      r.exitDirection = p.exitDirection;
+      r.exitHit = e.hit;
+      r.pathLength = p.pathLength;
+      r.fetches = p.fetches + e.fetches;
+      r.backHit = p.hit;
+      r.fellBack = fellBack || !p.valid;
+      r.tir = p.tir;
+      r.bounces = p.bounces;
+    } else {
+      if (k == 1) {
+        transmitted.x = c.x;
+      } else {
+        transmitted.z = c.z;
+      }
+      r.fetches = r.fetches + p.fetches + e.fetches;
+      r.fellBack = r.fellBack || fellBack;
+    }
   }
   r.color = transmitted;
   vec3 vv = snellSafeNormalize(frontPosition);

@@ -494,7 +494,7 @@ SNELL_FN_INLINE float snellLinearizeDepth(float depthValue, float zNear, float z
   } else if (convention == SNELL_DEPTH_INFINITE_GL) {
     v = d < 1.0f ? zNear / (1.0f - d) : SNELL_FLT_MAX;
   } else if (convention == SNELL_DEPTH_INFINITE_REVERSED) {
-    v = d > 0.0f ? zNear / d : SNELL_FLT_MAX;
+    v = d >= SNELL_FLT_MIN ? zNear / d : SNELL_FLT_MAX;
   } else {
     return 0.0f;
   }
@@ -567,14 +567,23 @@ SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, f
   mat4 zero = SNELL_CAMERA_MAT4_COLUMNS(zero4, zero4, zero4, zero4);
   bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
   if (convention < 0 || convention >= SNELL_DEPTH_CONVENTION_COUNT || !SNELL_FINITE(fovy) ||
-      !(fovy > 0.0f) || !(fovy < SNELL_PI) || !SNELL_FINITE(aspect) || !(aspect > 0.0f) ||
+      !(fovy >= SNELL_FLT_MIN) || !(fovy < SNELL_PI) || !SNELL_FINITE(aspect) || !(aspect >= SNELL_FLT_MIN) ||
       !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
     return zero;
   }
   if (!infinite && (!SNELL_FINITE(zFar) || !(zFar > zNear))) {
     return zero;
   }
-  float tanHalfFovy = tan(fovy / 2.0f);
+  float halfFovy = fovy / 2.0f;
+  bool upper = halfFovy > 0.78539818525f;
+  float r = halfFovy;
+  if (upper) {
+    r = (1.57079637050628662f - halfFovy) - 4.37113900018624283e-8f;
+  }
+  float r2 = r * r;
+  float tanR = ((((((9.38540185543e-3f * r2 + 3.11992232697e-3f) * r2 + 2.44301354525e-2f) * r2 +
+                   5.34112807005e-2f) * r2 + 1.33387994085e-1f) * r2 + 3.33331568548e-1f) * r2) * r + r;
+  float tanHalfFovy = upper ? 1.0f / tanR : tanR;
   if (!SNELL_FINITE(tanHalfFovy) || !(tanHalfFovy > 0.0f)) {
     return zero;
   }
@@ -2157,8 +2166,12 @@ SNELL_FN SnellInsideHit snellInsidePlane(vec3 origin, vec3 dir, SNELL_TEX2D back
     if (planes >= n) {
       break;
     }
-    SnellSurfacePoint s =
-        readFront ? snellSurfacePoint(frontDepth, readUv, front) : snellSurfacePoint(backDepth, readUv, back);
+    SnellSurfacePoint s;
+    if (readFront) {
+      s = snellSurfacePoint(frontDepth, readUv, front);
+    } else {
+      s = snellSurfacePoint(backDepth, readUv, back);
+    }
     fetches = fetches + 1;
     bool kept = false;
     if (s.valid) {
@@ -3477,37 +3490,51 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
                                                              SNELL_IN(SnellView) v) {
   bool three = m.dispersion == 3;
   float eta = snellIorToEta(m.iorOutside, three ? m.iors.y : m.ior);
-  SnellTwoInterfacePath p =
-      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
-  SnellTwoInterfaceExit e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS,
-                                                  p.exitFront ? t.reflect : t.exit, m, v);
-  vec3 transmitted = e.color * snellBeerLambert(m.absorption, p.pathLength);
   SnellTwoInterfaceResult r;
-  r.exitPoint = p.exitPoint;
-  r.exitDirection = p.exitDirection;
-  r.exitHit = e.hit;
   r.reflectionHit = snellHitMiss(0);
-  r.pathLength = p.pathLength;
   r.fresnel = 0.0f;
-  r.fetches = p.fetches + e.fetches;
-  r.backHit = p.hit;
-  r.fellBack = p.fellBack || (e.fellBack && !p.exitFront) || !p.valid;
-  r.tir = p.tir;
-  r.bounces = p.bounces;
-  if (three) {
-    SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.x),
-                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
-    SnellTwoInterfaceExit er = snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, SNELL_SCENE_BUFFER_ARGS,
-                                                     pr.exitFront ? t.reflect : t.exit, m, v);
-    SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.z),
-                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
-    SnellTwoInterfaceExit eb = snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, SNELL_SCENE_BUFFER_ARGS,
-                                                     pb.exitFront ? t.reflect : t.exit, m, v);
-    transmitted.x = er.color.x * snellBeerLambert(m.absorption, pr.pathLength).x;
-    transmitted.z = eb.color.z * snellBeerLambert(m.absorption, pb.pathLength).z;
-    r.fetches = r.fetches + pr.fetches + er.fetches + pb.fetches + eb.fetches;
-    r.fellBack = r.fellBack || pr.fellBack || (er.fellBack && !pr.exitFront) || pb.fellBack ||
-                 (eb.fellBack && !pb.exitFront);
+  vec3 transmitted = vec3(0.0f, 0.0f, 0.0f);
+  int channels = three ? 3 : 1;
+  for (int k = 0; k < 3; ++k) {
+    if (k >= channels) {
+      break;
+    }
+    float etaK = eta;
+    if (k == 1) {
+      etaK = snellIorToEta(m.iorOutside, m.iors.x);
+    } else if (k == 2) {
+      etaK = snellIorToEta(m.iorOutside, m.iors.z);
+    }
+    SnellTwoInterfacePath p =
+        snellTwoInterfaceTrace(frontPosition, frontNormal, etaK, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
+    SnellSlot leave = t.exit;
+    if (p.exitFront) {
+      leave = t.reflect;
+    }
+    SnellTwoInterfaceExit e =
+        snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, leave, m, v);
+    vec3 c = e.color * snellBeerLambert(m.absorption, p.pathLength);
+    bool fellBack = p.fellBack || (e.fellBack && !p.exitFront);
+    if (k == 0) {
+      transmitted = c;
+      r.exitPoint = p.exitPoint;
+      r.exitDirection = p.exitDirection;
+      r.exitHit = e.hit;
+      r.pathLength = p.pathLength;
+      r.fetches = p.fetches + e.fetches;
+      r.backHit = p.hit;
+      r.fellBack = fellBack || !p.valid;
+      r.tir = p.tir;
+      r.bounces = p.bounces;
+    } else {
+      if (k == 1) {
+        transmitted.x = c.x;
+      } else {
+        transmitted.z = c.z;
+      }
+      r.fetches = r.fetches + p.fetches + e.fetches;
+      r.fellBack = r.fellBack || fellBack;
+    }
   }
   r.color = transmitted;
   vec3 vv = snellSafeNormalize(frontPosition);

@@ -196,8 +196,13 @@ contract: macros only.
 #  define SNELL_FLT_MAX 3.402823466e38f
 #endif
 /* Smallest normal float. Divisors and "positive" tests use it instead of 0:
-   GPUs may flush denormals to zero, so a denormal input is treated as 0 in
-   every language (same flags on CPU and GPU). */
+   GPUs may flush denormals to zero, so a denormal parameter whose contract says so
+   (eta, zNear, fovy, aspect, clip w, ...) is treated as 0 in every
+   language (same flags on CPU and GPU). Denormal data (positions, directions,
+   matrix entries) is not flushed, which would cost every call: a runtime that
+   flushes (SwiftShader, most GPUs) gives the function's result on 0 there, one
+   that keeps it (llvmpipe, the CPU) the result on the denormal, and the parity
+   suite accepts either (and counts the cases: "flushed="). */
 #define SNELL_FLT_MIN 1.175494351e-38f
 /* True when the float x is neither NaN nor +-Inf. C++: std::isfinite, the
    same answer in one test instead of two (7 % of a plane ray's
@@ -258,7 +263,7 @@ contract (v = view distance, d = depth value, n = zNear, f = zFar):
   - snellLinearizeDepth returns 0.0f (never a valid distance, every valid one is
     >= n > 0) when: depthValue is NaN, zNear is not a finite positive number, zFar
     is not finite or not > zNear (finite conventions only), or the convention is
-    unknown. A denormal zNear counts as 0 (GPUs may flush it).
+    unknown. A denormal zNear or depthValue counts as 0 (GPUs may flush it).
   - snellDelinearizeDepth returns a value in [0,1]; the distance is clamped into
     [n, f] (finite conventions) or [n, +inf) first, so points nearer than the near
     plane, at or behind the camera (v <= 0), give the near-plane value and points
@@ -295,7 +300,7 @@ SNELL_FN_INLINE float snellLinearizeDepth(float depthValue, float zNear, float z
   } else if (convention == SNELL_DEPTH_INFINITE_GL) {
     v = d < 1.0f ? zNear / (1.0f - d) : SNELL_FLT_MAX;
   } else if (convention == SNELL_DEPTH_INFINITE_REVERSED) {
-    v = d > 0.0f ? zNear / d : SNELL_FLT_MAX;
+    v = d >= SNELL_FLT_MIN ? zNear / d : SNELL_FLT_MAX;  // a denormal depth is 0, the far plane
   } else {
     return 0.0f;
   }
@@ -396,11 +401,15 @@ contract: with A = 1 / (aspect tan(fovy/2)), B = 1 / tan(fovy/2), the matrix map
   The window depth each one produces is the one of linearize_depth.glsl.
   The inverse maps (xc, yc, zc, wc) to (xc/A, yc/B, -wc, (zc + C wc)/D) exactly
   (no general 4x4 inversion; HLSL has none).
+  tan(fovy/2) is snell's own polynomial (Cephes tanf), within 1.7e-7 relative of
+  tan on (0, pi/2) and the same on every runtime: glm::perspective's entries A
+  and B are matched within 3 ulp, the others bit for bit.
   All three return the zero matrix (every projected point then has w = 0, so
   snellClipToNdc and friends report valid = false) when fovy is not in (0, pi),
   tan(fovy/2) is not finite positive, aspect or zNear are not finite positive,
   zFar is not finite or not > zNear (finite conventions), the convention is
-  unknown, or an entry would overflow or be denormal (a GPU may flush it to 0).
+  unknown, or an entry would overflow or be denormal (a GPU may flush it to 0);
+  a denormal fovy or aspect counts as 0.
   GL is the convention of the paper's equations (Oliveira & Brauwers 2007, sec.
   3.2.1: "the projection matrix used by OpenGL", clip w = -z).
 source: GLM 0.9.9 ext/matrix_clip_space.inl (perspectiveRH_NO, perspectiveRH_ZO,
@@ -416,18 +425,31 @@ SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, f
   mat4 zero = SNELL_CAMERA_MAT4_COLUMNS(zero4, zero4, zero4, zero4);
   bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
   if (convention < 0 || convention >= SNELL_DEPTH_CONVENTION_COUNT || !SNELL_FINITE(fovy) ||
-      !(fovy > 0.0f) || !(fovy < SNELL_PI) || !SNELL_FINITE(aspect) || !(aspect > 0.0f) ||
+      !(fovy >= SNELL_FLT_MIN) || !(fovy < SNELL_PI) || !SNELL_FINITE(aspect) || !(aspect >= SNELL_FLT_MIN) ||
       !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
     return zero;
   }
   if (!infinite && (!SNELL_FINITE(zFar) || !(zFar > zNear))) {
     return zero;
   }
-  float tanHalfFovy = tan(fovy / 2.0f);
+  // tan(fovy / 2) by snell's own polynomial, not tan(): GLSL leaves tan's precision to the
+  // implementation, and WebGL 2 on SwiftShader is 6e-5 off, more than a projection can afford.
+  // Cephes' tanf (S. L. Moshier): the polynomial on [0, pi/4] and tan x = 1 / tan(pi/2 - x)
+  // above it, pi/2 in two parts so that pi/2 - x keeps its digits near pi/2.
+  float halfFovy = fovy / 2.0f;
+  bool upper = halfFovy > 0.78539818525f;  // float(pi/2) / 2: float(pi/2) - x is exact above it
+  float r = halfFovy;
+  if (upper) {
+    r = (1.57079637050628662f - halfFovy) - 4.37113900018624283e-8f;
+  }
+  float r2 = r * r;
+  float tanR = ((((((9.38540185543e-3f * r2 + 3.11992232697e-3f) * r2 + 2.44301354525e-2f) * r2 +
+                   5.34112807005e-2f) * r2 + 1.33387994085e-1f) * r2 + 3.33331568548e-1f) * r2) * r + r;
+  float tanHalfFovy = upper ? 1.0f / tanR : tanR;
   if (!SNELL_FINITE(tanHalfFovy) || !(tanHalfFovy > 0.0f)) {
     return zero;
   }
-  // Same operation order as glm::perspective, so the GL matrix matches it in float.
+  // Same operation order as glm::perspective: the GL matrix matches it within tan's error.
   float a = 1.0f / (aspect * tanHalfFovy);
   float b = 1.0f / tanHalfFovy;
   float c = 0.0f;

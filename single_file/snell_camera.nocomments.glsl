@@ -151,7 +151,7 @@ SNELL_FN_INLINE float snellLinearizeDepth(float depthValue, float zNear, float z
   } else if (convention == SNELL_DEPTH_INFINITE_GL) {
     v = d < 1.0f ? zNear / (1.0f - d) : SNELL_FLT_MAX;
   } else if (convention == SNELL_DEPTH_INFINITE_REVERSED) {
-    v = d > 0.0f ? zNear / d : SNELL_FLT_MAX;
+    v = d >= SNELL_FLT_MIN ? zNear / d : SNELL_FLT_MAX;
   } else {
     return 0.0f;
   }
@@ -224,14 +224,23 @@ SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, f
   mat4 zero = SNELL_CAMERA_MAT4_COLUMNS(zero4, zero4, zero4, zero4);
   bool infinite = convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
   if (convention < 0 || convention >= SNELL_DEPTH_CONVENTION_COUNT || !SNELL_FINITE(fovy) ||
-      !(fovy > 0.0f) || !(fovy < SNELL_PI) || !SNELL_FINITE(aspect) || !(aspect > 0.0f) ||
+      !(fovy >= SNELL_FLT_MIN) || !(fovy < SNELL_PI) || !SNELL_FINITE(aspect) || !(aspect >= SNELL_FLT_MIN) ||
       !SNELL_FINITE(zNear) || !(zNear >= SNELL_FLT_MIN)) {
     return zero;
   }
   if (!infinite && (!SNELL_FINITE(zFar) || !(zFar > zNear))) {
     return zero;
   }
-  float tanHalfFovy = tan(fovy / 2.0f);
+  float halfFovy = fovy / 2.0f;
+  bool upper = halfFovy > 0.78539818525f;
+  float r = halfFovy;
+  if (upper) {
+    r = (1.57079637050628662f - halfFovy) - 4.37113900018624283e-8f;
+  }
+  float r2 = r * r;
+  float tanR = ((((((9.38540185543e-3f * r2 + 3.11992232697e-3f) * r2 + 2.44301354525e-2f) * r2 +
+                   5.34112807005e-2f) * r2 + 1.33387994085e-1f) * r2 + 3.33331568548e-1f) * r2) * r + r;
+  float tanHalfFovy = upper ? 1.0f / tanR : tanR;
   if (!SNELL_FINITE(tanHalfFovy) || !(tanHalfFovy > 0.0f)) {
     return zero;
   }

@@ -175,7 +175,7 @@ SNELL_FN_INLINE float snellLinearizeDepth(float depthValue, float zNear, float z
   } else if (convention == SNELL_DEPTH_INFINITE_GL) {
     v = d < 1.0f ? zNear / (1.0f - d) : SNELL_FLT_MAX;
   } else if (convention == SNELL_DEPTH_INFINITE_REVERSED) {
-    v = d > 0.0f ? zNear / d : SNELL_FLT_MAX;
+    v = d >= SNELL_FLT_MIN ? zNear / d : SNELL_FLT_MAX;
   } else {
     return 0.0f;
   }
@@ -1795,8 +1795,12 @@ SNELL_FN SnellInsideHit snellInsidePlane(vec3 origin, vec3 dir, SNELL_TEX2D back
     if (planes >= n) {
       break;
     }
-    SnellSurfacePoint s =
-        readFront ? snellSurfacePoint(frontDepth, readUv, front) : snellSurfacePoint(backDepth, readUv, back);
+    SnellSurfacePoint s;
+    if (readFront) {
+      s = snellSurfacePoint(frontDepth, readUv, front);
+    } else {
+      s = snellSurfacePoint(backDepth, readUv, back);
+    }
     fetches = fetches + 1;
     bool kept = false;
     if (s.valid) {

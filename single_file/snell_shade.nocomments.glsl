@@ -957,7 +957,7 @@ SNELL_FN_INLINE float snellLinearizeDepth(float depthValue, float zNear, float z
   } else if (convention == SNELL_DEPTH_INFINITE_GL) {
     v = d < 1.0f ? zNear / (1.0f - d) : SNELL_FLT_MAX;
   } else if (convention == SNELL_DEPTH_INFINITE_REVERSED) {
-    v = d > 0.0f ? zNear / d : SNELL_FLT_MAX;
+    v = d >= SNELL_FLT_MIN ? zNear / d : SNELL_FLT_MAX;
   } else {
     return 0.0f;
   }
@@ -3014,8 +3014,12 @@ SNELL_FN SnellInsideHit snellInsidePlane(vec3 origin, vec3 dir, SNELL_TEX2D back
     if (planes >= n) {
       break;
     }
-    SnellSurfacePoint s =
-        readFront ? snellSurfacePoint(frontDepth, readUv, front) : snellSurfacePoint(backDepth, readUv, back);
+    SnellSurfacePoint s;
+    if (readFront) {
+      s = snellSurfacePoint(frontDepth, readUv, front);
+    } else {
+      s = snellSurfacePoint(backDepth, readUv, back);
+    }
     fetches = fetches + 1;
     bool kept = false;
     if (s.valid) {
@@ -3307,37 +3311,51 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
                                                              SNELL_IN(SnellView) v) {
   bool three = m.dispersion == 3;
   float eta = snellIorToEta(m.iorOutside, three ? m.iors.y : m.ior);
-  SnellTwoInterfacePath p =
-      snellTwoInterfaceTrace(frontPosition, frontNormal, eta, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
-  SnellTwoInterfaceExit e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS,
-                                                  p.exitFront ? t.reflect : t.exit, m, v);
-  vec3 transmitted = e.color * snellBeerLambert(m.absorption, p.pathLength);
   SnellTwoInterfaceResult r;
-  r.exitPoint = p.exitPoint;
-  r.exitDirection = p.exitDirection;
-  r.exitHit = e.hit;
   r.reflectionHit = snellHitMiss(0);
-  r.pathLength = p.pathLength;
   r.fresnel = 0.0f;
-  r.fetches = p.fetches + e.fetches;
-  r.backHit = p.hit;
-  r.fellBack = p.fellBack || (e.fellBack && !p.exitFront) || !p.valid;
-  r.tir = p.tir;
-  r.bounces = p.bounces;
-  if (three) {
-    SnellTwoInterfacePath pr = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.x),
-                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
-    SnellTwoInterfaceExit er = snellTwoInterfaceExit(pr.exitPoint, pr.exitDirection, SNELL_SCENE_BUFFER_ARGS,
-                                                     pr.exitFront ? t.reflect : t.exit, m, v);
-    SnellTwoInterfacePath pb = snellTwoInterfaceTrace(frontPosition, frontNormal, snellIorToEta(m.iorOutside, m.iors.z),
-                                                      dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
-    SnellTwoInterfaceExit eb = snellTwoInterfaceExit(pb.exitPoint, pb.exitDirection, SNELL_SCENE_BUFFER_ARGS,
-                                                     pb.exitFront ? t.reflect : t.exit, m, v);
-    transmitted.x = er.color.x * snellBeerLambert(m.absorption, pr.pathLength).x;
-    transmitted.z = eb.color.z * snellBeerLambert(m.absorption, pb.pathLength).z;
-    r.fetches = r.fetches + pr.fetches + er.fetches + pb.fetches + eb.fetches;
-    r.fellBack = r.fellBack || pr.fellBack || (er.fellBack && !pr.exitFront) || pb.fellBack ||
-                 (eb.fellBack && !pb.exitFront);
+  vec3 transmitted = vec3(0.0f, 0.0f, 0.0f);
+  int channels = three ? 3 : 1;
+  for (int k = 0; k < 3; ++k) {
+    if (k >= channels) {
+      break;
+    }
+    float etaK = eta;
+    if (k == 1) {
+      etaK = snellIorToEta(m.iorOutside, m.iors.x);
+    } else if (k == 2) {
+      etaK = snellIorToEta(m.iorOutside, m.iors.z);
+    }
+    SnellTwoInterfacePath p =
+        snellTwoInterfaceTrace(frontPosition, frontNormal, etaK, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
+    SnellSlot leave = t.exit;
+    if (p.exitFront) {
+      leave = t.reflect;
+    }
+    SnellTwoInterfaceExit e =
+        snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, leave, m, v);
+    vec3 c = e.color * snellBeerLambert(m.absorption, p.pathLength);
+    bool fellBack = p.fellBack || (e.fellBack && !p.exitFront);
+    if (k == 0) {
+      transmitted = c;
+      r.exitPoint = p.exitPoint;
+      r.exitDirection = p.exitDirection;
+      r.exitHit = e.hit;
+      r.pathLength = p.pathLength;
+      r.fetches = p.fetches + e.fetches;
+      r.backHit = p.hit;
+      r.fellBack = fellBack || !p.valid;
+      r.tir = p.tir;
+      r.bounces = p.bounces;
+    } else {
+      if (k == 1) {
+        transmitted.x = c.x;
+      } else {
+        transmitted.z = c.z;
+      }
+      r.fetches = r.fetches + p.fetches + e.fetches;
+      r.fellBack = r.fellBack || fellBack;
+    }
   }
   r.color = transmitted;
   vec3 vv = snellSafeNormalize(frontPosition);

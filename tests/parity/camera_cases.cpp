@@ -458,6 +458,7 @@ SNELL_PARITY_CASE(snellTexRayUv, [] { return texRayInputs(316); },
                   SnellTexRay r = cameraParityTexRay(camera, convention, p1, t1, zNearest, zFarthest);
                   uv = snellTexRayUv(r, pz);
                   valid = r.valid;
-                  condition = abs(snellTexRayAlpha(r, pz)) * (abs(r.ts) + abs(r.ts + r.dt));)
+                  condition = min(abs(snellTexRayAlpha(r, pz)) * (abs(r.ts) + abs(r.ts + r.dt)),
+                                  vec2(SNELL_FLT_MAX, SNELL_FLT_MAX));)
 
 }  // namespace parity_camera

@@ -125,6 +125,42 @@ TEST(ParityHlslFlipV, TexelFetchSizeAndNearest) { runFlipV("SNELL_TEXEL_FETCH_an
 TEST(ParityHlslFlipV, SampleLodLinear) { runFlipV("SNELL_SAMPLE_LOD", EdgeNudge::None); }
 TEST(ParityHlslFlipV, SampleLodMipmaps) { runFlipV("SNELL_SAMPLE_LOD_mipmaps", EdgeNudge::AllLevels); }
 
+// The WGSL of a few cases (every family, textures with mips and LINEAR float
+// filtering, the whole two-interface trace) executed a second time, by
+// Chromium's WebGPU (Dawn: Tint compiles it, SwiftShader runs it), and compared
+// with the C++ build like every runtime: the smoke run that shows the WGSL
+// snell's users get runs under both major WGSL implementations, not only wgpu.
+void runWebGpuInChromium(const std::string& function) {
+  const CaseSpec* spec = nullptr;
+  for (const CaseSpec& c : registry())
+    if (c.function == function) spec = &c;
+  ASSERT_NE(spec, nullptr) << "no parity case of " << function;
+  if (spec->setup) spec->setup();
+  const std::vector<ParityIO> inputs = spec->inputs();
+  std::vector<ParityIO> cpu, cpuFlushed;
+  for (const ParityIO& in : inputs) {
+    cpu.push_back(spec->cpu(in));
+    cpuFlushed.push_back(snell::gpu::hasDenormal(in) ? spec->cpu(snell::gpu::flushDenormals(in)) : cpu.back());
+  }
+  const fs::path work = hlslWorkDir() / "webgpu_chromium";
+  snell::gpu::runParityWebGpu(webGpuTools(), {kRoot / "glsl", kRoot / "tests" / "parity" / "cases"}, spec->glslFile,
+                              spec->entry, inputs, spec->textures, work, hlslTools(), spec->entrySource);
+  std::string adapter;
+  const std::vector<ParityIO> gpu =
+      snell::gpu::runParityWebGpuInChromium(webGpuTools(), work, spec->glslFile, spec->entry, inputs.size(), &adapter);
+  const snell::gpu::ParityReport r = snell::gpu::compareParity(gpu, cpu, spec->outputs, &inputs, &cpuFlushed);
+  std::cout << "[parity-webgpu-chromium] " << spec->function << " adapter=\"" << adapter << "\" cases=" << r.cases
+            << " mismatches=" << r.mismatches << " flushed=" << r.flushedMatches << " maxAbs=" << r.maxAbs
+            << " maxRel=" << r.maxRel << "\n";
+  EXPECT_EQ(r.mismatches, 0u) << r.firstMismatchText;
+}
+
+TEST(ParityWebGpuChromium, Refract) { runWebGpuInChromium("snellRefract"); }
+TEST(ParityWebGpuChromium, PerspectiveInverse) { runWebGpuInChromium("snellPerspectiveInverse"); }
+TEST(ParityWebGpuChromium, SampleLodMipmaps) { runWebGpuInChromium("SNELL_SAMPLE_LOD_mipmaps"); }
+TEST(ParityWebGpuChromium, IntersectPlaneNormal) { runWebGpuInChromium("snellIntersectPlaneNormal"); }
+TEST(ParityWebGpuChromium, TwoInterfaceTrace) { runWebGpuInChromium("snellTwoInterfaceTrace"); }
+
 // The functions main() registered a run of, per runtime suite.
 std::map<std::string, std::set<std::string>>& registeredRuns() {
   static std::map<std::string, std::set<std::string>> runs;

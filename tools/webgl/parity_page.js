@@ -1,4 +1,4 @@
-// The WebGL 2 parity runtime's page (served by run_parity.mjs): runs the job's
+// The WebGL 2 parity runtime's page (served by tools/browser/run_page.mjs): runs the job's
 // ES 3.00 fragment shader once per case and posts the four output vectors of
 // every case back as 16 floats.
 async function post(what, body) {

@@ -1,20 +1,17 @@
 // The WebGPU parity runtime's device side (include/snell/gpu/parity_webgpu.hpp
 // writes the job and reads the results): SPIR-V -> WGSL with naga, then one
-// compute dispatch on Deno's WebGPU (wgpu; Mesa's lavapipe in the test suite).
+// compute dispatch on Deno's WebGPU (wgpu; Mesa's lavapipe in the test suite)
+// by dispatch.js, which Chromium's run (chromium_page.js) shares.
 //
 //   deno run --allow-read --allow-write --allow-env --node-modules-dir=manual run_parity.ts JOB_DIR
 //
 // JOB_DIR holds job.json ({count, textures: [{levels: [[w, h], ...], mag,
 // min, mip}]}), shader.spv, inputs.f32 (16 floats per case) and tex_<k>.f32
 // (every level's RGBA32F texels, level 0 first). Writes shader.wgsl,
-// results.f32 and adapter.txt. Bindings: 0 inputs, 1 results, 2 the case
-// count (a uniform: Deno's WebGPU has no push constants), 16 + 2k texture k,
-// 17 + 2k its sampler. Any failure (translation, no adapter, a WebGPU error)
-// exits with status 1 and a message on stderr.
+// results.f32 and adapter.txt. Any failure (translation, no adapter, a WebGPU
+// error) exits with status 1 and a message on stderr.
 import { spirvToWgsl } from "./naga_wgsl.ts";
-
-type Tex = { levels: [number, number][]; mag: string; min: string; mip: string };
-type Job = { count: number; textures: Tex[] };
+import { runParityJob } from "./dispatch.js";
 
 function fail(message: string): never {
   console.error(`run_parity.ts: ${message}`);
@@ -23,7 +20,7 @@ function fail(message: string): never {
 
 const dir = Deno.args[0];
 if (!dir) fail("usage: run_parity.ts JOB_DIR");
-const job: Job = JSON.parse(Deno.readTextFileSync(`${dir}/job.json`));
+const job = JSON.parse(Deno.readTextFileSync(`${dir}/job.json`));
 
 let wgsl = "";
 try {
@@ -33,105 +30,11 @@ try {
 }
 Deno.writeTextFileSync(`${dir}/shader.wgsl`, wgsl);
 
-const adapter = await navigator.gpu.requestAdapter();
-if (!adapter) fail("no WebGPU adapter (is mesa-vulkan-drivers installed? Deno's WebGPU runs on Vulkan)");
-// A LINEAR filter on an RGBA32F texture needs float32-filterable (not core WebGPU).
-const filtering = (t: Tex) => t.mag === "linear" || t.min === "linear" || t.mip === "linear";
-const needsF32Filter = job.textures.some(filtering);
-if (needsF32Filter && !adapter.features.has("float32-filterable"))
-  fail(`the adapter (${adapter.info.description}) lacks float32-filterable, which a LINEAR RGBA32F texture needs`);
-const device = await adapter.requestDevice({
-  requiredFeatures: needsF32Filter ? ["float32-filterable"] : [],
-  requiredLimits: { maxStorageBufferBindingSize: adapter.limits.maxStorageBufferBindingSize },
-});
-Deno.writeTextFileSync(`${dir}/adapter.txt`, `${adapter.info.description} (${adapter.info.vendor}, ${adapter.info.architecture})\n`);
-
-device.pushErrorScope("validation");
-device.pushErrorScope("internal");
-const module = device.createShaderModule({ code: wgsl });
-const messages = (await module.getCompilationInfo()).messages.filter((m) => m.type === "error");
-if (messages.length) fail("WGSL compilation: " + messages.map((m) => `${m.lineNum}:${m.linePos} ${m.message}`).join("; "));
-
-// The bindings the WGSL declares (naga drops unused ones), each typed from its declaration.
-const decls = [...wgsl.matchAll(/@group\(0\)\s*@binding\((\d+)\)\s*var(<[^>]*>)?\s+\w+\s*:\s*([^;]+);/g)]
-  .map((m) => ({ binding: Number(m[1]), kind: m[2] ?? "", type: m[3].trim() }));
-const slot = (binding: number) => (binding - 16) >> 1;
-const entries: GPUBindGroupLayoutEntry[] = decls.map((d) => {
-  const e: GPUBindGroupLayoutEntry = { binding: d.binding, visibility: GPUShaderStage.COMPUTE };
-  if (d.kind.startsWith("<storage")) e.buffer = { type: d.kind.includes("read_write") ? "storage" : "read-only-storage" };
-  else if (d.kind.startsWith("<uniform")) e.buffer = { type: "uniform" };
-  else if (d.type.startsWith("texture_2d")) {
-    e.texture = { sampleType: filtering(job.textures[slot(d.binding)]) ? "float" : "unfilterable-float" };
-  } else if (d.type === "sampler") e.sampler = { type: filtering(job.textures[slot(d.binding)]) ? "filtering" : "non-filtering" };
-  else fail(`binding ${d.binding}: unexpected ${d.kind} ${d.type}`);
-  return e;
-});
-const layout = device.createBindGroupLayout({ entries });
-const pipeline = await device.createComputePipelineAsync({
-  layout: device.createPipelineLayout({ bindGroupLayouts: [layout] }),
-  compute: { module, entryPoint: "main" },
-});
-
-const inputs = new Float32Array(Deno.readFileSync(`${dir}/inputs.f32`).buffer);
-const bytes = Math.max(inputs.byteLength, 16);
-const inBuf = device.createBuffer({ size: bytes, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST });
-device.queue.writeBuffer(inBuf, 0, inputs);
-const outBuf = device.createBuffer({ size: bytes, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC });
-const readBuf = device.createBuffer({ size: bytes, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST });
-const params = device.createBuffer({ size: 16, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
-device.queue.writeBuffer(params, 0, new Int32Array([job.count, 0, 0, 0]));
-
-// As the Vulkan runtime: clamp to edge, the texture's own filters, and a texture without mips
-// clamped to level 0 (lodMaxClamp 0.25: GL's GL_NEAREST / GL_LINEAR minification).
-const made = new Map<number, { view: GPUTextureView; sampler: GPUSampler }>();
-function texture(k: number) {
-  const t = job.textures[k];
-  if (!t) fail(`the shader reads texture slot ${k}, the job has ${job.textures.length}`);
-  if (!made.has(k)) {
-    const data = new Float32Array(Deno.readFileSync(`${dir}/tex_${k}.f32`).buffer);
-    const tex = device.createTexture({
-      size: t.levels[0], mipLevelCount: t.levels.length, format: "rgba32float",
-      usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST,
-    });
-    let offset = 0;
-    t.levels.forEach(([w, h], level) => {
-      device.queue.writeTexture({ texture: tex, mipLevel: level }, data.subarray(offset, offset + 4 * w * h),
-        { bytesPerRow: 16 * w, rowsPerImage: h }, [w, h]);
-      offset += 4 * w * h;
-    });
-    const sampler = device.createSampler({
-      addressModeU: "clamp-to-edge", addressModeV: "clamp-to-edge",
-      magFilter: t.mag as GPUFilterMode, minFilter: t.min as GPUFilterMode,
-      mipmapFilter: (t.mip === "linear" ? "linear" : "nearest") as GPUMipmapFilterMode,
-      lodMinClamp: 0, lodMaxClamp: t.mip === "none" ? 0.25 : t.levels.length - 1,
-    });
-    made.set(k, { view: tex.createView(), sampler });
-  }
-  return made.get(k)!;
+try {
+  const { results, adapter } = await runParityJob(navigator.gpu, job, wgsl,
+    (name: string) => Promise.resolve(Deno.readFileSync(`${dir}/${name}`).buffer));
+  Deno.writeTextFileSync(`${dir}/adapter.txt`, `${adapter}\n`);
+  Deno.writeFileSync(`${dir}/results.f32`, results);
+} catch (e) {
+  fail((e as Error).message);
 }
-const bindGroup = device.createBindGroup({
-  layout,
-  entries: decls.map((d) => {
-    if (d.binding === 0) return { binding: 0, resource: { buffer: inBuf } };
-    if (d.binding === 1) return { binding: 1, resource: { buffer: outBuf } };
-    if (d.binding === 2) return { binding: 2, resource: { buffer: params } };
-    const t = texture(slot(d.binding));
-    return { binding: d.binding, resource: d.type === "sampler" ? t.sampler : t.view };
-  }),
-});
-
-const encoder = device.createCommandEncoder();
-const pass = encoder.beginComputePass();
-pass.setPipeline(pipeline);
-pass.setBindGroup(0, bindGroup);
-pass.dispatchWorkgroups(Math.ceil(job.count / 64));
-pass.end();
-encoder.copyBufferToBuffer(outBuf, 0, readBuf, 0, bytes);
-device.queue.submit([encoder.finish()]);
-await readBuf.mapAsync(GPUMapMode.READ);
-const results = new Uint8Array(readBuf.getMappedRange().slice(0, inputs.byteLength));
-readBuf.unmap();
-const internalError = await device.popErrorScope();
-const validationError = await device.popErrorScope();
-if (validationError || internalError) fail(`WebGPU error: ${(validationError ?? internalError)!.message}`);
-Deno.writeFileSync(`${dir}/results.f32`, results);

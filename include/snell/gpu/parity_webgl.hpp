@@ -10,9 +10,9 @@
 // writes its four output vectors to four RGBA32F colour attachments, read back
 // as floats (EXT_color_buffer_float). The case's textures keep their uniform
 // names, levels and filters (a texture without mips is clamped to level 0,
-// as on GL). The browser side is tools/webgl/run_parity.mjs (a page served on
-// 127.0.0.1 for the one Chromium it starts); the renderer string it reports
-// is kept in the job folder.
+// as on GL). The browser side is tools/webgl/parity_page.js, served on
+// 127.0.0.1 by tools/browser/run_page.mjs to the one Chromium it starts; the
+// renderer string it reports is kept in the job folder.
 #pragma once
 
 #include "hlsl.hpp"  // runTool, file helpers
@@ -28,7 +28,7 @@
 namespace snell::gpu {
 
 // Where the WebGL 2 runtime's tools are: Node.js (runs the page's server),
-// Chromium (Debian's chromium package) and tools/webgl.
+// Chromium (Debian's chromium package) and tools/webgl (tools/browser beside it).
 struct WebGlTools {
   std::string node = "node";
   std::string chromium = "chromium";
@@ -101,9 +101,12 @@ inline std::vector<ParityIO> runParityWebGl(const WebGlTools& webgl,
   detail::writeFloats(job / "inputs.f32", reinterpret_cast<const float*>(inputs.data()), 16 * inputs.size());
   fs::remove(job / "results.f32", ec);
 
-  const fs::path script = webgl.toolsDir / "run_parity.mjs";
+  const fs::path script = webgl.toolsDir / ".." / "browser" / "run_page.mjs";
   if (!fs::exists(script)) throw Error("the WebGL 2 runtime's page server is missing: no " + script.string());
-  const ToolResult t = runTool(webgl.node, {script.string(), job.string(), webgl.chromium}, "nodejs");
+  const ToolResult t = runTool(webgl.node,
+                               {script.string(), (webgl.toolsDir / "parity_page.js").string(), job.string(),
+                                "results.f32", "--chromium=" + webgl.chromium},
+                               "nodejs");
   if (t.exitCode != 0)
     throw Error("the WebGL 2 runtime failed on " + job.string() + " (exit " + std::to_string(t.exitCode) + "):\n" +
                 detail::indent(mapInfoLog(t.output, src)));

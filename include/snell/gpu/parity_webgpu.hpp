@@ -38,6 +38,8 @@ namespace snell::gpu {
 struct WebGpuTools {
   std::string deno;
   std::filesystem::path toolsDir;
+  std::string node = "node";          // runs tools/browser/run_page.mjs for runParityWebGpuInChromium
+  std::string chromium = "chromium";  // Debian's chromium: WebGPU on its SwiftShader adapter
 };
 
 constexpr int kParityWebGpuFirstTexture = 16;
@@ -167,6 +169,40 @@ inline std::vector<ParityIO> runParityWebGpu(const WebGpuTools& webgpu,
     throw Error("the WebGPU runtime wrote " + std::to_string(bytes.size()) + " bytes of results for " +
                 std::to_string(inputs.size()) + " cases: " + (job / "results.f32").string());
   std::vector<ParityIO> out(inputs.size());
+  if (!bytes.empty()) std::memcpy(out.data(), bytes.data(), bytes.size());
+  return out;
+}
+
+// The WGSL of a job runParityWebGpu left in workDir (its shader.wgsl, inputs and textures), run
+// again on Chromium's WebGPU (Dawn and Tint; the SwiftShader adapter, no GPU) by
+// tools/webgpu/chromium_page.js: the second WGSL implementation executing the same WGSL.
+// `adapter`, if given, receives the adapter's description.
+inline std::vector<ParityIO> runParityWebGpuInChromium(const WebGpuTools& webgpu, const std::filesystem::path& workDir,
+                                                       const std::string& caseFile, const std::string& entry,
+                                                       std::size_t count, std::string* adapter = nullptr) {
+  namespace fs = std::filesystem;
+  const fs::path job = workDir / (fs::path(caseFile).stem().string() + "." + entry);
+  if (!fs::exists(job / "shader.wgsl"))
+    throw Error("runParityWebGpuInChromium: no " + (job / "shader.wgsl").string() + " (run runParityWebGpu first)");
+  std::error_code ec;
+  fs::remove(job / "results_chromium.f32", ec);
+  const fs::path script = webgpu.toolsDir / ".." / "browser" / "run_page.mjs";
+  const ToolResult t = runTool(webgpu.node,
+                               {script.string(), (webgpu.toolsDir / "chromium_page.js").string(), job.string(),
+                                "results_chromium.f32", "--webgpu", "--chromium=" + webgpu.chromium},
+                               "nodejs");
+  if (t.exitCode != 0)
+    throw Error("Chromium's WebGPU failed on " + job.string() + " (exit " + std::to_string(t.exitCode) + "):\n" +
+                detail::indent(t.output));
+  const std::string bytes = detail::readTextFile(job / "results_chromium.f32");
+  if (bytes.size() != count * sizeof(ParityIO))
+    throw Error("Chromium's WebGPU wrote " + std::to_string(bytes.size()) + " bytes of results for " +
+                std::to_string(count) + " cases: " + (job / "results_chromium.f32").string());
+  if (adapter) {
+    *adapter = detail::readTextFile(job / "renderer.txt");
+    while (!adapter->empty() && adapter->back() == '\n') adapter->pop_back();
+  }
+  std::vector<ParityIO> out(count);
   if (!bytes.empty()) std::memcpy(out.data(), bytes.data(), bytes.size());
   return out;
 }

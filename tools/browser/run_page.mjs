@@ -1,27 +1,27 @@
-// The WebGL 2 parity runtime's browser side (include/snell/gpu/parity_webgl.hpp
-// writes the job and reads the results): serves parity_page.js and the job on
-// 127.0.0.1, starts one headless Chromium on that page, and writes what the
-// page posts back.
+// Runs a parity job in headless Chromium: serves a page module and the job's
+// files on 127.0.0.1, starts one Chromium on that page, and writes what the
+// page posts back. The WebGL 2 runtime (tools/webgl/parity_page.js) and the
+// WebGPU smoke run in Chromium (tools/webgpu/chromium_page.js) use it.
 //
-//   node run_parity.mjs JOB_DIR [CHROMIUM]
+//   node run_page.mjs PAGE_JS JOB_DIR RESULTS_FILE [--webgpu] [--chromium=PATH]
 //
-// JOB_DIR holds job.json ({count, columns, textures: [{uniform, levels:
-// [[w, h], ...], mag, min, mip}]}), shader.frag (ES 3.00, flattened),
-// inputs.f32 (16 floats per case) and tex_<k>.f32 (every level's RGBA32F
-// texels, level 0 first). Writes results.f32 (16 floats per case) and
-// renderer.txt. Any failure (no Chromium, no WebGL 2, a compile error, a
-// timeout) exits with status 1 and a message on stderr.
+// The page fetches /job/<file> (job.json, shader.frag, shader.wgsl, inputs.f32,
+// tex_<k>.f32) and posts /renderer (kept in renderer.txt), /log (timing.txt),
+// /results (written to JOB_DIR/RESULTS_FILE) or /error. --webgpu turns on
+// Chromium's WebGPU on SwiftShader. Any failure (no Chromium, a page error, a
+// crashed GPU process, a timeout) exits with status 1 and a message on stderr.
 import { spawn } from "node:child_process";
 import fs from "node:fs";
 import http from "node:http";
 import os from "node:os";
 import path from "node:path";
-import { fileURLToPath } from "node:url";
 
-const here = path.dirname(fileURLToPath(import.meta.url));
-const [dir, chromium = "chromium"] = process.argv.slice(2);
+const args = process.argv.slice(2);
+const webgpu = args.includes("--webgpu");
+const chromium = (args.find((a) => a.startsWith("--chromium=")) ?? "--chromium=chromium").slice("--chromium=".length);
+const [pageJs, dir, resultsFile] = args.filter((a) => !a.startsWith("--"));
 // SwiftShader compiles a whole technique in tens of seconds; a page that says nothing for this long is stuck.
-const timeoutMs = Number(process.env.SNELL_WEBGL_TIMEOUT_MS ?? 600000);
+const timeoutMs = Number(process.env.SNELL_BROWSER_TIMEOUT_MS ?? 600000);
 
 let browser = null;
 let profile = null;
@@ -31,12 +31,12 @@ let finishing = false;
 function finish(status, message) {
   if (finishing) return;
   finishing = true;
-  if (message) console.error(`run_parity.mjs: ${message}`);
+  if (message) console.error(`run_page.mjs: ${message}`);
   const done = () => {
     try {
       if (profile) fs.rmSync(profile, { recursive: true, force: true, maxRetries: 10, retryDelay: 100 });
     } catch (e) {
-      console.error(`run_parity.mjs: cannot remove ${profile}: ${e.message}`);
+      console.error(`run_page.mjs: cannot remove ${profile}: ${e.message}`);
     }
     process.exit(status);
   };
@@ -51,11 +51,14 @@ function finish(status, message) {
   if (browser && browser.exitCode === null && browser.signalCode === null) browser.once("exit", () => setTimeout(done, 50));
   else done();
 }
-if (!dir) finish(1, "usage: run_parity.mjs JOB_DIR [CHROMIUM]");
+if (!pageJs || !dir || !resultsFile) finish(1, "usage: run_page.mjs PAGE_JS JOB_DIR RESULTS_FILE [--webgpu] [--chromium=PATH]");
+if (!fs.existsSync(pageJs)) finish(1, `no page module ${pageJs}`);
 if (!fs.existsSync(path.join(dir, "job.json"))) finish(1, `no job.json in ${dir}`);
 
-const page = '<!doctype html><meta charset="utf-8"><title>snell parity</title><script type="module" src="/parity_page.js"></script>';
-const jobFiles = /^\/job\/(job\.json|shader\.frag|inputs\.f32|tex_\d+\.f32)$/;
+const page = '<!doctype html><meta charset="utf-8"><title>snell parity</title><script type="module" src="/page.js"></script>';
+const jobFiles = /^\/job\/(job\.json|shader\.frag|shader\.wgsl|inputs\.f32|tex_\d+\.f32)$/;
+// Modules the page imports, next to it: /lib/<name>.js.
+const libFiles = /^\/lib\/(\w+\.js)$/;
 const server = http.createServer((req, res) => {
   const body = [];
   req.on("data", (d) => body.push(d));
@@ -64,8 +67,10 @@ const server = http.createServer((req, res) => {
     let m;
     if (req.method === "GET" && req.url === "/") {
       res.writeHead(200, { "content-type": "text/html" }).end(page);
-    } else if (req.method === "GET" && req.url === "/parity_page.js") {
-      res.writeHead(200, { "content-type": "text/javascript" }).end(fs.readFileSync(path.join(here, "parity_page.js")));
+    } else if (req.method === "GET" && req.url === "/page.js") {
+      res.writeHead(200, { "content-type": "text/javascript" }).end(fs.readFileSync(pageJs));
+    } else if (req.method === "GET" && (m = libFiles.exec(req.url)) && fs.existsSync(path.join(path.dirname(pageJs), m[1]))) {
+      res.writeHead(200, { "content-type": "text/javascript" }).end(fs.readFileSync(path.join(path.dirname(pageJs), m[1])));
     } else if (req.method === "GET" && (m = jobFiles.exec(req.url))) {
       res.writeHead(200, { "content-type": "application/octet-stream" }).end(fs.readFileSync(path.join(dir, m[1])));
     } else if (req.method === "POST" && req.url === "/renderer") {
@@ -75,7 +80,7 @@ const server = http.createServer((req, res) => {
       fs.writeFileSync(path.join(dir, "timing.txt"), data.toString() + "\n");
       res.end();
     } else if (req.method === "POST" && req.url === "/results") {
-      fs.writeFileSync(path.join(dir, "results.f32"), data);
+      fs.writeFileSync(path.join(dir, resultsFile), data);
       res.end();
       server.close();
       finish(0);
@@ -90,12 +95,15 @@ const server = http.createServer((req, res) => {
 
 server.listen(0, "127.0.0.1", () => {
   const url = `http://127.0.0.1:${server.address().port}/`;
-  profile = fs.mkdtempSync(path.join(os.tmpdir(), "snell-webgl-"));
-  // SwiftShader through ANGLE: WebGL 2 with no GPU, the same on every machine.
-  const args = ["--headless=new", "--no-sandbox", "--no-first-run", "--no-default-browser-check", "--disable-extensions",
-    "--use-angle=swiftshader", "--enable-unsafe-swiftshader", `--user-data-dir=${profile}`, url];
+  profile = fs.mkdtempSync(path.join(os.tmpdir(), "snell-chromium-"));
+  // SwiftShader: WebGL 2 (through ANGLE) and WebGPU (through Dawn) with no GPU, the same on every machine.
+  const flags = ["--headless=new", "--no-sandbox", "--no-first-run", "--no-default-browser-check", "--disable-extensions",
+    "--use-angle=swiftshader", "--enable-unsafe-swiftshader", `--user-data-dir=${profile}`,
+    // The page draws nothing on screen: without GPU compositing Chromium starts in a third of the time.
+    "--disable-gpu-compositing"];
+  if (webgpu) flags.push("--enable-unsafe-webgpu", "--use-webgpu-adapter=swiftshader");
   let log = "";
-  browser = spawn(chromium, args, { stdio: ["ignore", "ignore", "pipe"], detached: true });
+  browser = spawn(chromium, [...flags, url], { stdio: ["ignore", "ignore", "pipe"], detached: true });
   browser.stderr.on("data", (d) => {
     log = (log + d).slice(-4000);
     // A crashed GPU process loses the page's context; the page may not learn of it before it reads back.
@@ -107,4 +115,4 @@ server.listen(0, "127.0.0.1", () => {
   browser.on("exit", (code, signal) =>
     finish(1, `Chromium exited (${signal ?? code}) before the page posted its results; its last output:\n${log}`));
 });
-setTimeout(() => finish(1, `no results after ${timeoutMs / 1000} s (SNELL_WEBGL_TIMEOUT_MS)`), timeoutMs).unref();
+setTimeout(() => finish(1, `no results after ${timeoutMs / 1000} s (SNELL_BROWSER_TIMEOUT_MS)`), timeoutMs).unref();
