@@ -6,15 +6,15 @@
 // glsl/snell a function is defined in; the texture hooks apart) with the cases
 // and the largest relative difference.
 //
-//   node tools/parity/tested_on.mjs build/Testing/Temporary/LastTest.log
+//   node tools/parity/tested_on.mjs build/Testing/Temporary/LastTest.log [more logs]
 import fs from "node:fs";
 import path from "node:path";
 import { fileURLToPath } from "node:url";
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), "../..");
-const log = process.argv[2];
-if (!log) {
-  console.error("usage: tested_on.mjs LastTest.log");
+const logs = process.argv.slice(2);
+if (!logs.length) {
+  console.error("usage: tested_on.mjs LastTest.log [more logs]");
   process.exit(2);
 }
 
@@ -33,18 +33,28 @@ const walk = (dir) => {
 };
 walk(path.join(root, "glsl", "snell"));
 
-const names = { parity: "GLSL", "parity-hlsl": "HLSL", "parity-vulkan": "Vulkan GLSL", "parity-webgpu": "WGSL", "parity-webgl": "WebGL 2 (ES 3.00)" };
+// The report line's tag and backend= field -> the runtime as the README names it.
+const names = {
+  "parity osmesa": "GLSL 450, OSMesa",
+  "parity egl": "GLSL 450, EGL",
+  "parity-hlsl osmesa": "HLSL, OSMesa",
+  "parity-vulkan vulkan": "Vulkan GLSL, lavapipe",
+  "parity-webgpu webgpu": "WGSL, Deno WebGPU",
+  "parity-webgl webgl2": "ES 3.00, WebGL 2 (Chromium)",
+};
 const runs = new Map();  // runtime -> function -> record (the last one wins)
+for (const name of Object.values(names)) runs.set(name, new Map());  // the README's order
 const line = /^\[(parity[\w-]*)\] (\w+) file=\S+ backend=(\S+) cases=(\d+) mismatches=(\d+) flushed=(\d+) maxAbs=(\S+) maxRel=(\S+) digests in=\w+ cpu=(\w+) gpu=(\w+)/;
-for (const text of fs.readFileSync(log, "utf8").split("\n")) {
+for (const text of logs.flatMap((log) => fs.readFileSync(log, "utf8").split("\n"))) {
   const m = line.exec(text);
   if (!m) continue;
-  const runtime = `${names[m[1]] ?? m[1]}, ${m[3]}`;
+  const runtime = names[`${m[1]} ${m[3]}`] ?? `${m[1]} ${m[3]}`;
   if (!runs.has(runtime)) runs.set(runtime, new Map());
   runs.get(runtime).set(m[2], { cases: +m[4], mismatches: +m[5], flushed: +m[6], maxRel: +m[8], identical: m[9] === m[10] });
 }
+for (const [runtime, fns] of runs) if (fns.size === 0) runs.delete(runtime);
 if (runs.size === 0) {
-  console.error(`no parity report lines in ${log}`);
+  console.error(`no parity report lines in ${logs.join(", ")}`);
   process.exit(1);
 }
 const fmt = (n) => n.toLocaleString("en-US");
