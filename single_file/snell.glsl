@@ -2875,7 +2875,8 @@ use: level 0, one pass over the depth buffer (fragment: px = ivec2(gl_FragCoord.
        out = snellDepthMinMaxReduce(pyramidTex, L, px, surface.emptyDepth);
      C++: snell::snellBuildDepthPyramid(depthTexture, surface) (include/snell/depth_pyramid.hpp)
      zMin/zMax of the whole buffer: the top (1x1) level's y and z.
-  A full GL pass is examples/glsl/depth_pyramid.frag.
+  A full GL pass is glsl/passes/depth_pyramid.frag (driven level by level by
+  snell::gpu::DepthPyramidPass).
 texel layout (RGBA32F):
   x  mean depth value (window depth, the buffer's own convention) of the valid
      children; emptyDepth when none is valid
@@ -6169,7 +6170,7 @@ use: SnellTechnique t = snellPresetDir();   // or any preset, then adjust
      SnellMaterial m = snellMaterial();
      SnellView v = snellView();
      SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(frontPosition, frontNormal, dN,
-         backDepth, backNormal, backPyramid, back,
+         backDepth, backNormal, backPyramid, back, frontLayerDepth, frontLayerNormal, frontLayer,
          sceneDepth, sceneNormal, scenePyramid, sceneColor, scene, environment, t, m, v);
      fragColor = vec4(r.color, 1.0f);
      SnellTwoInterfaceExit e = snellTwoInterfaceExit(origin, dir, sceneDepth, sceneNormal,

@@ -5712,7 +5712,7 @@ use: SnellTechnique t = snellPresetDir();   // or any preset, then adjust
      SnellMaterial m = snellMaterial();
      SnellView v = snellView();
      SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(frontPosition, frontNormal, dN,
-         backDepth, backNormal, backPyramid, back,
+         backDepth, backNormal, backPyramid, back, frontLayerDepth, frontLayerNormal, frontLayer,
          sceneDepth, sceneNormal, scenePyramid, sceneColor, scene, environment, t, m, v);
      fragColor = vec4(r.color, 1.0f);
      SnellTwoInterfaceExit e = snellTwoInterfaceExit(origin, dir, sceneDepth, sceneNormal,

@@ -12,7 +12,8 @@ use: level 0, one pass over the depth buffer (fragment: px = ivec2(gl_FragCoord.
        out = snellDepthMinMaxReduce(pyramidTex, L, px, surface.emptyDepth);
      C++: snell::snellBuildDepthPyramid(depthTexture, surface) (include/snell/depth_pyramid.hpp)
      zMin/zMax of the whole buffer: the top (1x1) level's y and z.
-  A full GL pass is examples/glsl/depth_pyramid.frag.
+  A full GL pass is glsl/passes/depth_pyramid.frag (driven level by level by
+  snell::gpu::DepthPyramidPass).
 texel layout (RGBA32F):
   x  mean depth value (window depth, the buffer's own convention) of the valid
      children; emptyDepth when none is valid
