@@ -5,8 +5,8 @@
 //
 //   node run_page.mjs PAGE_JS JOB_DIR RESULTS_FILE [--webgpu] [--chromium=PATH]
 //
-// The page fetches /job/<file> (job.json, shader.frag, shader.wgsl, inputs.f32,
-// tex_<k>.f32) and posts /renderer (kept in renderer.txt), /log (timing.txt),
+// The page imports /browser/page_io.js (get, post), fetches /job/<file>
+// (job.json, shader.frag, shader.wgsl, inputs.f32, tex_<k>.f32) and posts /renderer (kept in renderer.txt), /log (timing.txt),
 // /results (written to JOB_DIR/RESULTS_FILE) or /error. --webgpu turns on
 // Chromium's WebGPU on SwiftShader. Any failure (no Chromium, a page error, a
 // crashed GPU process, a timeout) exits with status 1 and a message on stderr.
@@ -71,6 +71,8 @@ const server = http.createServer((req, res) => {
       res.writeHead(200, { "content-type": "text/javascript" }).end(fs.readFileSync(pageJs));
     } else if (req.method === "GET" && (m = libFiles.exec(req.url)) && fs.existsSync(path.join(path.dirname(pageJs), m[1]))) {
       res.writeHead(200, { "content-type": "text/javascript" }).end(fs.readFileSync(path.join(path.dirname(pageJs), m[1])));
+    } else if (req.method === "GET" && req.url === "/browser/page_io.js") {
+      res.writeHead(200, { "content-type": "text/javascript" }).end(fs.readFileSync(new URL("page_io.js", import.meta.url)));
     } else if (req.method === "GET" && (m = jobFiles.exec(req.url))) {
       res.writeHead(200, { "content-type": "application/octet-stream" }).end(fs.readFileSync(path.join(dir, m[1])));
     } else if (req.method === "POST" && req.url === "/renderer") {

@@ -1,14 +1,7 @@
 // The WebGL 2 parity runtime's page (served by tools/browser/run_page.mjs): runs the job's
 // ES 3.00 fragment shader once per case and posts the four output vectors of
 // every case back as 16 floats.
-async function post(what, body) {
-  await fetch(what, { method: "POST", body });
-}
-async function get(file) {
-  const r = await fetch(`/job/${file}`);
-  if (!r.ok) throw new Error(`cannot read the job's ${file} (${r.status})`);
-  return r;
-}
+import { get, post } from "/browser/page_io.js";
 
 async function run() {
   const job = await (await get("job.json")).json();

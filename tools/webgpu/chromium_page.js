@@ -1,16 +1,8 @@
 // The WebGPU smoke run's page in Chromium (served by tools/browser/run_page.mjs
 // --webgpu): the WGSL a parity job's Deno run left (shader.wgsl), dispatched by
 // dispatch.js on Chromium's WebGPU (Dawn; its SwiftShader adapter with no GPU).
+import { get, post } from "/browser/page_io.js";
 import { runParityJob } from "/lib/dispatch.js";
-
-async function post(what, body) {
-  await fetch(what, { method: "POST", body });
-}
-async function get(file) {
-  const r = await fetch(`/job/${file}`);
-  if (!r.ok) throw new Error(`cannot read the job's ${file} (${r.status})`);
-  return r;
-}
 
 async function run() {
   if (!navigator.gpu) throw new Error("this browser has no WebGPU (Chromium needs --enable-unsafe-webgpu)");
