@@ -29,6 +29,16 @@ namespace {
 
 using snell::gpu::Backend;
 
+// The C++ build on each input with its denormals flushed, where it has one (the C++ result on the
+// input itself otherwise): the prelude's rule for denormal data lets a runtime give either.
+std::vector<ParityIO> cpuOnFlushedInputs(const CaseSpec& spec, const std::vector<ParityIO>& inputs,
+                                         const std::vector<ParityIO>& cpu) {
+  std::vector<ParityIO> flushed = cpu;
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+    if (snell::gpu::hasDenormal(inputs[i])) flushed[i] = spec.cpu(snell::gpu::flushDenormals(inputs[i]));
+  return flushed;
+}
+
 class ParityTest : public ::testing::Test {
  public:
   ParityTest(const CaseSpec* spec, const ParityRuntime* runtime) : spec_(spec), runtime_(runtime) {}
@@ -40,10 +50,7 @@ class ParityTest : public ::testing::Test {
     std::vector<ParityIO> cpu;
     cpu.reserve(inputs.size());
     for (const ParityIO& in : inputs) cpu.push_back(spec_->cpu(in));
-    // The prelude's rule for denormal data: the result on the input or on it with denormals flushed.
-    std::vector<ParityIO> cpuFlushed = cpu;
-    for (std::size_t i = 0; i < inputs.size(); ++i)
-      if (snell::gpu::hasDenormal(inputs[i])) cpuFlushed[i] = spec_->cpu(snell::gpu::flushDenormals(inputs[i]));
+    const std::vector<ParityIO> cpuFlushed = cpuOnFlushedInputs(*spec_, inputs, cpu);
     const std::vector<ParityIO> gpu = runtime_->run(*spec_, inputs);
     const snell::gpu::ParityReport r = snell::gpu::compareParity(gpu, cpu, spec_->outputs, &inputs, &cpuFlushed);
     // The figures the closing notes quote.
@@ -137,11 +144,9 @@ void runWebGpuInChromium(const std::string& function) {
   ASSERT_NE(spec, nullptr) << "no parity case of " << function;
   if (spec->setup) spec->setup();
   const std::vector<ParityIO> inputs = spec->inputs();
-  std::vector<ParityIO> cpu, cpuFlushed;
-  for (const ParityIO& in : inputs) {
-    cpu.push_back(spec->cpu(in));
-    cpuFlushed.push_back(snell::gpu::hasDenormal(in) ? spec->cpu(snell::gpu::flushDenormals(in)) : cpu.back());
-  }
+  std::vector<ParityIO> cpu;
+  for (const ParityIO& in : inputs) cpu.push_back(spec->cpu(in));
+  const std::vector<ParityIO> cpuFlushed = cpuOnFlushedInputs(*spec, inputs, cpu);
   const fs::path work = hlslWorkDir() / "webgpu_chromium";
   snell::gpu::runParityWebGpu(webGpuTools(), {kRoot / "glsl", kRoot / "tests" / "parity" / "cases"}, spec->glslFile,
                               spec->entry, inputs, spec->textures, work, hlslTools(), spec->entrySource);

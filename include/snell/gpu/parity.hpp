@@ -217,17 +217,18 @@ struct ParityReport {
 // The prelude's rule for data (positions, directions, matrix entries): a runtime may flush a
 // denormal to 0 (SwiftShader, most GPUs) or keep it (llvmpipe, the CPU), and the result is the
 // function's on either. The input with every denormal replaced by a zero of its sign.
+inline bool isDenormal(float x) { return std::fpclassify(x) == FP_SUBNORMAL; }
 inline ParityIO flushDenormals(const ParityIO& in) {
   ParityIO r = in;
   for (glm::vec4& v : r.v)
     for (int k = 0; k < 4; ++k)
-      if (v[k] != 0.0f && std::fabs(v[k]) < 1.175494351e-38f) v[k] = std::copysign(0.0f, v[k]);
+      if (isDenormal(v[k])) v[k] = std::copysign(0.0f, v[k]);
   return r;
 }
 inline bool hasDenormal(const ParityIO& in) {
   for (const glm::vec4& v : in.v)
     for (int k = 0; k < 4; ++k)
-      if (v[k] != 0.0f && std::fabs(v[k]) < 1.175494351e-38f) return true;
+      if (isDenormal(v[k])) return true;
   return false;
 }
 

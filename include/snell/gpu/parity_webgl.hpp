@@ -10,16 +10,16 @@
 // writes its four output vectors to four RGBA32F colour attachments, read back
 // as floats (EXT_color_buffer_float). The case's textures keep their uniform
 // names, levels and filters (a texture without mips is clamped to level 0,
-// as on GL). The browser side is tools/webgl/parity_page.js, served on
-// 127.0.0.1 by tools/browser/run_page.mjs to the one Chromium it starts; the
-// renderer string it reports is kept in the job folder.
+// as on GL). The browser side is tools/webgl/parity_page.js, run by
+// detail::runChromiumPage (chromium_page.hpp); the renderer string it reports
+// is kept in the job folder.
 #pragma once
 
-#include "hlsl.hpp"  // runTool, file helpers
+#include "chromium_page.hpp"
+#include "hlsl.hpp"  // file helpers
 #include "include_flattener.hpp"
 #include "parity.hpp"
 
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -99,28 +99,8 @@ inline std::vector<ParityIO> runParityWebGl(const WebGlTools& webgl,
   detail::writeTextFile(job / "job.json", json + "]}\n");
   static_assert(sizeof(ParityIO) == 16 * sizeof(float), "ParityIO is 16 packed floats");
   detail::writeFloats(job / "inputs.f32", reinterpret_cast<const float*>(inputs.data()), 16 * inputs.size());
-  fs::remove(job / "results.f32", ec);
-
-  const fs::path script = webgl.toolsDir / ".." / "browser" / "run_page.mjs";
-  if (!fs::exists(script)) throw Error("the WebGL 2 runtime's page server is missing: no " + script.string());
-  const ToolResult t = runTool(webgl.node,
-                               {script.string(), (webgl.toolsDir / "parity_page.js").string(), job.string(),
-                                "results.f32", "--chromium=" + webgl.chromium},
-                               "nodejs");
-  if (t.exitCode != 0)
-    throw Error("the WebGL 2 runtime failed on " + job.string() + " (exit " + std::to_string(t.exitCode) + "):\n" +
-                detail::indent(mapInfoLog(t.output, src)));
-  const std::string bytes = detail::readTextFile(job / "results.f32");
-  if (bytes.size() != inputs.size() * sizeof(ParityIO))
-    throw Error("the WebGL 2 runtime wrote " + std::to_string(bytes.size()) + " bytes of results for " +
-                std::to_string(inputs.size()) + " cases: " + (job / "results.f32").string());
-  if (renderer) {
-    *renderer = detail::readTextFile(job / "renderer.txt");
-    while (!renderer->empty() && renderer->back() == '\n') renderer->pop_back();
-  }
-  std::vector<ParityIO> out(inputs.size());
-  if (!bytes.empty()) std::memcpy(out.data(), bytes.data(), bytes.size());
-  return out;
+  return detail::runChromiumPage(webgl.node, webgl.chromium, webgl.toolsDir / "parity_page.js", job, "results.f32", {},
+                                 inputs.size(), "the WebGL 2 runtime", &src, renderer);
 }
 
 }  // namespace snell::gpu

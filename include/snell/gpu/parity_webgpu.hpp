@@ -20,10 +20,10 @@
 // tools/webgpu's lockfile.
 #pragma once
 
+#include "chromium_page.hpp"
 #include "hlsl.hpp"  // runTool, the tools' names, file helpers
 #include "parity.hpp"
 
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -38,7 +38,7 @@ namespace snell::gpu {
 struct WebGpuTools {
   std::string deno;
   std::filesystem::path toolsDir;
-  std::string node = "node";          // runs tools/browser/run_page.mjs for runParityWebGpuInChromium
+  std::string node = "node";          // runs tint_check.mjs, and run_page.mjs for runParityWebGpuInChromium
   std::string chromium = "chromium";  // Debian's chromium: WebGPU on its SwiftShader adapter
 };
 
@@ -162,15 +162,9 @@ inline std::vector<ParityIO> runParityWebGpu(const WebGpuTools& webgpu,
     throw Error("the WebGPU runtime failed on " + job.string() + " (deno exit " + std::to_string(t.exitCode) + "):\n" +
                 detail::indent(t.output));
   // The same WGSL through Tint (Dawn's compiler, Chrome's): the two WGSL compilers disagree on some input.
-  t = runTool("node", {(webgpu.toolsDir / "tint_check.mjs").string(), (job / "shader.wgsl").string()}, "nodejs");
+  t = runTool(webgpu.node, {(webgpu.toolsDir / "tint_check.mjs").string(), (job / "shader.wgsl").string()}, "nodejs");
   if (t.exitCode != 0) throw Error("Tint rejects the WGSL of " + job.string() + ":\n" + detail::indent(t.output));
-  const std::string bytes = detail::readTextFile(job / "results.f32");
-  if (bytes.size() != inputs.size() * sizeof(ParityIO))
-    throw Error("the WebGPU runtime wrote " + std::to_string(bytes.size()) + " bytes of results for " +
-                std::to_string(inputs.size()) + " cases: " + (job / "results.f32").string());
-  std::vector<ParityIO> out(inputs.size());
-  if (!bytes.empty()) std::memcpy(out.data(), bytes.data(), bytes.size());
-  return out;
+  return detail::readParityResults(job / "results.f32", inputs.size(), "the WebGPU runtime");
 }
 
 // The WGSL of a job runParityWebGpu left in workDir (its shader.wgsl, inputs and textures), run
@@ -184,27 +178,8 @@ inline std::vector<ParityIO> runParityWebGpuInChromium(const WebGpuTools& webgpu
   const fs::path job = workDir / (fs::path(caseFile).stem().string() + "." + entry);
   if (!fs::exists(job / "shader.wgsl"))
     throw Error("runParityWebGpuInChromium: no " + (job / "shader.wgsl").string() + " (run runParityWebGpu first)");
-  std::error_code ec;
-  fs::remove(job / "results_chromium.f32", ec);
-  const fs::path script = webgpu.toolsDir / ".." / "browser" / "run_page.mjs";
-  const ToolResult t = runTool(webgpu.node,
-                               {script.string(), (webgpu.toolsDir / "chromium_page.js").string(), job.string(),
-                                "results_chromium.f32", "--webgpu", "--chromium=" + webgpu.chromium},
-                               "nodejs");
-  if (t.exitCode != 0)
-    throw Error("Chromium's WebGPU failed on " + job.string() + " (exit " + std::to_string(t.exitCode) + "):\n" +
-                detail::indent(t.output));
-  const std::string bytes = detail::readTextFile(job / "results_chromium.f32");
-  if (bytes.size() != count * sizeof(ParityIO))
-    throw Error("Chromium's WebGPU wrote " + std::to_string(bytes.size()) + " bytes of results for " +
-                std::to_string(count) + " cases: " + (job / "results_chromium.f32").string());
-  if (adapter) {
-    *adapter = detail::readTextFile(job / "renderer.txt");
-    while (!adapter->empty() && adapter->back() == '\n') adapter->pop_back();
-  }
-  std::vector<ParityIO> out(count);
-  if (!bytes.empty()) std::memcpy(out.data(), bytes.data(), bytes.size());
-  return out;
+  return detail::runChromiumPage(webgpu.node, webgpu.chromium, webgpu.toolsDir / "chromium_page.js", job,
+                                 "results_chromium.f32", {"--webgpu"}, count, "Chromium's WebGPU", nullptr, adapter);
 }
 
 }  // namespace snell::gpu
