@@ -91,7 +91,9 @@ inline std::vector<ParityIO> runParityWebGpu(const WebGpuTools& webgpu,
                                              const std::string& entrySource = {}) {
   namespace fs = std::filesystem;
   const fs::path job = workDir / (fs::path(caseFile).stem().string() + "." + entry);
-  const fs::path cases = workDir / "cases";
+  // The rewritten case file goes into the job's own folder: tests of other functions of the same case
+  // file run in parallel (ctest -j) and would rewrite a shared copy while this one compiles.
+  const fs::path cases = job / "cases";
   std::error_code ec;
   fs::create_directories(job, ec);
   fs::create_directories(cases, ec);
