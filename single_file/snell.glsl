@@ -6408,5 +6408,480 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
 }
 
 #endif
+/*
+description: the engines' screen-space refraction models by number, so a host
+  can run any of them through one call (the lab's engine rows); the names and
+  labels for C++ are in include/snell/engine_model_table.hpp.
+use: SnellEngineRefraction e = snellEngineRefraction(SNELL_ENGINE_THREEJS, p, n, eta, parameter,
+                                                     proxyFromView, sceneDepth, scene);
+  model       SNELL_ENGINE_* below
+  parameter   the model's one free value: thickness (three.js / Bevy,
+              Filament solid, HDRP sphere and box), microThickness (Filament
+              thin), the uv scale (Godot)
+  the rest    as the models' own functions (proxyFromView is read by the HDRP
+              models only; sceneDepth and scene by HDRP and Godot)
+ids:
+  SNELL_ENGINE_THREEJS          snellEngineThreeJs (threejs.glsl; Bevy's too)
+  SNELL_ENGINE_FILAMENT_SOLID   snellEngineFilamentSolid (filament.glsl)
+  SNELL_ENGINE_FILAMENT_THIN    snellEngineFilamentThin (filament.glsl)
+  SNELL_ENGINE_HDRP_SPHERE      snellEngineHdrpSphere (hdrp.glsl)
+  SNELL_ENGINE_HDRP_BOX         snellEngineHdrpBox (hdrp.glsl)
+  SNELL_ENGINE_GODOT            snellEngineGodot (godot.glsl)
+  SNELL_ENGINE_MODEL_COUNT      the number of ids (0 .. COUNT - 1)
+contract: the chosen model's function with these arguments; a model outside
+  0 .. SNELL_ENGINE_MODEL_COUNT - 1: snellEngineInvalid().
+source: the models' own files.
+*/
+#ifndef SNELL_SHADE_ENGINE_MODELS_ENGINE_MODELS_GLSL
+#define SNELL_SHADE_ENGINE_MODELS_ENGINE_MODELS_GLSL
+/*
+description: what the engines' screen-space refraction models return, and
+  the step they all share: refract the view ray at the front face, then read
+  the opaque scene's colour where a point projects. The models themselves
+  (threejs.glsl, filament.glsl, hdrp.glsl, godot.glsl) re-derive, from each
+  engine's documented source, where that engine reads its scene colour, so a
+  host can score them against snell's techniques on the same buffers (the lab
+  does). They need no back-face pass: they are snell's cheapest tier.
+use: SnellEngineRefraction e = snellEngineSeePoint(x, direction, distance, clipFromView);
+     SnellEngineRefraction e = snellEngineInvalid();   // what every model returns for invalid input
+     vec3 c = mix(environment(e.direction), SNELL_SAMPLE_LOD(sceneColor, clamp(e.uv, 0, 1), 0).xyz, e.sceneWeight);
+  p, n      the front-face fragment's view-space position and normal (the
+            normal may face either way; it is turned towards the eye)
+  eta       n_outside / n_inside (1 / ior: every engine refracts from air)
+  x         the view-space point whose projection is read
+contract:
+  - SnellEngineRefraction.uv: where the model reads the scene colour, in the
+    uv of clipFromView's buffers; it may lie outside [0,1]^2: every engine
+    reads it clamped to the edge (its sampler), the caller clamps.
+  - sceneWeight in [0,1]: the scene colour's share; the rest is the
+    environment along `direction` (HDRP's probe fallback; 0 also where the
+    point does not project: at or behind the camera).
+  - direction: unit, the direction an environment read follows.
+  - distance >= 0, finite or +inf: the length the engine absorbs over.
+  - valid false (uv 0, weight 0, direction 0, distance 0): p or n zero, NaN or
+    infinite, or eta not a finite positive normal number (snellRefract's
+    rules); the caller shows what it shows for an invalid fragment.
+  - every model that refracts starts with snellRefract(p, n, eta,
+    SNELL_TIR_ZERO) (the entry refraction): where it is not valid,
+    snellEngineInvalid(); on TIR at the entry (eta > 1, direction 0),
+    snellEngineSeePoint(p, p, 0, clipFromView): the fragment's own texel, no
+    displacement. A length parameter that is negative or NaN counts as 0, as
+    the engines clamp theirs.
+  - snellEngineSeePoint(x, direction, distance, clipFromView): uv =
+    snellViewToUv(clipFromView, x).uv and weight 1 where x projects, else uv 0
+    and weight 0; direction normalized (0 stays 0), distance as given.
+source: the engines' shared first step: T = refract(-V, N, 1/ior) at the front
+  face (three.js transmission_pars_fragment, Filament surface_light_indirect.fs,
+  HDRP Refraction.hlsl, Bevy transmission.wesl).
+*/
+#ifndef SNELL_SHADE_ENGINE_MODELS_ENGINE_REFRACTION_GLSL
+#define SNELL_SHADE_ENGINE_MODELS_ENGINE_REFRACTION_GLSL
+
+
+
+
+
+struct SnellEngineRefraction {
+  vec2 uv;
+  float sceneWeight;
+  vec3 direction;
+  float distance;
+  bool valid;
+};
+
+SNELL_FN SnellEngineRefraction snellEngineInvalid() {
+  SnellEngineRefraction e;
+  e.uv = vec2(0.0f, 0.0f);
+  e.sceneWeight = 0.0f;
+  e.direction = vec3(0.0f, 0.0f, 0.0f);
+  e.distance = 0.0f;
+  e.valid = false;
+  return e;
+}
+
+SNELL_FN SnellEngineRefraction snellEngineSeePoint(vec3 x, vec3 direction, float distance, mat4 clipFromView) {
+  SnellEngineRefraction e = snellEngineInvalid();
+  SnellScreenPoint sp = snellViewToUv(clipFromView, x);
+  if (sp.valid) {
+    e.uv = sp.uv;
+    e.sceneWeight = 1.0f;
+  }
+  e.direction = snellSafeNormalize(direction);
+  e.distance = distance;
+  e.valid = true;
+  return e;
+}
+
+#endif
+/*
+description: three.js's transmission (MeshPhysicalMaterial, r187), as a
+  screen-space refraction model: refract at the front face only, walk the
+  material's thickness along the refracted ray, and read the opaque pass's
+  colour where that point projects. Bevy's specular transmission (0.20,
+  transmission.wesl) places its point the same way (X = P + t T), so on a
+  uniformly scaled object both engines read the same texel.
+use: SnellEngineRefraction e = snellEngineThreeJs(p, n, eta, thickness, clipFromView);
+  p, n, eta       as in engine_refraction.glsl
+  thickness       the material's thickness times the model's scale (three.js
+                  "thickness", default 0: no displacement; Bevy "thickness"),
+                  view-space units; it is a constant, not the object's chord
+  clipFromView    the projection of the opaque pass's colour buffer
+contract:
+  - T = snellRefract(p, n, eta, SNELL_TIR_ZERO).direction, t = thickness (0 when negative or NaN);
+    X = p + t T; the result is snellEngineSeePoint(X, T, t, clipFromView);
+    TIR at the entry and invalid input as engine_refraction.glsl says.
+  - What the engines do around it is not modelled here: three.js's roughness
+    lod (log2(width) roughness clamp(2 ior - 2, 0, 1), bicubic mips), Bevy's
+    blur taps, the Fresnel weights and Beer-Lambert over t (the caller's).
+source: three.js r187 (npm three@0.187.0, MIT),
+  src/renderers/shaders/ShaderChunk/transmission_pars_fragment.glsl.js
+  (getVolumeTransmissionRay: refract(-v, n, 1 / ior), normalized, times
+  thickness and the model matrix's scale; getTransmissionSample at the
+  projected point); Bevy 0.20-dev (MIT OR Apache-2.0),
+  crates/bevy_pbr/src/transmission.wesl (specular_transmissive_light: the exit
+  point P + thickness T). Re-derived from their documented behaviour, not
+  copied.
+*/
+#ifndef SNELL_SHADE_ENGINE_MODELS_THREEJS_GLSL
+#define SNELL_SHADE_ENGINE_MODELS_THREEJS_GLSL
+
+
+SNELL_FN SnellEngineRefraction snellEngineThreeJs(vec3 p, vec3 n, float eta, float thickness, mat4 clipFromView) {
+  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  if (!t.valid) {
+    return snellEngineInvalid();
+  }
+  if (t.tir) {
+    return snellEngineSeePoint(p, p, 0.0f, clipFromView);
+  }
+  float d = (thickness > 0.0f ? thickness : 0.0f);
+  return snellEngineSeePoint(p + d * t.direction, t.direction, d, clipFromView);
+}
+
+#endif
+/*
+description: Filament's screen-space refraction (refractionMode screenspace),
+  its two refractionType models: "solid", which takes the object for a sphere
+  of diameter `thickness` tangent to the surface at the fragment and reads the
+  scene where the refracted ray leaves that sphere; and "thin", a slab of
+  thickness `microThickness` crossed along the refracted ray (no offset at all
+  when microThickness is 0).
+use: SnellEngineRefraction e = snellEngineFilamentSolid(p, n, eta, thickness, clipFromView);
+     SnellEngineRefraction e = snellEngineFilamentThin(p, n, eta, microThickness, clipFromView);
+  p, n, eta       as in engine_refraction.glsl
+  thickness       the sphere's diameter (Filament's material "thickness"), view-space units
+  microThickness  the slab's thickness (Filament's "microThickness")
+  clipFromView    the projection of the opaque pass's colour buffer
+contract:
+  - T = snellRefract(p, n, eta, SNELL_TIR_ZERO).direction, N the unit normal turned
+    towards the eye, c = dot(N, T) (<= 0), t = thickness or microThickness (0 when
+    negative or NaN).
+  - solid: d = -c t (the sphere's chord along T), X = p + d T.
+  - thin: d = t / max(-c, 0.001), X = p + d T.
+  - the result is snellEngineSeePoint(X, T, d, clipFromView); TIR at the
+    entry and invalid input as engine_refraction.glsl says. Screen-space mode
+    reads only X's projection, so the sphere's exit refraction (Filament's
+    cubemap mode) is not computed.
+source: Filament (Apache-2.0), shaders/src/surface_light_indirect.fs at
+  3681fe96573edd94dde8a98369a7e8aec588cfd0: refractionSolidSphere (d =
+  thickness * -NoR, position = P + d r), refractionThinSphere (d = uThickness
+  / max(-NoR, 0.001)), evaluateRefraction (screen space: the position's
+  projection). Re-derived from the engine's documented behaviour, not copied.
+*/
+#ifndef SNELL_SHADE_ENGINE_MODELS_FILAMENT_GLSL
+#define SNELL_SHADE_ENGINE_MODELS_FILAMENT_GLSL
+
+
+/* Filament refractionSolidSphere, screen space: the exit of the tangent sphere of diameter thickness */
+SNELL_FN SnellEngineRefraction snellEngineFilamentSolid(vec3 p, vec3 n, float eta, float thickness,
+                                                        mat4 clipFromView) {
+  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  if (!t.valid) {
+    return snellEngineInvalid();
+  }
+  if (t.tir) {
+    return snellEngineSeePoint(p, p, 0.0f, clipFromView);
+  }
+  vec3 nf = snellSafeNormalize(n);
+  float c = dot(nf, t.direction);
+  c = dot(nf, p) > 0.0f ? -c : c;  // the normal turned towards the eye, as snellRefract turns it
+  float d = -c * (thickness > 0.0f ? thickness : 0.0f);
+  return snellEngineSeePoint(p + d * t.direction, t.direction, d, clipFromView);
+}
+
+/* Filament refractionThinSphere, screen space: a slab of thickness microThickness */
+SNELL_FN SnellEngineRefraction snellEngineFilamentThin(vec3 p, vec3 n, float eta, float microThickness,
+                                                       mat4 clipFromView) {
+  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  if (!t.valid) {
+    return snellEngineInvalid();
+  }
+  if (t.tir) {
+    return snellEngineSeePoint(p, p, 0.0f, clipFromView);
+  }
+  vec3 nf = snellSafeNormalize(n);
+  float c = dot(nf, t.direction);
+  c = dot(nf, p) > 0.0f ? -c : c;
+  float d = (microThickness > 0.0f ? microThickness : 0.0f) / max(-c, 0.001f);
+  return snellEngineSeePoint(p + d * t.direction, t.direction, d, clipFromView);
+}
+
+#endif
+/*
+description: Unity HDRP's screen-space refraction (Lit, transparent), its
+  refraction models "Sphere" and "Box" (the UI's "Thin" runs the box model
+  with the material's thickness): the model gives an exit point and
+  direction, the exit ray is cast against the reflection probe's proxy volume,
+  and the scene colour is read where that hit projects, faded out towards the
+  screen's edges (the probe fills the rest) and replaced by the fragment's
+  own texel where the opaque scene there lies in front of the surface.
+use: SnellEngineRefraction e = snellEngineHdrpSphere(p, n, eta, thickness, proxyFromView, sceneDepth, scene);
+     SnellEngineRefraction e = snellEngineHdrpBox(p, n, eta, thickness, proxyFromView, sceneDepth, scene);
+     float s = snellEngineProxyExit(origin, dir, proxyFromView);
+     SnellEngineRefraction e = snellEngineHdrpProxyLookup(p, origin, dir, dist, proxyFromView, sceneDepth, scene);
+     float w = snellEngineHdrpEdgeFade(uv);
+  p, n, eta       as in engine_refraction.glsl
+  thickness       the sphere's diameter / the box's (slab's) thickness
+                  (HDRP's material "thickness"), view-space units
+  proxyFromView   the probe's proxy box: the affine map from view space to the
+                  box's own space, where the box is [-1,1]^3 (a box of half
+                  extents h centred at c with axes A: scale(1/h) A^T translate(-c))
+  sceneDepth, scene  the opaque scene's depth buffer and its SnellDepthSurface
+                  (its clipFromView is the colour buffer's projection)
+options:
+  SNELL_HDRP_SCREEN_FADE_DISTANCE  the edge fade's width (HDRP's volume
+                  setting screenFadeDistance, default 0.1f)
+contract:
+  - T = snellRefract(p, n, eta, SNELL_TIR_ZERO).direction, N the unit normal turned
+    towards the eye, c = dot(N, T), t = thickness (0 when negative or NaN).
+  - sphere: d = -c t, P1 = p + d T, N1 = (c T - 0.5 N) / |c T - 0.5 N| (towards
+    the sphere's centre p - N t / 2), R2 = snellRefract(T, N1, 1 / eta,
+    SNELL_TIR_ZERO) (T on TIR); snellEngineHdrpProxyLookup(p, P1, R2, d, ...).
+  - box: d = t / max(-c, 1e-5), snellEngineHdrpProxyLookup(p, p + d T, p / |p|,
+    d, ...): a slab's exit restores the view direction.
+  - snellEngineProxyExit(o, dir, M): with o', d' = o and dir in the box's space,
+    s = min over the axes with d'_i != 0 of (sign(d'_i) - o'_i) / d'_i, then
+    max(s, 0): the distance to the box's far side, in units of |dir|;
+    SNELL_FLT_MAX when no axis is crossed (a degenerate proxy); 0 when o' or
+    d' is not finite.
+  - snellEngineHdrpProxyLookup(p, o, dir, d, ...): H = o + s dir/|dir|; where H
+    does not project, weight 0 (the probe); else uv = H's projection, weight =
+    snellEngineHdrpEdgeFade(uv), and when the scene depth at uv is valid and no
+    farther from the eye than p, uv becomes p's own projection (HDRP's halo
+    test; weight kept). direction dir/|dir|, distance d.
+  - snellEngineHdrpEdgeFade(uv) = S(x) S(y) with x = clamp((1 - |2 u - 1|) /
+    SNELL_HDRP_SCREEN_FADE_DISTANCE, 0, 1) (y from v), S(x) = x^2 (3 - 2x);
+    non-finite uv: 0.
+  - TIR at the entry and invalid input as engine_refraction.glsl says. Not modelled:
+    the mip level from roughness (alpha^1.3 (levels - 1), its halo shrink), the
+    probe's content (the caller's environment), Fresnel and absorption weights.
+source: Unity Graphics (Unity Companion License), Packages/
+  com.unity.render-pipelines.core/ShaderLibrary/Refraction.hlsl at
+  d220553d7b20798d48be08af60db4048cbd39f7d (RefractionModelSphere,
+  RefractionModelBox); com.unity.render-pipelines.high-definition/Runtime/
+  Material/Lit/Lit.hlsl at 1390609ca74ecc860907a6e87759644f944fbada
+  (EvaluateBSDF_ScreenspaceRefraction: proxy raycast, EdgeOfScreenFade, the
+  depth test against the refracting pixel). Re-derived from the engine's
+  documented behaviour, not copied.
+*/
+#ifndef SNELL_SHADE_ENGINE_MODELS_HDRP_GLSL
+#define SNELL_SHADE_ENGINE_MODELS_HDRP_GLSL
+
+
+
+#ifndef SNELL_HDRP_SCREEN_FADE_DISTANCE
+#  define SNELL_HDRP_SCREEN_FADE_DISTANCE 0.1f
+#endif
+
+/* HDRP EdgeOfScreenFade */
+SNELL_FN float snellEngineHdrpEdgeFade(vec2 uv) {
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y)) {
+    return 0.0f;
+  }
+  float x = clamp((1.0f - abs(2.0f * uv.x - 1.0f)) / SNELL_HDRP_SCREEN_FADE_DISTANCE, 0.0f, 1.0f);
+  float y = clamp((1.0f - abs(2.0f * uv.y - 1.0f)) / SNELL_HDRP_SCREEN_FADE_DISTANCE, 0.0f, 1.0f);
+  return (x * x * (3.0f - 2.0f * x)) * (y * y * (3.0f - 2.0f * y));
+}
+
+/* HDRP IntersectBoxProxy: the far side of the proxy box along the ray */
+SNELL_FN float snellEngineProxyExit(vec3 origin, vec3 dir, mat4 proxyFromView) {
+  vec4 o4 = SNELL_MUL(proxyFromView, vec4(origin.x, origin.y, origin.z, 1.0f));
+  vec4 d4 = SNELL_MUL(proxyFromView, vec4(dir.x, dir.y, dir.z, 0.0f));
+  if (!SNELL_FINITE(o4.x) || !SNELL_FINITE(o4.y) || !SNELL_FINITE(o4.z) || !SNELL_FINITE(d4.x) ||
+      !SNELL_FINITE(d4.y) || !SNELL_FINITE(d4.z)) {
+    return 0.0f;
+  }
+  // Comparisons, not min(): min() of a NaN differs between languages.
+  float s = SNELL_FLT_MAX;
+  if (d4.x != 0.0f) {
+    float c = ((d4.x > 0.0f ? 1.0f : -1.0f) - o4.x) / d4.x;
+    s = c < s ? c : s;
+  }
+  if (d4.y != 0.0f) {
+    float c = ((d4.y > 0.0f ? 1.0f : -1.0f) - o4.y) / d4.y;
+    s = c < s ? c : s;
+  }
+  if (d4.z != 0.0f) {
+    float c = ((d4.z > 0.0f ? 1.0f : -1.0f) - o4.z) / d4.z;
+    s = c < s ? c : s;
+  }
+  return s > 0.0f ? s : 0.0f;
+}
+
+/* HDRP EvaluateBSDF_ScreenspaceRefraction: proxy hit, edge fade, halo test */
+SNELL_FN SnellEngineRefraction snellEngineHdrpProxyLookup(vec3 p, vec3 origin, vec3 dir, float dist,
+                                                          mat4 proxyFromView, SNELL_TEX2D sceneDepth,
+                                                          SNELL_IN(SnellDepthSurface) scene) {
+  vec3 d = snellSafeNormalize(dir);
+  float s = snellEngineProxyExit(origin, d, proxyFromView);
+  SnellEngineRefraction e = snellEngineSeePoint(origin + s * d, d, dist, scene.clipFromView);
+  if (e.sceneWeight > 0.0f) {
+    e.sceneWeight = snellEngineHdrpEdgeFade(e.uv);
+    SnellSurfaceSample b = snellSampleSurface(sceneDepth, e.uv, scene);
+    if (b.valid && b.viewZ >= p.z) {
+      SnellScreenPoint own = snellViewToUv(scene.clipFromView, p);
+      e.uv = own.uv;
+    }
+  }
+  return e;
+}
+
+/* HDRP RefractionModelSphere, then the proxy lookup */
+SNELL_FN SnellEngineRefraction snellEngineHdrpSphere(vec3 p, vec3 n, float eta, float thickness, mat4 proxyFromView,
+                                                     SNELL_TEX2D sceneDepth, SNELL_IN(SnellDepthSurface) scene) {
+  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  if (!t.valid) {
+    return snellEngineInvalid();
+  }
+  if (t.tir) {
+    return snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
+  }
+  vec3 nf = snellSafeNormalize(n);
+  nf = dot(nf, p) > 0.0f ? -nf : nf;
+  float c = dot(nf, t.direction);
+  float d = -c * (thickness > 0.0f ? thickness : 0.0f);
+  vec3 p1 = p + d * t.direction;
+  vec3 n1 = snellSafeNormalize(c * t.direction - 0.5f * nf);
+  SnellRefraction out2 = snellRefract(t.direction, n1, 1.0f / eta, SNELL_TIR_ZERO);
+  vec3 r2 = t.direction;
+  if (out2.valid && !out2.tir) {
+    r2 = out2.direction;
+  }
+  return snellEngineHdrpProxyLookup(p, p1, r2, d, proxyFromView, sceneDepth, scene);
+}
+
+/* HDRP RefractionModelBox (also its "Thin" model), then the proxy lookup */
+SNELL_FN SnellEngineRefraction snellEngineHdrpBox(vec3 p, vec3 n, float eta, float thickness, mat4 proxyFromView,
+                                                  SNELL_TEX2D sceneDepth, SNELL_IN(SnellDepthSurface) scene) {
+  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  if (!t.valid) {
+    return snellEngineInvalid();
+  }
+  if (t.tir) {
+    return snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
+  }
+  vec3 nf = snellSafeNormalize(n);
+  nf = dot(nf, p) > 0.0f ? -nf : nf;
+  float d = (thickness > 0.0f ? thickness : 0.0f) / max(-dot(nf, t.direction), 1e-5f);
+  return snellEngineHdrpProxyLookup(p, p + d * t.direction, p, d, proxyFromView, sceneDepth, scene);
+}
+
+#endif
+/*
+description: Godot 4's refraction (BaseMaterial3D "Refraction"): no ray at
+  all, the screen uv shifted against the view-space normal's xy by a constant
+  scale, the shift faded out where the opaque scene at the shifted uv lies
+  less than one unit behind the surface.
+use: SnellEngineRefraction e = snellEngineGodot(p, n, scale, sceneDepth, scene);
+  p, n            the front-face fragment's view-space position and normal (the
+                  normal is turned towards the eye)
+  scale           Godot's "refraction" (uv units per unit of normal, default
+                  0.05; the editor offers -1 .. 1)
+  sceneDepth, scene  the opaque scene's depth buffer and its SnellDepthSurface
+                  (its clipFromView is the colour buffer's projection)
+contract:
+  - u0 = snellViewToUv(scene.clipFromView, p).uv, N the unit normal turned
+    towards the eye, k = scale clamped to [-1, 1] (the editor's range; NaN:
+    0), u1 = u0 - k N.xy.
+  - g = S(clamp(p.z - z, 0, 1)), S(x) = x^2 (3 - 2x), with z the scene's view z
+    at u1 clamped to [0,1]^2 (snellSampleSurface), g = 1 where that read is not
+    valid (no surface: the far plane); uv = u0 + g (u1 - u0).
+  - weight 1 (0 where p does not project), direction p / |p|, distance 0 (no
+    absorption). p or n zero, NaN or infinite: snellEngineInvalid().
+  - The uv is in the buffer's own convention (origin bottom-left here); on
+    Godot's Vulkan renderers SCREEN_UV runs downwards while the normal's y
+    runs upwards, so there the vertical shift has the other sign: this function
+    keeps both axes consistent. Not modelled: the blur lod 8 roughness, the
+    emission blend.
+source: Godot (MIT), scene/resources/material.cpp at
+  0059d788b03b559846087c2a1b86a0e19cbdc4ce (BaseMaterial3D::_update_shader,
+  the refraction block: ref_ofs = SCREEN_UV - ref_normal.xy * refraction, the
+  depth-guarded mix). Re-derived from the generated shader's behaviour, not
+  copied.
+*/
+#ifndef SNELL_SHADE_ENGINE_MODELS_GODOT_GLSL
+#define SNELL_SHADE_ENGINE_MODELS_GODOT_GLSL
+
+
+
+SNELL_FN SnellEngineRefraction snellEngineGodot(vec3 p, vec3 n, float scale, SNELL_TEX2D sceneDepth,
+                                                SNELL_IN(SnellDepthSurface) scene) {
+  vec3 v = snellSafeNormalize(p);
+  vec3 nf = snellSafeNormalize(n);
+  if (dot(v, v) == 0.0f || dot(nf, nf) == 0.0f) {
+    return snellEngineInvalid();
+  }
+  nf = dot(nf, p) > 0.0f ? -nf : nf;
+  SnellEngineRefraction e = snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
+  if (e.sceneWeight > 0.0f) {
+    float k = isnan(scale) ? 0.0f : clamp(scale, -1.0f, 1.0f);
+    vec2 u0 = e.uv;
+    vec2 u1 = u0 - k * vec2(nf.x, nf.y);
+    SnellSurfaceSample b = snellSampleSurface(sceneDepth, clamp(u1, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f)), scene);
+    float g = 1.0f;
+    if (b.valid) {
+      g = clamp(p.z - b.viewZ, 0.0f, 1.0f);
+      g = g * g * (3.0f - 2.0f * g);
+    }
+    e.uv = u0 + g * (u1 - u0);
+  }
+  return e;
+}
+
+#endif
+
+#define SNELL_ENGINE_THREEJS 0
+#define SNELL_ENGINE_FILAMENT_SOLID 1
+#define SNELL_ENGINE_FILAMENT_THIN 2
+#define SNELL_ENGINE_HDRP_SPHERE 3
+#define SNELL_ENGINE_HDRP_BOX 4
+#define SNELL_ENGINE_GODOT 5
+#define SNELL_ENGINE_MODEL_COUNT 6
+
+SNELL_FN SnellEngineRefraction snellEngineRefraction(int model, vec3 p, vec3 n, float eta, float parameter,
+                                                     mat4 proxyFromView, SNELL_TEX2D sceneDepth,
+                                                     SNELL_IN(SnellDepthSurface) scene) {
+  if (model == SNELL_ENGINE_THREEJS) {
+    return snellEngineThreeJs(p, n, eta, parameter, scene.clipFromView);
+  }
+  if (model == SNELL_ENGINE_FILAMENT_SOLID) {
+    return snellEngineFilamentSolid(p, n, eta, parameter, scene.clipFromView);
+  }
+  if (model == SNELL_ENGINE_FILAMENT_THIN) {
+    return snellEngineFilamentThin(p, n, eta, parameter, scene.clipFromView);
+  }
+  if (model == SNELL_ENGINE_HDRP_SPHERE) {
+    return snellEngineHdrpSphere(p, n, eta, parameter, proxyFromView, sceneDepth, scene);
+  }
+  if (model == SNELL_ENGINE_HDRP_BOX) {
+    return snellEngineHdrpBox(p, n, eta, parameter, proxyFromView, sceneDepth, scene);
+  }
+  if (model == SNELL_ENGINE_GODOT) {
+    return snellEngineGodot(p, n, parameter, sceneDepth, scene);
+  }
+  return snellEngineInvalid();
+}
+
+#endif
 #endif
 #endif

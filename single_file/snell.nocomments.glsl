@@ -3552,5 +3552,257 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
 }
 
 #endif
+
+#ifndef SNELL_SHADE_ENGINE_MODELS_ENGINE_MODELS_GLSL
+#define SNELL_SHADE_ENGINE_MODELS_ENGINE_MODELS_GLSL
+
+#ifndef SNELL_SHADE_ENGINE_MODELS_ENGINE_REFRACTION_GLSL
+#define SNELL_SHADE_ENGINE_MODELS_ENGINE_REFRACTION_GLSL
+
+struct SnellEngineRefraction {
+  vec2 uv;
+  float sceneWeight;
+  vec3 direction;
+  float distance;
+  bool valid;
+};
+
+SNELL_FN SnellEngineRefraction snellEngineInvalid() {
+  SnellEngineRefraction e;
+  e.uv = vec2(0.0f, 0.0f);
+  e.sceneWeight = 0.0f;
+  e.direction = vec3(0.0f, 0.0f, 0.0f);
+  e.distance = 0.0f;
+  e.valid = false;
+  return e;
+}
+
+SNELL_FN SnellEngineRefraction snellEngineSeePoint(vec3 x, vec3 direction, float distance, mat4 clipFromView) {
+  SnellEngineRefraction e = snellEngineInvalid();
+  SnellScreenPoint sp = snellViewToUv(clipFromView, x);
+  if (sp.valid) {
+    e.uv = sp.uv;
+    e.sceneWeight = 1.0f;
+  }
+  e.direction = snellSafeNormalize(direction);
+  e.distance = distance;
+  e.valid = true;
+  return e;
+}
+
+#endif
+
+#ifndef SNELL_SHADE_ENGINE_MODELS_THREEJS_GLSL
+#define SNELL_SHADE_ENGINE_MODELS_THREEJS_GLSL
+
+SNELL_FN SnellEngineRefraction snellEngineThreeJs(vec3 p, vec3 n, float eta, float thickness, mat4 clipFromView) {
+  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  if (!t.valid) {
+    return snellEngineInvalid();
+  }
+  if (t.tir) {
+    return snellEngineSeePoint(p, p, 0.0f, clipFromView);
+  }
+  float d = (thickness > 0.0f ? thickness : 0.0f);
+  return snellEngineSeePoint(p + d * t.direction, t.direction, d, clipFromView);
+}
+
+#endif
+
+#ifndef SNELL_SHADE_ENGINE_MODELS_FILAMENT_GLSL
+#define SNELL_SHADE_ENGINE_MODELS_FILAMENT_GLSL
+
+SNELL_FN SnellEngineRefraction snellEngineFilamentSolid(vec3 p, vec3 n, float eta, float thickness,
+                                                        mat4 clipFromView) {
+  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  if (!t.valid) {
+    return snellEngineInvalid();
+  }
+  if (t.tir) {
+    return snellEngineSeePoint(p, p, 0.0f, clipFromView);
+  }
+  vec3 nf = snellSafeNormalize(n);
+  float c = dot(nf, t.direction);
+  c = dot(nf, p) > 0.0f ? -c : c;
+  float d = -c * (thickness > 0.0f ? thickness : 0.0f);
+  return snellEngineSeePoint(p + d * t.direction, t.direction, d, clipFromView);
+}
+
+SNELL_FN SnellEngineRefraction snellEngineFilamentThin(vec3 p, vec3 n, float eta, float microThickness,
+                                                       mat4 clipFromView) {
+  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  if (!t.valid) {
+    return snellEngineInvalid();
+  }
+  if (t.tir) {
+    return snellEngineSeePoint(p, p, 0.0f, clipFromView);
+  }
+  vec3 nf = snellSafeNormalize(n);
+  float c = dot(nf, t.direction);
+  c = dot(nf, p) > 0.0f ? -c : c;
+  float d = (microThickness > 0.0f ? microThickness : 0.0f) / max(-c, 0.001f);
+  return snellEngineSeePoint(p + d * t.direction, t.direction, d, clipFromView);
+}
+
+#endif
+
+#ifndef SNELL_SHADE_ENGINE_MODELS_HDRP_GLSL
+#define SNELL_SHADE_ENGINE_MODELS_HDRP_GLSL
+
+#ifndef SNELL_HDRP_SCREEN_FADE_DISTANCE
+#  define SNELL_HDRP_SCREEN_FADE_DISTANCE 0.1f
+#endif
+
+SNELL_FN float snellEngineHdrpEdgeFade(vec2 uv) {
+  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y)) {
+    return 0.0f;
+  }
+  float x = clamp((1.0f - abs(2.0f * uv.x - 1.0f)) / SNELL_HDRP_SCREEN_FADE_DISTANCE, 0.0f, 1.0f);
+  float y = clamp((1.0f - abs(2.0f * uv.y - 1.0f)) / SNELL_HDRP_SCREEN_FADE_DISTANCE, 0.0f, 1.0f);
+  return (x * x * (3.0f - 2.0f * x)) * (y * y * (3.0f - 2.0f * y));
+}
+
+SNELL_FN float snellEngineProxyExit(vec3 origin, vec3 dir, mat4 proxyFromView) {
+  vec4 o4 = SNELL_MUL(proxyFromView, vec4(origin.x, origin.y, origin.z, 1.0f));
+  vec4 d4 = SNELL_MUL(proxyFromView, vec4(dir.x, dir.y, dir.z, 0.0f));
+  if (!SNELL_FINITE(o4.x) || !SNELL_FINITE(o4.y) || !SNELL_FINITE(o4.z) || !SNELL_FINITE(d4.x) ||
+      !SNELL_FINITE(d4.y) || !SNELL_FINITE(d4.z)) {
+    return 0.0f;
+  }
+  float s = SNELL_FLT_MAX;
+  if (d4.x != 0.0f) {
+    float c = ((d4.x > 0.0f ? 1.0f : -1.0f) - o4.x) / d4.x;
+    s = c < s ? c : s;
+  }
+  if (d4.y != 0.0f) {
+    float c = ((d4.y > 0.0f ? 1.0f : -1.0f) - o4.y) / d4.y;
+    s = c < s ? c : s;
+  }
+  if (d4.z != 0.0f) {
+    float c = ((d4.z > 0.0f ? 1.0f : -1.0f) - o4.z) / d4.z;
+    s = c < s ? c : s;
+  }
+  return s > 0.0f ? s : 0.0f;
+}
+
+SNELL_FN SnellEngineRefraction snellEngineHdrpProxyLookup(vec3 p, vec3 origin, vec3 dir, float dist,
+                                                          mat4 proxyFromView, SNELL_TEX2D sceneDepth,
+                                                          SNELL_IN(SnellDepthSurface) scene) {
+  vec3 d = snellSafeNormalize(dir);
+  float s = snellEngineProxyExit(origin, d, proxyFromView);
+  SnellEngineRefraction e = snellEngineSeePoint(origin + s * d, d, dist, scene.clipFromView);
+  if (e.sceneWeight > 0.0f) {
+    e.sceneWeight = snellEngineHdrpEdgeFade(e.uv);
+    SnellSurfaceSample b = snellSampleSurface(sceneDepth, e.uv, scene);
+    if (b.valid && b.viewZ >= p.z) {
+      SnellScreenPoint own = snellViewToUv(scene.clipFromView, p);
+      e.uv = own.uv;
+    }
+  }
+  return e;
+}
+
+SNELL_FN SnellEngineRefraction snellEngineHdrpSphere(vec3 p, vec3 n, float eta, float thickness, mat4 proxyFromView,
+                                                     SNELL_TEX2D sceneDepth, SNELL_IN(SnellDepthSurface) scene) {
+  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  if (!t.valid) {
+    return snellEngineInvalid();
+  }
+  if (t.tir) {
+    return snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
+  }
+  vec3 nf = snellSafeNormalize(n);
+  nf = dot(nf, p) > 0.0f ? -nf : nf;
+  float c = dot(nf, t.direction);
+  float d = -c * (thickness > 0.0f ? thickness : 0.0f);
+  vec3 p1 = p + d * t.direction;
+  vec3 n1 = snellSafeNormalize(c * t.direction - 0.5f * nf);
+  SnellRefraction out2 = snellRefract(t.direction, n1, 1.0f / eta, SNELL_TIR_ZERO);
+  vec3 r2 = t.direction;
+  if (out2.valid && !out2.tir) {
+    r2 = out2.direction;
+  }
+  return snellEngineHdrpProxyLookup(p, p1, r2, d, proxyFromView, sceneDepth, scene);
+}
+
+SNELL_FN SnellEngineRefraction snellEngineHdrpBox(vec3 p, vec3 n, float eta, float thickness, mat4 proxyFromView,
+                                                  SNELL_TEX2D sceneDepth, SNELL_IN(SnellDepthSurface) scene) {
+  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  if (!t.valid) {
+    return snellEngineInvalid();
+  }
+  if (t.tir) {
+    return snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
+  }
+  vec3 nf = snellSafeNormalize(n);
+  nf = dot(nf, p) > 0.0f ? -nf : nf;
+  float d = (thickness > 0.0f ? thickness : 0.0f) / max(-dot(nf, t.direction), 1e-5f);
+  return snellEngineHdrpProxyLookup(p, p + d * t.direction, p, d, proxyFromView, sceneDepth, scene);
+}
+
+#endif
+
+#ifndef SNELL_SHADE_ENGINE_MODELS_GODOT_GLSL
+#define SNELL_SHADE_ENGINE_MODELS_GODOT_GLSL
+
+SNELL_FN SnellEngineRefraction snellEngineGodot(vec3 p, vec3 n, float scale, SNELL_TEX2D sceneDepth,
+                                                SNELL_IN(SnellDepthSurface) scene) {
+  vec3 v = snellSafeNormalize(p);
+  vec3 nf = snellSafeNormalize(n);
+  if (dot(v, v) == 0.0f || dot(nf, nf) == 0.0f) {
+    return snellEngineInvalid();
+  }
+  nf = dot(nf, p) > 0.0f ? -nf : nf;
+  SnellEngineRefraction e = snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
+  if (e.sceneWeight > 0.0f) {
+    float k = isnan(scale) ? 0.0f : clamp(scale, -1.0f, 1.0f);
+    vec2 u0 = e.uv;
+    vec2 u1 = u0 - k * vec2(nf.x, nf.y);
+    SnellSurfaceSample b = snellSampleSurface(sceneDepth, clamp(u1, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f)), scene);
+    float g = 1.0f;
+    if (b.valid) {
+      g = clamp(p.z - b.viewZ, 0.0f, 1.0f);
+      g = g * g * (3.0f - 2.0f * g);
+    }
+    e.uv = u0 + g * (u1 - u0);
+  }
+  return e;
+}
+
+#endif
+
+#define SNELL_ENGINE_THREEJS 0
+#define SNELL_ENGINE_FILAMENT_SOLID 1
+#define SNELL_ENGINE_FILAMENT_THIN 2
+#define SNELL_ENGINE_HDRP_SPHERE 3
+#define SNELL_ENGINE_HDRP_BOX 4
+#define SNELL_ENGINE_GODOT 5
+#define SNELL_ENGINE_MODEL_COUNT 6
+
+SNELL_FN SnellEngineRefraction snellEngineRefraction(int model, vec3 p, vec3 n, float eta, float parameter,
+                                                     mat4 proxyFromView, SNELL_TEX2D sceneDepth,
+                                                     SNELL_IN(SnellDepthSurface) scene) {
+  if (model == SNELL_ENGINE_THREEJS) {
+    return snellEngineThreeJs(p, n, eta, parameter, scene.clipFromView);
+  }
+  if (model == SNELL_ENGINE_FILAMENT_SOLID) {
+    return snellEngineFilamentSolid(p, n, eta, parameter, scene.clipFromView);
+  }
+  if (model == SNELL_ENGINE_FILAMENT_THIN) {
+    return snellEngineFilamentThin(p, n, eta, parameter, scene.clipFromView);
+  }
+  if (model == SNELL_ENGINE_HDRP_SPHERE) {
+    return snellEngineHdrpSphere(p, n, eta, parameter, proxyFromView, sceneDepth, scene);
+  }
+  if (model == SNELL_ENGINE_HDRP_BOX) {
+    return snellEngineHdrpBox(p, n, eta, parameter, proxyFromView, sceneDepth, scene);
+  }
+  if (model == SNELL_ENGINE_GODOT) {
+    return snellEngineGodot(p, n, parameter, sceneDepth, scene);
+  }
+  return snellEngineInvalid();
+}
+
+#endif
 #endif
 #endif

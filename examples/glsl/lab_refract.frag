@@ -3,7 +3,7 @@
 // snell-lab pass 4: the refractive object's front faces, shaded with one
 // technique (LAB_TECHNIQUE, a SNELL_TECHNIQUE_* id, and LAB_REFERENCE, whether its row of the
 // technique table is a Reference; both set by the host before compiling) through
-// labShade (lab_technique.glsl), the very function snell-lab runs per pixel in
+// labShadeRow (lab_technique.glsl; or LAB_ENGINE_MODEL, an engine model), the very function snell-lab runs per pixel in
 // C++ on the read-back buffers. Outputs: colour, per-pixel stats, and the
 // fragment's inputs (position, normal, d_N) so the CPU evaluates the same pixel.
 #ifndef LAB_TECHNIQUE
@@ -11,6 +11,11 @@
 #endif
 #ifndef LAB_REFERENCE
 #  define LAB_REFERENCE false
+#endif
+// An engine row: LAB_ENGINE_MODEL is a SNELL_ENGINE_* id (then LAB_TECHNIQUE is not run) and the
+// uniform labEngineParameter its free value.
+#ifndef LAB_ENGINE_MODEL
+#  define LAB_ENGINE_MODEL -1
 #endif
 #include "lab_technique.glsl"
 
@@ -30,6 +35,7 @@ layout(binding = 8) uniform sampler2D frontLayerDepth;
 layout(binding = 9) uniform sampler2D frontLayerNormal;
 // The frame's constants, the host's LabParams bytes as they are (std140).
 layout(std140, binding = 0) uniform LabUniforms { LabParams params; };
+uniform float labEngineParameter;
 
 layout(location = 0) out vec4 color;
 layout(location = 1) out vec4 stats;     // x fell back, y texel fetches, z back hit, w exit hit
@@ -37,9 +43,10 @@ layout(location = 2) out vec4 position;  // xyz view-space front position, w d_N
 layout(location = 3) out vec4 normal;    // xyz interpolated front normal, w 1 (coverage)
 
 void main() {
-  SnellTwoInterfaceResult r = labShade(LAB_TECHNIQUE, LAB_REFERENCE, vsPosition, vsNormal, vsDn, backDepth, backNormal,
-                                       backPyramid, frontLayerDepth, frontLayerNormal, sceneDepth, sceneNormal, scenePyramid, sceneColor,
-                                       environment, params);
+  SnellTwoInterfaceResult r = labShadeRow(LAB_TECHNIQUE, LAB_ENGINE_MODEL, labEngineParameter, LAB_REFERENCE, vsPosition,
+                                          vsNormal, vsDn, backDepth, backNormal, backPyramid, frontLayerDepth,
+                                          frontLayerNormal, sceneDepth, sceneNormal, scenePyramid, sceneColor, environment,
+                                          params);
   color = vec4(r.color, 1.0f);
   stats = vec4(r.fellBack ? 1.0f : 0.0f, float(r.fetches), r.backHit ? 1.0f : 0.0f, r.exitHit.valid ? 1.0f : 0.0f);
   position = vec4(vsPosition, vsDn);

@@ -5,12 +5,17 @@ description: the lab's per-pixel technique call (snell-lab, examples/lab): one
   CPU image and the GPU image come from the same body. It picks a preset of
   shade/technique_presets.glsl by number, points the exit slot at the opaque
   scene's buffers (the paintings; the environment where the exit ray finds
-  none) and runs snellTwoInterfaceRefraction.
+  none) and runs snellTwoInterfaceRefraction; or, for an engine row, one of
+  the engines' refraction models (shade/engine_models/) with the same
+  reflection (labEngineShade).
 use: LabParams p;  // the host fills every field (C++), or the uniform block LabUniforms holds it (GLSL)
      SnellTwoInterfaceResult r = labShade(SNELL_TECHNIQUE_PLANE_NORMAL_1, false, frontPosition, frontNormal,
          dN, backDepth, backNormal, backPyramid, frontLayerDepth, frontLayerNormal, sceneDepth, sceneNormal,
          scenePyramid, sceneColor, environment, p);
+     SnellTwoInterfaceResult r = labShadeRow(technique, engineModel, engineParameter, reference, ...the same);
   technique   SNELL_TECHNIQUE_* (shade/technique_presets.glsl)
+  engineModel SNELL_ENGINE_* (shade/engine_models/engine_models.glsl), or -1:
+              the technique; engineParameter: the model's free value
   reference   the technique table's row is a Reference (the image-space
               bound): its exit slot marches over the whole scene
   frontPosition, frontNormal, dN: the front-face fragment (view space), Wyman's d_N
@@ -48,13 +53,15 @@ source: the composition of DESIGN.md sec. 2; the presets' own sources.
 #include "snell/shade/technique_options.glsl"
 #include "snell/shade/technique_presets.glsl"
 #include "snell/shade/two_interface_shade.glsl"
+#include "snell/shade/engine_models/engine_models.glsl"
 
 /* The per-frame constants of every technique pass. The fields come in
-   (vec3, float) pairs after the matrix, so the C++ struct's bytes are the
+   (vec3, float) pairs after the two matrices, so the C++ struct's bytes are the
    std140 layout of the uniform block LabUniforms (lab_refract.frag): the host
    uploads it as it is (examples/lab/app/gpu_lab.cpp checks the offsets). */
 struct LabParams {
   mat4 clipFromView;  // how the techniques read the buffers (the guard band's projection)
+  mat4 proxyFromView; // the engine rows' probe proxy (HDRP): the box around object and scene, as [-1,1]^3
   vec3 absorption;    // Beer-Lambert coefficients per unit length
   float zNear;
   vec3 envX;          // world-from-view with the environment's rotation folded in, by column
@@ -116,6 +123,85 @@ SNELL_FN SnellTwoInterfaceResult labShade(int technique, bool reference, vec3 fr
   scene.closed = false;  // where the scene buffer is empty, the environment shows
   return snellTwoInterfaceRefraction(frontPosition, frontNormal, dN, SNELL_OBJECT_BUFFER_ARGS, SNELL_SCENE_BUFFER_ARGS,
                                      labTechnique(technique, reference, p), labMaterial(p), labView(p));
+}
+
+/* An engine's refraction model in place of the two-interface trace (the lab's engine rows): the scene colour
+   where the model reads it (clamped to the edge, as the engines' samplers), mixed with the environment along the
+   model's direction by its scene weight, absorbed over the model's distance; the same Fresnel reflection at the
+   first surface as labShade's rows, through the normal plane (2 it.) preset's reflect slot, so a row differs from
+   the techniques only in the transmitted light. fetches: the colour read, the environment read where the weight
+   is below 1, the depth read of the models that test depth (HDRP, Godot) and the reflect slot's. */
+SNELL_FN SnellTwoInterfaceResult labEngineShade(int model, float parameter, vec3 frontPosition, vec3 frontNormal,
+                                                SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal,
+                                                SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor,
+                                                SNELL_ENVIRONMENT_TEX environment, LabParams p) {
+  SnellDepthSurface scene = snellDepthSurface(p.clipFromView, p.zNear, p.zFar, SNELL_DEPTH_GL, 1.0f);
+  scene.closed = false;
+  SnellTechnique t = labTechnique(SNELL_TECHNIQUE_PLANE_NORMAL_2, false, p);
+  SnellMaterial m = labMaterial(p);
+  SnellView v = labView(p);
+  float eta = snellIorToEta(m.iorOutside, m.ior);
+  SnellEngineRefraction e =
+      snellEngineRefraction(model, frontPosition, frontNormal, eta, parameter, p.proxyFromView, sceneDepth, scene);
+  SnellTwoInterfaceResult r;
+  r.color = vec3(0.0f, 0.0f, 0.0f);
+  r.exitPoint = frontPosition;
+  r.exitDirection = e.direction;
+  r.exitHit = snellHitMiss(0);
+  r.reflectionHit = snellHitMiss(0);
+  r.pathLength = e.distance;
+  r.fresnel = 0.0f;
+  r.fetches = model == SNELL_ENGINE_HDRP_SPHERE || model == SNELL_ENGINE_HDRP_BOX || model == SNELL_ENGINE_GODOT ? 1 : 0;
+  r.backHit = false;
+  r.fellBack = !e.valid || e.sceneWeight < 1.0f;
+  r.tir = false;
+  r.bounces = 0;
+  vec3 transmitted = vec3(0.0f, 0.0f, 0.0f);
+  if (e.valid) {
+    vec4 c = SNELL_SAMPLE_LOD(sceneColor, clamp(e.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f)), 0.0f);
+    transmitted = vec3(c.x, c.y, c.z);
+    r.fetches = r.fetches + 1;
+    r.exitHit.valid = e.sceneWeight > 0.0f;
+    r.exitHit.uv = e.uv;
+    if (e.sceneWeight < 1.0f) {
+      SnellSlot toEnvironment = t.exit;
+      toEnvironment.source = SNELL_SOURCE_ENVIRONMENT;
+      SnellTwoInterfaceExit env = snellTwoInterfaceExit(frontPosition, e.direction, sceneDepth, sceneNormal,
+                                                        scenePyramid, sceneColor, scene, environment,
+                                                        toEnvironment, m, v);
+      r.fetches = r.fetches + env.fetches;
+      transmitted = mix(env.color, transmitted, e.sceneWeight);
+    }
+    transmitted = transmitted * snellBeerLambert(m.absorption, e.distance);
+  }
+  r.color = transmitted;
+  vec3 vv = snellSafeNormalize(frontPosition);
+  vec3 n1 = snellSafeNormalize(frontNormal);
+  if (dot(vv, vv) > 0.0f && dot(n1, n1) > 0.0f) {
+    float f = snellFresnelDielectric(dot(vv, n1), eta);
+    SnellTwoInterfaceExit re = snellTwoInterfaceExit(frontPosition, reflect(vv, n1), sceneDepth, sceneNormal,
+                                                     scenePyramid, sceneColor, scene, environment, t.reflect, m, v);
+    r.reflectionHit = re.hit;
+    r.fetches = r.fetches + re.fetches;
+    r.fresnel = f;
+    r.color = f * re.color + (1.0f - f) * transmitted;
+  }
+  return r;
+}
+
+/* One row of the lab: an engine model (engineModel >= 0, with its parameter) or a technique of the table */
+SNELL_FN SnellTwoInterfaceResult labShadeRow(int technique, int engineModel, float engineParameter, bool reference,
+                                             vec3 frontPosition, vec3 frontNormal, float dN, SNELL_TEX2D backDepth,
+                                             SNELL_TEX2D backNormal, SNELL_TEX2D backPyramid,
+                                             SNELL_TEX2D frontLayerDepth, SNELL_TEX2D frontLayerNormal,
+                                             SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal, SNELL_TEX2D scenePyramid,
+                                             SNELL_TEX2D sceneColor, SNELL_ENVIRONMENT_TEX environment, LabParams p) {
+  if (engineModel >= 0) {
+    return labEngineShade(engineModel, engineParameter, frontPosition, frontNormal, sceneDepth, sceneNormal,
+                          scenePyramid, sceneColor, environment, p);
+  }
+  return labShade(technique, reference, frontPosition, frontNormal, dN, backDepth, backNormal, backPyramid,
+                  frontLayerDepth, frontLayerNormal, sceneDepth, sceneNormal, scenePyramid, sceneColor, environment, p);
 }
 
 #endif

@@ -19,4 +19,5 @@
 #include "shade/technique_presets.glsl"
 #include "shade/two_interface.glsl"
 #include "shade/two_interface_shade.glsl"
+#include "shade/engine_models/engine_models.glsl"
 #endif

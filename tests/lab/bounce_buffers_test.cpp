@@ -41,7 +41,8 @@ int checkBounces(const Prism& prism, const dvec3& enterNormal, const dvec3& tirN
       "resolution": [256, 256]}, "object": {"ior": 1.5, "mesh": {"type": "obj", "path": ")" + mesh + R"("}}})");
   const snell::lab::SceneFrame frame = snell::lab::buildFrame(snell::lab::loadScene(scene));
   const snell::lab::ShadeConstants k = snell::lab::shadeConstants(frame, 0);
-  snell::lab::GpuLab gpu("auto", frame, {}, {SNELL_TECHNIQUE_SINGLE}, {SNELL_LAB_GLSL_DIR, SNELL_GLSL_DIR}, k);
+  snell::lab::GpuLab gpu("auto", frame, {}, {snell::lab::LabShader{SNELL_TECHNIQUE_SINGLE, false, -1}},
+                         {SNELL_LAB_GLSL_DIR, SNELL_GLSL_DIR}, k);
   gpu.renderStatic();
   const snell::lab::StaticBuffers sb = gpu.readStatic();
   const snell::Texture2D backDepth(sb.backDepth, snell::Filter::Nearest), backNormal(sb.backNormal, snell::Filter::Linear);

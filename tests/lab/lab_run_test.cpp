@@ -41,7 +41,7 @@ LabOptions options64(const std::string& out) {
 TEST(LabRun, SphereSceneEndToEnd) {
   labtest::TempDir dir;
   const LabResult r = snell::lab::runLab(options64(dir.file("out")));
-  ASSERT_EQ(r.rows.size(), snell::snellTechniqueTable().size());
+  ASSERT_EQ(r.rows.size(), snell::snellTechniqueTable().size() + snell::snellEngineModelTable().size());
   EXPECT_EQ(r.width, 64);
   EXPECT_GT(r.objectPixels, 400u);
   for (const TechniqueRow& t : r.rows) {
@@ -62,6 +62,20 @@ TEST(LabRun, SphereSceneEndToEnd) {
     // image-space bound meets one on this 64x64 frame).
     EXPECT_LE(t.cpuGpuBeyond1, 0.001);
     EXPECT_EQ(t.cpuGpuBeyond4Pixels, t.cpuGpuBeyond4Ties);
+    // An engine row runs the sweep's best value, and its GPU image scores what the C++ sweep measured for it.
+    if (snell::snellFindEngineModel(t.name)) {
+      ASSERT_GE(t.engineSweep.size(), 5u);
+      double best = t.engineSweep.front().second;
+      for (const auto& tried : t.engineSweep) best = std::min(best, tried.second);
+      for (const auto& tried : t.engineSweep) {
+        if (tried.first == t.engineParameter) {
+          EXPECT_EQ(tried.second, best);
+        }
+      }
+      EXPECT_NEAR(t.mseFull, best, 0.02 * best + 1e-6);
+    } else {
+      EXPECT_TRUE(t.engineSweep.empty());
+    }
   }
   const TechniqueRow* single = r.row("single");
   const TechniqueRow* plane = r.row("plane-normal-1");

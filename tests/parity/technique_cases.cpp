@@ -115,6 +115,82 @@ std::vector<ParityIO> techniqueInputs(std::uint32_t seed) {
   return v;
 }
 
+// The engine models' fragments: front-face samples of the sphere (a tenth with a tilted normal, a few hostile),
+// every model and one outside the table, a thickness around the sphere's size (a few negative or hostile), the
+// proxy box around sphere and painting, Godot's scale.
+std::vector<ParityIO> engineInputs(std::uint32_t seed) {
+  buildTextures();
+  InputGen g(seed);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    const float ior = g.chance(0.1f) ? g.uniform(0.6f, 0.95f) : g.uniform(1.1f, 2.0f);
+    const technique_test::Exact e = frontSample(g, double(std::max(ior, 1.01f)));
+    glm::vec3 p(e.p1), n(e.n1);
+    if (g.chance(0.1f)) n = glm::normalize(n + 0.3f * g.unitVector());
+    // Within about 8 degrees of grazing, at the entry or (ior < 1) of TIR, the models divide by a cosine that
+    // cancels: one rounding there moves the result by more than the tolerance. Those inputs are not compared.
+    const float cosI = std::abs(glm::dot(glm::normalize(p), n));
+    const float sin2T = (1.0f - cosI * cosI) / (ior * ior);
+    if (cosI < 0.15f || (sin2T < 1.0f && 1.0f - sin2T < 0.0225f)) {
+      --i;
+      continue;
+    }
+    const float k = g.uniform(0.0f, 1.0f);
+    if (k < 0.01f) p = g.hostileVector();
+    else if (k < 0.02f) n = g.hostileVector();
+    else if (k < 0.03f) n = glm::vec3(0.0f);
+    float parameter = g.uniform(0.0f, 4.5f);
+    if (g.chance(0.03f)) parameter = -g.uniform(0.0f, 1.0f);
+    if (g.chance(0.02f)) parameter = g.hostile();
+    float scale = g.uniform(-0.3f, 0.3f);
+    if (g.chance(0.02f)) scale = g.hostile();
+    ParityIO in{};
+    in.v[0] = glm::vec4(p, float(g.integer(-1, SNELL_ENGINE_MODEL_COUNT)));
+    in.v[1] = glm::vec4(n, parameter);
+    in.v[2] = matrixEntries();
+    in.v[3] = glm::vec4(ior, g.uniform(6.0f, 12.0f), g.uniform(-9.0f, -5.0f), scale);
+    v.push_back(in);
+  }
+  return v;
+}
+
+// Points to project (some behind the camera, some hostile) with a direction and a distance.
+std::vector<ParityIO> seePointInputs(std::uint32_t seed) {
+  InputGen g(seed);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    glm::vec3 x(g.uniform(-6.0f, 6.0f), g.uniform(-6.0f, 6.0f), g.uniform(-30.0f, 2.0f));
+    if (g.chance(0.03f)) x = g.hostileVector();
+    glm::vec3 d = g.unitVector() * g.uniform(0.1f, 10.0f);
+    if (g.chance(0.03f)) d = g.chance(0.5f) ? glm::vec3(0.0f) : g.hostileVector();
+    ParityIO in{};
+    in.v[0] = glm::vec4(x, g.uniform(0.0f, 5.0f));
+    in.v[1] = glm::vec4(d, 0.0f);
+    in.v[2] = matrixEntries();
+    v.push_back(in);
+  }
+  return v;
+}
+
+// Proxy exits and lookups: an origin near the sphere (a few outside the box or hostile), any direction, the
+// front point p the halo test compares with.
+std::vector<ParityIO> proxyInputs(std::uint32_t seed) {
+  std::vector<ParityIO> v = engineInputs(seed);
+  InputGen g(seed + 1);
+  for (ParityIO& in : v) {
+    glm::vec3 o = glm::vec3(0.3f, -0.2f, -6.0f) + g.unitVector() * g.uniform(0.0f, 3.0f);
+    if (g.chance(0.05f)) o = glm::vec3(g.uniform(-40.0f, 40.0f), g.uniform(-40.0f, 40.0f), g.uniform(-40.0f, 10.0f));
+    if (g.chance(0.02f)) o = g.hostileVector();
+    glm::vec3 d = g.unitVector() * g.uniform(0.5f, 2.0f);
+    if (g.chance(0.03f)) d = g.chance(0.5f) ? glm::vec3(0.0f) : g.hostileVector();
+    if (g.chance(0.05f)) d[g.integer(0, 2)] = 0.0f;
+    in.v[0] = glm::vec4(o, g.uniform(0.0f, 3.0f));  // origin, distance
+    in.v[1] = glm::vec4(d, 0.0f);
+    in.v[3].w = g.uniform(0.5f, 1.0f);  // p = origin * this: a front point on the origin's view ray
+  }
+  return v;
+}
+
 std::vector<ParityIO> exitInputs(std::uint32_t seed) {
   std::vector<ParityIO> v = techniqueInputs(seed);
   InputGen g(seed + 1);
@@ -669,5 +745,92 @@ SNELL_PARITY_CASE(snellTwoInterfaceRefraction, [] { return techniqueInputs(823);
                   exitUv = t.exitHit.uv;
                   fresnel = t.fresnel;
                   reflectionHit = t.reflectionHit.valid;)
+
+
+// The engines' models (shade/engine_models/): uv, weight, direction and distance 1e-4, valid exact. The textures
+// are the sphere scene's: its painting's depth for HDRP's halo test and Godot's guard.
+#define TECH_ENGINE_INPUTS                                                                                      \
+  (vec3, p, 0)(int, model, 3)(vec3, n, 4)(float, parameter, 7)(vec4, projection, 8)(float, ior, 12)            \
+  (float, proxyHalf, 13)(float, proxyZ, 14)(float, scale, 15)
+#define TECH_ENGINE_OUTPUTS                                                                                     \
+  (vec2, uv, 0, within(1e-4f, 1e-4f))(float, weight, 2, within(1e-4f, 1e-4f))(bool, valid, 3, exact)           \
+  (vec3, direction, 4, within(1e-4f, 1e-4f))(float, distance, 7, within(1e-4f, 1e-4f))
+
+SNELL_PARITY_CASE(snellEngineRefraction, [] { return engineInputs(840); }, TECH_ENGINE_INPUTS, TECH_ENGINE_OUTPUTS,
+                  techExtras(),
+                  SnellEngineRefraction e = snellEngineRefraction(model, p, n, 1.0f / ior,
+                                                                  model == SNELL_ENGINE_GODOT ? scale : parameter,
+                                                                  techProxy(proxyHalf, proxyZ), techSceneDepth,
+                                                                  techSceneSurface(projection));
+                  TECH_ENGINE_OUT(e))
+
+SNELL_PARITY_CASE(snellEngineThreeJs, [] { return engineInputs(841); }, TECH_ENGINE_INPUTS, TECH_ENGINE_OUTPUTS,
+                  techExtras(),
+                  SnellEngineRefraction e = snellEngineThreeJs(p, n, 1.0f / ior, parameter, techMatrix(projection));
+                  TECH_ENGINE_OUT(e))
+
+SNELL_PARITY_CASE(snellEngineFilamentSolid, [] { return engineInputs(842); }, TECH_ENGINE_INPUTS,
+                  TECH_ENGINE_OUTPUTS, techExtras(),
+                  SnellEngineRefraction e = snellEngineFilamentSolid(p, n, 1.0f / ior, parameter,
+                                                                     techMatrix(projection));
+                  TECH_ENGINE_OUT(e))
+
+SNELL_PARITY_CASE(snellEngineFilamentThin, [] { return engineInputs(843); }, TECH_ENGINE_INPUTS,
+                  TECH_ENGINE_OUTPUTS, techExtras(),
+                  SnellEngineRefraction e = snellEngineFilamentThin(p, n, 1.0f / ior, parameter * 0.2f,
+                                                                    techMatrix(projection));
+                  TECH_ENGINE_OUT(e))
+
+SNELL_PARITY_CASE(snellEngineHdrpSphere, [] { return engineInputs(844); }, TECH_ENGINE_INPUTS, TECH_ENGINE_OUTPUTS,
+                  techExtras(),
+                  SnellEngineRefraction e = snellEngineHdrpSphere(p, n, 1.0f / ior, parameter,
+                                                                  techProxy(proxyHalf, proxyZ), techSceneDepth,
+                                                                  techSceneSurface(projection));
+                  TECH_ENGINE_OUT(e))
+
+SNELL_PARITY_CASE(snellEngineHdrpBox, [] { return engineInputs(845); }, TECH_ENGINE_INPUTS, TECH_ENGINE_OUTPUTS,
+                  techExtras(),
+                  SnellEngineRefraction e = snellEngineHdrpBox(p, n, 1.0f / ior, parameter,
+                                                               techProxy(proxyHalf, proxyZ), techSceneDepth,
+                                                               techSceneSurface(projection));
+                  TECH_ENGINE_OUT(e))
+
+SNELL_PARITY_CASE(snellEngineGodot, [] { return engineInputs(846); }, TECH_ENGINE_INPUTS, TECH_ENGINE_OUTPUTS,
+                  techExtras(),
+                  SnellEngineRefraction e = snellEngineGodot(p, n, scale, techSceneDepth, techSceneSurface(projection));
+                  TECH_ENGINE_OUT(e))
+
+SNELL_PARITY_CASE(snellEngineHdrpProxyLookup, [] { return proxyInputs(847); },
+                  (vec3, origin, 0)(float, dist, 3)(vec3, dir, 4)(vec4, projection, 8)(float, proxyHalf, 13)
+                  (float, proxyZ, 14)(float, front, 15),
+                  TECH_ENGINE_OUTPUTS, techExtras(),
+                  SnellEngineRefraction e = snellEngineHdrpProxyLookup(origin * front, origin, dir, dist,
+                                                                       techProxy(proxyHalf, proxyZ), techSceneDepth,
+                                                                       techSceneSurface(projection));
+                  TECH_ENGINE_OUT(e))
+
+SNELL_PARITY_CASE(snellEngineProxyExit, [] { return proxyInputs(848); },
+                  (vec3, origin, 0)(vec3, dir, 4)(float, proxyHalf, 13)(float, proxyZ, 14),
+                  (float, s, 0, within(1e-4f, 1e-4f)),
+                  techExtras(),
+                  s = snellEngineProxyExit(origin, dir, techProxy(proxyHalf, proxyZ));)
+
+SNELL_PARITY_CASE(snellEngineSeePoint, [] { return seePointInputs(849); },
+                  (vec3, x, 0)(float, dist, 3)(vec3, dir, 4)(vec4, projection, 8),
+                  TECH_ENGINE_OUTPUTS, techExtras(),
+                  SnellEngineRefraction e = snellEngineSeePoint(x, dir, dist, techMatrix(projection));
+                  TECH_ENGINE_OUT(e))
+
+SNELL_PARITY_CASE(snellEngineHdrpEdgeFade, [] { return seePointInputs(850); },
+                  (vec2, uv, 0),
+                  (float, fade, 0, within(1e-5f, 1e-5f)),
+                  techExtras(),
+                  fade = snellEngineHdrpEdgeFade(uv * 0.1f + vec2(0.5f, 0.5f));)
+
+SNELL_PARITY_CASE(snellEngineInvalid, [] { return smallIntInputs(851, 0, 1); },
+                  /* no inputs */,
+                  TECH_ENGINE_OUTPUTS, techExtras(),
+                  SnellEngineRefraction e = snellEngineInvalid();
+                  TECH_ENGINE_OUT(e))
 
 }  // namespace parity_technique

@@ -58,6 +58,9 @@ ShadeConstants shadeConstants(const SceneFrame& frame, int margin) {
       hi = glm::max(hi, c);
     }
   k.params.exitRange = glm::length(hi - lo);
+  const vec3 half = glm::max(0.5f * (hi - lo), vec3(1e-6f));
+  k.params.proxyFromView = glm::scale(mat4(1.0f), 1.0f / half) * glm::translate(mat4(1.0f), -0.5f * (lo + hi)) *
+                           frame.camera.worldFromView();
   return k;
 }
 
@@ -73,12 +76,13 @@ namespace {
 // lab_refract.frag's layout(std140, binding = 0) uniform LabUniforms { LabParams params; }: the C++ struct's
 // bytes are its std140 layout, field by field (a vec3 starts on 16 bytes, a float after it fills the slot).
 constexpr GLuint kLabUniformsBinding = 0;
-static_assert(offsetof(LabParams, clipFromView) == 0 && offsetof(LabParams, absorption) == 64 &&
-                  offsetof(LabParams, zNear) == 76 && offsetof(LabParams, envX) == 80 &&
-                  offsetof(LabParams, zFar) == 92 && offsetof(LabParams, envY) == 96 && offsetof(LabParams, ior) == 108 &&
-                  offsetof(LabParams, envZ) == 112 && offsetof(LabParams, backRange) == 124 &&
-                  offsetof(LabParams, exitRange) == 128 && offsetof(LabParams, depthFilter) == 132 &&
-                  offsetof(LabParams, reflectSource) == 136 && sizeof(LabParams) == 140,
+static_assert(offsetof(LabParams, clipFromView) == 0 && offsetof(LabParams, proxyFromView) == 64 &&
+                  offsetof(LabParams, absorption) == 128 && offsetof(LabParams, zNear) == 140 &&
+                  offsetof(LabParams, envX) == 144 && offsetof(LabParams, zFar) == 156 &&
+                  offsetof(LabParams, envY) == 160 && offsetof(LabParams, ior) == 172 &&
+                  offsetof(LabParams, envZ) == 176 && offsetof(LabParams, backRange) == 188 &&
+                  offsetof(LabParams, exitRange) == 192 && offsetof(LabParams, depthFilter) == 196 &&
+                  offsetof(LabParams, reflectSource) == 200 && sizeof(LabParams) == 204,
               "LabParams must keep the std140 layout of the uniform block LabUniforms");
 
 gpu::FlatSource flatten(const fs::path& file, const ShaderDirs& dirs, const std::vector<std::string>& defines = {}) {
@@ -93,7 +97,7 @@ struct GpuLab::Impl {
   int width, height;
   ShadeConstants k;
   int bufferWidth, bufferHeight;
-  std::vector<int> techniques;
+  std::vector<LabShader> shaders;
   GLsizei vertexCount = 0;
   gpu::StorageBuffer positions, normals, indices;
   gpu::Texture environment;
@@ -108,7 +112,7 @@ struct GpuLab::Impl {
   gpu::UniformBuffer labUniforms;
 
   Impl(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
-       const std::vector<int>& ids, const ShaderDirs& dirs, const ShadeConstants& constants)
+       const std::vector<LabShader>& programs, const ShaderDirs& dirs, const ShadeConstants& constants)
       : ctx(gpu::parseBackend(backend)),
         gl(ctx.gl()),
         width(frame.camera.width),
@@ -116,7 +120,7 @@ struct GpuLab::Impl {
         k(constants),
         bufferWidth(width + 2 * k.margin),
         bufferHeight(height + 2 * k.margin),
-        techniques(ids),
+        shaders(programs),
         positions(gl),
         normals(gl),
         indices(gl),
@@ -178,14 +182,17 @@ struct GpuLab::Impl {
     // both paths). Checked, so another camera would only cost time.
     const bool perspective =
         snellDepthSurface(k.params.clipFromView, k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 0.0f).perspective;
-    for (int id : techniques) {
-      // Only the strategies the technique's slots call: the same code paths,
-      // compiled in a fraction of the time.
-      const SnellTechniqueInfo* info = snellFindTechnique(id);
-      if (info == nullptr) throw gpu::Error("snell-lab: no technique has id " + std::to_string(id));
-      const bool reference = info->kind == SnellTechniqueKind::Reference;
+    for (const LabShader& shader : shaders) {
+      // Only the strategies the row's slots call: the same code paths, compiled in a fraction of the time. An
+      // engine row's only slot is the reflection's: the normal plane (2 it.) preset's (lab_technique.glsl).
+      const int id = shader.engineModel >= 0 ? SNELL_TECHNIQUE_PLANE_NORMAL_2 : shader.technique;
+      if (snellFindTechnique(id) == nullptr) throw gpu::Error("snell-lab: no technique has id " + std::to_string(id));
+      if (shader.engineModel >= SNELL_ENGINE_MODEL_COUNT)
+        throw gpu::Error("snell-lab: no engine model has id " + std::to_string(shader.engineModel));
+      const bool reference = shader.engineModel < 0 && shader.reference;
       std::vector<std::string> defines = {
           "LAB_TECHNIQUE " + std::to_string(id), std::string("LAB_REFERENCE ") + (reference ? "true" : "false"),
+          "LAB_ENGINE_MODEL " + std::to_string(shader.engineModel),
           "SNELL_INTERSECT_STRATEGIES " +
               std::to_string(snellStrategiesUsed(labTechnique(id, reference, k.params), labMaterial(k.params)))};
       if (perspective) defines.push_back("SNELL_PERSPECTIVE_ONLY 1");
@@ -194,6 +201,7 @@ struct GpuLab::Impl {
       prog.set("viewFromWorld", k.viewFromWorld);
       prog.set("clipFromView", k.clipFromView);
       prog.requireUniformBlock("LabUniforms", kLabUniformsBinding, sizeof(LabParams));
+      if (shader.engineModel >= 0) prog.set("labEngineParameter", 0.0f);
       refract.push_back(std::move(prog));
     }
     gpu::checkGl(gl, "lab setup");
@@ -282,8 +290,8 @@ struct GpuLab::Impl {
 };
 
 GpuLab::GpuLab(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
-               const std::vector<int>& techniques, const ShaderDirs& dirs, const ShadeConstants& k)
-    : impl_(std::make_unique<Impl>(backend, frame, dN, techniques, dirs, k)) {}
+               const std::vector<LabShader>& shaders, const ShaderDirs& dirs, const ShadeConstants& k)
+    : impl_(std::make_unique<Impl>(backend, frame, dN, shaders, dirs, k)) {}
 
 GpuLab::~GpuLab() = default;
 
@@ -321,6 +329,12 @@ double GpuLab::renderTechnique(std::size_t index) {
   const auto t1 = std::chrono::steady_clock::now();
   gpu::checkGl(impl_->gl, "refraction pass");
   return std::chrono::duration<double, std::milli>(t1 - t0).count();
+}
+
+void GpuLab::setEngineParameter(std::size_t index, float value) {
+  if (index >= impl_->shaders.size() || impl_->shaders[index].engineModel < 0)
+    throw gpu::Error("snell-lab: program " + std::to_string(index) + " runs no engine model");
+  impl_->refract.at(index).set("labEngineParameter", value);
 }
 
 TechniqueBuffers GpuLab::readTechnique() const {

@@ -64,6 +64,8 @@ struct ShadeConstants {
   // H / (H + 2 margin)); the techniques read the buffers through it, so exits just off the viewport are found.
   int margin = 0;
   NormalFilter normalFilter = NormalFilter::Linear;   // how both sides read the normal buffers
+  // params.proxyFromView, the engine rows' probe proxy (HDRP): the world-axis box around the object and the
+  // paintings, the room a user would fit a reflection probe's proxy volume to.
 
   static LabParams defaultLabParams() {
     LabParams p{};
@@ -79,6 +81,7 @@ struct ShadeConstants {
     p.exitRange = 10.0f;  // diagonal of the box around object and opaque scene
     p.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
     p.reflectSource = SNELL_SOURCE_BUFFERS;
+    p.proxyFromView = mat4(1.0f);
     return p;
   }
 };
@@ -89,13 +92,21 @@ ShadeConstants shadeConstants(const SceneFrame& frame, int margin = 0);
 // The environment as both sides sample it: intensity applied, GL_LINEAR, clamp to edge.
 Texture2D environmentTexture(const SceneFrame& frame);
 
+// One pass-4 program: a technique of the table (SNELL_TECHNIQUE_*, `reference` for the table's Reference rows)
+// or, when engineModel >= 0, that engine model (SNELL_ENGINE_*).
+struct LabShader {
+  int technique = -1;
+  bool reference = false;
+  int engineModel = -1;
+};
+
 class GpuLab {
  public:
-  // backend: "auto", "osmesa" or "egl". `techniques`: SNELL_TECHNIQUE_* ids, one
-  // program each. dN: Wyman's d_N per vertex of frame.object (zeros when absent).
-  // k: shadeConstants(frame, margin) with the read modes the C++ side uses too.
+  // backend: "auto", "osmesa" or "egl". `shaders`: one program each. dN: Wyman's
+  // d_N per vertex of frame.object (zeros when absent). k: shadeConstants(frame,
+  // margin) with the read modes the C++ side uses too.
   GpuLab(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
-         const std::vector<int>& techniques, const ShaderDirs& dirs, const ShadeConstants& k);
+         const std::vector<LabShader>& shaders, const ShaderDirs& dirs, const ShadeConstants& k);
   ~GpuLab();
   GpuLab(const GpuLab&) = delete;
   GpuLab& operator=(const GpuLab&) = delete;
@@ -109,6 +120,8 @@ class GpuLab {
   // Pass 4 with techniques[index]: glFinish, steady clock, draw, glFinish.
   // Returns the pass's wall time in ms.
   double renderTechnique(std::size_t index);
+  // The free value of shaders[index]'s engine model (0 until set).
+  void setEngineParameter(std::size_t index, float value);
   TechniqueBuffers readTechnique() const;
 
  private:

@@ -171,6 +171,26 @@ std::string markdownTable(const LabResult& r) {
          "\"x bound\" compares the two on the model they both follow: the principal path of 2 + B interface events "
          "(the ray tracer's, above).\n";
   }
+  bool engineRows = false;
+  for (const TechniqueRow& t : r.rows) {
+    const SnellEngineModelInfo* m = snellFindEngineModel(t.name);
+    if (!m) continue;
+    if (!engineRows)
+      s += "- the engines' models (shade/engine_models/: where three.js, Bevy, Filament, HDRP and Godot read their "
+           "scene colour; the same Fresnel reflection as the techniques, no back-face pass): each one's free value "
+           "swept on this scene, the best kept (lengths as shares of the object's bounding-box diagonal " +
+           fmt("%.3g", static_cast<double>(r.objectDiagonal)) + "):";
+    s += std::string(engineRows ? "," : "") + " " + t.label + " " + m->parameter + " " +
+         (m->kind == SnellEngineParameterKind::Length ? fmt("%.3g", static_cast<double>(t.engineParameter / r.objectDiagonal)) + " d"
+                                                      : fmt("%.3g", static_cast<double>(t.engineParameter)));
+    if (!t.engineSweep.empty()) {
+      double worst = 0.0;
+      for (const auto& tried : t.engineSweep) worst = std::max(worst, tried.second);
+      s += " (MSE " + fmt("%.3g", t.mseFull) + ", the sweep's worst " + fmt("%.3g", worst) + ")";
+    }
+    engineRows = true;
+  }
+  if (engineRows) s += ".\n";
   s += "\nunshaded: object pixels the technique's front-face pass did not cover (they show the scene behind). "
        "invalid: pixels that fell back (no back-face or exit hit: environment along the ray). Time: the refraction "
        "pass alone, glFinish + steady clock, median of " + std::to_string(r.frames) + " frames (the bound: 1), all "
@@ -200,6 +220,19 @@ std::string targetsText(const LabResult& r) {
     if (info && info->kind == SnellTechniqueKind::ConstantTime && (!best || t.mseTwo < best->mseTwo)) best = &t;
   }
   if (best) s += " best constant-time technique: " + best->label + ", " + fmt("%.2fx", best->boundRatio) + " the bound's MSE.";
+  const TechniqueRow* bestEngine = nullptr;
+  for (const TechniqueRow& t : r.rows)
+    if (snellFindEngineModel(t.name) && (!bestEngine || t.mseFull < bestEngine->mseFull)) bestEngine = &t;
+  const TechniqueRow* bestFull = nullptr;
+  for (const TechniqueRow& t : r.rows) {
+    const SnellTechniqueInfo* info = snellFindTechnique(t.name);
+    if (info && info->kind == SnellTechniqueKind::ConstantTime && (!bestFull || t.mseFull < bestFull->mseFull)) bestFull = &t;
+  }
+  if (bestEngine && bestFull && bestEngine->mseFull > 0.0)
+    s += "\nAgainst the engines (vs the ray tracer): the best engine model, " + bestEngine->label + ", " +
+         fmt("%.3g", bestEngine->mseFull) + "; snell's best constant-time technique, " + bestFull->label + ", " +
+         fmt("%.3g", bestFull->mseFull) + ": " + fmt("%.2fx", bestFull->mseFull / bestEngine->mseFull) + " its MSE at " +
+         fmt("%.2fx", bestEngine->costRatio > 0.0 ? bestFull->costRatio / bestEngine->costRatio : 0.0) + " its time.";
   return s + "\n";
 }
 
@@ -234,6 +267,7 @@ void writeJson(const fs::path& path, const LabResult& r) {
   j["bound_middle_layer_share"] = r.boundMiddleLayerShare;
   j["trace_seconds"] = r.traceSeconds;
   j["static_passes_ms"] = r.staticPassMs;
+  j["object_diagonal"] = r.objectDiagonal;
   nlohmann::json rows = nlohmann::json::array();
   for (const TechniqueRow& t : r.rows) {
     rows.push_back({{"technique", t.name},
@@ -260,6 +294,12 @@ void writeJson(const fs::path& path, const LabResult& r) {
                     {"cpu_gpu_pixels_beyond_4_255_ties", t.cpuGpuBeyond4Ties},
                     {"cpu_gpu_fetch_count_mismatch_share", t.fetchMismatch},
                     {"cpu_gpu_worst_pixel", {t.worstX, t.worstY}}});
+    if (const SnellEngineModelInfo* m = snellFindEngineModel(t.name)) {
+      nlohmann::json sweep = nlohmann::json::array();
+      for (const auto& [value, mse] : t.engineSweep) sweep.push_back({{"value", value}, {"mse_vs_ray_traced", mse}});
+      rows.back()["engine"] = m->engine;
+      rows.back()["engine_parameter"] = {{"name", m->parameter}, {"value", t.engineParameter}, {"sweep", sweep}};
+    }
   }
   j["techniques"] = rows;
   // Scene names come from file names, which need not be UTF-8: replace what JSON cannot hold, don't throw.
@@ -271,23 +311,26 @@ void writeJson(const fs::path& path, const LabResult& r) {
 // Stage 1: the requested rows of the technique table, in table order, and the image-space bounds
 // they are measured against: always the two-interface one, the one with B bounces when a row with B
 // runs. Before the scene loads: a typo should not cost a ray trace.
-std::vector<const SnellTechniqueInfo*> selectTechniques(const LabOptions& options) {
-  const auto asked = [&](const SnellTechniqueInfo& t) {
+std::vector<LabRowSpec> selectTechniques(const LabOptions& options) {
+  const auto asked = [&](const std::string& name) {
     return options.techniques.empty() ||
-           std::find(options.techniques.begin(), options.techniques.end(), t.name) != options.techniques.end();
+           std::find(options.techniques.begin(), options.techniques.end(), name) != options.techniques.end();
   };
   const auto someRowBounces = [&](int bounces) {
     for (const SnellTechniqueInfo& t : snellTechniqueTable())
-      if (t.kind != SnellTechniqueKind::Reference && asked(t) && snellTechniqueBounces(t) == bounces) return true;
+      if (t.kind != SnellTechniqueKind::Reference && asked(t.name) && snellTechniqueBounces(t) == bounces) return true;
     return false;
   };
-  std::vector<const SnellTechniqueInfo*> techniques;
+  std::vector<LabRowSpec> rows;
   for (const SnellTechniqueInfo& t : snellTechniqueTable()) {
     const bool bound = t.kind == SnellTechniqueKind::Reference &&
                        (snellTechniqueBounces(t) == 0 || someRowBounces(snellTechniqueBounces(t)));
-    if (bound || (t.kind != SnellTechniqueKind::Reference && asked(t))) techniques.push_back(&t);
+    if (bound || (t.kind != SnellTechniqueKind::Reference && asked(t.name))) rows.push_back(LabRowSpec{&t, nullptr});
   }
-  return techniques;
+  // The engines' models after the techniques: snell's cheapest tier, compared on the same buffers.
+  for (const SnellEngineModelInfo& m : snellEngineModelTable())
+    if (asked(m.name)) rows.push_back(LabRowSpec{nullptr, &m});
+  return rows;
 }
 
 // Stage 2: the ground truth, full paths and the two-interface reference.
@@ -312,7 +355,7 @@ Mask both(const Mask& a, const Mask& b) {
   return m;
 }
 
-References traceReferences(const SceneFrame& frame, const std::vector<const SnellTechniqueInfo*>& techniques,
+References traceReferences(const SceneFrame& frame, const std::vector<LabRowSpec>& techniques,
                             const LabOptions& options, LabResult& result) {
   References refs;
   refs.tracer = std::make_unique<ReferenceTracer>(frame);
@@ -334,8 +377,8 @@ References traceReferences(const SceneFrame& frame, const std::vector<const Snel
   result.mseTwoVsFullTir = compareImages(refs.full.color, refs.two.color, refs.tir).mse;
   to.mode = TraceMode::Principal;
   std::set<int> kept;  // the events of the rows' models
-  for (const SnellTechniqueInfo* t : techniques)
-    if (snellTechniqueBounces(*t) > 0) kept.insert(2 + snellTechniqueBounces(*t));
+  for (const LabRowSpec& t : techniques)
+    if (t.bounces() > 0) kept.insert(2 + t.bounces());
   std::set<int> events(std::begin(kFloorEvents), std::end(kFloorEvents));
   events.insert(kept.begin(), kept.end());
   for (int e : events) {
@@ -415,23 +458,25 @@ MissingInformation missingInformation(const References& refs, const SceneFrame& 
 }
 
 // Wyman's d_N per vertex, when a technique reads it (else none: the shaders read 0).
-std::vector<float> wymanDnIfNeeded(const SceneFrame& frame, const std::vector<const SnellTechniqueInfo*>& techniques) {
+std::vector<float> wymanDnIfNeeded(const SceneFrame& frame, const std::vector<LabRowSpec>& techniques) {
   const bool wanted = std::any_of(techniques.begin(), techniques.end(),
-                                  [](const SnellTechniqueInfo* t) { return snellTechniqueNeedsDn(*t); });
+                                  [](const LabRowSpec& t) { return t.needsDn(); });
   if (!wanted) return {};
   return computeWymanDn(frame.object.positions, frame.object.normals, frame.object.indices);
 }
 
 // Stage 4, per technique: what the C++ build computes for one covered pixel of the GPU's front pass.
 struct CpuShader {
-  const SnellTechniqueInfo& info;
+  const LabRowSpec& info;
+  float engineParameter;  // the engine model's free value (engine rows)
   const CpuBuffers& cb;
   const LabParams& params;
   int margin;  // guard band of the buffers, texels per side
 
   SnellTwoInterfaceResult operator()(vec3 p1, vec3 n1, float dN) const {
-    return labShade(info.id, info.kind == SnellTechniqueKind::Reference, p1, n1, dN, cb.backDepth, cb.backNormal, cb.backPyramid, cb.frontDepth, cb.frontNormal, cb.sceneDepth, cb.sceneNormal,
-                    cb.scenePyramid, cb.sceneColor, cb.environment, params);
+    return labShadeRow(info.techniqueId(), info.engineModel(), engineParameter, info.reference(), p1, n1, dN,
+                       cb.backDepth, cb.backNormal, cb.backPyramid, cb.frontDepth, cb.frontNormal, cb.sceneDepth,
+                       cb.sceneNormal, cb.scenePyramid, cb.sceneColor, cb.environment, params);
   }
 
   // Is a CPU/GPU difference at (x, y) a rounding tie (a texel or TIR boundary that the two builds'
@@ -526,7 +571,7 @@ void debugWorstPixel(const CpuShader& shade, const TechniqueBuffers& tb, const I
                "[parity] %s worst pixel (%d, %d): |d| %.2f/255; P1 (%.9g %.9g %.9g) N1 (%.9g %.9g %.9g) dN %.9g\n"
                "  gpu rgb (%.5f %.5f %.5f) fellBack %g fetches %g backHit %g exitHit %g\n"
                "  cpu rgb (%.5f %.5f %.5f) fellBack %g fetches %g\n",
-               shade.info.name, x, y, 255.0 * row.cpuGpuMaxAbs, p.x, p.y, p.z, nn.x, nn.y, nn.z, p.w, g.x, g.y, g.z,
+               shade.info.name().c_str(), x, y, 255.0 * row.cpuGpuMaxAbs, p.x, p.y, p.z, nn.x, nn.y, nn.z, p.w, g.x, g.y, g.z,
                gs.x, gs.y, gs.z, gs.w, c.x, c.y, c.z, cs.x, cs.y);
   int reproduced = 0, tried = 0;
   const int bestUlps = shade.tieUlps(tb, x, y, 32, &reproduced, &tried);
@@ -543,8 +588,8 @@ TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const CpuShader& shade
   Image cpuColor(tb.color.width, tb.color.height), cpuStats(tb.color.width, tb.color.height);
   shadeOnCpu(shade, tb, threads, cpuColor, cpuStats);
   TechniqueRow row;
-  row.name = shade.info.name;
-  row.label = shade.info.label;
+  row.name = shade.info.name();
+  row.label = shade.info.label();
   compareCpuGpu(shade, tb, cpuColor, cpuStats, row);
   debugWorstPixel(shade, tb, cpuColor, cpuStats, row);
   // Coverage: the ray tracer's object pixels that the front pass did not shade (near-plane clipping,
@@ -557,7 +602,7 @@ TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const CpuShader& shade
   const std::size_t objectPixels = object.count();
   if (unshaded == objectPixels)
     throw Error(ErrorKind::Render,
-                std::string("technique ") + shade.info.name + " shaded none of the " + std::to_string(objectPixels) +
+                "technique " + shade.info.name() + " shaded none of the " + std::to_string(objectPixels) +
                     " pixels where the ray tracer sees the object (does the near plane cut the object, or does the "
                     "camera sit inside it?); no error can be measured");
   row.unshadedShare = objectPixels ? static_cast<double>(unshaded) / static_cast<double>(objectPixels) : 0.0;
@@ -565,21 +610,60 @@ TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const CpuShader& shade
   row.mseFull = compareImages(refs.full.color, image, refs.full.mask).mse;
   row.mseTwo = compareImages(refs.two.color, image, refs.full.mask).mse;
   row.mseFullTir = compareImages(refs.full.color, image, refs.tir).mse;
-  row.bounces = snellTechniqueBounces(shade.info);
+  row.bounces = shade.info.bounces();
   row.modelEvents = 2 + row.bounces;
   row.mseModel = compareImages(refs.modelOf(row.bounces).color, image, refs.full.mask).mse;
   return row;
 }
 
+// Stage 4, before an engine row runs: its free value (a material's thickness, Godot's uv scale) has no value in
+// the scene, so it is swept on this scene and the best value by MSE against the full ray tracer is kept: the
+// comparison is as fair to the engine as a user tuning it by eye could be at best. The C++ build of the same
+// row shades the GPU front pass's inputs for every value; the GPU then runs the best.
+struct EngineSweep {
+  float best = 0.0f;
+  std::vector<std::pair<float, double>> tried;  // (value, MSE vs the full ray tracer), in sweep order
+};
+
+// Lengths as shares of the object's bounding-box diagonal, uv scales as they are (Godot's default is 0.05).
+std::vector<float> engineCandidates(const SnellEngineModelInfo& m, const LabParams& p) {
+  if (m.kind == SnellEngineParameterKind::UvScale)
+    return {0.0f, 0.005f, 0.01f, 0.02f, 0.03f, 0.05f, 0.075f, 0.1f, 0.15f, 0.2f};
+  std::vector<float> v;
+  for (float share : {0.0f, 0.025f, 0.05f, 0.075f, 0.1f, 0.15f, 0.2f, 0.25f, 0.3f, 0.4f, 0.5f, 0.7f, 1.0f})
+    v.push_back(share * p.backRange);
+  return v;
+}
+
+EngineSweep sweepEngineParameter(GpuLab& gpu, std::size_t index, const LabRowSpec& row, const CpuBuffers& cb,
+                                 const LabParams& params, const StaticBuffers& sb, const References& refs,
+                                 int threads, int margin) {
+  gpu.renderTechnique(index);
+  const TechniqueBuffers tb = gpu.readTechnique();
+  EngineSweep sweep;
+  double bestMse = 0.0;
+  for (float value : engineCandidates(*row.engine, params)) {
+    Image color(tb.color.width, tb.color.height), stats(tb.color.width, tb.color.height);
+    shadeOnCpu(CpuShader{row, value, cb, params, margin}, tb, threads, color, stats);
+    const double mse = compareImages(refs.full.color, composite(color, tb.normal, sb.sceneColor, margin), refs.full.mask).mse;
+    sweep.tried.emplace_back(value, mse);
+    if (sweep.tried.size() == 1 || mse < bestMse) {
+      bestMse = mse;
+      sweep.best = value;
+    }
+  }
+  return sweep;
+}
+
 // Stage 4c: every row against the image-space bound, and the bound's own error split into the pixels
 // whose path the buffers do not hold (missingInformation) and the rest.
-void scoreAgainstTheBound(const std::vector<const SnellTechniqueInfo*>& techniques, const std::vector<Image>& images,
+void scoreAgainstTheBound(const std::vector<LabRowSpec>& techniques, const std::vector<Image>& images,
                           const MissingInformation& missing, const References& refs, LabResult& result) {
   // The bound of the rows with `bounces` (selectTechniques runs one for every count a row has).
   const auto boundOf = [&](int bounces) {
     std::size_t b = 0;
     while (b < techniques.size() &&
-           !(techniques[b]->kind == SnellTechniqueKind::Reference && snellTechniqueBounces(*techniques[b]) == bounces))
+           !(techniques[b].reference() && techniques[b].bounces() == bounces))
       ++b;
     return b;
   };
@@ -621,17 +705,17 @@ void scoreAgainstTheBound(const std::vector<const SnellTechniqueInfo*>& techniqu
 
 // Stage 5: all techniques interleaved, frame after frame; median per technique, ratios to single sample
 // (to the first row when single sample did not run).
-void timeTechniques(GpuLab& gpu, const std::vector<const SnellTechniqueInfo*>& techniques, int frames,
+void timeTechniques(GpuLab& gpu, const std::vector<LabRowSpec>& techniques, int frames,
                     LabResult& result) {
   std::vector<std::vector<double>> times(techniques.size());
   // The bound is a reference, not a contender: one timed frame is enough to show its cost.
   for (int f = 0; f < frames; ++f)
     for (std::size_t i = 0; i < techniques.size(); ++i)
-      if (f == 0 || techniques[i]->kind != SnellTechniqueKind::Reference) times[i].push_back(gpu.renderTechnique(i));
+      if (f == 0 || !techniques[i].reference()) times[i].push_back(gpu.renderTechnique(i));
   double unit = 0.0;
   for (std::size_t i = 0; i < techniques.size(); ++i) {
     result.rows[i].medianMs = median(times[i]);
-    if (techniques[i]->costUnit) unit = result.rows[i].medianMs;
+    if (techniques[i].costUnit()) unit = result.rows[i].medianMs;
   }
   if (unit <= 0.0 && !result.rows.empty()) unit = result.rows[0].medianMs;
   for (TechniqueRow& r : result.rows) r.costRatio = unit > 0.0 ? r.medianMs / unit : 0.0;
@@ -720,7 +804,7 @@ int guardBandMargin(double fraction, int width, int height) {
 
 LabResult runLab(const LabOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<const SnellTechniqueInfo*> techniques = selectTechniques(options);
+  const std::vector<LabRowSpec> techniques = selectTechniques(options);
 
   Scene scene = loadScene(options.scenePath);
   if (options.width > 0) scene.camera.width = options.width;
@@ -737,24 +821,35 @@ LabResult runLab(const LabOptions& options) {
 
   // Stage 3: the GPU passes that do not depend on the technique (scene, back faces, pyramids), once:
   // the frame is static. Their read-back buffers are what the C++ side shades from.
-  std::vector<int> ids;
-  for (const SnellTechniqueInfo* t : techniques) ids.push_back(t->id);
+  std::vector<LabShader> shaders;
+  for (const LabRowSpec& t : techniques) shaders.push_back({t.techniqueId(), t.reference(), t.engineModel()});
   const int margin = guardBandMargin(options.guardBand, result.width, result.height);
   result.guardBand = margin;
   ShadeConstants k = shadeConstants(frame, margin);
   k.normalFilter = options.normalFilter;
   k.params.depthFilter = options.depthFilter;
   k.params.reflectSource = options.reflectSource;
-  GpuLab gpu(options.backend, frame, wymanDnIfNeeded(frame, techniques), ids, options.dirs, k);
+  GpuLab gpu(options.backend, frame, wymanDnIfNeeded(frame, techniques), shaders, options.dirs, k);
   result.gpu = gpu.description();
   result.staticPassMs = gpu.renderStatic();
   const StaticBuffers sb = gpu.readStatic();
   const CpuBuffers cb = cpuBuffers(sb, k, frame);
   const LabParams& params = k.params;
+  result.objectDiagonal = params.backRange;
 
   std::vector<Image> images(techniques.size());
-  for (std::size_t i = 0; i < techniques.size(); ++i)
-    result.rows.push_back(runTechnique(gpu, i, CpuShader{*techniques[i], cb, params, k.margin}, sb, refs, options.threads, images[i]));
+  for (std::size_t i = 0; i < techniques.size(); ++i) {
+    EngineSweep sweep;
+    if (techniques[i].engine) {
+      sweep = sweepEngineParameter(gpu, i, techniques[i], cb, params, sb, refs, options.threads, k.margin);
+      gpu.setEngineParameter(i, sweep.best);
+    }
+    TechniqueRow row = runTechnique(gpu, i, CpuShader{techniques[i], sweep.best, cb, params, k.margin}, sb, refs,
+                                    options.threads, images[i]);
+    row.engineSweep = sweep.tried;
+    row.engineParameter = sweep.best;
+    result.rows.push_back(std::move(row));
+  }
   scoreAgainstTheBound(techniques, images, missingInformation(refs, frame, sb, k), refs, result);
 
   timeTechniques(gpu, techniques, options.frames, result);

@@ -9,6 +9,7 @@
 
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace snell::lab {
@@ -55,6 +56,10 @@ struct TechniqueRow {
   int worstX = -1, worstY = -1;  // the pixel of cpuGpuMaxAbs
   double fetchMismatch = 0.0;  // share of object pixels whose CPU fetch count differs from the GPU's
   double mseFullTir = 0.0;     // vs the full ray tracer on the object pixels with TIR (LabResult::tirShare)
+  // An engine row: the value of its free parameter it ran with, the best of the sweep (value, MSE vs the full
+  // ray tracer) on this scene.
+  float engineParameter = 0.0f;
+  std::vector<std::pair<float, double>> engineSweep;
 };
 
 // The model part of the error for a longer principal path (TraceMode::Principal): what an image-space
@@ -85,6 +90,7 @@ struct LabResult {
   // pixel (a middle layer of a concave object): an upper bound of what a second, depth-peeled back-face
   // buffer would buy the bound.
   double boundMiddleLayerMse = 0.0, boundMiddleLayerShare = 0.0;
+  float objectDiagonal = 0.0f;  // the object's bounding-box diagonal (the engine rows' lengths are swept in it)
   double traceSeconds = 0.0, staticPassMs = 0.0, totalSeconds = 0.0;
   int frames = 0;
   std::string gpu;

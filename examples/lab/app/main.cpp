@@ -91,6 +91,9 @@ int main(int argc, char** argv) {
   std::string techniqueHelp = "techniques to compare (repeat or comma-separate; default: all):";
   for (const snell::SnellTechniqueInfo& t : snell::snellTechniqueTable())
     techniqueHelp += std::string("\n  ") + t.name + ": " + snell::snellDescribeTechnique(t);
+  for (const snell::SnellEngineModelInfo& m : snell::snellEngineModelTable())
+    techniqueHelp += std::string("\n  ") + m.name + ": " + m.engine + " (its " + m.parameter +
+                     " swept to its best value on the scene; no back-face pass)";
 
   CLI::App app{"snell-lab: image-space refraction techniques rendered on the GL driver (Mesa llvmpipe by default) "
                "against an Embree ray tracer. Writes per-technique panels (ground truth | technique | error), an "
@@ -140,7 +143,8 @@ int main(int argc, char** argv) {
     return code;
   for (const std::string& t : techniqueArgs) {
     if (t == "all") continue;
-    if (!snell::snellFindTechnique(t)) {
+    const LabRowSpec row = findRow(t);
+    if (!row.technique && !row.engine) {
       std::fprintf(stderr, "snell-lab: unknown technique '%s'; valid: %s, all\n", t.c_str(), techniqueNames().c_str());
       return 2;
     }

@@ -177,6 +177,8 @@ SNELL_FN vec4 techOptionSums(SnellTechnique t, SnellMaterial m, SnellView v) {
 #define TECH_SLOTS_OUT(t) backStrategy = t.back.intersect.strategy; backCounts = techPackCounts(t.back.intersect); backFlags = techBackFlags(t.back); exitStrategy = t.exit.intersect.strategy; exitCounts = techPackCounts(t.exit.intersect); exitFlags = techExitFlags(t.exit);
 /* The bounce presets' outputs (TECH_BOUNCE_EXACT in technique_cases.cpp). */
 #define TECH_BOUNCE_OUT(t) bounces = t.bounces; insideSource = t.inside.source; insideStrategy = t.inside.intersect.strategy; insideCounts = vec2(float(t.inside.intersect.marchSteps), float(t.inside.intersect.marchBisections)); insideMaxDistance = t.inside.intersect.marchMaxDistance; backStrategy = t.back.intersect.strategy; backCounts = techPackCounts(t.back.intersect); exitStrategy = t.exit.intersect.strategy;
+/* The engine model cases' outputs (TECH_ENGINE_OUTPUTS in technique_cases.cpp) from a SnellEngineRefraction. */
+#define TECH_ENGINE_OUT(e) uv = e.uv; weight = e.sceneWeight; valid = e.valid; direction = e.direction; distance = e.distance;
 #define TECH_OPTIONS_OUT(t, m, v) TECH_SLOTS_OUT(t) tirPolicy = m.tirPolicy; ior = m.ior; dispersion = m.dispersion; reflection = m.reflection; sums = techOptionSums(t, m, v);
 
 
@@ -246,4 +248,15 @@ SNELL_FN vec4 techImagePixel(ivec2 px, int preset, vec4 c) {
       p1.position, vec3(n1.x, n1.y, n1.z), 4.4f, TECH_OBJECT_TEXTURES(c), TECH_SCENE_TEXTURES(c),
       techImageTechnique(preset), techImageMaterial(preset), snellView());
   return vec4(r.color.x, r.color.y, r.color.z, r.fellBack ? 2.0f : 1.0f);
+}
+
+/* The engine model cases' probe proxy: a box centred at (0.3, -0.2, centreZ) with half extents
+   halfX (1, 0.8, 1.2), as the affine proxyFromView (shade/engine_models/hdrp.glsl) */
+SNELL_FN mat4 techProxy(float halfX, float centreZ) {
+  float hx = halfX;
+  float hy = 0.8f * halfX;
+  float hz = 1.2f * halfX;
+  return SNELL_CAMERA_MAT4_COLUMNS(vec4(1.0f / hx, 0.0f, 0.0f, 0.0f), vec4(0.0f, 1.0f / hy, 0.0f, 0.0f),
+                                   vec4(0.0f, 0.0f, 1.0f / hz, 0.0f),
+                                   vec4(-0.3f / hx, 0.2f / hy, -centreZ / hz, 1.0f));
 }

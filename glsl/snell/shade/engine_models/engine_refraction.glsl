@@ -1,0 +1,79 @@
+/*
+description: what the engines' screen-space refraction models return, and
+  the step they all share: refract the view ray at the front face, then read
+  the opaque scene's colour where a point projects. The models themselves
+  (threejs.glsl, filament.glsl, hdrp.glsl, godot.glsl) re-derive, from each
+  engine's documented source, where that engine reads its scene colour, so a
+  host can score them against snell's techniques on the same buffers (the lab
+  does). They need no back-face pass: they are snell's cheapest tier.
+use: SnellEngineRefraction e = snellEngineSeePoint(x, direction, distance, clipFromView);
+     SnellEngineRefraction e = snellEngineInvalid();   // what every model returns for invalid input
+     vec3 c = mix(environment(e.direction), SNELL_SAMPLE_LOD(sceneColor, clamp(e.uv, 0, 1), 0).xyz, e.sceneWeight);
+  p, n      the front-face fragment's view-space position and normal (the
+            normal may face either way; it is turned towards the eye)
+  eta       n_outside / n_inside (1 / ior: every engine refracts from air)
+  x         the view-space point whose projection is read
+contract:
+  - SnellEngineRefraction.uv: where the model reads the scene colour, in the
+    uv of clipFromView's buffers; it may lie outside [0,1]^2: every engine
+    reads it clamped to the edge (its sampler), the caller clamps.
+  - sceneWeight in [0,1]: the scene colour's share; the rest is the
+    environment along `direction` (HDRP's probe fallback; 0 also where the
+    point does not project: at or behind the camera).
+  - direction: unit, the direction an environment read follows.
+  - distance >= 0, finite or +inf: the length the engine absorbs over.
+  - valid false (uv 0, weight 0, direction 0, distance 0): p or n zero, NaN or
+    infinite, or eta not a finite positive normal number (snellRefract's
+    rules); the caller shows what it shows for an invalid fragment.
+  - every model that refracts starts with snellRefract(p, n, eta,
+    SNELL_TIR_ZERO) (the entry refraction): where it is not valid,
+    snellEngineInvalid(); on TIR at the entry (eta > 1, direction 0),
+    snellEngineSeePoint(p, p, 0, clipFromView): the fragment's own texel, no
+    displacement. A length parameter that is negative or NaN counts as 0, as
+    the engines clamp theirs.
+  - snellEngineSeePoint(x, direction, distance, clipFromView): uv =
+    snellViewToUv(clipFromView, x).uv and weight 1 where x projects, else uv 0
+    and weight 0; direction normalized (0 stays 0), distance as given.
+source: the engines' shared first step: T = refract(-V, N, 1/ior) at the front
+  face (three.js transmission_pars_fragment, Filament surface_light_indirect.fs,
+  HDRP Refraction.hlsl, Bevy transmission.wesl).
+*/
+#ifndef SNELL_SHADE_ENGINE_MODELS_ENGINE_REFRACTION_GLSL
+#define SNELL_SHADE_ENGINE_MODELS_ENGINE_REFRACTION_GLSL
+#include "../../prelude.glsl"
+#include "../../camera/view_to_uv.glsl"
+#include "../../optics/safe_normalize.glsl"
+#include "../../optics/refract.glsl"
+
+struct SnellEngineRefraction {
+  vec2 uv;
+  float sceneWeight;
+  vec3 direction;
+  float distance;
+  bool valid;
+};
+
+SNELL_FN SnellEngineRefraction snellEngineInvalid() {
+  SnellEngineRefraction e;
+  e.uv = vec2(0.0f, 0.0f);
+  e.sceneWeight = 0.0f;
+  e.direction = vec3(0.0f, 0.0f, 0.0f);
+  e.distance = 0.0f;
+  e.valid = false;
+  return e;
+}
+
+SNELL_FN SnellEngineRefraction snellEngineSeePoint(vec3 x, vec3 direction, float distance, mat4 clipFromView) {
+  SnellEngineRefraction e = snellEngineInvalid();
+  SnellScreenPoint sp = snellViewToUv(clipFromView, x);
+  if (sp.valid) {
+    e.uv = sp.uv;
+    e.sceneWeight = 1.0f;
+  }
+  e.direction = snellSafeNormalize(direction);
+  e.distance = distance;
+  e.valid = true;
+  return e;
+}
+
+#endif
