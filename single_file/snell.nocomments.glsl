@@ -3585,7 +3585,8 @@ SNELL_FN SnellEngineRefraction snellEngineSeePoint(vec3 x, vec3 direction, float
     e.sceneWeight = 1.0f;
   }
   e.direction = snellSafeNormalize(direction);
-  e.distance = distance;
+  float d = distance > 0.0f ? distance : 0.0f;
+  e.distance = d < SNELL_FLT_MAX ? d : SNELL_FLT_MAX;
   e.valid = true;
   return e;
 }

@@ -6100,7 +6100,7 @@ contract:
     environment along `direction` (HDRP's probe fallback; 0 also where the
     point does not project: at or behind the camera).
   - direction: unit, the direction an environment read follows.
-  - distance >= 0, finite or +inf: the length the engine absorbs over.
+  - distance in [0, SNELL_FLT_MAX]: the length the engine absorbs over.
   - valid false (uv 0, weight 0, direction 0, distance 0): p or n zero, NaN or
     infinite, or eta not a finite positive normal number (snellRefract's
     rules); the caller shows what it shows for an invalid fragment.
@@ -6112,7 +6112,8 @@ contract:
     the engines clamp theirs.
   - snellEngineSeePoint(x, direction, distance, clipFromView): uv =
     snellViewToUv(clipFromView, x).uv and weight 1 where x projects, else uv 0
-    and weight 0; direction normalized (0 stays 0), distance as given.
+    and weight 0; direction normalized (0 stays 0), distance clamped to
+    [0, SNELL_FLT_MAX] (NaN: 0).
 source: the engines' shared first step: T = refract(-V, N, 1/ior) at the front
   face (three.js transmission_pars_fragment, Filament surface_light_indirect.fs,
   HDRP Refraction.hlsl, Bevy transmission.wesl).
@@ -6150,7 +6151,8 @@ SNELL_FN SnellEngineRefraction snellEngineSeePoint(vec3 x, vec3 direction, float
     e.sceneWeight = 1.0f;
   }
   e.direction = snellSafeNormalize(direction);
-  e.distance = distance;
+  float d = distance > 0.0f ? distance : 0.0f;
+  e.distance = d < SNELL_FLT_MAX ? d : SNELL_FLT_MAX;
   e.valid = true;
   return e;
 }

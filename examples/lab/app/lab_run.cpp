@@ -220,19 +220,49 @@ std::string targetsText(const LabResult& r) {
     if (info && info->kind == SnellTechniqueKind::ConstantTime && (!best || t.mseTwo < best->mseTwo)) best = &t;
   }
   if (best) s += " best constant-time technique: " + best->label + ", " + fmt("%.2fx", best->boundRatio) + " the bound's MSE.";
-  const TechniqueRow* bestEngine = nullptr;
-  for (const TechniqueRow& t : r.rows)
-    if (snellFindEngineModel(t.name) && (!bestEngine || t.mseFull < bestEngine->mseFull)) bestEngine = &t;
-  const TechniqueRow* bestFull = nullptr;
+  return s + "\n";
+}
+
+// One plain paragraph from this table's own numbers (vs the full ray tracer): which row to pick for a budget,
+// with and without a back-face pass, and what following the bounces inside buys on this object.
+std::string whichToPick(const LabResult& r) {
+  const TechniqueRow *best = nullptr, *cheap = nullptr, *search = nullptr, *bounce = nullptr, *engine = nullptr;
   for (const TechniqueRow& t : r.rows) {
     const SnellTechniqueInfo* info = snellFindTechnique(t.name);
-    if (info && info->kind == SnellTechniqueKind::ConstantTime && (!bestFull || t.mseFull < bestFull->mseFull)) bestFull = &t;
+    if (!info) {
+      if (snellFindEngineModel(t.name) && (!engine || t.mseFull < engine->mseFull)) engine = &t;
+      continue;
+    }
+    const bool bounces = snellTechniqueBounces(*info) > 0;
+    if (info->kind == SnellTechniqueKind::ConstantTime && (!best || t.mseFull < best->mseFull)) best = &t;
+    if (info->kind == SnellTechniqueKind::Search && !bounces && (!search || t.mseFull < search->mseFull)) search = &t;
+    if (info->kind != SnellTechniqueKind::Reference && bounces && (!bounce || t.mseFull < bounce->mseFull)) bounce = &t;
   }
-  if (bestEngine && bestFull && bestEngine->mseFull > 0.0)
-    s += "\nAgainst the engines (vs the ray tracer): the best engine model, " + bestEngine->label + ", " +
-         fmt("%.3g", bestEngine->mseFull) + "; snell's best constant-time technique, " + bestFull->label + ", " +
-         fmt("%.3g", bestFull->mseFull) + ": " + fmt("%.2fx", bestFull->mseFull / bestEngine->mseFull) + " its MSE at " +
-         fmt("%.2fx", bestEngine->costRatio > 0.0 ? bestFull->costRatio / bestEngine->costRatio : 0.0) + " its time.";
+  if (!best) return "";
+  // The cheapest constant-time row within a quarter of the best one's error.
+  for (const TechniqueRow& t : r.rows) {
+    const SnellTechniqueInfo* info = snellFindTechnique(t.name);
+    if (info && info->kind == SnellTechniqueKind::ConstantTime && t.mseFull <= 1.25 * best->mseFull &&
+        (!cheap || t.costRatio < cheap->costRatio))
+      cheap = &t;
+  }
+  const auto at = [](const TechniqueRow& t) {
+    return t.label + " (MSE " + fmt("%.3g", t.mseFull) + ", " + fmt("%.2fx", t.costRatio) + " single sample's time)";
+  };
+  std::string s = "\nWhich to pick on " + r.scene + " (MSE vs the ray tracer): with a back-face pass, " + at(*best);
+  if (cheap && cheap != best) s += "; within a quarter of its error and cheaper, " + at(*cheap);
+  s += ".";
+  if (search && best->mseFull > 0.0)
+    s += " The searches do not buy more here: the best, " + at(*search) + ", is " +
+         fmt("%.2fx", search->mseFull / best->mseFull) + " that error.";
+  if (bounce && best->mseFull > 0.0)
+    s += " Following total internal reflection inside (" + fmt("%.1f %%", 100.0 * r.tirShare) + " of the object's "
+         "pixels meet it): " + at(*bounce) + ", " + fmt("%.2fx", bounce->mseFull / best->mseFull) +
+         " the error without" + (bounce->mseFull < 0.9 * best->mseFull ? "; worth it on this object." : ": not worth it on this object.");
+  if (engine && engine->mseFull > 0.0)
+    s += " Without a back-face pass (the engines' tier, their free value at its best for this scene): " + at(*engine) +
+         "; " + best->label + " has " + fmt("%.2fx", best->mseFull / engine->mseFull) + " its error at " +
+         fmt("%.2fx", engine->costRatio > 0.0 ? best->costRatio / engine->costRatio : 0.0) + " its time.";
   return s + "\n";
 }
 
@@ -854,7 +884,7 @@ LabResult runLab(const LabOptions& options) {
 
   timeTechniques(gpu, techniques, options.frames, result);
   result.markdown = markdownTable(result);
-  result.targets = targetsText(result);
+  result.targets = targetsText(result) + whichToPick(result);
   if (!options.outDir.empty()) writeOutputs(options.outDir, refs, images, gpu.description(), result, start);
   result.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -96,7 +96,7 @@ struct LabResult {
   std::string gpu;
   std::vector<TechniqueRow> rows;
   std::string markdown;  // the table (and notes) as printed
-  std::string targets;   // the Mayer-Assarsson comparison, as printed
+  std::string targets;   // the Mayer-Assarsson comparison and which row to pick, as printed
 
   const TechniqueRow* row(const std::string& name) const {
     for (const TechniqueRow& r : rows)
