@@ -1,7 +1,7 @@
 #version 450 core
 #extension GL_GOOGLE_include_directive : require  // or resolve includes your own way
-// snell's two-interface refraction (normal plane, 2 iterations) in one
-// fragment shader: the GLSL twin of examples/hlsl/plane_refraction.hlsl and
+// snell's two-interface refraction (normal plane, 2 iterations, or any row of
+// the technique table) in one fragment shader: the GLSL twin of examples/hlsl/plane_refraction.hlsl and
 // examples/webgpu/refract.frag. Portable: compiles unchanged after any of
 // #version 330 core, 450 core, 300 es, 310 es, or as Vulkan GLSL
 // (tests/compile/check_glsl.sh). The buffers it reads, their formats and
@@ -11,9 +11,15 @@ precision highp float;
 precision highp int;
 precision highp sampler2D;
 #endif
-// Only the strategy this technique's slots call (snellStrategiesUsed in C++):
-// the others are not compiled, which is most of the compile time in a browser.
-#define SNELL_INTERSECT_STRATEGIES (1 << SNELL_STRATEGY_PLANE_NORMAL)
+// The technique: a row of the technique table (shade/technique_presets.glsl),
+// and only the strategies its slots call (snellStrategiesUsed in C++): the
+// others are not compiled, which is most of the compile time. A host that
+// builds one program per technique defines both before this file
+// (benchmarks/compile_times does, for every row).
+#ifndef EXAMPLE_TECHNIQUE
+#  define EXAMPLE_TECHNIQUE SNELL_TECHNIQUE_PLANE_NORMAL_2
+#  define SNELL_INTERSECT_STRATEGIES (1 << SNELL_STRATEGY_PLANE_NORMAL)
+#endif
 #include "snell/snell.glsl"
 
 // Vulkan needs locations on every in/out and bindings on every uniform; GLSL
@@ -59,7 +65,7 @@ void main() {
   SnellDepthSurface frontLayer = snellDepthSurface(clipFromView, nearFar.x, nearFar.y, SNELL_DEPTH_GL, 1.0f);
   SnellDepthSurface scene = snellDepthSurface(clipFromView, nearFar.x, nearFar.y, SNELL_DEPTH_GL, 1.0f);
   scene.closed = false;
-  SnellTechnique t = snellPresetPlaneNormal(2);
+  SnellTechnique t = snellTechniquePreset(EXAMPLE_TECHNIQUE);
   t.exit.source = SNELL_SOURCE_BUFFERS;
   SnellView v = snellView();
   v.envX = vec3(envFromView[0].x, envFromView[0].y, envFromView[0].z);

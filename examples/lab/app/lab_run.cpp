@@ -253,8 +253,9 @@ std::string whichToPick(const LabResult& r) {
   if (cheap && cheap != best) s += "; within a quarter of its error and cheaper, " + at(*cheap);
   s += ".";
   if (search && best->mseFull > 0.0)
-    s += " The searches do not buy more here: the best, " + at(*search) + ", is " +
-         fmt("%.2fx", search->mseFull / best->mseFull) + " that error.";
+    s += (search->mseFull >= best->mseFull ? std::string(" The searches do not buy more here: the best, ")
+                                           : std::string(" A search does better here: ")) +
+         at(*search) + ", " + fmt("%.2fx", search->mseFull / best->mseFull) + " that error.";
   if (bounce && best->mseFull > 0.0)
     s += " Following total internal reflection inside (" + fmt("%.1f %%", 100.0 * r.tirShare) + " of the object's "
          "pixels meet it): " + at(*bounce) + ", " + fmt("%.2fx", bounce->mseFull / best->mseFull) +
@@ -652,11 +653,13 @@ TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const CpuShader& shade
 // row shades the GPU front pass's inputs for every value; the GPU then runs the best.
 struct EngineSweep {
   float best = 0.0f;
-  std::vector<std::pair<float, double>> tried;  // (value, MSE vs the full ray tracer), in sweep order
+  std::vector<std::pair<float, double>> tried;  // (value, MSE vs the full ray tracer), in the order tried
 };
 
-// Lengths as shares of the object's bounding-box diagonal, uv scales as they are (Godot's default is 0.05).
-std::vector<float> engineCandidates(const SnellEngineModelInfo& m, const LabParams& p) {
+// The sweep starts on a grid: lengths as shares of the object's bounding-box diagonal d (0 to d), uv scales as
+// they are (0 to 0.2; Godot's default is 0.05). While the best value is the grid's last, it goes on in steps of
+// 1.5x (to 8 d, or Godot's clamp 1); then it tries the midpoints on both sides of the best.
+std::vector<float> engineGrid(const SnellEngineModelInfo& m, const LabParams& p) {
   if (m.kind == SnellEngineParameterKind::UvScale)
     return {0.0f, 0.005f, 0.01f, 0.02f, 0.03f, 0.05f, 0.075f, 0.1f, 0.15f, 0.2f};
   std::vector<float> v;
@@ -672,16 +675,29 @@ EngineSweep sweepEngineParameter(GpuLab& gpu, std::size_t index, const LabRowSpe
   const TechniqueBuffers tb = gpu.readTechnique();
   EngineSweep sweep;
   double bestMse = 0.0;
-  for (float value : engineCandidates(*row.engine, params)) {
+  const auto tryValue = [&](float value) {
     Image color(tb.color.width, tb.color.height), stats(tb.color.width, tb.color.height);
     shadeOnCpu(CpuShader{row, value, cb, params, margin}, tb, threads, color, stats);
-    const double mse = compareImages(refs.full.color, composite(color, tb.normal, sb.sceneColor, margin), refs.full.mask).mse;
+    const double mse =
+        compareImages(refs.full.color, composite(color, tb.normal, sb.sceneColor, margin), refs.full.mask).mse;
     sweep.tried.emplace_back(value, mse);
     if (sweep.tried.size() == 1 || mse < bestMse) {
       bestMse = mse;
       sweep.best = value;
     }
+  };
+  std::vector<float> grid = engineGrid(*row.engine, params);
+  for (float value : grid) tryValue(value);
+  const bool uv = row.engine->kind == SnellEngineParameterKind::UvScale;
+  const float cap = uv ? 1.0f : 8.0f * params.backRange;
+  while (sweep.best == grid.back() && grid.back() < cap) {
+    grid.push_back(std::min(cap, 1.5f * grid.back()));
+    tryValue(grid.back());
   }
+  const std::size_t at = static_cast<std::size_t>(std::find(grid.begin(), grid.end(), sweep.best) - grid.begin());
+  const float best = sweep.best;
+  if (at > 0) tryValue(0.5f * (grid[at - 1] + best));
+  if (at + 1 < grid.size()) tryValue(0.5f * (best + grid[at + 1]));
   return sweep;
 }
 
