@@ -3623,8 +3623,8 @@ SNELL_FN SnellEngineRefraction snellEngineFilamentSolid(vec3 p, vec3 n, float et
     return snellEngineSeePoint(p, p, 0.0f, clipFromView);
   }
   vec3 nf = snellSafeNormalize(n);
+  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;
   float c = dot(nf, t.direction);
-  c = dot(nf, p) > 0.0f ? -c : c;
   float d = -c * (thickness > 0.0f ? thickness : 0.0f);
   return snellEngineSeePoint(p + d * t.direction, t.direction, d, clipFromView);
 }
@@ -3639,10 +3639,10 @@ SNELL_FN SnellEngineRefraction snellEngineFilamentThin(vec3 p, vec3 n, float eta
     return snellEngineSeePoint(p, p, 0.0f, clipFromView);
   }
   vec3 nf = snellSafeNormalize(n);
+  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;
   float c = dot(nf, t.direction);
-  c = dot(nf, p) > 0.0f ? -c : c;
   float d = (microThickness > 0.0f ? microThickness : 0.0f) / max(-c, 0.001f);
-  return snellEngineSeePoint(p + d * t.direction, t.direction, d, clipFromView);
+  return snellEngineSeePoint(p + d * t.direction, p, d, clipFromView);
 }
 
 #endif
@@ -3671,15 +3671,15 @@ SNELL_FN float snellEngineProxyExit(vec3 origin, vec3 dir, mat4 proxyFromView) {
     return 0.0f;
   }
   float s = SNELL_FLT_MAX;
-  if (d4.x != 0.0f) {
+  if (abs(d4.x) >= SNELL_FLT_MIN) {
     float c = ((d4.x > 0.0f ? 1.0f : -1.0f) - o4.x) / d4.x;
     s = c < s ? c : s;
   }
-  if (d4.y != 0.0f) {
+  if (abs(d4.y) >= SNELL_FLT_MIN) {
     float c = ((d4.y > 0.0f ? 1.0f : -1.0f) - o4.y) / d4.y;
     s = c < s ? c : s;
   }
-  if (d4.z != 0.0f) {
+  if (abs(d4.z) >= SNELL_FLT_MIN) {
     float c = ((d4.z > 0.0f ? 1.0f : -1.0f) - o4.z) / d4.z;
     s = c < s ? c : s;
   }
@@ -3713,7 +3713,7 @@ SNELL_FN SnellEngineRefraction snellEngineHdrpSphere(vec3 p, vec3 n, float eta, 
     return snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
   }
   vec3 nf = snellSafeNormalize(n);
-  nf = dot(nf, p) > 0.0f ? -nf : nf;
+  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;
   float c = dot(nf, t.direction);
   float d = -c * (thickness > 0.0f ? thickness : 0.0f);
   vec3 p1 = p + d * t.direction;
@@ -3736,7 +3736,7 @@ SNELL_FN SnellEngineRefraction snellEngineHdrpBox(vec3 p, vec3 n, float eta, flo
     return snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
   }
   vec3 nf = snellSafeNormalize(n);
-  nf = dot(nf, p) > 0.0f ? -nf : nf;
+  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;
   float d = (thickness > 0.0f ? thickness : 0.0f) / max(-dot(nf, t.direction), 1e-5f);
   return snellEngineHdrpProxyLookup(p, p + d * t.direction, p, d, proxyFromView, sceneDepth, scene);
 }
@@ -3753,7 +3753,7 @@ SNELL_FN SnellEngineRefraction snellEngineGodot(vec3 p, vec3 n, float scale, SNE
   if (dot(v, v) == 0.0f || dot(nf, nf) == 0.0f) {
     return snellEngineInvalid();
   }
-  nf = dot(nf, p) > 0.0f ? -nf : nf;
+  nf = -dot(nf, v) < 0.0f ? -nf : nf;
   SnellEngineRefraction e = snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
   if (e.sceneWeight > 0.0f) {
     float k = isnan(scale) ? 0.0f : clamp(scale, -1.0f, 1.0f);

@@ -6062,7 +6062,8 @@ use: SnellEngineRefraction e = snellEngineRefraction(SNELL_ENGINE_THREEJS, p, n,
               Filament solid, HDRP sphere and box), microThickness (Filament
               thin), the uv scale (Godot)
   the rest    as the models' own functions (proxyFromView is read by the HDRP
-              models only; sceneDepth and scene by HDRP and Godot)
+              models only, sceneDepth by HDRP and Godot; every model projects
+              with scene.clipFromView)
 ids:
   SNELL_ENGINE_THREEJS          snellEngineThreeJs (threejs.glsl; Bevy's too)
   SNELL_ENGINE_FILAMENT_SOLID   snellEngineFilamentSolid (filament.glsl)
@@ -6087,7 +6088,8 @@ description: what the engines' screen-space refraction models return, and
   does). They need no back-face pass: they are snell's cheapest tier.
 use: SnellEngineRefraction e = snellEngineSeePoint(x, direction, distance, clipFromView);
      SnellEngineRefraction e = snellEngineInvalid();   // what every model returns for invalid input
-     vec3 c = mix(environment(e.direction), SNELL_SAMPLE_LOD(sceneColor, clamp(e.uv, 0, 1), 0).xyz, e.sceneWeight);
+     vec4 s = SNELL_SAMPLE_LOD(sceneColor, clamp(e.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f)), 0.0f);
+     vec3 c = mix(environmentAlong(e.direction), vec3(s.x, s.y, s.z), e.sceneWeight);
   p, n      the front-face fragment's view-space position and normal (the
             normal may face either way; it is turned towards the eye)
   eta       n_outside / n_inside (1 / ior: every engine refracts from air)
@@ -6102,8 +6104,9 @@ contract:
   - direction: unit, the direction an environment read follows.
   - distance in [0, SNELL_FLT_MAX]: the length the engine absorbs over.
   - valid false (uv 0, weight 0, direction 0, distance 0): p or n zero, NaN or
-    infinite, or eta not a finite positive normal number (snellRefract's
-    rules); the caller shows what it shows for an invalid fragment.
+    infinite, or (every model but Godot's, which has no eta) eta not a finite
+    positive normal number (snellRefract's rules); the caller shows what it
+    shows for an invalid fragment.
   - every model that refracts starts with snellRefract(p, n, eta,
     SNELL_TIR_ZERO) (the entry refraction): where it is not valid,
     snellEngineInvalid(); on TIR at the entry (eta > 1, direction 0),
@@ -6223,8 +6226,10 @@ contract:
     negative or NaN).
   - solid: d = -c t (the sphere's chord along T), X = p + d T.
   - thin: d = t / max(-c, 0.001), X = p + d T.
-  - the result is snellEngineSeePoint(X, T, d, clipFromView); TIR at the
-    entry and invalid input as engine_refraction.glsl says. Screen-space mode
+  - the result is snellEngineSeePoint(X, T, d, clipFromView) (solid) or
+    snellEngineSeePoint(X, p, d, clipFromView) (thin: a slab's exit restores
+    the view direction); TIR at the entry and invalid input as
+    engine_refraction.glsl says. Screen-space mode
     reads only X's projection, so the sphere's exit refraction (Filament's
     cubemap mode) is not computed.
 source: Filament (Apache-2.0), shaders/src/surface_light_indirect.fs at
@@ -6248,8 +6253,8 @@ SNELL_FN SnellEngineRefraction snellEngineFilamentSolid(vec3 p, vec3 n, float et
     return snellEngineSeePoint(p, p, 0.0f, clipFromView);
   }
   vec3 nf = snellSafeNormalize(n);
+  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;  // turned as snellRefract turns it
   float c = dot(nf, t.direction);
-  c = dot(nf, p) > 0.0f ? -c : c;  // the normal turned towards the eye, as snellRefract turns it
   float d = -c * (thickness > 0.0f ? thickness : 0.0f);
   return snellEngineSeePoint(p + d * t.direction, t.direction, d, clipFromView);
 }
@@ -6265,17 +6270,17 @@ SNELL_FN SnellEngineRefraction snellEngineFilamentThin(vec3 p, vec3 n, float eta
     return snellEngineSeePoint(p, p, 0.0f, clipFromView);
   }
   vec3 nf = snellSafeNormalize(n);
+  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;
   float c = dot(nf, t.direction);
-  c = dot(nf, p) > 0.0f ? -c : c;
   float d = (microThickness > 0.0f ? microThickness : 0.0f) / max(-c, 0.001f);
-  return snellEngineSeePoint(p + d * t.direction, t.direction, d, clipFromView);
+  return snellEngineSeePoint(p + d * t.direction, p, d, clipFromView);
 }
 
 #endif
 /*
 description: Unity HDRP's screen-space refraction (Lit, transparent), its
-  refraction models "Sphere" and "Box" (the UI's "Thin" runs the box model
-  with the material's thickness): the model gives an exit point and
+  refraction models "Sphere" and "Box" (the UI's "Thin" is the box model at a
+  fixed thickness, 5 cm in Unity's documentation): the model gives an exit point and
   direction, the exit ray is cast against the reflection probe's proxy volume,
   and the scene colour is read where that hit projects, faded out towards the
   screen's edges (the probe fills the rest) and replaced by the fragment's
@@ -6305,7 +6310,7 @@ contract:
   - box: d = t / max(-c, 1e-5), snellEngineHdrpProxyLookup(p, p + d T, p / |p|,
     d, ...): a slab's exit restores the view direction.
   - snellEngineProxyExit(o, dir, M): with o', d' = o and dir in the box's space,
-    s = min over the axes with d'_i != 0 of (sign(d'_i) - o'_i) / d'_i, then
+    s = min over the axes with |d'_i| >= SNELL_FLT_MIN of (sign(d'_i) - o'_i) / d'_i, then
     max(s, 0): the distance to the box's far side, in units of |dir|;
     SNELL_FLT_MAX when no axis is crossed (a degenerate proxy); 0 when o' or
     d' is not finite.
@@ -6358,15 +6363,16 @@ SNELL_FN float snellEngineProxyExit(vec3 origin, vec3 dir, mat4 proxyFromView) {
   }
   // Comparisons, not min(): min() of a NaN differs between languages.
   float s = SNELL_FLT_MAX;
-  if (d4.x != 0.0f) {
+  // An axis the ray does not cross: zero or denormal (the prelude's rule: a GPU may flush it to 0).
+  if (abs(d4.x) >= SNELL_FLT_MIN) {
     float c = ((d4.x > 0.0f ? 1.0f : -1.0f) - o4.x) / d4.x;
     s = c < s ? c : s;
   }
-  if (d4.y != 0.0f) {
+  if (abs(d4.y) >= SNELL_FLT_MIN) {
     float c = ((d4.y > 0.0f ? 1.0f : -1.0f) - o4.y) / d4.y;
     s = c < s ? c : s;
   }
-  if (d4.z != 0.0f) {
+  if (abs(d4.z) >= SNELL_FLT_MIN) {
     float c = ((d4.z > 0.0f ? 1.0f : -1.0f) - o4.z) / d4.z;
     s = c < s ? c : s;
   }
@@ -6402,7 +6408,7 @@ SNELL_FN SnellEngineRefraction snellEngineHdrpSphere(vec3 p, vec3 n, float eta, 
     return snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
   }
   vec3 nf = snellSafeNormalize(n);
-  nf = dot(nf, p) > 0.0f ? -nf : nf;
+  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;  // turned as snellRefract turns it
   float c = dot(nf, t.direction);
   float d = -c * (thickness > 0.0f ? thickness : 0.0f);
   vec3 p1 = p + d * t.direction;
@@ -6415,7 +6421,7 @@ SNELL_FN SnellEngineRefraction snellEngineHdrpSphere(vec3 p, vec3 n, float eta, 
   return snellEngineHdrpProxyLookup(p, p1, r2, d, proxyFromView, sceneDepth, scene);
 }
 
-/* HDRP RefractionModelBox (also its "Thin" model), then the proxy lookup */
+/* HDRP RefractionModelBox (its "Thin" model at a fixed thickness), then the proxy lookup */
 SNELL_FN SnellEngineRefraction snellEngineHdrpBox(vec3 p, vec3 n, float eta, float thickness, mat4 proxyFromView,
                                                   SNELL_TEX2D sceneDepth, SNELL_IN(SnellDepthSurface) scene) {
   SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
@@ -6426,7 +6432,7 @@ SNELL_FN SnellEngineRefraction snellEngineHdrpBox(vec3 p, vec3 n, float eta, flo
     return snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
   }
   vec3 nf = snellSafeNormalize(n);
-  nf = dot(nf, p) > 0.0f ? -nf : nf;
+  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;  // turned as snellRefract turns it
   float d = (thickness > 0.0f ? thickness : 0.0f) / max(-dot(nf, t.direction), 1e-5f);
   return snellEngineHdrpProxyLookup(p, p + d * t.direction, p, d, proxyFromView, sceneDepth, scene);
 }
@@ -6476,7 +6482,7 @@ SNELL_FN SnellEngineRefraction snellEngineGodot(vec3 p, vec3 n, float scale, SNE
   if (dot(v, v) == 0.0f || dot(nf, nf) == 0.0f) {
     return snellEngineInvalid();
   }
-  nf = dot(nf, p) > 0.0f ? -nf : nf;
+  nf = -dot(nf, v) < 0.0f ? -nf : nf;
   SnellEngineRefraction e = snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
   if (e.sceneWeight > 0.0f) {
     float k = isnan(scale) ? 0.0f : clamp(scale, -1.0f, 1.0f);

@@ -29,6 +29,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -102,8 +104,8 @@ Timing timeLlvmpipe(const snell::gpu::Context& ctx, const snell::gpu::FlatSource
 Timing timeChromium(const std::string& node, const std::string& chromium, const fs::path& page, const fs::path& job,
                     const std::string& source) {
   fs::create_directories(job);
-  std::ofstream(job / "program.frag") << source;
-  std::ofstream(job / "job.json") << "{\"programs\": [\"program.frag\"]}\n";
+  std::ofstream(job / "shader.frag") << source;
+  std::ofstream(job / "job.json") << "{\"programs\": [\"shader.frag\"]}\n";
   const std::vector<snell::gpu::ParityIO> r = snell::gpu::detail::runChromiumPage(
       node, chromium, page, job, "times.f32", {}, 1, "snell_compile_times (Chromium WebGL 2)");
   Timing t;

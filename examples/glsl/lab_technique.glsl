@@ -130,7 +130,7 @@ SNELL_FN SnellTwoInterfaceResult labShade(int technique, bool reference, vec3 fr
    model's direction by its scene weight, absorbed over the model's distance; the same Fresnel reflection at the
    first surface as labShade's rows, through the normal plane (2 it.) preset's reflect slot, so a row differs from
    the techniques only in the transmitted light. fetches: the colour read, the environment read where the weight
-   is below 1, the depth read of the models that test depth (HDRP, Godot) and the reflect slot's. */
+   is below 1, one depth read for the models that test depth (HDRP, Godot) and the reflect slot's. */
 SNELL_FN SnellTwoInterfaceResult labEngineShade(int model, float parameter, vec3 frontPosition, vec3 frontNormal,
                                                 SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal,
                                                 SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor,
@@ -151,7 +151,7 @@ SNELL_FN SnellTwoInterfaceResult labEngineShade(int model, float parameter, vec3
   r.reflectionHit = snellHitMiss(0);
   r.pathLength = e.distance;
   r.fresnel = 0.0f;
-  r.fetches = model == SNELL_ENGINE_HDRP_SPHERE || model == SNELL_ENGINE_HDRP_BOX || model == SNELL_ENGINE_GODOT ? 1 : 0;
+  r.fetches = 0;
   r.backHit = false;
   r.fellBack = !e.valid || e.sceneWeight < 1.0f;
   r.tir = false;
@@ -160,7 +160,8 @@ SNELL_FN SnellTwoInterfaceResult labEngineShade(int model, float parameter, vec3
   if (e.valid) {
     vec4 c = SNELL_SAMPLE_LOD(sceneColor, clamp(e.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f)), 0.0f);
     transmitted = vec3(c.x, c.y, c.z);
-    r.fetches = r.fetches + 1;
+    bool readsDepth = model == SNELL_ENGINE_HDRP_SPHERE || model == SNELL_ENGINE_HDRP_BOX || model == SNELL_ENGINE_GODOT;
+    r.fetches = readsDepth ? 2 : 1;
     r.exitHit.valid = e.sceneWeight > 0.0f;
     r.exitHit.uv = e.uv;
     if (e.sceneWeight < 1.0f) {

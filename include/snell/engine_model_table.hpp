@@ -29,7 +29,7 @@ struct SnellEngineModelInfo {
 // Every engine model, in id order.
 inline const std::array<SnellEngineModelInfo, SNELL_ENGINE_MODEL_COUNT>& snellEngineModelTable() {
   static const std::array<SnellEngineModelInfo, SNELL_ENGINE_MODEL_COUNT> table = {{
-      {SNELL_ENGINE_THREEJS, "engine-threejs", "three.js / Bevy thickness",
+      {SNELL_ENGINE_THREEJS, "engine-threejs", "three.js / Bevy",
        "three.js r187 transmission_pars_fragment (Bevy 0.20 transmission.wesl: the same point)", "thickness",
        SnellEngineParameterKind::Length},
       {SNELL_ENGINE_FILAMENT_SOLID, "engine-filament-solid", "Filament solid (sphere)",
@@ -41,7 +41,7 @@ inline const std::array<SnellEngineModelInfo, SNELL_ENGINE_MODEL_COUNT>& snellEn
       {SNELL_ENGINE_HDRP_SPHERE, "engine-hdrp-sphere", "HDRP sphere + proxy",
        "Unity HDRP Refraction.hlsl RefractionModelSphere, Lit.hlsl screen-space refraction", "thickness",
        SnellEngineParameterKind::Length},
-      {SNELL_ENGINE_HDRP_BOX, "engine-hdrp-box", "HDRP box/thin + proxy",
+      {SNELL_ENGINE_HDRP_BOX, "engine-hdrp-box", "HDRP box + proxy",
        "Unity HDRP Refraction.hlsl RefractionModelBox, Lit.hlsl screen-space refraction", "thickness",
        SnellEngineParameterKind::Length},
       {SNELL_ENGINE_GODOT, "engine-godot", "Godot screen-uv offset",

@@ -64,14 +64,9 @@ TEST(LabRun, SphereSceneEndToEnd) {
     EXPECT_EQ(t.cpuGpuBeyond4Pixels, t.cpuGpuBeyond4Ties);
     // An engine row runs the sweep's best value, and its GPU image scores what the C++ sweep measured for it.
     if (snell::snellFindEngineModel(t.name)) {
-      ASSERT_GE(t.engineSweep.size(), 5u);
+      ASSERT_GE(t.engineSweep.size(), 41u);
       double best = t.engineSweep.front().second;
       for (const auto& tried : t.engineSweep) best = std::min(best, tried.second);
-      for (const auto& tried : t.engineSweep) {
-        if (tried.first == t.engineParameter) {
-          EXPECT_EQ(tried.second, best);
-        }
-      }
       EXPECT_NEAR(t.mseFull, best, 0.02 * best + 1e-6);
     } else {
       EXPECT_TRUE(t.engineSweep.empty());

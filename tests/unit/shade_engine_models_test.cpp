@@ -311,6 +311,27 @@ TEST(EngineModels, HostileInputsGiveTheDocumentedResults) {
   EXPECT_FALSE(snell::snellEngineRefraction(-1, p, n, 0.66f, 0.5f, room, empty, sceneSurface()).valid);
 }
 
+TEST(EngineModels, ABackFacingNormalIsTurnedTowardsTheEye) {
+  snell_test::Rng g(7108);
+  const snell::Texture2D empty = flatDepth(0.0f);
+  const mat4 room = mat4(kRoom.localFromView());
+  for (int i = 0; i < 100; ++i) {
+    const Fragment f = randomFragment(g);
+    for (int model = 0; model < SNELL_ENGINE_MODEL_COUNT; ++model) {
+      const float param = model == SNELL_ENGINE_GODOT ? 0.1f : 0.4f;
+      const SnellEngineRefraction a =
+          snell::snellEngineRefraction(model, f.p, f.n, 1.0f / f.ior, param, room, empty, sceneSurface());
+      const SnellEngineRefraction b =
+          snell::snellEngineRefraction(model, f.p, -f.n, 1.0f / f.ior, param, room, empty, sceneSurface());
+      const std::string name = snell::snellEngineModelTable()[model].name;
+      EXPECT_EQ(a.uv, b.uv) << name;
+      EXPECT_EQ(a.direction, b.direction) << name;
+      EXPECT_EQ(a.distance, b.distance) << name;
+      EXPECT_EQ(a.sceneWeight, b.sceneWeight) << name;
+    }
+  }
+}
+
 TEST(EngineModels, TheTableListsEveryModelOnceInIdOrder) {
   std::set<std::string> names;
   for (int i = 0; i < SNELL_ENGINE_MODEL_COUNT; ++i) {

@@ -1,5 +1,6 @@
 // The compile-time page (served by tools/browser/run_page.mjs for benchmarks/compile_times): compiles,
-// links and draws once each ES 3.00 fragment shader the job lists, in order, each in a context of its own,
+// links and draws once each ES 3.00 fragment shader job.json lists (run_page.mjs serves one, shader.frag),
+// each in a context of its own,
 // and posts per program 16 floats: compile + link ms, first draw ms (drivers may compile more there),
 // 1 when it linked, then zeros.
 import { get, post } from "/browser/page_io.js";

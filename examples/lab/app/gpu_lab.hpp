@@ -64,8 +64,6 @@ struct ShadeConstants {
   // H / (H + 2 margin)); the techniques read the buffers through it, so exits just off the viewport are found.
   int margin = 0;
   NormalFilter normalFilter = NormalFilter::Linear;   // how both sides read the normal buffers
-  // params.proxyFromView, the engine rows' probe proxy (HDRP): the world-axis box around the object and the
-  // paintings, the room a user would fit a reflection probe's proxy volume to.
 
   static LabParams defaultLabParams() {
     LabParams p{};
@@ -81,7 +79,7 @@ struct ShadeConstants {
     p.exitRange = 10.0f;  // diagonal of the box around object and opaque scene
     p.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
     p.reflectSource = SNELL_SOURCE_BUFFERS;
-    p.proxyFromView = mat4(1.0f);
+    p.proxyFromView = mat4(1.0f);  // shadeConstants: the world-axis box around the object and the paintings
     return p;
   }
 };
@@ -117,7 +115,7 @@ class GpuLab {
   double renderStatic();
   StaticBuffers readStatic() const;
 
-  // Pass 4 with techniques[index]: glFinish, steady clock, draw, glFinish.
+  // Pass 4 with shaders[index]: glFinish, steady clock, draw, glFinish.
   // Returns the pass's wall time in ms.
   double renderTechnique(std::size_t index);
   // The free value of shaders[index]'s engine model (0 until set).

@@ -690,7 +690,7 @@ EngineSweep sweepEngineParameter(GpuLab& gpu, std::size_t index, const LabRowSpe
   const bool uv = row.engine->kind == SnellEngineParameterKind::UvScale;
   const float cap = uv ? 1.0f : 8.0f * params.backRange;
   float step = grid[1] - grid[0];
-  while (sweep.best == grid.back() && grid.back() < cap) {
+  while (sweep.best == grid.back() && grid.back() > 0.0f && grid.back() < cap) {
     step = std::min(cap, 1.25f * grid.back()) - grid.back();
     grid.push_back(grid.back() + step);
     tryValue(grid.back());

@@ -9,7 +9,8 @@ use: SnellEngineRefraction e = snellEngineRefraction(SNELL_ENGINE_THREEJS, p, n,
               Filament solid, HDRP sphere and box), microThickness (Filament
               thin), the uv scale (Godot)
   the rest    as the models' own functions (proxyFromView is read by the HDRP
-              models only; sceneDepth and scene by HDRP and Godot)
+              models only, sceneDepth by HDRP and Godot; every model projects
+              with scene.clipFromView)
 ids:
   SNELL_ENGINE_THREEJS          snellEngineThreeJs (threejs.glsl; Bevy's too)
   SNELL_ENGINE_FILAMENT_SOLID   snellEngineFilamentSolid (filament.glsl)

@@ -8,7 +8,8 @@ description: what the engines' screen-space refraction models return, and
   does). They need no back-face pass: they are snell's cheapest tier.
 use: SnellEngineRefraction e = snellEngineSeePoint(x, direction, distance, clipFromView);
      SnellEngineRefraction e = snellEngineInvalid();   // what every model returns for invalid input
-     vec3 c = mix(environment(e.direction), SNELL_SAMPLE_LOD(sceneColor, clamp(e.uv, 0, 1), 0).xyz, e.sceneWeight);
+     vec4 s = SNELL_SAMPLE_LOD(sceneColor, clamp(e.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f)), 0.0f);
+     vec3 c = mix(environmentAlong(e.direction), vec3(s.x, s.y, s.z), e.sceneWeight);
   p, n      the front-face fragment's view-space position and normal (the
             normal may face either way; it is turned towards the eye)
   eta       n_outside / n_inside (1 / ior: every engine refracts from air)
@@ -23,8 +24,9 @@ contract:
   - direction: unit, the direction an environment read follows.
   - distance in [0, SNELL_FLT_MAX]: the length the engine absorbs over.
   - valid false (uv 0, weight 0, direction 0, distance 0): p or n zero, NaN or
-    infinite, or eta not a finite positive normal number (snellRefract's
-    rules); the caller shows what it shows for an invalid fragment.
+    infinite, or (every model but Godot's, which has no eta) eta not a finite
+    positive normal number (snellRefract's rules); the caller shows what it
+    shows for an invalid fragment.
   - every model that refracts starts with snellRefract(p, n, eta,
     SNELL_TIR_ZERO) (the entry refraction): where it is not valid,
     snellEngineInvalid(); on TIR at the entry (eta > 1, direction 0),

@@ -17,8 +17,10 @@ contract:
     negative or NaN).
   - solid: d = -c t (the sphere's chord along T), X = p + d T.
   - thin: d = t / max(-c, 0.001), X = p + d T.
-  - the result is snellEngineSeePoint(X, T, d, clipFromView); TIR at the
-    entry and invalid input as engine_refraction.glsl says. Screen-space mode
+  - the result is snellEngineSeePoint(X, T, d, clipFromView) (solid) or
+    snellEngineSeePoint(X, p, d, clipFromView) (thin: a slab's exit restores
+    the view direction); TIR at the entry and invalid input as
+    engine_refraction.glsl says. Screen-space mode
     reads only X's projection, so the sphere's exit refraction (Filament's
     cubemap mode) is not computed.
 source: Filament (Apache-2.0), shaders/src/surface_light_indirect.fs at
@@ -42,8 +44,8 @@ SNELL_FN SnellEngineRefraction snellEngineFilamentSolid(vec3 p, vec3 n, float et
     return snellEngineSeePoint(p, p, 0.0f, clipFromView);
   }
   vec3 nf = snellSafeNormalize(n);
+  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;  // turned as snellRefract turns it
   float c = dot(nf, t.direction);
-  c = dot(nf, p) > 0.0f ? -c : c;  // the normal turned towards the eye, as snellRefract turns it
   float d = -c * (thickness > 0.0f ? thickness : 0.0f);
   return snellEngineSeePoint(p + d * t.direction, t.direction, d, clipFromView);
 }
@@ -59,10 +61,10 @@ SNELL_FN SnellEngineRefraction snellEngineFilamentThin(vec3 p, vec3 n, float eta
     return snellEngineSeePoint(p, p, 0.0f, clipFromView);
   }
   vec3 nf = snellSafeNormalize(n);
+  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;
   float c = dot(nf, t.direction);
-  c = dot(nf, p) > 0.0f ? -c : c;
   float d = (microThickness > 0.0f ? microThickness : 0.0f) / max(-c, 0.001f);
-  return snellEngineSeePoint(p + d * t.direction, t.direction, d, clipFromView);
+  return snellEngineSeePoint(p + d * t.direction, p, d, clipFromView);
 }
 
 #endif

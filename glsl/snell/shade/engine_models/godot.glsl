@@ -42,7 +42,7 @@ SNELL_FN SnellEngineRefraction snellEngineGodot(vec3 p, vec3 n, float scale, SNE
   if (dot(v, v) == 0.0f || dot(nf, nf) == 0.0f) {
     return snellEngineInvalid();
   }
-  nf = dot(nf, p) > 0.0f ? -nf : nf;
+  nf = -dot(nf, v) < 0.0f ? -nf : nf;
   SnellEngineRefraction e = snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
   if (e.sceneWeight > 0.0f) {
     float k = isnan(scale) ? 0.0f : clamp(scale, -1.0f, 1.0f);

@@ -1,7 +1,7 @@
 /*
 description: Unity HDRP's screen-space refraction (Lit, transparent), its
-  refraction models "Sphere" and "Box" (the UI's "Thin" runs the box model
-  with the material's thickness): the model gives an exit point and
+  refraction models "Sphere" and "Box" (the UI's "Thin" is the box model at a
+  fixed thickness, 5 cm in Unity's documentation): the model gives an exit point and
   direction, the exit ray is cast against the reflection probe's proxy volume,
   and the scene colour is read where that hit projects, faded out towards the
   screen's edges (the probe fills the rest) and replaced by the fragment's
@@ -31,7 +31,7 @@ contract:
   - box: d = t / max(-c, 1e-5), snellEngineHdrpProxyLookup(p, p + d T, p / |p|,
     d, ...): a slab's exit restores the view direction.
   - snellEngineProxyExit(o, dir, M): with o', d' = o and dir in the box's space,
-    s = min over the axes with d'_i != 0 of (sign(d'_i) - o'_i) / d'_i, then
+    s = min over the axes with |d'_i| >= SNELL_FLT_MIN of (sign(d'_i) - o'_i) / d'_i, then
     max(s, 0): the distance to the box's far side, in units of |dir|;
     SNELL_FLT_MAX when no axis is crossed (a degenerate proxy); 0 when o' or
     d' is not finite.
@@ -84,15 +84,16 @@ SNELL_FN float snellEngineProxyExit(vec3 origin, vec3 dir, mat4 proxyFromView) {
   }
   // Comparisons, not min(): min() of a NaN differs between languages.
   float s = SNELL_FLT_MAX;
-  if (d4.x != 0.0f) {
+  // An axis the ray does not cross: zero or denormal (the prelude's rule: a GPU may flush it to 0).
+  if (abs(d4.x) >= SNELL_FLT_MIN) {
     float c = ((d4.x > 0.0f ? 1.0f : -1.0f) - o4.x) / d4.x;
     s = c < s ? c : s;
   }
-  if (d4.y != 0.0f) {
+  if (abs(d4.y) >= SNELL_FLT_MIN) {
     float c = ((d4.y > 0.0f ? 1.0f : -1.0f) - o4.y) / d4.y;
     s = c < s ? c : s;
   }
-  if (d4.z != 0.0f) {
+  if (abs(d4.z) >= SNELL_FLT_MIN) {
     float c = ((d4.z > 0.0f ? 1.0f : -1.0f) - o4.z) / d4.z;
     s = c < s ? c : s;
   }
@@ -128,7 +129,7 @@ SNELL_FN SnellEngineRefraction snellEngineHdrpSphere(vec3 p, vec3 n, float eta, 
     return snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
   }
   vec3 nf = snellSafeNormalize(n);
-  nf = dot(nf, p) > 0.0f ? -nf : nf;
+  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;  // turned as snellRefract turns it
   float c = dot(nf, t.direction);
   float d = -c * (thickness > 0.0f ? thickness : 0.0f);
   vec3 p1 = p + d * t.direction;
@@ -141,7 +142,7 @@ SNELL_FN SnellEngineRefraction snellEngineHdrpSphere(vec3 p, vec3 n, float eta, 
   return snellEngineHdrpProxyLookup(p, p1, r2, d, proxyFromView, sceneDepth, scene);
 }
 
-/* HDRP RefractionModelBox (also its "Thin" model), then the proxy lookup */
+/* HDRP RefractionModelBox (its "Thin" model at a fixed thickness), then the proxy lookup */
 SNELL_FN SnellEngineRefraction snellEngineHdrpBox(vec3 p, vec3 n, float eta, float thickness, mat4 proxyFromView,
                                                   SNELL_TEX2D sceneDepth, SNELL_IN(SnellDepthSurface) scene) {
   SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
@@ -152,7 +153,7 @@ SNELL_FN SnellEngineRefraction snellEngineHdrpBox(vec3 p, vec3 n, float eta, flo
     return snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
   }
   vec3 nf = snellSafeNormalize(n);
-  nf = dot(nf, p) > 0.0f ? -nf : nf;
+  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;  // turned as snellRefract turns it
   float d = (thickness > 0.0f ? thickness : 0.0f) / max(-dot(nf, t.direction), 1e-5f);
   return snellEngineHdrpProxyLookup(p, p + d * t.direction, p, d, proxyFromView, sceneDepth, scene);
 }
