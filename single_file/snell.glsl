@@ -6443,7 +6443,8 @@ description: what the engines' screen-space refraction models return, and
   engine's documented source, where that engine reads its scene colour, so a
   host can score them against snell's techniques on the same buffers (the lab
   does). They need no back-face pass: they are snell's cheapest tier.
-use: SnellEngineRefraction e = snellEngineSeePoint(x, direction, distance, clipFromView);
+use: SnellEngineEntry t = snellEngineEntry(p, n, eta);   // the entry refraction every refracting model starts from
+     SnellEngineRefraction e = snellEngineSeePoint(x, direction, distance, clipFromView);
      SnellEngineRefraction e = snellEngineInvalid();   // what every model returns for invalid input
      vec4 s = SNELL_SAMPLE_LOD(sceneColor, clamp(e.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f)), 0.0f);
      vec3 c = mix(environmentAlong(e.direction), vec3(s.x, s.y, s.z), e.sceneWeight);
@@ -6464,8 +6465,11 @@ contract:
     infinite, or (every model but Godot's, which has no eta) eta not a finite
     positive normal number (snellRefract's rules); the caller shows what it
     shows for an invalid fragment.
-  - every model that refracts starts with snellRefract(p, n, eta,
-    SNELL_TIR_ZERO) (the entry refraction): where it is not valid,
+  - snellEngineEntry(p, n, eta): direction, tir and valid of snellRefract(p,
+    n, eta, SNELL_TIR_ZERO); normal = n / |n| turned towards the eye exactly as
+    snellRefract turns it (0 when n is zero or not finite); cosine =
+    dot(normal, direction) (0 on TIR or invalid input).
+  - every model that refracts starts with snellEngineEntry: where it is not valid,
     snellEngineInvalid(); on TIR at the entry (eta > 1, direction 0),
     snellEngineSeePoint(p, p, 0, clipFromView): the fragment's own texel, no
     displacement. A length parameter that is negative or NaN counts as 0, as
@@ -6485,6 +6489,14 @@ source: the engines' shared first step: T = refract(-V, N, 1/ior) at the front
 
 
 
+struct SnellEngineEntry {
+  vec3 direction;  // T (0 on TIR)
+  vec3 normal;     // the unit normal turned as snellRefract turns it (towards the eye)
+  float cosine;    // dot(normal, T), <= 0
+  bool tir;
+  bool valid;
+};
+
 struct SnellEngineRefraction {
   vec2 uv;
   float sceneWeight;
@@ -6500,6 +6512,19 @@ SNELL_FN SnellEngineRefraction snellEngineInvalid() {
   e.direction = vec3(0.0f, 0.0f, 0.0f);
   e.distance = 0.0f;
   e.valid = false;
+  return e;
+}
+
+/* The entry refraction every refracting model starts from: T = refract(-V, N, 1/ior) */
+SNELL_FN SnellEngineEntry snellEngineEntry(vec3 p, vec3 n, float eta) {
+  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry e;
+  e.direction = t.direction;
+  e.normal = snellSafeNormalize(n);
+  e.normal = -dot(e.normal, snellSafeNormalize(p)) < 0.0f ? -e.normal : e.normal;
+  e.cosine = dot(e.normal, t.direction);
+  e.tir = t.tir;
+  e.valid = t.valid;
   return e;
 }
 
@@ -6532,7 +6557,7 @@ use: SnellEngineRefraction e = snellEngineThreeJs(p, n, eta, thickness, clipFrom
                   view-space units; it is a constant, not the object's chord
   clipFromView    the projection of the opaque pass's colour buffer
 contract:
-  - T = snellRefract(p, n, eta, SNELL_TIR_ZERO).direction, t = thickness (0 when negative or NaN);
+  - T = snellEngineEntry(p, n, eta).direction, t = thickness (0 when negative or NaN);
     X = p + t T; the result is snellEngineSeePoint(X, T, t, clipFromView);
     TIR at the entry and invalid input as engine_refraction.glsl says.
   - What the engines do around it is not modelled here: three.js's roughness
@@ -6552,7 +6577,7 @@ source: three.js r187 (npm three@0.187.0, MIT),
 
 
 SNELL_FN SnellEngineRefraction snellEngineThreeJs(vec3 p, vec3 n, float eta, float thickness, mat4 clipFromView) {
-  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry t = snellEngineEntry(p, n, eta);
   if (!t.valid) {
     return snellEngineInvalid();
   }
@@ -6578,7 +6603,7 @@ use: SnellEngineRefraction e = snellEngineFilamentSolid(p, n, eta, thickness, cl
   microThickness  the slab's thickness (Filament's "microThickness")
   clipFromView    the projection of the opaque pass's colour buffer
 contract:
-  - T = snellRefract(p, n, eta, SNELL_TIR_ZERO).direction, N the unit normal turned
+  - T = snellEngineEntry(p, n, eta).direction, N the unit normal turned
     towards the eye, c = dot(N, T) (<= 0), t = thickness or microThickness (0 when
     negative or NaN).
   - solid: d = -c t (the sphere's chord along T), X = p + d T.
@@ -6602,16 +6627,14 @@ source: Filament (Apache-2.0), shaders/src/surface_light_indirect.fs at
 /* Filament refractionSolidSphere, screen space: the exit of the tangent sphere of diameter thickness */
 SNELL_FN SnellEngineRefraction snellEngineFilamentSolid(vec3 p, vec3 n, float eta, float thickness,
                                                         mat4 clipFromView) {
-  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry t = snellEngineEntry(p, n, eta);
   if (!t.valid) {
     return snellEngineInvalid();
   }
   if (t.tir) {
     return snellEngineSeePoint(p, p, 0.0f, clipFromView);
   }
-  vec3 nf = snellSafeNormalize(n);
-  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;  // turned as snellRefract turns it
-  float c = dot(nf, t.direction);
+  float c = t.cosine;
   float d = -c * (thickness > 0.0f ? thickness : 0.0f);
   return snellEngineSeePoint(p + d * t.direction, t.direction, d, clipFromView);
 }
@@ -6619,16 +6642,14 @@ SNELL_FN SnellEngineRefraction snellEngineFilamentSolid(vec3 p, vec3 n, float et
 /* Filament refractionThinSphere, screen space: a slab of thickness microThickness */
 SNELL_FN SnellEngineRefraction snellEngineFilamentThin(vec3 p, vec3 n, float eta, float microThickness,
                                                        mat4 clipFromView) {
-  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry t = snellEngineEntry(p, n, eta);
   if (!t.valid) {
     return snellEngineInvalid();
   }
   if (t.tir) {
     return snellEngineSeePoint(p, p, 0.0f, clipFromView);
   }
-  vec3 nf = snellSafeNormalize(n);
-  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;
-  float c = dot(nf, t.direction);
+  float c = t.cosine;
   float d = (microThickness > 0.0f ? microThickness : 0.0f) / max(-c, 0.001f);
   return snellEngineSeePoint(p + d * t.direction, p, d, clipFromView);
 }
@@ -6659,7 +6680,7 @@ options:
   SNELL_HDRP_SCREEN_FADE_DISTANCE  the edge fade's width (HDRP's volume
                   setting screenFadeDistance, default 0.1f)
 contract:
-  - T = snellRefract(p, n, eta, SNELL_TIR_ZERO).direction, N the unit normal turned
+  - T = snellEngineEntry(p, n, eta).direction, N the unit normal turned
     towards the eye, c = dot(N, T), t = thickness (0 when negative or NaN).
   - sphere: d = -c t, P1 = p + d T, N1 = (c T - 0.5 N) / |c T - 0.5 N| (towards
     the sphere's centre p - N t / 2), R2 = snellRefract(T, N1, 1 / eta,
@@ -6757,16 +6778,15 @@ SNELL_FN SnellEngineRefraction snellEngineHdrpProxyLookup(vec3 p, vec3 origin, v
 /* HDRP RefractionModelSphere, then the proxy lookup */
 SNELL_FN SnellEngineRefraction snellEngineHdrpSphere(vec3 p, vec3 n, float eta, float thickness, mat4 proxyFromView,
                                                      SNELL_TEX2D sceneDepth, SNELL_IN(SnellDepthSurface) scene) {
-  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry t = snellEngineEntry(p, n, eta);
   if (!t.valid) {
     return snellEngineInvalid();
   }
   if (t.tir) {
     return snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
   }
-  vec3 nf = snellSafeNormalize(n);
-  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;  // turned as snellRefract turns it
-  float c = dot(nf, t.direction);
+  vec3 nf = t.normal;
+  float c = t.cosine;
   float d = -c * (thickness > 0.0f ? thickness : 0.0f);
   vec3 p1 = p + d * t.direction;
   vec3 n1 = snellSafeNormalize(c * t.direction - 0.5f * nf);
@@ -6781,16 +6801,14 @@ SNELL_FN SnellEngineRefraction snellEngineHdrpSphere(vec3 p, vec3 n, float eta, 
 /* HDRP RefractionModelBox (its "Thin" model at a fixed thickness), then the proxy lookup */
 SNELL_FN SnellEngineRefraction snellEngineHdrpBox(vec3 p, vec3 n, float eta, float thickness, mat4 proxyFromView,
                                                   SNELL_TEX2D sceneDepth, SNELL_IN(SnellDepthSurface) scene) {
-  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry t = snellEngineEntry(p, n, eta);
   if (!t.valid) {
     return snellEngineInvalid();
   }
   if (t.tir) {
     return snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
   }
-  vec3 nf = snellSafeNormalize(n);
-  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;  // turned as snellRefract turns it
-  float d = (thickness > 0.0f ? thickness : 0.0f) / max(-dot(nf, t.direction), 1e-5f);
+  float d = (thickness > 0.0f ? thickness : 0.0f) / max(-t.cosine, 1e-5f);
   return snellEngineHdrpProxyLookup(p, p + d * t.direction, p, d, proxyFromView, sceneDepth, scene);
 }
 

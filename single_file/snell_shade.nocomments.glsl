@@ -3380,6 +3380,14 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
 #ifndef SNELL_SHADE_ENGINE_MODELS_ENGINE_REFRACTION_GLSL
 #define SNELL_SHADE_ENGINE_MODELS_ENGINE_REFRACTION_GLSL
 
+struct SnellEngineEntry {
+  vec3 direction;
+  vec3 normal;
+  float cosine;
+  bool tir;
+  bool valid;
+};
+
 struct SnellEngineRefraction {
   vec2 uv;
   float sceneWeight;
@@ -3395,6 +3403,18 @@ SNELL_FN SnellEngineRefraction snellEngineInvalid() {
   e.direction = vec3(0.0f, 0.0f, 0.0f);
   e.distance = 0.0f;
   e.valid = false;
+  return e;
+}
+
+SNELL_FN SnellEngineEntry snellEngineEntry(vec3 p, vec3 n, float eta) {
+  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry e;
+  e.direction = t.direction;
+  e.normal = snellSafeNormalize(n);
+  e.normal = -dot(e.normal, snellSafeNormalize(p)) < 0.0f ? -e.normal : e.normal;
+  e.cosine = dot(e.normal, t.direction);
+  e.tir = t.tir;
+  e.valid = t.valid;
   return e;
 }
 
@@ -3418,7 +3438,7 @@ SNELL_FN SnellEngineRefraction snellEngineSeePoint(vec3 x, vec3 direction, float
 #define SNELL_SHADE_ENGINE_MODELS_THREEJS_GLSL
 
 SNELL_FN SnellEngineRefraction snellEngineThreeJs(vec3 p, vec3 n, float eta, float thickness, mat4 clipFromView) {
-  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry t = snellEngineEntry(p, n, eta);
   if (!t.valid) {
     return snellEngineInvalid();
   }
@@ -3436,32 +3456,28 @@ SNELL_FN SnellEngineRefraction snellEngineThreeJs(vec3 p, vec3 n, float eta, flo
 
 SNELL_FN SnellEngineRefraction snellEngineFilamentSolid(vec3 p, vec3 n, float eta, float thickness,
                                                         mat4 clipFromView) {
-  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry t = snellEngineEntry(p, n, eta);
   if (!t.valid) {
     return snellEngineInvalid();
   }
   if (t.tir) {
     return snellEngineSeePoint(p, p, 0.0f, clipFromView);
   }
-  vec3 nf = snellSafeNormalize(n);
-  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;
-  float c = dot(nf, t.direction);
+  float c = t.cosine;
   float d = -c * (thickness > 0.0f ? thickness : 0.0f);
   return snellEngineSeePoint(p + d * t.direction, t.direction, d, clipFromView);
 }
 
 SNELL_FN SnellEngineRefraction snellEngineFilamentThin(vec3 p, vec3 n, float eta, float microThickness,
                                                        mat4 clipFromView) {
-  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry t = snellEngineEntry(p, n, eta);
   if (!t.valid) {
     return snellEngineInvalid();
   }
   if (t.tir) {
     return snellEngineSeePoint(p, p, 0.0f, clipFromView);
   }
-  vec3 nf = snellSafeNormalize(n);
-  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;
-  float c = dot(nf, t.direction);
+  float c = t.cosine;
   float d = (microThickness > 0.0f ? microThickness : 0.0f) / max(-c, 0.001f);
   return snellEngineSeePoint(p + d * t.direction, p, d, clipFromView);
 }
@@ -3526,16 +3542,15 @@ SNELL_FN SnellEngineRefraction snellEngineHdrpProxyLookup(vec3 p, vec3 origin, v
 
 SNELL_FN SnellEngineRefraction snellEngineHdrpSphere(vec3 p, vec3 n, float eta, float thickness, mat4 proxyFromView,
                                                      SNELL_TEX2D sceneDepth, SNELL_IN(SnellDepthSurface) scene) {
-  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry t = snellEngineEntry(p, n, eta);
   if (!t.valid) {
     return snellEngineInvalid();
   }
   if (t.tir) {
     return snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
   }
-  vec3 nf = snellSafeNormalize(n);
-  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;
-  float c = dot(nf, t.direction);
+  vec3 nf = t.normal;
+  float c = t.cosine;
   float d = -c * (thickness > 0.0f ? thickness : 0.0f);
   vec3 p1 = p + d * t.direction;
   vec3 n1 = snellSafeNormalize(c * t.direction - 0.5f * nf);
@@ -3549,16 +3564,14 @@ SNELL_FN SnellEngineRefraction snellEngineHdrpSphere(vec3 p, vec3 n, float eta, 
 
 SNELL_FN SnellEngineRefraction snellEngineHdrpBox(vec3 p, vec3 n, float eta, float thickness, mat4 proxyFromView,
                                                   SNELL_TEX2D sceneDepth, SNELL_IN(SnellDepthSurface) scene) {
-  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry t = snellEngineEntry(p, n, eta);
   if (!t.valid) {
     return snellEngineInvalid();
   }
   if (t.tir) {
     return snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
   }
-  vec3 nf = snellSafeNormalize(n);
-  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;
-  float d = (thickness > 0.0f ? thickness : 0.0f) / max(-dot(nf, t.direction), 1e-5f);
+  float d = (thickness > 0.0f ? thickness : 0.0f) / max(-t.cosine, 1e-5f);
   return snellEngineHdrpProxyLookup(p, p + d * t.direction, p, d, proxyFromView, sceneDepth, scene);
 }
 

@@ -764,6 +764,17 @@ SNELL_PARITY_CASE(snellEngineRefraction, [] { return engineInputs(840); }, TECH_
                                                                   techSceneSurface(projection));
                   TECH_ENGINE_OUT(e))
 
+SNELL_PARITY_CASE(snellEngineEntry, [] { return engineInputs(852); }, TECH_ENGINE_INPUTS,
+                  (vec3, direction, 0, within(1e-4f, 1e-4f))(float, cosine, 3, within(1e-4f, 1e-4f))
+                  (vec3, normal, 4, within(1e-5f, 1e-5f))(bool, tir, 7, exact)(bool, valid, 8, exact),
+                  techExtras(),
+                  SnellEngineEntry e = snellEngineEntry(p, n, 1.0f / ior);
+                  direction = e.direction;
+                  cosine = e.cosine;
+                  normal = e.normal;
+                  tir = e.tir;
+                  valid = e.valid;)
+
 SNELL_PARITY_CASE(snellEngineThreeJs, [] { return engineInputs(841); }, TECH_ENGINE_INPUTS, TECH_ENGINE_OUTPUTS,
                   techExtras(),
                   SnellEngineRefraction e = snellEngineThreeJs(p, n, 1.0f / ior, parameter, techMatrix(projection));

@@ -6,7 +6,8 @@ description: what the engines' screen-space refraction models return, and
   engine's documented source, where that engine reads its scene colour, so a
   host can score them against snell's techniques on the same buffers (the lab
   does). They need no back-face pass: they are snell's cheapest tier.
-use: SnellEngineRefraction e = snellEngineSeePoint(x, direction, distance, clipFromView);
+use: SnellEngineEntry t = snellEngineEntry(p, n, eta);   // the entry refraction every refracting model starts from
+     SnellEngineRefraction e = snellEngineSeePoint(x, direction, distance, clipFromView);
      SnellEngineRefraction e = snellEngineInvalid();   // what every model returns for invalid input
      vec4 s = SNELL_SAMPLE_LOD(sceneColor, clamp(e.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f)), 0.0f);
      vec3 c = mix(environmentAlong(e.direction), vec3(s.x, s.y, s.z), e.sceneWeight);
@@ -27,8 +28,11 @@ contract:
     infinite, or (every model but Godot's, which has no eta) eta not a finite
     positive normal number (snellRefract's rules); the caller shows what it
     shows for an invalid fragment.
-  - every model that refracts starts with snellRefract(p, n, eta,
-    SNELL_TIR_ZERO) (the entry refraction): where it is not valid,
+  - snellEngineEntry(p, n, eta): direction, tir and valid of snellRefract(p,
+    n, eta, SNELL_TIR_ZERO); normal = n / |n| turned towards the eye exactly as
+    snellRefract turns it (0 when n is zero or not finite); cosine =
+    dot(normal, direction) (0 on TIR or invalid input).
+  - every model that refracts starts with snellEngineEntry: where it is not valid,
     snellEngineInvalid(); on TIR at the entry (eta > 1, direction 0),
     snellEngineSeePoint(p, p, 0, clipFromView): the fragment's own texel, no
     displacement. A length parameter that is negative or NaN counts as 0, as
@@ -48,6 +52,14 @@ source: the engines' shared first step: T = refract(-V, N, 1/ior) at the front
 #include "../../optics/safe_normalize.glsl"
 #include "../../optics/refract.glsl"
 
+struct SnellEngineEntry {
+  vec3 direction;  // T (0 on TIR)
+  vec3 normal;     // the unit normal turned as snellRefract turns it (towards the eye)
+  float cosine;    // dot(normal, T), <= 0
+  bool tir;
+  bool valid;
+};
+
 struct SnellEngineRefraction {
   vec2 uv;
   float sceneWeight;
@@ -63,6 +75,19 @@ SNELL_FN SnellEngineRefraction snellEngineInvalid() {
   e.direction = vec3(0.0f, 0.0f, 0.0f);
   e.distance = 0.0f;
   e.valid = false;
+  return e;
+}
+
+/* The entry refraction every refracting model starts from: T = refract(-V, N, 1/ior) */
+SNELL_FN SnellEngineEntry snellEngineEntry(vec3 p, vec3 n, float eta) {
+  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry e;
+  e.direction = t.direction;
+  e.normal = snellSafeNormalize(n);
+  e.normal = -dot(e.normal, snellSafeNormalize(p)) < 0.0f ? -e.normal : e.normal;
+  e.cosine = dot(e.normal, t.direction);
+  e.tir = t.tir;
+  e.valid = t.valid;
   return e;
 }
 

@@ -12,7 +12,7 @@ use: SnellEngineRefraction e = snellEngineFilamentSolid(p, n, eta, thickness, cl
   microThickness  the slab's thickness (Filament's "microThickness")
   clipFromView    the projection of the opaque pass's colour buffer
 contract:
-  - T = snellRefract(p, n, eta, SNELL_TIR_ZERO).direction, N the unit normal turned
+  - T = snellEngineEntry(p, n, eta).direction, N the unit normal turned
     towards the eye, c = dot(N, T) (<= 0), t = thickness or microThickness (0 when
     negative or NaN).
   - solid: d = -c t (the sphere's chord along T), X = p + d T.
@@ -36,16 +36,14 @@ source: Filament (Apache-2.0), shaders/src/surface_light_indirect.fs at
 /* Filament refractionSolidSphere, screen space: the exit of the tangent sphere of diameter thickness */
 SNELL_FN SnellEngineRefraction snellEngineFilamentSolid(vec3 p, vec3 n, float eta, float thickness,
                                                         mat4 clipFromView) {
-  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry t = snellEngineEntry(p, n, eta);
   if (!t.valid) {
     return snellEngineInvalid();
   }
   if (t.tir) {
     return snellEngineSeePoint(p, p, 0.0f, clipFromView);
   }
-  vec3 nf = snellSafeNormalize(n);
-  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;  // turned as snellRefract turns it
-  float c = dot(nf, t.direction);
+  float c = t.cosine;
   float d = -c * (thickness > 0.0f ? thickness : 0.0f);
   return snellEngineSeePoint(p + d * t.direction, t.direction, d, clipFromView);
 }
@@ -53,16 +51,14 @@ SNELL_FN SnellEngineRefraction snellEngineFilamentSolid(vec3 p, vec3 n, float et
 /* Filament refractionThinSphere, screen space: a slab of thickness microThickness */
 SNELL_FN SnellEngineRefraction snellEngineFilamentThin(vec3 p, vec3 n, float eta, float microThickness,
                                                        mat4 clipFromView) {
-  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry t = snellEngineEntry(p, n, eta);
   if (!t.valid) {
     return snellEngineInvalid();
   }
   if (t.tir) {
     return snellEngineSeePoint(p, p, 0.0f, clipFromView);
   }
-  vec3 nf = snellSafeNormalize(n);
-  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;
-  float c = dot(nf, t.direction);
+  float c = t.cosine;
   float d = (microThickness > 0.0f ? microThickness : 0.0f) / max(-c, 0.001f);
   return snellEngineSeePoint(p + d * t.direction, p, d, clipFromView);
 }

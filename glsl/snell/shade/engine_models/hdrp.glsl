@@ -23,7 +23,7 @@ options:
   SNELL_HDRP_SCREEN_FADE_DISTANCE  the edge fade's width (HDRP's volume
                   setting screenFadeDistance, default 0.1f)
 contract:
-  - T = snellRefract(p, n, eta, SNELL_TIR_ZERO).direction, N the unit normal turned
+  - T = snellEngineEntry(p, n, eta).direction, N the unit normal turned
     towards the eye, c = dot(N, T), t = thickness (0 when negative or NaN).
   - sphere: d = -c t, P1 = p + d T, N1 = (c T - 0.5 N) / |c T - 0.5 N| (towards
     the sphere's centre p - N t / 2), R2 = snellRefract(T, N1, 1 / eta,
@@ -121,16 +121,15 @@ SNELL_FN SnellEngineRefraction snellEngineHdrpProxyLookup(vec3 p, vec3 origin, v
 /* HDRP RefractionModelSphere, then the proxy lookup */
 SNELL_FN SnellEngineRefraction snellEngineHdrpSphere(vec3 p, vec3 n, float eta, float thickness, mat4 proxyFromView,
                                                      SNELL_TEX2D sceneDepth, SNELL_IN(SnellDepthSurface) scene) {
-  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry t = snellEngineEntry(p, n, eta);
   if (!t.valid) {
     return snellEngineInvalid();
   }
   if (t.tir) {
     return snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
   }
-  vec3 nf = snellSafeNormalize(n);
-  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;  // turned as snellRefract turns it
-  float c = dot(nf, t.direction);
+  vec3 nf = t.normal;
+  float c = t.cosine;
   float d = -c * (thickness > 0.0f ? thickness : 0.0f);
   vec3 p1 = p + d * t.direction;
   vec3 n1 = snellSafeNormalize(c * t.direction - 0.5f * nf);
@@ -145,16 +144,14 @@ SNELL_FN SnellEngineRefraction snellEngineHdrpSphere(vec3 p, vec3 n, float eta, 
 /* HDRP RefractionModelBox (its "Thin" model at a fixed thickness), then the proxy lookup */
 SNELL_FN SnellEngineRefraction snellEngineHdrpBox(vec3 p, vec3 n, float eta, float thickness, mat4 proxyFromView,
                                                   SNELL_TEX2D sceneDepth, SNELL_IN(SnellDepthSurface) scene) {
-  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry t = snellEngineEntry(p, n, eta);
   if (!t.valid) {
     return snellEngineInvalid();
   }
   if (t.tir) {
     return snellEngineSeePoint(p, p, 0.0f, scene.clipFromView);
   }
-  vec3 nf = snellSafeNormalize(n);
-  nf = -dot(nf, snellSafeNormalize(p)) < 0.0f ? -nf : nf;  // turned as snellRefract turns it
-  float d = (thickness > 0.0f ? thickness : 0.0f) / max(-dot(nf, t.direction), 1e-5f);
+  float d = (thickness > 0.0f ? thickness : 0.0f) / max(-t.cosine, 1e-5f);
   return snellEngineHdrpProxyLookup(p, p + d * t.direction, p, d, proxyFromView, sceneDepth, scene);
 }
 

@@ -12,7 +12,7 @@ use: SnellEngineRefraction e = snellEngineThreeJs(p, n, eta, thickness, clipFrom
                   view-space units; it is a constant, not the object's chord
   clipFromView    the projection of the opaque pass's colour buffer
 contract:
-  - T = snellRefract(p, n, eta, SNELL_TIR_ZERO).direction, t = thickness (0 when negative or NaN);
+  - T = snellEngineEntry(p, n, eta).direction, t = thickness (0 when negative or NaN);
     X = p + t T; the result is snellEngineSeePoint(X, T, t, clipFromView);
     TIR at the entry and invalid input as engine_refraction.glsl says.
   - What the engines do around it is not modelled here: three.js's roughness
@@ -32,7 +32,7 @@ source: three.js r187 (npm three@0.187.0, MIT),
 #include "engine_refraction.glsl"
 
 SNELL_FN SnellEngineRefraction snellEngineThreeJs(vec3 p, vec3 n, float eta, float thickness, mat4 clipFromView) {
-  SnellRefraction t = snellRefract(p, n, eta, SNELL_TIR_ZERO);
+  SnellEngineEntry t = snellEngineEntry(p, n, eta);
   if (!t.valid) {
     return snellEngineInvalid();
   }
