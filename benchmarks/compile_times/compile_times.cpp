@@ -24,8 +24,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -41,18 +39,9 @@ struct Timing {
   double total() const { return compileMs + drawMs; }
 };
 
-std::string readFile(const fs::path& p) {
-  std::ifstream in(p);
-  if (!in) throw snell::gpu::Error("cannot read " + p.string());
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// The example as the host builds it for one technique: `version` replaces its first line; the include
-// directive's extension goes (the flattener resolves the includes).
-std::string exampleSource(const fs::path& example, const std::string& version) {
-  std::string text = readFile(example);
+// The example as the host builds it: `version` replaces its first line; the include directive's extension goes
+// (the flattener resolves the includes).
+std::string exampleSource(std::string text, const std::string& version) {
   const std::size_t firstLine = text.find('\n');
   text = version + text.substr(firstLine);
   const std::size_t ext = text.find("#extension GL_GOOGLE_include_directive");
@@ -101,13 +90,14 @@ Timing timeLlvmpipe(const snell::gpu::Context& ctx, const snell::gpu::FlatSource
   return t;
 }
 
+// `renderer` receives the renderer string the page reported.
 Timing timeChromium(const std::string& node, const std::string& chromium, const fs::path& page, const fs::path& job,
-                    const std::string& source) {
+                    const std::string& source, std::string* renderer) {
   fs::create_directories(job);
-  std::ofstream(job / "shader.frag") << source;
-  std::ofstream(job / "job.json") << "{\"programs\": [\"shader.frag\"]}\n";
+  snell::gpu::detail::writeTextFile(job / "shader.frag", source);
+  snell::gpu::detail::writeTextFile(job / "job.json", "{\"programs\": [\"shader.frag\"]}\n");
   const std::vector<snell::gpu::ParityIO> r = snell::gpu::detail::runChromiumPage(
-      node, chromium, page, job, "times.f32", {}, 1, "snell_compile_times (Chromium WebGL 2)");
+      node, chromium, page, job, "times.f32", {}, 1, "snell_compile_times (Chromium WebGL 2)", nullptr, renderer);
   Timing t;
   t.compileMs = static_cast<double>(r[0].v[0].x);
   t.drawMs = static_cast<double>(r[0].v[0].y);
@@ -143,6 +133,10 @@ int main(int argc, char** argv) {
   const fs::path page = root / "tools/webgl/compile_page.js";
   const fs::path work = fs::temp_directory_path() / ("snell_compile_times_" + std::to_string(getpid()));
   try {
+    const std::string exampleText = snell::gpu::detail::readTextFile(example);
+    if (exampleText.empty()) throw snell::gpu::Error("cannot read " + example.string());
+    const std::string esText = exampleSource(exampleText, "#version 300 es");
+    const std::string desktopText = exampleSource(exampleText, "#version 450 core");
     snell::gpu::Context ctx(snell::gpu::Backend::OSMesa);
     std::string chromiumRenderer;
     std::printf("| technique | strategies compiled | Chromium WebGL 2: compile + link, first draw | llvmpipe: compile + link, first draw |");
@@ -157,13 +151,12 @@ int main(int argc, char** argv) {
       for (bool masked : variants) {
         const std::vector<std::string> defines = definesFor(t, masked);
         if (masked) row += defines[1].substr(defines[1].find(' ') + 1) + " | ";
-        const snell::gpu::FlatSource es = snell::gpu::flattenGlslSource(
-            exampleSource(example, "#version 300 es"), example.string(), {root / "glsl"}, defines);
+        const snell::gpu::FlatSource es =
+            snell::gpu::flattenGlslSource(esText, example.string(), {root / "glsl"}, defines);
         const fs::path job = work / (std::string(t.name) + (masked ? "" : "_all"));
-        const Timing browser = timeChromium(node, chromium, page, job, es.text);
-        if (chromiumRenderer.empty()) chromiumRenderer = readFile(job / "renderer.txt");
-        const snell::gpu::FlatSource desktop = snell::gpu::flattenGlslSource(
-            exampleSource(example, "#version 450 core"), example.string(), {root / "glsl"}, defines);
+        const Timing browser = timeChromium(node, chromium, page, job, es.text, &chromiumRenderer);
+        const snell::gpu::FlatSource desktop =
+            snell::gpu::flattenGlslSource(desktopText, example.string(), {root / "glsl"}, defines);
         const Timing mesa = timeLlvmpipe(ctx, desktop);
         if (masked) {
           row += seconds(browser.compileMs) + " + " + seconds(browser.drawMs) + " | " + seconds(mesa.compileMs) + " + " +
@@ -175,7 +168,6 @@ int main(int argc, char** argv) {
       std::printf("%s\n", row.c_str());
       std::fflush(stdout);
     }
-    while (!chromiumRenderer.empty() && chromiumRenderer.back() == '\n') chromiumRenderer.pop_back();
     std::printf("\nChromium: %s. llvmpipe: %s, OpenGL %s. examples/glsl/two_interface_refraction.frag per row "
                 "(EXAMPLE_TECHNIQUE); strategies compiled: the SNELL_INTERSECT_STRATEGIES mask, bit k = strategy k.\n",
                 chromiumRenderer.c_str(), ctx.renderer().c_str(), ctx.version().c_str());
