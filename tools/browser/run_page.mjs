@@ -10,11 +10,11 @@
 // /results (written to JOB_DIR/RESULTS_FILE) or /error. --webgpu turns on
 // Chromium's WebGPU on SwiftShader. Any failure (no Chromium, a page error, a
 // crashed GPU process, a timeout) exits with status 1 and a message on stderr.
-import { spawn } from "node:child_process";
 import fs from "node:fs";
 import http from "node:http";
-import os from "node:os";
 import path from "node:path";
+
+import { launchChromium } from "./chromium.mjs";
 
 const args = process.argv.slice(2);
 const webgpu = args.includes("--webgpu");
@@ -24,32 +24,12 @@ const [pageJs, dir, resultsFile] = args.filter((a) => !a.startsWith("--"));
 const timeoutMs = Number(process.env.SNELL_BROWSER_TIMEOUT_MS ?? 600000);
 
 let browser = null;
-let profile = null;
 let finishing = false;
-// Chromium is killed and waited for before its profile folder is removed (its helper processes
-// still write there while they go down).
 function finish(status, message) {
   if (finishing) return;
   finishing = true;
   if (message) console.error(`run_page.mjs: ${message}`);
-  const done = () => {
-    try {
-      if (profile) fs.rmSync(profile, { recursive: true, force: true, maxRetries: 10, retryDelay: 100 });
-    } catch (e) {
-      console.error(`run_page.mjs: cannot remove ${profile}: ${e.message}`);
-    }
-    process.exit(status);
-  };
-  if (browser) {
-    // The whole process group: Chromium's GPU and renderer processes outlive a killed browser process.
-    try {
-      process.kill(-browser.pid, "SIGKILL");
-    } catch {
-      // already gone
-    }
-  }
-  if (browser && browser.exitCode === null && browser.signalCode === null) browser.once("exit", () => setTimeout(done, 50));
-  else done();
+  (browser ? browser.close() : Promise.resolve()).then(() => process.exit(status));
 }
 if (!pageJs || !dir || !resultsFile) finish(1, "usage: run_page.mjs PAGE_JS JOB_DIR RESULTS_FILE [--webgpu] [--chromium=PATH]");
 if (!fs.existsSync(pageJs)) finish(1, `no page module ${pageJs}`);
@@ -97,24 +77,6 @@ const server = http.createServer((req, res) => {
 
 server.listen(0, "127.0.0.1", () => {
   const url = `http://127.0.0.1:${server.address().port}/`;
-  profile = fs.mkdtempSync(path.join(os.tmpdir(), "snell-chromium-"));
-  // SwiftShader: WebGL 2 (through ANGLE) and WebGPU (through Dawn) with no GPU, the same on every machine.
-  const flags = ["--headless=new", "--no-sandbox", "--no-first-run", "--no-default-browser-check", "--disable-extensions",
-    "--use-angle=swiftshader", "--enable-unsafe-swiftshader", `--user-data-dir=${profile}`,
-    // The page draws nothing on screen: without GPU compositing Chromium starts in a third of the time.
-    "--disable-gpu-compositing"];
-  if (webgpu) flags.push("--enable-unsafe-webgpu", "--use-webgpu-adapter=swiftshader");
-  let log = "";
-  browser = spawn(chromium, [...flags, url], { stdio: ["ignore", "ignore", "pipe"], detached: true });
-  browser.stderr.on("data", (d) => {
-    log = (log + d).slice(-4000);
-    // A crashed GPU process loses the page's context; the page may not learn of it before it reads back.
-    if (/GPU process exited unexpectedly/.test(log))
-      finish(1, `Chromium's GPU process crashed running the case's shader; its last output:\n${log.split("\n").filter((l) => !/dbus/.test(l)).join("\n")}`);
-  });
-  browser.on("error", (e) =>
-    finish(1, `cannot start ${chromium}: ${e.message} (install Debian's chromium: apt-get install chromium)`));
-  browser.on("exit", (code, signal) =>
-    finish(1, `Chromium exited (${signal ?? code}) before the page posted its results; its last output:\n${log}`));
+  browser = launchChromium(url, { chromium, webgpu, onFailure: (message) => finish(1, message) });
 });
 setTimeout(() => finish(1, `no results after ${timeoutMs / 1000} s (SNELL_BROWSER_TIMEOUT_MS)`), timeoutMs).unref();

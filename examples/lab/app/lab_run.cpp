@@ -1,4 +1,5 @@
 #include "lab_run.hpp"
+#include "web_bundle.hpp"
 
 #include "technique.hpp"
 
@@ -878,7 +879,8 @@ LabResult runLab(const LabOptions& options) {
   k.normalFilter = options.normalFilter;
   k.params.depthFilter = options.depthFilter;
   k.params.reflectSource = options.reflectSource;
-  GpuLab gpu(options.backend, frame, wymanDnIfNeeded(frame, techniques), shaders, options.dirs, k);
+  const std::vector<float> dN = wymanDnIfNeeded(frame, techniques);
+  GpuLab gpu(options.backend, frame, dN, shaders, options.dirs, k);
   result.gpu = gpu.description();
   result.staticPassMs = gpu.renderStatic();
   const StaticBuffers sb = gpu.readStatic();
@@ -905,6 +907,13 @@ LabResult runLab(const LabOptions& options) {
   result.markdown = markdownTable(result);
   result.targets = targetsText(result) + whichToPick(result);
   if (!options.outDir.empty()) writeOutputs(options.outDir, refs, images, gpu.description(), result, start);
+  if (!options.webBundleDir.empty()) {
+    std::vector<WebBundleImage> ran;
+    for (std::size_t i = 0; i < techniques.size(); ++i) ran.push_back({techniques[i], &images[i]});
+    // The front pass's fragment inputs are the same for every row: the first row's draw gives them.
+    gpu.renderTechnique(0);
+    writeWebBundle(options.webBundleDir, result.scene, frame, dN, k, ran, refs.full.mask, sb, gpu.readTechnique());
+  }
   result.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

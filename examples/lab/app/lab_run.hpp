@@ -28,6 +28,7 @@ struct LabOptions {
   NormalFilter normalFilter = NormalFilter::Linear;  // how both sides read the normal buffers
   int depthFilter = SNELL_DEPTH_FILTER_NEAREST;      // how every technique reads the depth buffers
   int reflectSource = SNELL_SOURCE_BUFFERS;          // what the first surface reflects (the reflect slot's source)
+  std::string webBundleDir;  // "": none; else the three.js page's bundle (web_bundle.hpp) is written there
   double guardBand = 0.1;  // scene and back-face buffers wider than the viewport by this share of its size per side
   ShaderDirs dirs;
 };

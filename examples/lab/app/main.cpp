@@ -138,6 +138,9 @@ int main(int argc, char** argv) {
                  "render size (0: the viewport only), so that exits just off screen are found")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
+  app.add_option("--web-bundle", o.webBundleDir,
+                 "also write the frame for the three.js page (examples/web) to this directory: the scene, the "
+                 "buffers' parameters and the lab's picture of each technique it ran");
   app.add_flag("-q,--quiet", o.quiet, "no progress bars and no table on stdout");
   if (const int code = parseCommandLine(app, argc, argv, [&] { suggestOptions(app, argc, argv); }); code >= 0)
     return code;

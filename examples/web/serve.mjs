@@ -1,0 +1,163 @@
+// Serves the three.js page (examples/web) with one bundle of snell-lab (`snell-lab --web-bundle DIR`), on
+// 127.0.0.1 only, from the source tree: the page, its shaders, three.js from node_modules (npm ci),
+// snell's single-file GLSL (single_file/snell.glsl) and the bundle.
+//
+//   node examples/web/serve.mjs BUNDLE_DIR [--port=8080]
+//       then open the printed address in a browser with WebGL 2
+//   node examples/web/serve.mjs BUNDLE_DIR --test [--technique=plane-normal-2] [--buffers=page|lab]
+//       [--min-share=0.99] [--screenshot=FILE] [--report=FILE] [--chromium=PATH]
+//
+// --test opens the page in headless Chromium (SwiftShader), which renders the technique once and posts the
+// canvas; the canvas is compared with the lab's picture of the same technique in the bundle, over the ray
+// tracer's object pixels, both as 8-bit sRGB. It passes when at least --min-share of those pixels (99 % by
+// default) are within 2/255 in every channel. --buffers=lab runs the technique on the lab's own buffers
+// and front-face inputs (in the bundle) instead of the page's: what is left is snell's code in three.js
+// against the lab's C++ build, without the two rasterizers' differences (SwiftShader snaps vertices to
+// 1/16 pixel, llvmpipe to 1/256). Exit status: 0 pass, 1 failure (a page error, no Chromium, no lab
+// picture in the bundle, a timeout, or the agreement below --min-share), 2 usage.
+import fs from "node:fs";
+import http from "node:http";
+import path from "node:path";
+import { fileURLToPath } from "node:url";
+
+import { launchChromium } from "../../tools/browser/chromium.mjs";
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const root = path.resolve(here, "..", "..");
+const args = process.argv.slice(2);
+const option = (name, fallback) => {
+  const a = args.find((x) => x.startsWith(`--${name}=`));
+  return a ? a.slice(name.length + 3) : fallback;
+};
+const positional = args.filter((a) => !a.startsWith("--"));
+const test = args.includes("--test");
+const technique = option("technique", "plane-normal-2");
+const buffers = option("buffers", "page");
+const chromium = option("chromium", "chromium");
+const screenshot = option("screenshot", "");
+const reportFile = option("report", "");
+const port = Number(option("port", test ? "0" : "8080"));
+const tolerance = 2;      // 8-bit sRGB levels, every channel
+const targetShare = Number(option("min-share", "0.99"));  // of the object pixels
+// SwiftShader compiles a technique's program in 10-25 s on 2 cores; a page silent this long is stuck.
+const timeoutMs = Number(process.env.SNELL_BROWSER_TIMEOUT_MS ?? 600000);
+
+function usage(message) {
+  console.error(`serve.mjs: ${message}\nusage: node examples/web/serve.mjs BUNDLE_DIR [--port=N] | ` +
+    "BUNDLE_DIR --test [--technique=NAME] [--buffers=page|lab] [--min-share=F] [--screenshot=FILE] [--report=FILE] " +
+    "[--chromium=PATH]");
+  process.exit(2);
+}
+if (positional.length !== 1) usage("give exactly one bundle directory (snell-lab --web-bundle DIR writes one)");
+const bundleDir = path.resolve(positional[0]);
+if (!fs.existsSync(path.join(bundleDir, "bundle.json")))
+  usage(`no bundle.json in ${bundleDir} (write one with snell-lab SCENE --web-bundle ${positional[0]})`);
+const three = path.join(here, "node_modules", "three", "build");
+if (!fs.existsSync(path.join(three, "three.module.js")))
+  usage(`three.js is not installed in ${path.join(here, "node_modules")}: run npm ci --prefix examples/web ` +
+    "(or scripts/install-deps.sh)");
+if (!["page", "lab"].includes(buffers)) usage(`--buffers: page or lab, not ${buffers}`);
+if (!(targetShare >= 0 && targetShare <= 1)) usage(`--min-share: a share in [0, 1], not ${option("min-share")}`);
+if (!Number.isInteger(port) || port < 0 || port > 65535) usage(`--port: not a port number: ${option("port")}`);
+
+// Served files: a fixed map of names, so nothing outside these folders can be read.
+const files = new Map([
+  ["/", [path.join(here, "index.html"), "text/html"]],
+  ["/main.js", [path.join(here, "main.js"), "text/javascript"]],
+  ["/three/three.module.js", [path.join(three, "three.module.js"), "text/javascript"]],
+  ["/three/three.core.js", [path.join(three, "three.core.js"), "text/javascript"]],
+  ["/snell/snell.glsl", [path.join(root, "single_file", "snell.glsl"), "text/plain"]],
+]);
+for (const f of fs.readdirSync(path.join(here, "shaders")))
+  files.set(`/shaders/${f}`, [path.join(here, "shaders", f), "text/plain"]);
+for (const f of fs.readdirSync(bundleDir))
+  files.set(`/bundle/${f}`, [path.join(bundleDir, f), f.endsWith(".json") ? "application/json" : "application/octet-stream"]);
+
+let browser = null;
+let finishing = false;
+function finish(status, message) {
+  if (finishing) return;
+  finishing = true;
+  if (message) (status === 0 ? console.log : console.error)(message);
+  (browser ? browser.close() : Promise.resolve()).then(() => process.exit(status));
+}
+
+const reports = {};
+const server = http.createServer((req, res) => {
+  const body = [];
+  req.on("data", (d) => body.push(d));
+  req.on("end", () => {
+    const url = req.url.split("?")[0];
+    if (req.method === "GET" && files.has(url)) {
+      const [file, type] = files.get(url);
+      res.writeHead(200, { "content-type": type }).end(fs.readFileSync(file));
+    } else if (test && req.method === "POST" && url.startsWith("/report/")) {
+      const what = url.slice("/report/".length);
+      res.end();
+      reports[what] = Buffer.concat(body);
+      if (what === "error") finish(1, `serve.mjs: the page failed: ${reports.error.toString()}`);
+      else if (what === "pixels") compare();
+    } else {
+      res.writeHead(404).end();
+    }
+  });
+});
+
+// sRGB encoding of a linear value clamped to [0, 1], as the page's shaders/srgb_encode.glsl, then 8 bits.
+function srgb8(v) {
+  const c = Math.min(1, Math.max(0, v));
+  const e = c < 0.0031308 ? 12.92 * c : 1.055 * Math.pow(c, 1 / 2.4) - 0.055;
+  return Math.round(255 * e);
+}
+
+function compare() {
+  const bundle = JSON.parse(fs.readFileSync(path.join(bundleDir, "bundle.json"), "utf8"));
+  const t = bundle.techniques.find((x) => x.name === technique);
+  if (!t || !t.labImage)
+    return finish(1, `serve.mjs: the bundle has no lab picture of ${technique} (run snell-lab with -t ${technique})`);
+  const W = bundle.width, H = bundle.height;
+  const lab = new Float32Array(fs.readFileSync(path.join(bundleDir, t.labImage.texels)).buffer.slice(0));
+  const mask = fs.readFileSync(path.join(bundleDir, bundle.objectMask.bits));
+  const page = reports.pixels;
+  if (page.length !== W * H * 4 || lab.length !== W * H * 4 || mask.length !== W * H)
+    return finish(1, `serve.mjs: sizes differ: page ${page.length} bytes, lab ${lab.length} floats, mask ${mask.length}`);
+  let object = 0, within = 0, maxDiff = 0, sumDiff = 0;
+  const histogram = new Array(256).fill(0);
+  for (let i = 0; i < W * H; ++i) {
+    if (!mask[i]) continue;
+    ++object;
+    let d = 0;
+    for (let c = 0; c < 3; ++c) d = Math.max(d, Math.abs(page[4 * i + c] - srgb8(lab[4 * i + c])));
+    ++histogram[d];
+    if (d <= tolerance) ++within;
+    maxDiff = Math.max(maxDiff, d);
+    sumDiff += d;
+  }
+  const share = object ? within / object : 0;
+  const log = reports.log ? JSON.parse(reports.log.toString()) : {};
+  const result = {
+    scene: bundle.scene, technique, buffers, objectPixels: object, tolerance, withinShare: share, target: targetShare,
+    maxDiff, meanMaxChannelDiff: object ? sumDiff / object : 0,
+    diffHistogram: Object.fromEntries(histogram.map((n, d) => [d, n]).filter(([, n]) => n > 0)),
+    renderer: log.renderer, subpixelBits: log.subpixelBits, firstDrawMs: log.firstDrawMs, staticPassesMs: log.staticMs,
+  };
+  if (reportFile) fs.writeFileSync(reportFile, JSON.stringify(result, null, 1) + "\n");
+  if (screenshot && reports.screenshot) fs.writeFileSync(screenshot, reports.screenshot);
+  const line = `serve.mjs: ${bundle.scene}, ${technique}, ${buffers === "lab" ? "the lab's buffers" : "the page's buffers"}: ${(100 * share).toFixed(2)} % of ${object} object pixels ` +
+    `within ${tolerance}/255 of the lab's (at least ${100 * targetShare} % asked), largest difference ${maxDiff}/255; ` +
+    `first draw ${(log.firstDrawMs / 1000).toFixed(1)} s on ${log.renderer}`;
+  if (object === 0) finish(1, "serve.mjs: the bundle's object mask is empty: nothing to compare");
+  else finish(share >= targetShare ? 0 : 1, line);
+}
+
+server.listen(port, "127.0.0.1", () => {
+  const base = `http://127.0.0.1:${server.address().port}/`;
+  if (!test) {
+    console.log(`serve.mjs: the page for ${bundleDir} at ${base} (Ctrl-C stops)`);
+    return;
+  }
+  browser = launchChromium(`${base}?test=1&buffers=${buffers}&technique=${encodeURIComponent(technique)}`,
+    { chromium, onFailure: (message) => finish(1, `serve.mjs: ${message}`) });
+  setTimeout(() => finish(1, `serve.mjs: no picture from the page after ${timeoutMs / 1000} s (SNELL_BROWSER_TIMEOUT_MS)`),
+    timeoutMs).unref();
+});
