@@ -45,3 +45,9 @@ if [ ! -f "$webgpu/node_modules/.package-lock.json" ] || [ "$webgpu/package-lock
   echo "snell: installing the WebGPU runtime's npm packages (tools/webgpu)"
   npm ci --prefix "$webgpu" --no-audit --no-fund --loglevel=error
 fi
+# three.js for the web example's page (examples/web), pinned by its package-lock.json, the same way.
+web="$(cd "$(dirname "$0")/.." && pwd)/examples/web"
+if [ ! -f "$web/node_modules/.package-lock.json" ] || [ "$web/package-lock.json" -nt "$web/node_modules/.package-lock.json" ]; then
+  echo "snell: installing the web example's npm packages (examples/web: three.js)"
+  npm ci --prefix "$web" --no-audit --no-fund --loglevel=error
+fi

@@ -140,7 +140,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--web-bundle", o.webBundleDir,
                  "also write the frame for the three.js page (examples/web) to this directory: the scene, the "
-                 "buffers' parameters and the lab's picture of each technique it ran");
+                 "buffers' parameters, the lab's own buffers and its picture of each technique it ran");
   app.add_flag("-q,--quiet", o.quiet, "no progress bars and no table on stdout");
   if (const int code = parseCommandLine(app, argc, argv, [&] { suggestOptions(app, argc, argv); }); code >= 0)
     return code;
