@@ -3437,25 +3437,41 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
     pB = bl.position;
   }
   r.position = pB;
-  SnellSurfacePoint c = snellSurfacePoint(depthMips, snellPixelToUv(pc, size), sl);
-  r.fetches += 1;
-  if (!c.valid) {
-    c = snellSurfacePoint(depthMips, snellPixelToUv(pb - a, size), sl);
+  // C (at pc, else on the other side of B) and E (across the way, else its opposite) through one read in
+  // the code, as WebGL's compilers inline every call: t = 0 C at pc, 1 C at pb - a (pc empty), 2 E at
+  // pb + b, 3 E at pb - b (pb + b empty). Both candidates of a point empty: no plane.
+  vec3 pC = vec3(0.0f, 0.0f, 0.0f);
+  vec3 pE = vec3(0.0f, 0.0f, 0.0f);
+  int found = 0;
+  for (int t = 0; t < 4; ++t) {
+    if (t == 1 && found == 1) {
+      continue;
+    }
+    if (t == 3 && found == 2) {
+      break;
+    }
+    ivec2 px = pc;
+    if (t == 1) {
+      px = pb - a;
+    } else if (t == 2) {
+      px = pb + b;
+    } else if (t == 3) {
+      px = pb - b;
+    }
+    SnellSurfacePoint n = snellSurfacePoint(depthMips, snellPixelToUv(px, size), sl);
     r.fetches += 1;
-    if (!c.valid) {
+    if (n.valid) {
+      if (found == 0) {
+        pC = n.position;
+      } else {
+        pE = n.position;
+      }
+      found += 1;
+    } else if (t == 1 || t == 3) {
       return r;
     }
   }
-  SnellSurfacePoint e = snellSurfacePoint(depthMips, snellPixelToUv(pb + b, size), sl);
-  r.fetches += 1;
-  if (!e.valid) {
-    e = snellSurfacePoint(depthMips, snellPixelToUv(pb - b, size), sl);
-    r.fetches += 1;
-    if (!e.valid) {
-      return r;
-    }
-  }
-  r.normal = cross(c.position - pB, e.position - pB);
+  r.normal = cross(pC - pB, pE - pB);
   r.valid = true;
   return r;
 }
@@ -3473,45 +3489,39 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
   }
   vec3 dirN = dir / sqrt(len2);
   int n = clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
-  // Plane 0 (at W, the far start, the facing fallback), then the refinements:
-  // the loop holds only what every refinement does (as in plane_normal.glsl).
-  SnellDepthPlane pl = snellDepthPlaneAt(origin, dirN, depthMips, s, maxLod);
-  int fetches = pl.fetches;
-  // An unbuilt plane has a zero normal, so the ray misses it; its facing plane exists
-  // only when B was read (position 0, the camera, gives no plane either).
-  SnellRayPlaneHit ph = snellRayPlane(origin, dir, pl.position, pl.normal);
-  if (farStart && dot(pl.position, pl.position) > 0.0f) {
-    SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, depthMips, s);
-    fetches += f.fetches;
-    if (f.valid && (!ph.valid || f.t < ph.t)) {
-      ph.t = f.t;
-      ph.position = f.position;
-      ph.valid = true;
-    }
-  }
-#if SNELL_PLANE_FACING_FALLBACK
-  if (!ph.valid) {
-    ph = snellRayPlane(origin, dir, pl.position, pl.position);
-  }
-#endif
-  if (!ph.valid) {
-    return snellHitMiss(fetches);
-  }
-  vec3 p = ph.position;
-  vec2 planeUv = pl.uv;
-  for (int k = 1; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
+  // Plane 0 (at W, with the far start and the facing fallback), then the refinements, in one loop: the
+  // plane's construction (up to six depth reads) appears once in the code, which halves what WebGL's
+  // compilers inline and compile.
+  vec3 p = origin;
+  vec2 planeUv = vec2(0.0f, 0.0f);
+  int fetches = 0;
+  for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
     if (k > n) {
       break;
     }
     SnellDepthPlane plk = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
     fetches += plk.fetches;
+    // An unbuilt plane has a zero normal, so the ray misses it; its facing plane exists
+    // only when B was read (position 0, the camera, gives no plane either).
     SnellRayPlaneHit hk = snellRayPlane(origin, dir, plk.position, plk.normal);
+    if (k == 0 && farStart && dot(plk.position, plk.position) > 0.0f) {
+      SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, depthMips, s);
+      fetches += f.fetches;
+      if (f.valid && (!hk.valid || f.t < hk.t)) {
+        hk.t = f.t;
+        hk.position = f.position;
+        hk.valid = true;
+      }
+    }
 #if SNELL_PLANE_FACING_FALLBACK
     if (!hk.valid) {
       hk = snellRayPlane(origin, dir, plk.position, plk.position);
     }
 #endif
     if (!hk.valid) {
+      if (k == 0) {
+        return snellHitMiss(fetches);
+      }
       break;  // keep P_(k-1) on plane k-1
     }
     p = hk.position;
