@@ -879,7 +879,10 @@ LabResult runLab(const LabOptions& options) {
   k.normalFilter = options.normalFilter;
   k.params.depthFilter = options.depthFilter;
   k.params.reflectSource = options.reflectSource;
-  const std::vector<float> dN = wymanDnIfNeeded(frame, techniques);
+  // The web page offers every technique, ISR's d_N included.
+  const std::vector<float> dN = options.webBundleDir.empty()
+                                    ? wymanDnIfNeeded(frame, techniques)
+                                    : computeWymanDn(frame.object.positions, frame.object.normals, frame.object.indices);
   GpuLab gpu(options.backend, frame, dN, shaders, options.dirs, k);
   result.gpu = gpu.description();
   result.staticPassMs = gpu.renderStatic();
