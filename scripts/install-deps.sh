@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs what snell's build, tests and examples need on Debian 12, if missing.
-# Run as root (or with sudo). Debian packages with apt-get, and the WebGPU
-# runtime's npm packages (Deno, naga) from tools/webgpu's committed lockfile;
-# nothing is downloaded otherwise.
+# Run as root (or with sudo). Debian packages with apt-get, the WebGPU
+# runtime's npm packages (Deno, naga, dawn.node) from tools/webgpu's committed
+# lockfile and three.js from examples/web's; nothing is downloaded otherwise.
 set -euo pipefail
 packages=(
   cmake g++ make pkg-config
@@ -21,7 +21,7 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-# Node.js and npm install the WebGPU runtime's packages and serve the WebGL 2 runtime's page (any
+# Node.js and npm install the WebGPU runtime's packages and three.js, and serve the browser pages (any
 # Node.js that has npm: Debian's, or one that bundles npm).
 command -v npm > /dev/null || missing+=(nodejs npm)
 if [ ${#missing[@]} -eq 0 ]; then

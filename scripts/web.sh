@@ -4,11 +4,15 @@
 # normal plane, 2 it., once, with its ray tracer: about 20 s) to web-out/<scene>, then serves the page on
 # http://127.0.0.1:8080/ until Ctrl-C; open it in a browser with WebGL 2.
 #   bash scripts/web.sh                                   # the bundled bunny
-#   bash scripts/web.sh examples/scenes/sphere_painting.json [--port=8081]
+#   bash scripts/web.sh examples/scenes/sphere_painting.json [--port=8081] [--technique=dir]
+# Options after the scene go to examples/web/serve.mjs.
 # Paths are taken relative to the directory it is run from; the build happens in the repository.
 set -euo pipefail
-scene=${1:-}
-[ $# -gt 0 ] && shift
+scene=""
+if [ $# -gt 0 ] && [ "${1#--}" = "$1" ]; then
+  scene=$1
+  shift
+fi
 here=$(pwd)
 root="$(cd "$(dirname "$0")/.." && pwd)"
 lab=$(bash "$root/scripts/build-target.sh" snell-lab)/examples/lab/snell-lab

@@ -1895,11 +1895,11 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
     pB = bl.position;
   }
   r.position = pB;
-  // C (at pc, else on the other side of B) and E (across the way, else its opposite) through one read in
-  // the code, as WebGL's compilers inline every call: t = 0 C at pc, 1 C at pb - a (pc empty), 2 E at
-  // pb + b, 3 E at pb - b (pb + b empty). Both candidates of a point empty: no plane.
+  // C (at pc, else on the other side of B) and D (across the way, else its opposite) through one read in
+  // the code, as WebGL's compilers inline every call: t = 0 C at pc, 1 C at pb - a (pc empty), 2 D at
+  // pb + b, 3 D at pb - b (pb + b empty). Both candidates of a point empty: no plane.
   vec3 pC = vec3(0.0f, 0.0f, 0.0f);
-  vec3 pE = vec3(0.0f, 0.0f, 0.0f);
+  vec3 pD = vec3(0.0f, 0.0f, 0.0f);
   int found = 0;
   for (int t = 0; t < 4; ++t) {
     if (t == 1 && found == 1) {
@@ -1922,14 +1922,14 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
       if (found == 0) {
         pC = n.position;
       } else {
-        pE = n.position;
+        pD = n.position;
       }
       found += 1;
     } else if (t == 1 || t == 3) {
       return r;
     }
   }
-  r.normal = cross(pC - pB, pE - pB);
+  r.normal = cross(pC - pB, pD - pB);
   r.valid = true;
   return r;
 }

@@ -1783,7 +1783,7 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
   }
   r.position = pB;
   vec3 pC = vec3(0.0f, 0.0f, 0.0f);
-  vec3 pE = vec3(0.0f, 0.0f, 0.0f);
+  vec3 pD = vec3(0.0f, 0.0f, 0.0f);
   int found = 0;
   for (int t = 0; t < 4; ++t) {
     if (t == 1 && found == 1) {
@@ -1806,14 +1806,14 @@ SNELL_FN SnellDepthPlane snellDepthPlaneAt(vec3 q, vec3 dirN, SNELL_TEX2D depthM
       if (found == 0) {
         pC = n.position;
       } else {
-        pE = n.position;
+        pD = n.position;
       }
       found += 1;
     } else if (t == 1 || t == 3) {
       return r;
     }
   }
-  r.normal = cross(pC - pB, pE - pB);
+  r.normal = cross(pC - pB, pD - pB);
   r.valid = true;
   return r;
 }

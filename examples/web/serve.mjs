@@ -12,7 +12,7 @@
 // tracer's object pixels, both as 8-bit sRGB. It passes when at least --min-share of those pixels (99 % by
 // default) are within 2/255 in every channel. --buffers=lab runs the technique on the lab's own buffers
 // and front-face inputs (in the bundle) instead of the page's: what is left is snell's code in three.js
-// against the lab's C++ build, without the two rasterizers' differences (SwiftShader snaps vertices to
+// against the lab's llvmpipe render, without the two rasterizers' differences (SwiftShader snaps vertices to
 // 1/16 pixel, llvmpipe to 1/256). Exit status: 0 pass, 1 failure (a page error, no Chromium, no lab
 // picture in the bundle, a timeout, or the agreement below --min-share), 2 usage.
 import fs from "node:fs";
@@ -25,11 +25,15 @@ import { launchChromium } from "../../tools/browser/chromium.mjs";
 const here = path.dirname(fileURLToPath(import.meta.url));
 const root = path.resolve(here, "..", "..");
 const args = process.argv.slice(2);
+let usageLater = "";
 const option = (name, fallback) => {
   const a = args.find((x) => x.startsWith(`--${name}=`));
   return a ? a.slice(name.length + 3) : fallback;
 };
 const positional = args.filter((a) => !a.startsWith("--"));
+const known = ["test", "technique", "buffers", "min-share", "screenshot", "report", "chromium", "port"];
+for (const a of args.filter((x) => x.startsWith("--")))
+  if (!known.includes(a.slice(2).split("=")[0])) usageLater = `unknown option ${a}`;
 const test = args.includes("--test");
 const technique = option("technique", "plane-normal-2");
 const buffers = option("buffers", "page");
@@ -39,7 +43,7 @@ const reportFile = option("report", "");
 const port = Number(option("port", test ? "0" : "8080"));
 const tolerance = 2;      // 8-bit sRGB levels, every channel
 const targetShare = Number(option("min-share", "0.99"));  // of the object pixels
-// SwiftShader compiles a technique's program in 10-25 s on 2 cores; a page silent this long is stuck.
+// SwiftShader compiles and draws a technique in 10-40 s on 2 cores; a page silent this long is stuck.
 const timeoutMs = Number(process.env.SNELL_BROWSER_TIMEOUT_MS ?? 600000);
 
 function usage(message) {
@@ -48,6 +52,7 @@ function usage(message) {
     "[--chromium=PATH]");
   process.exit(2);
 }
+if (usageLater) usage(usageLater);
 if (positional.length !== 1) usage("give exactly one bundle directory (snell-lab --web-bundle DIR writes one)");
 const bundleDir = path.resolve(positional[0]);
 if (!fs.existsSync(path.join(bundleDir, "bundle.json")))
@@ -79,7 +84,8 @@ function finish(status, message) {
   if (finishing) return;
   finishing = true;
   if (message) (status === 0 ? console.log : console.error)(message);
-  (browser ? browser.close() : Promise.resolve()).then(() => process.exit(status));
+  if (!browser) process.exit(status);
+  browser.close().then(() => process.exit(status));
 }
 
 const reports = {};
@@ -90,7 +96,15 @@ const server = http.createServer((req, res) => {
     const url = req.url.split("?")[0];
     if (req.method === "GET" && files.has(url)) {
       const [file, type] = files.get(url);
-      res.writeHead(200, { "content-type": type }).end(fs.readFileSync(file));
+      let data;
+      try {
+        data = fs.readFileSync(file);
+      } catch (e) {
+        res.writeHead(404).end();
+        console.error(`serve.mjs: cannot read ${file}: ${e.message}`);
+        return;
+      }
+      res.writeHead(200, { "content-type": type }).end(data);
     } else if (test && req.method === "POST" && url.startsWith("/report/")) {
       const what = url.slice("/report/".length);
       res.end();
@@ -150,10 +164,16 @@ function compare() {
   else finish(share >= targetShare ? 0 : 1, line);
 }
 
+server.on("error", (e) =>
+  finish(1, e.code === "EADDRINUSE" ? `serve.mjs: port ${port} is in use; pick another with --port=N`
+    : `serve.mjs: cannot serve on 127.0.0.1:${port}: ${e.message}`));
 server.listen(port, "127.0.0.1", () => {
   const base = `http://127.0.0.1:${server.address().port}/`;
   if (!test) {
-    console.log(`serve.mjs: the page for ${bundleDir} at ${base} (Ctrl-C stops)`);
+    const q = new URLSearchParams();
+    if (option("technique")) q.set("technique", technique);
+    if (option("buffers")) q.set("buffers", buffers);
+    console.log(`serve.mjs: the page for ${bundleDir} at ${base}${q.size ? `?${q}` : ""} (Ctrl-C stops)`);
     return;
   }
   browser = launchChromium(`${base}?test=1&buffers=${buffers}&technique=${encodeURIComponent(technique)}`,

@@ -29,7 +29,8 @@ function finish(status, message) {
   if (finishing) return;
   finishing = true;
   if (message) console.error(`run_page.mjs: ${message}`);
-  (browser ? browser.close() : Promise.resolve()).then(() => process.exit(status));
+  if (!browser) process.exit(status);
+  browser.close().then(() => process.exit(status));
 }
 if (!pageJs || !dir || !resultsFile) finish(1, "usage: run_page.mjs PAGE_JS JOB_DIR RESULTS_FILE [--webgpu] [--chromium=PATH]");
 if (!fs.existsSync(pageJs)) finish(1, `no page module ${pageJs}`);

@@ -22,7 +22,8 @@ struct WebBundleImage {
   const Image* image = nullptr;
 };
 
-// Writes DIR/bundle.json and its binary files (little-endian float32 or uint32, GL row order); DIR is
+// Writes DIR/bundle.json and its binary files (little-endian float32, uint32 indices, a uint8 mask; GL
+// row order); DIR is
 // created. `objectMask`: the ray tracer's object pixels (the lab's measure). `buffers` and `front`: the
 // lab's own GL buffers (passes 1-2) and the front-face pass's fragment inputs, so the page can run a
 // technique on exactly the lab's buffers and tell snell's code apart from the two rasterizers. Throws
