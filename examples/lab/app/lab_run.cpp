@@ -913,8 +913,8 @@ LabResult runLab(const LabOptions& options) {
   if (!options.webBundleDir.empty()) {
     std::vector<WebBundleImage> ran;
     for (std::size_t i = 0; i < techniques.size(); ++i) ran.push_back({techniques[i], &images[i]});
-    // The front pass's fragment inputs are the same for every row: the first row's draw gives them.
-    gpu.renderTechnique(0);
+    // The front pass's fragment inputs are the same for every row: the last timed draw left them in pass 4's
+    // buffers, so no draw is needed.
     writeWebBundle(options.webBundleDir, result.scene, frame, dN, k, ran, refs.full.mask, sb, gpu.readTechnique());
   }
   result.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
