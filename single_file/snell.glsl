@@ -1679,6 +1679,11 @@ description: how a depth texture describes a surface (the refractive object's
   back faces, or the opaque scene), and the one way every strategy reads it.
 use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DEPTH_GL, 0.0f);
      SnellSurfaceSample x = snellSampleSurface(depthTex, uv, s);   // x.viewZ < 0 when x.valid
+     s = snellDepthSurfaceComplete(s);   // after filling or changing clipFromView, zNear, zFar, convention
+     float v = snellSurfaceLinearDepth(s, depthValue);   // snellLinearizeDepth with s's validated terms
+  The surface is per draw: build it once (in C++ with the same function, as a
+  uniform block or constants, or once per invocation) and pass it to every
+  strategy; the per-step code reads its derived fields.
   clipFromView  the projection the depth texture was rendered with
   zNear, zFar   its clip distances; convention: SNELL_DEPTH_* (camera/conventions.glsl)
   emptyDepth    the texel value meaning "no surface here": the clear value (0.0f for
@@ -1702,14 +1707,47 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
                 silhouette: the plane methods keep their last plane there,
                 SNELL_PLANE_HOLD); false: empty texels are open space (the
                 opaque scene: the environment shows there), set the field
-  perspective   set by snellDepthSurface: true when clipFromView has the shape of a
-                perspective (columns (a,0,0,0) (0,b,0,0) (c,d,e,-1) (0,0,f,0):
-                symmetric, off-centre and jittered frusta). The strategies then
-                project and reconstruct without the products with the zero
-                entries (intersect/surface_projection.glsl: the same results up
-                to the sign of an exact zero); a surface filled in field by
-                field must set it (false is always correct), as must code
-                that gives clipFromView another shape afterwards
+  derived fields  validated and precomputed once from clipFromView, zNear, zFar and
+                convention by snellDepthSurface, or by snellDepthSurfaceComplete for
+                a surface filled in field by field or changed afterwards; the
+                per-step reads trust them instead of re-checking the source
+                fields on every read:
+    perspective    true when clipFromView has the shape of a perspective
+                   (columns (a,0,0,0) (0,b,0,0) (c,d,e,-1) (0,0,f,0): symmetric,
+                   off-centre and jittered frusta). The strategies then project
+                   and reconstruct without the products with the zero entries
+                   (intersect/surface_projection.glsl: the same results up to
+                   the sign of an exact zero)
+    perspectiveDet a * b when perspective and that product is finite with
+                   |a b| >= SNELL_FLT_MIN (the reconstruction's determinant), else 0
+                   (every reconstruction is invalid: x / 0 is not finite)
+    linearizable   zNear, zFar and convention linearize a depth (the conditions
+                   of snellLinearizeDepth's contract), nearOverFar zNear / zFar (0
+                   for the infinite conventions), depthReversed (REVERSED,
+                   INFINITE_REVERSED), depthFarBelow (SNELL_FLT_MIN for
+                   INFINITE_REVERSED: a smaller depth is the far plane; else 0),
+                   depthFarLimit (zFar; SNELL_FLT_MAX for the infinite
+                   conventions): snellSurfaceLinearDepth's terms
+contract (snellDepthSurfaceComplete):
+  - returns s with every derived field computed from its clipFromView, zNear,
+    zFar and convention (snellDepthSurface's result for them); lod,
+    depthFilter, closed and emptyDepth are kept. snellDepthSurface calls it.
+  - an invalid clipFromView or depth range gives a surface on which every read
+    and reconstruction is invalid (linearizable false, perspectiveDet 0):
+    every strategy misses, with finite outputs.
+  - a surface whose derived fields disagree with its source fields (filled in
+    by hand, or changed without this call) is read through its derived
+    fields: results are finite and flagged, the same on every runtime, but
+    are those of the surface the derived fields describe. Any field may be
+    hostile (NaN, +-Inf, zero or negative ranges, a perspective flag on a
+    general matrix): never a NaN output, never a crash.
+contract (snellSurfaceLinearDepth):
+  - for a complete surface, exactly snellLinearizeDepth(depthValue, s.zNear,
+    s.zFar, s.convention) (bit for bit: the same operations, with the
+    conventions' branches folded into selects and zNear / zFar precomputed);
+    0.0f when s.linearizable is false or depthValue is NaN.
+  - for an inconsistent surface: 0.0f or a finite value > 0 (never NaN or
+    +-Inf), the same on every runtime (no clamp with reversed or NaN bounds).
 contract (snellSampleSurface):
   - NEAREST: reads the texel containing uv (no filtering: filtering depth
     invents surfaces between foreground and background, Oliveira & Brauwers
@@ -1723,7 +1761,8 @@ contract (snellSampleSurface):
   - valid = false (viewZ = 0) when uv lies outside [0,1]^2 (off screen: no
     information, never clamped to the edge), when uv is NaN, when the texel equals
     emptyDepth, or when the depth does not linearize (NaN, bad zNear/zFar);
-  - otherwise viewZ = -snellLinearizeDepth(texel) < 0, finite.
+  - otherwise viewZ = -snellSurfaceLinearDepth(s, texel) < 0 (finite for a
+    complete surface).
 source: Oliveira & Brauwers 2007 sec. 3.1 and Algorithm 2 ("invalid texels have
   depth = 0"); depth conventions in camera/linearize_depth.glsl.
 */
@@ -1746,7 +1785,14 @@ struct SnellDepthSurface {
   int lod;
   int depthFilter;
   bool closed;
+  // Derived (snellDepthSurfaceComplete):
   bool perspective;
+  float perspectiveDet;
+  bool linearizable;
+  bool depthReversed;
+  float nearOverFar;
+  float depthFarBelow;
+  float depthFarLimit;
 };
 
 struct SnellSurfaceSample {
@@ -1754,6 +1800,26 @@ struct SnellSurfaceSample {
   bool valid;
   bool interpolated;  // BILINEAR and all four texels held a surface: viewZ is the depth at uv itself
 };
+
+SNELL_FN SnellDepthSurface snellDepthSurfaceComplete(SnellDepthSurface s) {
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 3);
+  s.perspective = c0.y == 0.0f && c0.z == 0.0f && c0.w == 0.0f && c1.x == 0.0f && c1.z == 0.0f &&
+                  c1.w == 0.0f && c2.w == -1.0f && c3.x == 0.0f && c3.y == 0.0f && c3.w == 0.0f;
+  float det = c0.x * c1.y;
+  s.perspectiveDet = s.perspective && SNELL_FINITE(det) && abs(det) >= SNELL_FLT_MIN ? det : 0.0f;
+  bool infinite = s.convention == SNELL_DEPTH_INFINITE_GL || s.convention == SNELL_DEPTH_INFINITE_REVERSED;
+  s.linearizable = s.convention >= 0 && s.convention < SNELL_DEPTH_CONVENTION_COUNT && SNELL_FINITE(s.zNear) &&
+                   s.zNear >= SNELL_FLT_MIN && (infinite || (SNELL_FINITE(s.zFar) && s.zFar > s.zNear));
+  s.depthReversed = s.convention == SNELL_DEPTH_REVERSED || s.convention == SNELL_DEPTH_INFINITE_REVERSED;
+  // Only read when linearizable: zFar is then finite and > zNear, or unused.
+  s.nearOverFar = s.linearizable && !infinite ? s.zNear / s.zFar : 0.0f;
+  s.depthFarBelow = s.convention == SNELL_DEPTH_INFINITE_REVERSED ? SNELL_FLT_MIN : 0.0f;
+  s.depthFarLimit = infinite ? SNELL_FLT_MAX : (s.linearizable ? s.zFar : 0.0f);
+  return s;
+}
 
 SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, float zFar, int convention,
                                              float emptyDepth) {
@@ -1766,13 +1832,39 @@ SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, flo
   s.lod = 0;
   s.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
   s.closed = true;
-  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
-  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
-  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
-  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
-  s.perspective = c0.y == 0.0f && c0.z == 0.0f && c0.w == 0.0f && c1.x == 0.0f && c1.z == 0.0f &&
-                  c1.w == 0.0f && c2.w == -1.0f && c3.x == 0.0f && c3.y == 0.0f && c3.w == 0.0f;
-  return s;
+  return snellDepthSurfaceComplete(s);
+}
+
+/* One division and the clamp of snellLinearizeDepth, the conventions as
+   selects: GL and ZERO_ONE n / ((1 - d) + d (n / f)), REVERSED n / (d + (1 - d)
+   (n / f)); the infinite ones add d 0 or (1 - d) 0 = +0 to the same first term
+   (exact), and their far plane (d = 1 INFINITE_GL, d < SNELL_FLT_MIN
+   INFINITE_REVERSED) divides by 0: +Inf, clamped to SNELL_FLT_MAX as the
+   reference returns it. Equations in camera/linearize_depth.glsl. */
+SNELL_FN_INLINE float snellSurfaceLinearDepth(SNELL_IN(SnellDepthSurface) s, float depthValue) {
+  if (!s.linearizable || isnan(depthValue)) {
+    return 0.0f;
+  }
+  float d = clamp(depthValue, 0.0f, 1.0f);
+  float e = 1.0f - d;
+  float a = s.depthReversed ? d : e;
+  float b = s.depthReversed ? e : d;
+  if (d < s.depthFarBelow) {
+    a = 0.0f;
+  }
+  float v = s.zNear / (a + b * s.nearOverFar);
+  // A NaN (only from inconsistent terms) stops here: GPU compilers turn the
+  // selects below into fmax / fmin, which would drop it.
+  if (!(v > 0.0f)) {
+    return 0.0f;
+  }
+  // clamp(v, zNear, depthFarLimit) as two selects: for a complete surface the
+  // same value (zNear <= depthFarLimit); for an inconsistent one (reversed or
+  // NaN bounds, where clamp is undefined) the same on every runtime, and the
+  // last test keeps only a finite result > 0.
+  v = v < s.zNear ? s.zNear : v;
+  v = v > s.depthFarLimit ? s.depthFarLimit : v;
+  return v > 0.0f && v <= SNELL_FLT_MAX ? v : 0.0f;
 }
 
 /* SNELL_FN_INLINE: C++ inlines this read into every strategy and loop (by
@@ -1822,7 +1914,7 @@ SNELL_FN_INLINE SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2
       r.interpolated = true;
     }
   }
-  float v = snellLinearizeDepth(d, s.zNear, s.zFar, s.convention);
+  float v = snellSurfaceLinearDepth(s, d);
   if (!(v > 0.0f)) {
     r.interpolated = false;
     return r;
@@ -1936,8 +2028,8 @@ SNELL_FN_INLINE SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface)
     return r;
   }
 #endif
-  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
-      !(viewZ <= -SNELL_FLT_MIN)) {
+  // A non-finite uv makes nx or ny non-finite: tested below.
+  if (!SNELL_FINITE(viewZ) || !(viewZ <= -SNELL_FLT_MIN)) {
     return r;
   }
   vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
@@ -1954,14 +2046,11 @@ SNELL_FN_INLINE SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface)
   // c3.x and c3.w are +0), added as +0.
   float b0 = -(viewZ * (c2.x + nx) + 0.0f);
   float b1 = -(viewZ * (c2.y + ny) + 0.0f);
-  float det = c0.x * c1.y;
-  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
-    return r;
-  }
   // The zero coefficients a01, a10 stay as products with +0: they decide the
-  // sign of an exactly zero result as in the general path.
-  float x = (b0 * c1.y - 0.0f * b1) / det;
-  float y = (c0.x * b1 - b0 * 0.0f) / det;
+  // sign of an exactly zero result as in the general path. perspectiveDet is
+  // c0.x c1.y validated once (0 when unusable: x and y are then not finite).
+  float x = (b0 * c1.y - 0.0f * b1) / s.perspectiveDet;
+  float y = (c0.x * b1 - b0 * 0.0f) / s.perspectiveDet;
   if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
     return r;
   }
@@ -2017,8 +2106,13 @@ SNELL_FN_INLINE SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 u
     return r;
   }
   ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
-  // x.valid: uv is on screen and size > 0
-  vec2 centre = x.interpolated ? uv : snellPixelToUv(SNELL_PIXEL_ON_SCREEN(uv, size), size);
+  // x.valid: uv is on screen and size > 0, so snellPixelToUv's tests of the
+  // size are left out (the same operations otherwise).
+  vec2 centre = uv;
+  if (!x.interpolated) {
+    ivec2 px = SNELL_PIXEL_ON_SCREEN(uv, size);
+    centre = vec2((float(px.x) + 0.5f) / float(size.x), (float(px.y) + 0.5f) / float(size.y));
+  }
   SnellViewPoint p = snellSurfaceUvZToView(s, centre, x.viewZ);
   if (!p.valid) {
     return r;
@@ -2933,7 +3027,7 @@ SNELL_FN vec4 snellDepthPyramidBase(float depthValue, SNELL_IN(SnellDepthSurface
   if (!SNELL_FINITE(depthValue) || depthValue == s.emptyDepth) {
     return empty;
   }
-  float v = snellLinearizeDepth(depthValue, s.zNear, s.zFar, s.convention);
+  float v = snellSurfaceLinearDepth(s, depthValue);
   if (!(v > 0.0f)) {
     return empty;
   }

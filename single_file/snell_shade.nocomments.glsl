@@ -1036,6 +1036,12 @@ struct SnellDepthSurface {
   int depthFilter;
   bool closed;
   bool perspective;
+  float perspectiveDet;
+  bool linearizable;
+  bool depthReversed;
+  float nearOverFar;
+  float depthFarBelow;
+  float depthFarLimit;
 };
 
 struct SnellSurfaceSample {
@@ -1043,6 +1049,25 @@ struct SnellSurfaceSample {
   bool valid;
   bool interpolated;
 };
+
+SNELL_FN SnellDepthSurface snellDepthSurfaceComplete(SnellDepthSurface s) {
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 3);
+  s.perspective = c0.y == 0.0f && c0.z == 0.0f && c0.w == 0.0f && c1.x == 0.0f && c1.z == 0.0f &&
+                  c1.w == 0.0f && c2.w == -1.0f && c3.x == 0.0f && c3.y == 0.0f && c3.w == 0.0f;
+  float det = c0.x * c1.y;
+  s.perspectiveDet = s.perspective && SNELL_FINITE(det) && abs(det) >= SNELL_FLT_MIN ? det : 0.0f;
+  bool infinite = s.convention == SNELL_DEPTH_INFINITE_GL || s.convention == SNELL_DEPTH_INFINITE_REVERSED;
+  s.linearizable = s.convention >= 0 && s.convention < SNELL_DEPTH_CONVENTION_COUNT && SNELL_FINITE(s.zNear) &&
+                   s.zNear >= SNELL_FLT_MIN && (infinite || (SNELL_FINITE(s.zFar) && s.zFar > s.zNear));
+  s.depthReversed = s.convention == SNELL_DEPTH_REVERSED || s.convention == SNELL_DEPTH_INFINITE_REVERSED;
+  s.nearOverFar = s.linearizable && !infinite ? s.zNear / s.zFar : 0.0f;
+  s.depthFarBelow = s.convention == SNELL_DEPTH_INFINITE_REVERSED ? SNELL_FLT_MIN : 0.0f;
+  s.depthFarLimit = infinite ? SNELL_FLT_MAX : (s.linearizable ? s.zFar : 0.0f);
+  return s;
+}
 
 SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, float zFar, int convention,
                                              float emptyDepth) {
@@ -1055,13 +1080,27 @@ SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, flo
   s.lod = 0;
   s.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
   s.closed = true;
-  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
-  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
-  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
-  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
-  s.perspective = c0.y == 0.0f && c0.z == 0.0f && c0.w == 0.0f && c1.x == 0.0f && c1.z == 0.0f &&
-                  c1.w == 0.0f && c2.w == -1.0f && c3.x == 0.0f && c3.y == 0.0f && c3.w == 0.0f;
-  return s;
+  return snellDepthSurfaceComplete(s);
+}
+
+SNELL_FN_INLINE float snellSurfaceLinearDepth(SNELL_IN(SnellDepthSurface) s, float depthValue) {
+  if (!s.linearizable || isnan(depthValue)) {
+    return 0.0f;
+  }
+  float d = clamp(depthValue, 0.0f, 1.0f);
+  float e = 1.0f - d;
+  float a = s.depthReversed ? d : e;
+  float b = s.depthReversed ? e : d;
+  if (d < s.depthFarBelow) {
+    a = 0.0f;
+  }
+  float v = s.zNear / (a + b * s.nearOverFar);
+  if (!(v > 0.0f)) {
+    return 0.0f;
+  }
+  v = v < s.zNear ? s.zNear : v;
+  v = v > s.depthFarLimit ? s.depthFarLimit : v;
+  return v > 0.0f && v <= SNELL_FLT_MAX ? v : 0.0f;
 }
 
 SNELL_FN_INLINE SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2 uv, SNELL_IN(SnellDepthSurface) s) {
@@ -1103,7 +1142,7 @@ SNELL_FN_INLINE SnellSurfaceSample snellSampleSurface(SNELL_TEX2D depthTex, vec2
       r.interpolated = true;
     }
   }
-  float v = snellLinearizeDepth(d, s.zNear, s.zFar, s.convention);
+  float v = snellSurfaceLinearDepth(s, d);
   if (!(v > 0.0f)) {
     r.interpolated = false;
     return r;
@@ -1422,8 +1461,7 @@ SNELL_FN_INLINE SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface)
     return r;
   }
 #endif
-  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
-      !(viewZ <= -SNELL_FLT_MIN)) {
+  if (!SNELL_FINITE(viewZ) || !(viewZ <= -SNELL_FLT_MIN)) {
     return r;
   }
   vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
@@ -1436,12 +1474,8 @@ SNELL_FN_INLINE SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface)
   }
   float b0 = -(viewZ * (c2.x + nx) + 0.0f);
   float b1 = -(viewZ * (c2.y + ny) + 0.0f);
-  float det = c0.x * c1.y;
-  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
-    return r;
-  }
-  float x = (b0 * c1.y - 0.0f * b1) / det;
-  float y = (c0.x * b1 - b0 * 0.0f) / det;
+  float x = (b0 * c1.y - 0.0f * b1) / s.perspectiveDet;
+  float y = (c0.x * b1 - b0 * 0.0f) / s.perspectiveDet;
   if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
     return r;
   }
@@ -1471,7 +1505,11 @@ SNELL_FN_INLINE SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 u
     return r;
   }
   ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
-  vec2 centre = x.interpolated ? uv : snellPixelToUv(SNELL_PIXEL_ON_SCREEN(uv, size), size);
+  vec2 centre = uv;
+  if (!x.interpolated) {
+    ivec2 px = SNELL_PIXEL_ON_SCREEN(uv, size);
+    centre = vec2((float(px.x) + 0.5f) / float(size.x), (float(px.y) + 0.5f) / float(size.y));
+  }
   SnellViewPoint p = snellSurfaceUvZToView(s, centre, x.viewZ);
   if (!p.valid) {
     return r;

@@ -1,10 +1,13 @@
 // The study's fragment shader body (gpu_kernel_study.cpp puts #version and
 // VARIANT in front of it): one ray per pixel (ray (y W + x) mod the ray
-// count), VARIANT: 0 snell single sample, 1 snell
-// normal plane (1 it., the poster's: no far start), 2 the same with the far
-// start (snell's default, the lab's), 3 the kernel single sample, 4 the kernel
-// normal plane (1 it.), 5 and 6: 0 and 1 with SNELL_PERSPECTIVE_ONLY 1.
-#if VARIANT >= 5
+// count), VARIANT: 0 snell single sample, 1 snell normal plane (1 it., the
+// poster's: no far start), 2 the same with the far start (snell's default, the
+// lab's), 3 the kernel single sample, 4 the kernel normal plane (1 it.), 5 and
+// 6: 0 and 1 with SNELL_PERSPECTIVE_ONLY 1, 7 snell CBS-5, 8 the kernel CBS-5,
+// 9 snell linear march (32 steps, 4 refinements), 10 the kernel linear march.
+// snell reads its surface from a uniform built once per draw by the C++
+// snellDepthSurface, as the kernels read kCam (the per-draw terms).
+#if VARIANT == 5 || VARIANT == 6
 #  define SNELL_PERSPECTIVE_ONLY 1
 #endif
 #include "snell/snell.glsl"
@@ -13,9 +16,8 @@
 layout(binding = 2) uniform sampler2D kPyramid;
 layout(binding = 3) uniform sampler2D kRayOrigin;  // xyz, one ray per texel, row-major
 layout(binding = 4) uniform sampler2D kRayDir;
-uniform mat4 kClipFromView;
+uniform SnellDepthSurface kSurface;
 uniform int kRayCount;
-uniform vec2 kClipRange;  // zNear, zFar
 
 layout(location = 0) out vec4 outPosition;  // xyz position
 layout(location = 1) out vec4 outHit;       // uv, valid, fetches
@@ -26,15 +28,22 @@ void main() {
   ivec2 at = ivec2(i % width, i / width);
   vec3 o = texelFetch(kRayOrigin, at, 0).xyz;
   vec3 d = texelFetch(kRayDir, at, 0).xyz;
-  SnellDepthSurface s = snellDepthSurface(kClipFromView, kClipRange.x, kClipRange.y, SNELL_DEPTH_GL, 0.0);
 #if VARIANT == 0 || VARIANT == 5
-  SnellHit h = snellIntersectSingleSample(o, d, kDepth, s);
+  SnellHit h = snellIntersectSingleSample(o, d, kDepth, kSurface);
 #elif VARIANT == 1 || VARIANT == 2 || VARIANT == 6
-  SnellHit h = snellIntersectPlaneNormal(o, d, kDepth, kNormal, kPyramid, s, 0.0, 1, VARIANT == 2);
+  SnellHit h = snellIntersectPlaneNormal(o, d, kDepth, kNormal, kPyramid, kSurface, 0.0, 1, VARIANT == 2);
 #elif VARIANT == 3
   KHit h = kSingleSample(o, d);
-#else
+#elif VARIANT == 4
   KHit h = kPlaneNormal(o, d, 1);
+#elif VARIANT == 7
+  SnellHit h = snellConservativeBinarySearch(o, d, kDepth, kSurface, -4.0, -6.2, 5);
+#elif VARIANT == 8
+  KHit h = kCbs(o, d, -4.0, -6.2, 5);
+#elif VARIANT == 9
+  SnellHit h = snellLinearMarch(o, d, kDepth, kSurface, 5.0, 32, 4);
+#else
+  KHit h = kLinearMarch(o, d, 5.0, 32, 4);
 #endif
   outPosition = vec4(h.position, 0.0);
   outHit = vec4(h.uv, h.valid ? 1.0 : 0.0, float(h.fetches));

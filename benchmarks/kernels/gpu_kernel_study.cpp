@@ -1,6 +1,7 @@
 // The kernel study on the GPU path (the shaders measured as llvmpipe time
-// and instruction ratios): snell's GLSL single sample and normal
-// plane (1 it.) against the hand-written GLSL kernels of gpu_kernels.glsl, on
+// and instruction ratios): snell's GLSL single sample, normal plane (1 it.),
+// CBS-5 and linear march (32 steps, 4 refinements) against the hand-written
+// GLSL kernels of gpu_kernels.glsl, on
 // the kernel study's rays and buffers (kernel_scene.hpp), one ray per pixel of
 // a 512x512 pass (the 20000 rays repeated), on Mesa (OSMesa or EGL).
 // Prints how many rays each kernel answers with snell's bits, the median pass
@@ -28,16 +29,45 @@ namespace {
 using namespace snell::gpu;
 
 constexpr int kSize = 512;
-constexpr int kVariants = 7;
-const char* const kNames[kVariants] = {"snell single sample", "snell normal plane 1 it.",
-                                       "snell normal plane 1 it. + far start", "kernel single sample",
-                                       "kernel normal plane 1 it.", "snell single sample, SNELL_PERSPECTIVE_ONLY",
-                                       "snell normal plane 1 it., SNELL_PERSPECTIVE_ONLY"};
+constexpr int kVariants = 11;
+const char* const kNames[kVariants] = {"snell single sample",
+                                       "snell normal plane 1 it.",
+                                       "snell normal plane 1 it. + far start",
+                                       "kernel single sample",
+                                       "kernel normal plane 1 it.",
+                                       "snell single sample, SNELL_PERSPECTIVE_ONLY",
+                                       "snell normal plane 1 it., SNELL_PERSPECTIVE_ONLY",
+                                       "snell CBS-5",
+                                       "kernel CBS-5",
+                                       "snell linear march 32x4",
+                                       "kernel linear march 32x4"};
 
 // The kernel each variant is measured against (-1: a kernel itself), and the
 // single sample its ratio is taken to (the same build).
-const int kTwin[kVariants] = {3, 4, 4, -1, -1, 3, 4};
-const int kSingle[kVariants] = {0, 0, 0, 3, 3, 5, 5};
+const int kTwin[kVariants] = {3, 4, 4, -1, -1, 3, 4, 8, -1, 10, -1};
+const int kSingle[kVariants] = {0, 0, 0, 3, 3, 5, 5, 0, 3, 0, 3};
+
+// snell's surface as the uniform kSurface, built once by the C++ mirror. A
+// field the variant does not read has no location (-1): GL ignores it.
+void setSurface(const GlApi& gl, GLuint id, const snell::SnellDepthSurface& s) {
+  auto loc = [&](const char* field) { return gl.GetUniformLocation(id, (std::string("kSurface.") + field).c_str()); };
+  gl.ProgramUniformMatrix4fv(id, loc("clipFromView"), 1, GL_FALSE, &s.clipFromView[0][0]);
+  gl.ProgramUniform1f(id, loc("zNear"), s.zNear);
+  gl.ProgramUniform1f(id, loc("zFar"), s.zFar);
+  gl.ProgramUniform1i(id, loc("convention"), s.convention);
+  gl.ProgramUniform1f(id, loc("emptyDepth"), s.emptyDepth);
+  gl.ProgramUniform1i(id, loc("lod"), s.lod);
+  gl.ProgramUniform1i(id, loc("depthFilter"), s.depthFilter);
+  gl.ProgramUniform1i(id, loc("closed"), s.closed ? 1 : 0);
+  gl.ProgramUniform1i(id, loc("perspective"), s.perspective ? 1 : 0);
+  gl.ProgramUniform1f(id, loc("perspectiveDet"), s.perspectiveDet);
+  gl.ProgramUniform1i(id, loc("linearizable"), s.linearizable ? 1 : 0);
+  gl.ProgramUniform1i(id, loc("depthReversed"), s.depthReversed ? 1 : 0);
+  gl.ProgramUniform1f(id, loc("nearOverFar"), s.nearOverFar);
+  gl.ProgramUniform1f(id, loc("depthFarBelow"), s.depthFarBelow);
+  gl.ProgramUniform1f(id, loc("depthFarLimit"), s.depthFarLimit);
+  checkGl(gl, "uniform kSurface");
+}
 
 struct Study {
   Context ctx;
@@ -84,9 +114,7 @@ struct Study {
       const glm::vec4 cam(k.a, k.b, k.det, k.zNear);
       gl.ProgramUniform4fv(id, loc("kCam"), 1, &cam[0]);
       gl.ProgramUniform1f(id, loc("kNearOverFar"), k.nearOverFar);
-      gl.ProgramUniformMatrix4fv(id, loc("kClipFromView"), 1, GL_FALSE, &sc.P[0][0]);
-      const glm::vec2 range(sc.surface.zNear, sc.surface.zFar);
-      gl.ProgramUniform2fv(id, loc("kClipRange"), 1, &range[0]);
+      setSurface(gl, id, sc.surface);
       gl.ProgramUniform1i(id, loc("kRayCount"), static_cast<int>(sc.rays.size()));
       checkGl(gl, "uniforms of variant " + std::to_string(v));
     }
@@ -123,7 +151,11 @@ double drawTimed(Study& s, int v) {
     case 3: return drawVariant<3>(s);
     case 4: return drawVariant<4>(s);
     case 5: return drawVariant<5>(s);
-    default: return drawVariant<6>(s);
+    case 6: return drawVariant<6>(s);
+    case 7: return drawVariant<7>(s);
+    case 8: return drawVariant<8>(s);
+    case 9: return drawVariant<9>(s);
+    default: return drawVariant<10>(s);
   }
 }
 
@@ -163,7 +195,7 @@ int main(int argc, char** argv) {
       std::printf("variant %d single %d twin %d: %s\n", v, kSingle[v], kTwin[v], kNames[v]);
     const int rays = static_cast<int>(s.sc.rays.size());
     bool allSame = true;
-    for (const auto& [kernel, snellV] : {std::pair<int, int>{3, 0}, {4, 1}, {3, 5}, {4, 6}}) {
+    for (const auto& [kernel, snellV] : {std::pair<int, int>{3, 0}, {4, 1}, {3, 5}, {4, 6}, {8, 7}, {10, 9}}) {
       float diff = 0.0f;
       const int same = identical(out[static_cast<std::size_t>(kernel)], out[static_cast<std::size_t>(snellV)], rays, diff);
       std::printf("%s vs %s: %d/%d rays with identical bits (position, uv, valid, fetches); max |position diff| %.3g\n",

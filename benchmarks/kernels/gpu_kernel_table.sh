@@ -1,14 +1,20 @@
 #!/usr/bin/env bash
-# The kernel study on the GPU path: snell's GLSL single sample and
-# normal plane (1 it.) beside the hand-written GLSL kernels of gpu_kernels.glsl,
-# one ray per pixel of a 512x512 pass on Mesa llvmpipe (gpu_kernel_study.cpp).
-# Fails unless each kernel gives snell's output bits on every ray; prints the
-# median pass times (all variants interleaved in one run) and, with callgrind
-# (llvmpipe rendering on the calling thread, LP_NUM_THREADS=0), the
-# instructions per pixel each pass executes, JIT code and texture sampling
-# included: repeatable where the times are not. About 2 minutes; not part of
-# the suite. Usage: bash benchmarks/kernels/gpu_kernel_table.sh [rounds] [backend]
+# The kernel study on the GPU path: snell's GLSL single sample, normal plane
+# (1 it.), CBS-5 and linear march (32 steps, 4 refinements) beside the
+# hand-written GLSL kernels of gpu_kernels.glsl, one ray per pixel of a
+# 512x512 pass on Mesa llvmpipe (gpu_kernel_study.cpp). Fails unless each
+# kernel gives snell's output bits on every ray; prints the median pass times
+# (all variants interleaved in one run) and, with callgrind (llvmpipe
+# rendering on the calling thread, LP_NUM_THREADS=0), the instructions per
+# pixel each pass executes, JIT code and texture sampling included:
+# repeatable where the times are not. About 3 minutes; not part of the suite;
+# the `bench` target runs it. GPU_KERNEL_TABLE_OUT=FILE also writes the output
+# there. Usage: bash benchmarks/kernels/gpu_kernel_table.sh [rounds] [backend]
 set -euo pipefail
+if [ -n "${GPU_KERNEL_TABLE_OUT:-}" ]; then
+  mkdir -p "$(dirname "$GPU_KERNEL_TABLE_OUT")"
+  exec > >(tee "$GPU_KERNEL_TABLE_OUT")
+fi
 root=$(cd "$(dirname "$0")/../.." && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT

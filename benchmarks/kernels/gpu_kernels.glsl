@@ -1,4 +1,5 @@
-/* The hand-written kernels of benchmarks/kernels/kernels.hpp in GLSL: single sample and the normal-based plane for
+/* The hand-written kernels of benchmarks/kernels/kernels.hpp in GLSL: single
+   sample, the normal-based plane, CBS and the linear march for
    exactly the kernel study's setup, under the same assumptions A1-A6 listed
    there (finite inputs, a glm::perspective matrix, GL depth, level 0, nearest
    reads at texel centres, RGBA32F textures). gpu_kernel_study.cpp runs them
@@ -130,6 +131,115 @@ KHit kPlaneNormal(vec3 o, vec3 d, int iterations) {
   KHit h;
   h.position = p;
   h.uv = texelFetch(kDepth, kTexel(uv, size), 0).x != 0.0 ? uv : planeUv;
+  h.valid = true;
+  h.fetches = fetches;
+  return h;
+}
+
+// snellSampleSurface at any uv (A4): true and the view z when the texel holds a surface.
+bool kSample(vec2 uv, out float vz) {
+  vz = 0.0;
+  if (!kOnScreen(uv)) return false;
+  float dv = texelFetch(kDepth, kTexel(uv, textureSize(kDepth, 0).x), 0).x;
+  if (dv == 0.0) return false;
+  vz = kViewZ(dv);
+  return true;
+}
+
+/* cbs<S> of kernels.hpp (snellConservativeBinarySearch): S steps, the segment
+   from min(o.z, zNearest) to zFarthest, both projected by the perspective's
+   two terms (A3). */
+KHit kCbs(vec3 o, vec3 d, float zNearest, float zFarthest, int steps) {
+  if (!(d.z <= -1.175494351e-38) || !(zNearest > zFarthest) || !(o.z > zFarthest)) return kMiss(0);
+  float zS = o.z < zNearest ? o.z : zNearest;
+  if (!(zS <= -1.175494351e-38) || !(zFarthest <= -1.175494351e-38)) return kMiss(0);
+  float ls = (zS - o.z) / d.z;
+  float le = (zFarthest - o.z) / d.z;
+  vec2 s = vec2(o.x + ls * d.x, o.y + ls * d.y);
+  vec2 e = vec2(o.x + le * d.x, o.y + le * d.y);
+  vec2 ts = vec2(kCam.x * s.x / -zS * 0.5 + 0.5, kCam.y * s.y / -zS * 0.5 + 0.5);
+  vec2 te = vec2(kCam.x * e.x / -zFarthest * 0.5 + 0.5, kCam.y * e.y / -zFarthest * 0.5 + 0.5);
+  vec2 dt = te - ts;
+  float kk = (1.0 / zS) * ((zS * zFarthest) / (zS - zFarthest));
+  float dz = zFarthest - zS;
+  float beta = 0.0, dBeta = 1.0, zHit = zS;
+  vec2 uvHit = ts;
+  bool advanced = false;
+  for (int i = 0; i < steps; ++i) {
+    dBeta = dBeta * 0.5;
+    float b = beta + dBeta;
+    float z = zS + b * dz;
+    float alpha = ((zS - z) / z) * kk;
+    vec2 uv = ts + alpha * dt;
+    float vz;
+    if (kSample(uv, vz) && z > vz) {
+      beta = b;
+      zHit = z;
+      uvHit = uv;
+      advanced = true;
+    }
+  }
+  int fetches = steps;
+  if (!advanced) {
+    fetches += 1;
+    float vz;
+    if (!kSample(uvHit, vz)) return kMiss(fetches);
+  }
+  KHit h;
+  h.position = vec3(s.x + beta * (e.x - s.x), s.y + beta * (e.y - s.y), zHit);
+  h.uv = uvHit;
+  h.valid = true;
+  h.fetches = fetches;
+  return h;
+}
+
+/* linearMarch<STEPS, REFINE> of kernels.hpp (snellLinearMarch): maxDistance > 0,
+   the steps and refinements fixed by the caller. */
+KHit kLinearMarch(vec3 o, vec3 d, float maxDistance, int steps, int refine) {
+  float tMax = maxDistance / length(d);
+  if (d.z > 0.0) tMax = min(tMax, (-kCam.w - o.z) / d.z);
+  if (!(tMax > 0.0)) return kMiss(0);
+  float dt = tMax / float(steps);
+  int fetches = 0;
+  float tHit = 0.0;
+  vec2 uvHit = vec2(0.0);
+  bool found = false;
+  for (int i = 1; i <= steps; ++i) {
+    float t = float(i) * dt;
+    vec3 p = o + t * d;
+    vec2 uv;
+    if (!kProject(p, uv) || !kOnScreen(uv)) return kMiss(fetches);
+    fetches += 1;
+    float vz;
+    if (kSample(uv, vz) && p.z <= vz) {
+      found = true;
+      tHit = t;
+      uvHit = uv;
+      break;
+    }
+  }
+  if (!found) return kMiss(fetches);
+  float lo = tHit - dt;
+  for (int j = 0; j < refine; ++j) {
+    float mid = 0.5 * (lo + tHit);
+    vec3 q = o + mid * d;
+    vec2 uv;
+    bool crosses = false;
+    if (kProject(q, uv) && kOnScreen(uv)) {
+      fetches += 1;
+      float vz;
+      crosses = kSample(uv, vz) && q.z <= vz;
+    }
+    if (crosses) {
+      tHit = mid;
+      uvHit = uv;
+    } else {
+      lo = mid;
+    }
+  }
+  KHit h;
+  h.position = o + tHit * d;
+  h.uv = uvHit;
   h.valid = true;
   h.fetches = fetches;
   return h;

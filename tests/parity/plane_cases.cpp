@@ -221,6 +221,67 @@ ParityIO surfaceShapeInput(InputGen& g) {
   in.v[0].w = g.chance(0.25f) ? 1.0f : 0.0f;
   return in;
 }
+// snellSurfaceLinearDepth: depths across [0,1] and its edges, every convention
+// (and unknown ones), valid and invalid ranges.
+std::vector<ParityIO> surfaceLinearDepthInputs() {
+  InputGen g(615);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    float d = g.uniform(0.0f, 1.0f);
+    const float k = g.uniform(0.0f, 1.0f);
+    if (k < 0.05f) d = 0.0f;
+    else if (k < 0.10f) d = 1.0f;
+    else if (k < 0.15f) d = 1.0f - std::ldexp(1.0f, -g.integer(2, 24));  // just below the far plane
+    else if (k < 0.18f) d = std::ldexp(1.0f, -g.integer(2, 40));         // just above 0, denormals
+    else if (k < 0.22f) d = g.uniform(-0.5f, 1.5f);                      // out of range
+    else if (k < 0.25f) d = g.hostile();
+    float zNear = g.uniform(0.01f, 2.0f), zFar = g.uniform(2.0f, 1000.0f);
+    if (g.chance(0.04f)) zNear = g.hostile();
+    if (g.chance(0.04f)) zFar = g.hostile();
+    if (g.chance(0.03f)) zFar = zNear;
+    ParityIO in{};
+    in.v[0] = glm::vec4(d, zNear, zFar, float(g.integer(-1, 5)));
+    v.push_back(in);
+  }
+  return v;
+}
+
+// snellDepthSurfaceComplete: a surface filled in by hand whose derived fields
+// disagree with its source fields (stale or hostile), read at uv, then
+// completed and read again. Source fields: the scene's own projection (a shear
+// m10 on a quarter: the perspective flag then disagrees with the matrix), its
+// range and convention, or hostile ones.
+std::vector<ParityIO> surfaceCompleteInputs() {
+  buildTextures();
+  InputGen g(616);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    const int which = g.chance(0.5f) ? 0 : 1;
+    glm::vec2 uv(g.uniform(-0.1f, 1.1f), g.uniform(-0.1f, 1.1f));
+    if (g.chance(0.03f)) uv = glm::vec2(g.hostile(), g.hostile());
+    ParityIO in{};
+    in.v[0] = glm::vec4(uv, 0.0f, float(which));
+    float zNear = 0.5f, zFar = 40.0f;
+    if (g.chance(0.1f)) zNear = g.chance(0.5f) ? -g.uniform(0.0f, 1.0f) : 0.0f;  // zero or negative ranges
+    if (g.chance(0.1f)) zFar = g.uniform(0.0f, 0.6f);
+    if (g.chance(0.05f)) zNear = g.hostile();
+    in.v[1] = glm::vec4(zNear, zFar, float(which ? SNELL_DEPTH_REVERSED : SNELL_DEPTH_GL),
+                        g.chance(0.25f) ? g.uniform(-0.3f, 0.3f) : 0.0f);
+    in.v[2] = matrixEntries(which ? sceneB() : sceneA());
+    // The derived fields as the hand filled them: a perspective flag (1/0),
+    // a determinant, n / f and the far limit, right, stale or hostile.
+    const glm::vec4& e = in.v[2];
+    glm::vec4 derived(1.0f, e.x * e.y, zNear / zFar, zFar);
+    for (int c = 0; c < 4; ++c) {
+      if (!g.chance(0.3f)) continue;
+      derived[c] = c == 0 ? float(g.integer(0, 1)) : (g.chance(0.5f) ? g.hostile() : g.uniform(-2.0f, 50.0f));
+    }
+    in.v[3] = derived;
+    v.push_back(in);
+  }
+  return v;
+}
+
 std::vector<ParityIO> surfaceViewToUvInputs() {
   InputGen g(613);
   std::vector<ParityIO> v;
@@ -363,6 +424,63 @@ SNELL_PARITY_CASE(snellDepthSurface, surfaceInputs,
                   m23 = c2.w;
                   zeroSum0 = c0.y + c0.z + c0.w + c1.x + c1.z + c1.w;
                   zeroSum1 = c2.x + c2.y + c3.x + c3.y + c3.w;)
+
+// The surface's linearization against the reference it must equal (one
+// division each).
+SNELL_PARITY_CASE(snellSurfaceLinearDepth, surfaceLinearDepthInputs,
+                  (float, depthValue, 0)(float, zNear, 1)(float, zFar, 2)(int, convention, 3),
+                  (float, distance, 0, within(1e-6f, 1e-5f))(float, reference, 1, within(1e-6f, 1e-5f)),
+                  {},
+                  SnellDepthSurface s = snellDepthSurface(planeParityMatrix(vec4(1.0f, 1.0f, -1.0f, -1.0f)), zNear,
+                                                          zFar, convention, 0.0f);
+                  distance = snellSurfaceLinearDepth(s, depthValue);
+                  reference = snellLinearizeDepth(depthValue, zNear, zFar, convention);)
+
+// A hand-filled, inconsistent surface read as it is (hand*), then completed.
+SNELL_PARITY_CASE(snellDepthSurfaceComplete, surfaceCompleteInputs,
+                  (vec2, uv, 0)(bool, sceneB, 3)(float, zNear, 4)(float, zFar, 5)(int, convention, 6)
+                  (float, shear, 7)(vec4, entries, 8)(bool, handPerspective, 12)(float, handDet, 13)
+                  (float, handNearOverFar, 14)(float, handFarLimit, 15),
+                  (vec3, handPosition, 0, within(1e-5f, 1e-5f))(bool, handValid, 3, exact)
+                  (vec3, position, 4, within(1e-5f, 1e-5f))(bool, valid, 7, exact)(bool, perspective, 8, exact)
+                  (bool, linearizable, 9, exact)(float, det, 10, within(1e-6f, 1e-6f))
+                  (float, nearOverFar, 11, within(1e-6f, 1e-6f))(float, farLimit, 12, exact),
+                  sampling(),
+                  SnellDepthSurface s = planeParitySurface(sceneB, vec4(1.0f, 1.0f, -1.0f, -1.0f));
+                  s.clipFromView = SNELL_CAMERA_MAT4_COLUMNS(vec4(entries.x, 0.0f, 0.0f, 0.0f),
+                                                             vec4(shear, entries.y, 0.0f, 0.0f),
+                                                             vec4(0.0f, 0.0f, entries.z, -1.0f),
+                                                             vec4(0.0f, 0.0f, entries.w, 0.0f));
+                  s.zNear = zNear;
+                  s.zFar = zFar;
+                  s.convention = convention;
+                  s.perspective = handPerspective;
+                  s.perspectiveDet = handDet;
+                  s.linearizable = true;
+                  s.nearOverFar = handNearOverFar;
+                  s.depthFarLimit = handFarLimit;
+                  SnellSurfacePoint h;  // no ?: on structs: WebGL rejects it
+                  if (sceneB) {
+                    h = snellSurfacePoint(planeDepthB, uv, s);
+                  } else {
+                    h = snellSurfacePoint(planeDepthA, uv, s);
+                  }
+                  handPosition = h.position;
+                  handValid = h.valid;
+                  SnellDepthSurface c = snellDepthSurfaceComplete(s);
+                  SnellSurfacePoint p;
+                  if (sceneB) {
+                    p = snellSurfacePoint(planeDepthB, uv, c);
+                  } else {
+                    p = snellSurfacePoint(planeDepthA, uv, c);
+                  }
+                  position = p.position;
+                  valid = p.valid;
+                  perspective = c.perspective;
+                  linearizable = c.linearizable;
+                  det = c.perspectiveDet;
+                  nearOverFar = c.nearOverFar;
+                  farLimit = c.depthFarLimit;)
 
 // One fetch and a linearization (a division: GL may use x * (1/y), 2.5 ulp).
 // lod > 0 reads the pyramid.

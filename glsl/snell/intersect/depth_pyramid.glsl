@@ -60,7 +60,7 @@ SNELL_FN vec4 snellDepthPyramidBase(float depthValue, SNELL_IN(SnellDepthSurface
   if (!SNELL_FINITE(depthValue) || depthValue == s.emptyDepth) {
     return empty;
   }
-  float v = snellLinearizeDepth(depthValue, s.zNear, s.zFar, s.convention);
+  float v = snellSurfaceLinearDepth(s, depthValue);
   if (!(v > 0.0f)) {
     return empty;
   }

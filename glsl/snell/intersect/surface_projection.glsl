@@ -101,8 +101,8 @@ SNELL_FN_INLINE SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface)
     return r;
   }
 #endif
-  if (!SNELL_FINITE(uv.x) || !SNELL_FINITE(uv.y) || !SNELL_FINITE(viewZ) ||
-      !(viewZ <= -SNELL_FLT_MIN)) {
+  // A non-finite uv makes nx or ny non-finite: tested below.
+  if (!SNELL_FINITE(viewZ) || !(viewZ <= -SNELL_FLT_MIN)) {
     return r;
   }
   vec4 c0 = SNELL_CAMERA_MAT_COLUMN(s.clipFromView, 0);
@@ -119,14 +119,11 @@ SNELL_FN_INLINE SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface)
   // c3.x and c3.w are +0), added as +0.
   float b0 = -(viewZ * (c2.x + nx) + 0.0f);
   float b1 = -(viewZ * (c2.y + ny) + 0.0f);
-  float det = c0.x * c1.y;
-  if (!SNELL_FINITE(det) || !(abs(det) >= SNELL_FLT_MIN)) {
-    return r;
-  }
   // The zero coefficients a01, a10 stay as products with +0: they decide the
-  // sign of an exactly zero result as in the general path.
-  float x = (b0 * c1.y - 0.0f * b1) / det;
-  float y = (c0.x * b1 - b0 * 0.0f) / det;
+  // sign of an exactly zero result as in the general path. perspectiveDet is
+  // c0.x c1.y validated once (0 when unusable: x and y are then not finite).
+  float x = (b0 * c1.y - 0.0f * b1) / s.perspectiveDet;
+  float y = (c0.x * b1 - b0 * 0.0f) / s.perspectiveDet;
   if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
     return r;
   }

@@ -1,0 +1,198 @@
+// glsl/snell/intersect/depth_surface.glsl: the surface's derived fields
+// (snellDepthSurfaceComplete) against values computed here from the source
+// fields, snellSurfaceLinearDepth against snellLinearizeDepth bit for bit (the
+// reference camera_depth_test.cpp checks against GLM's projection), and
+// hand-filled surfaces whose derived fields disagree with their source fields.
+#include <gtest/gtest.h>
+
+#include <snell/camera.hpp>
+#include <snell/intersect.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <utility>
+
+namespace {
+
+using namespace snell;
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+bool infinite(int convention) {
+  return convention == SNELL_DEPTH_INFINITE_GL || convention == SNELL_DEPTH_INFINITE_REVERSED;
+}
+
+// Depth values a buffer can hold and the ones it should not: the edges, values
+// just inside them, denormals, out of range and non-finite.
+float randomDepth(std::mt19937& rng) {
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::uniform_int_distribution<int> e(1, 140);
+  const float hostile[] = {kNaN, kInf, -kInf, 0.0f, -0.0f, 1.0f, 1e-45f, 1e-40f, FLT_MIN, -1e-40f, 2.0f, -0.5f};
+  const float k = u(rng);
+  if (k < 0.10f) return hostile[static_cast<std::size_t>(e(rng)) % 12];
+  if (k < 0.20f) return std::ldexp(1.0f, -e(rng));         // towards 0 (reversed far plane), into denormals
+  if (k < 0.30f) return 1.0f - std::ldexp(1.0f, -e(rng) % 25);  // towards 1 (the GL far plane)
+  return u(rng);
+}
+
+TEST(DepthSurface, SurfaceLinearDepthIsLinearizeDepthBitForBit) {
+  std::mt19937 rng(617);
+  std::uniform_real_distribution<float> logNear(-3.0f, 1.0f), logRatio(0.0f, 6.0f), u(0.0f, 1.0f);
+  const float hostileRange[] = {kNaN, kInf, -kInf, 0.0f, -0.0f, -1.0f, 1e-40f, 3e38f};
+  const glm::mat4 P = glm::perspective(1.0f, 1.3f, 0.1f, 100.0f);
+  long compared = 0, positive = 0;
+  for (int i = 0; i < 20000; ++i) {
+    float n = std::pow(10.0f, logNear(rng)), f = n * std::pow(10.0f, logRatio(rng));
+    if (u(rng) < 0.05f) n = hostileRange[i % 8];
+    if (u(rng) < 0.05f) f = hostileRange[(i / 8) % 8];
+    if (u(rng) < 0.02f) f = n;
+    for (int conv = -1; conv <= SNELL_DEPTH_CONVENTION_COUNT; ++conv) {
+      const SnellDepthSurface s = snellDepthSurface(P, n, f, conv, 0.0f);
+      for (int k = 0; k < 4; ++k) {
+        const float d = randomDepth(rng);
+        const float got = snellSurfaceLinearDepth(s, d), want = snellLinearizeDepth(d, n, f, conv);
+        ASSERT_TRUE(sameBits(got, want)) << "conv " << conv << " n " << n << " f " << f << " d " << d << ": " << got
+                                         << " vs " << want;
+        ++compared;
+        positive += got > 0.0f;
+      }
+    }
+  }
+  EXPECT_GT(positive, compared / 2);  // most inputs linearize: the comparison is not of zeros
+}
+
+// The derived fields from the source fields, computed here independently.
+TEST(DepthSurface, CompleteDerivesEveryFieldFromTheSourceFields) {
+  std::mt19937 rng(618);
+  std::uniform_real_distribution<float> fovy(0.2f, 2.8f), aspect(0.3f, 3.0f), logNear(-2.0f, 0.5f), u(0.0f, 1.0f);
+  for (int i = 0; i < 4000; ++i) {
+    const float n = std::pow(10.0f, logNear(rng)), f = n * 1000.0f;
+    const int conv = i % SNELL_DEPTH_CONVENTION_COUNT;
+    glm::mat4 m = glm::perspective(fovy(rng), aspect(rng), n, f);
+    const bool sheared = i % 3 == 0;
+    if (sheared) m[1][0] = 0.01f + u(rng);
+    // Filled in field by field, the derived fields stale or hostile.
+    SnellDepthSurface s{};
+    s.clipFromView = m;
+    s.zNear = n;
+    s.zFar = f;
+    s.convention = conv;
+    s.emptyDepth = 0.5f;
+    s.lod = 2;
+    s.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+    s.closed = false;
+    s.perspective = !sheared;
+    s.perspectiveDet = kNaN;
+    s.linearizable = false;
+    s.depthReversed = true;
+    s.nearOverFar = -kInf;
+    s.depthFarBelow = 0.7f;
+    s.depthFarLimit = kNaN;
+    const SnellDepthSurface c = snellDepthSurfaceComplete(s);
+    EXPECT_EQ(c.perspective, !sheared) << i;
+    EXPECT_TRUE(sameBits(c.perspectiveDet, sheared ? 0.0f : m[0][0] * m[1][1])) << i;
+    EXPECT_TRUE(c.linearizable) << i;
+    EXPECT_EQ(c.depthReversed, conv == SNELL_DEPTH_REVERSED || conv == SNELL_DEPTH_INFINITE_REVERSED) << i;
+    EXPECT_TRUE(sameBits(c.nearOverFar, infinite(conv) ? 0.0f : n / f)) << i;
+    EXPECT_TRUE(sameBits(c.depthFarBelow, conv == SNELL_DEPTH_INFINITE_REVERSED ? FLT_MIN : 0.0f)) << i;
+    EXPECT_TRUE(sameBits(c.depthFarLimit, infinite(conv) ? FLT_MAX : f)) << i;
+    // The source and per-draw fields are kept.
+    EXPECT_EQ(c.clipFromView, m);
+    EXPECT_TRUE(c.zNear == n && c.zFar == f && c.convention == conv && c.emptyDepth == 0.5f && c.lod == 2 &&
+                c.depthFilter == SNELL_DEPTH_FILTER_BILINEAR && !c.closed);
+    // The constructor is the same completion.
+    const SnellDepthSurface k = snellDepthSurface(m, n, f, conv, 0.5f);
+    EXPECT_TRUE(k.perspective == c.perspective && sameBits(k.perspectiveDet, c.perspectiveDet) &&
+                k.linearizable == c.linearizable && k.depthReversed == c.depthReversed &&
+                sameBits(k.nearOverFar, c.nearOverFar) && sameBits(k.depthFarBelow, c.depthFarBelow) &&
+                sameBits(k.depthFarLimit, c.depthFarLimit))
+        << i;
+  }
+}
+
+// What makes a surface unusable: every read is invalid, every strategy misses.
+TEST(DepthSurface, InvalidSourceFieldsGiveAnUnreadableSurface) {
+  const glm::mat4 P = glm::perspective(1.0f, 1.0f, 0.1f, 100.0f);
+  struct Range {
+    float n, f;
+    int conv;
+  };
+  const Range bad[] = {{0.0f, 100.0f, SNELL_DEPTH_GL},   {-0.1f, 100.0f, SNELL_DEPTH_GL}, {kNaN, 100.0f, SNELL_DEPTH_GL},
+                       {0.1f, 0.1f, SNELL_DEPTH_GL},     {0.1f, 0.05f, SNELL_DEPTH_REVERSED},
+                       {0.1f, kInf, SNELL_DEPTH_ZERO_ONE}, {1e-40f, 10.0f, SNELL_DEPTH_INFINITE_GL},
+                       {0.1f, 100.0f, -1},               {0.1f, 100.0f, SNELL_DEPTH_CONVENTION_COUNT}};
+  const Texture2D depth(Image(4, 4, glm::vec4(0.5f)));
+  for (const Range& r : bad) {
+    const SnellDepthSurface s = snellDepthSurface(P, r.n, r.f, r.conv, 0.0f);
+    EXPECT_FALSE(s.linearizable) << r.n << " " << r.f << " " << r.conv;
+    EXPECT_EQ(snellSurfaceLinearDepth(s, 0.5f), 0.0f);
+    EXPECT_FALSE(snellSampleSurface(depth, glm::vec2(0.5f), s).valid);
+    const SnellHit h = snellIntersectSingleSample(glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(0.0f, 0.0f, -1.0f), depth, s);
+    EXPECT_FALSE(h.valid);
+  }
+  // A degenerate perspective (a zero or non-finite focal term): no reconstruction.
+  for (float a : {0.0f, 1e-39f, kInf, kNaN}) {  // a * b < FLT_MIN, or not finite
+    glm::mat4 m = P;
+    m[0][0] = a;
+    const SnellDepthSurface s = snellDepthSurface(m, 0.1f, 100.0f, SNELL_DEPTH_GL, 0.0f);
+    EXPECT_EQ(s.perspectiveDet, 0.0f) << a;
+    EXPECT_FALSE(snellSurfaceUvZToView(s, glm::vec2(0.3f, 0.6f), -2.0f).valid) << a;
+  }
+}
+
+// A surface whose derived fields disagree with its source fields is read
+// through its derived fields: finite, flagged outputs for any mix, never NaN.
+TEST(DepthSurface, InconsistentHandFilledSurfacesGiveFiniteResults) {
+  std::mt19937 rng(619);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f), uv(-0.2f, 1.2f), span(-3.0f, 3.0f);
+  const float hostile[] = {kNaN, kInf, -kInf, 0.0f, -0.0f, -1.0f, 1e-40f, FLT_MIN, 3e38f, -3e38f, 0.5f, 100.0f};
+  auto pick = [&]() { return hostile[static_cast<std::size_t>(u(rng) * 12.0f) % 12]; };
+  Image img(16, 16);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) img.at(x, y) = glm::vec4((x + y) % 5 == 0 ? 0.0f : 0.2f + 0.04f * static_cast<float>(x));
+  const Texture2D depth(std::move(img));
+  const glm::mat4 P = glm::perspective(1.0f, 1.0f, 0.1f, 100.0f);
+  auto finite = [](glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+  int valid = 0;
+  for (int i = 0; i < 50000; ++i) {
+    SnellDepthSurface s = snellDepthSurface(P, 0.1f, 100.0f, i % SNELL_DEPTH_CONVENTION_COUNT, 0.0f);
+    if (u(rng) < 0.3f) s.clipFromView[1][0] = span(rng);  // the flag now disagrees with the matrix
+    if (u(rng) < 0.2f) s.clipFromView[0][0] = pick();
+    if (u(rng) < 0.3f) s.perspective = !s.perspective;
+    if (u(rng) < 0.3f) s.perspectiveDet = pick();
+    if (u(rng) < 0.3f) s.linearizable = !s.linearizable;
+    if (u(rng) < 0.3f) s.depthReversed = !s.depthReversed;
+    if (u(rng) < 0.3f) s.nearOverFar = pick();
+    if (u(rng) < 0.3f) s.depthFarBelow = pick();
+    if (u(rng) < 0.3f) s.depthFarLimit = pick();
+    if (u(rng) < 0.3f) s.zNear = pick();
+    if (u(rng) < 0.2f) s.zFar = pick();
+    const float d = randomDepth(rng);
+    const float v = snellSurfaceLinearDepth(s, d);
+    ASSERT_TRUE(v == 0.0f || (v > 0.0f && v <= FLT_MAX)) << i << " " << v;
+    const glm::vec2 at(uv(rng), uv(rng));
+    const SnellSurfaceSample x = snellSampleSurface(depth, at, s);
+    ASSERT_TRUE(!x.valid ? x.viewZ == 0.0f : x.viewZ < 0.0f) << i;
+    const SnellSurfacePoint p = snellSurfacePoint(depth, at, s);
+    ASSERT_TRUE(finite(p.position)) << i;
+    const glm::vec3 o(span(rng) * 0.1f, span(rng) * 0.1f, -0.5f), dir(span(rng) * 0.2f, span(rng) * 0.2f, -1.0f);
+    const SnellHit h = snellIntersectSingleSample(o, dir, depth, s);
+    ASSERT_TRUE(finite(h.position) && std::isfinite(h.uv.x) && std::isfinite(h.uv.y)) << i;
+    const SnellHit c = snellConservativeBinarySearch(o, dir, depth, s, -0.2f, -20.0f, 5);
+    ASSERT_TRUE(finite(c.position) && std::isfinite(c.uv.x) && std::isfinite(c.uv.y)) << i;
+    const SnellHit m = snellLinearMarch(o, dir, depth, s, 20.0f, 16, 2);
+    ASSERT_TRUE(finite(m.position) && std::isfinite(m.uv.x) && std::isfinite(m.uv.y)) << i;
+    valid += h.valid + c.valid + m.valid;
+  }
+  EXPECT_GT(valid, 1000);  // the reads are exercised, not all refused
+}
+
+}  // namespace
