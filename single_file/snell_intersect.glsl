@@ -213,9 +213,12 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
      SnellSurfaceSample x = snellSampleSurface(depthTex, uv, s);   // x.viewZ < 0 when x.valid
      s = snellDepthSurfaceComplete(s);   // after filling or changing clipFromView, zNear, zFar, convention
      float v = snellSurfaceLinearDepth(s, depthValue);   // snellLinearizeDepth with s's validated terms
-  The surface is per draw: build it once (in C++ with the same function, as a
-  uniform block or constants, or once per invocation) and pass it to every
-  strategy; the per-step code reads its derived fields.
+  The surface is per draw: build it once per invocation and pass it to every
+  strategy; the per-step code reads its derived fields. In a shader, build it
+  from the camera uniforms with the convention, and any lod, depthFilter and
+  closed assignments, as constants: the compiler then folds the branches on
+  them (on llvmpipe a single sample costs 288 instructions per pixel so, 450
+  with the whole surface read from a uniform: benchmarks/kernels).
   clipFromView  the projection the depth texture was rendered with
   zNear, zFar   its clip distances; convention: SNELL_DEPTH_* (camera/conventions.glsl)
   emptyDepth    the texel value meaning "no surface here": the clear value (0.0f for
@@ -2453,6 +2456,12 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
   }
   int n = clamp(steps, 0, SNELL_CBS_MAX_STEPS);
   float dz = r.e.z - r.s.z;
+  // snellTexRayUv with its per-step guards left out, the same results: every
+  // step's z lies between r.s.z and r.e.z (both <= -SNELL_FLT_MIN), so alpha
+  // is in [0, 1] up to rounding (never NaN, no clamp needed) and uv lies
+  // between the segment's finite ends; its k2 == 0 case (k2 underflowed)
+  // gives alpha 0 through k12 = 0; the product k1 k2 is taken once.
+  float k12 = r.k2 == 0.0f ? 0.0f : r.k1 * r.k2;
   float beta = 0.0f;
   float dBeta = 1.0f;
   float zHit = r.s.z;
@@ -2466,7 +2475,7 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
     dBeta = dBeta * 0.5f;
     float b = beta + dBeta;
     float z = r.s.z + b * dz;
-    vec2 uv = snellTexRayUv(r, z);
+    vec2 uv = r.ts + (((r.s.z - z) / z) * k12) * r.dt;
     SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
     fetches = fetches + 1;
     if (x.valid && z > x.viewZ) {

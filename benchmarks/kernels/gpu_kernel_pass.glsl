@@ -4,9 +4,10 @@
 // poster's: no far start), 2 the same with the far start (snell's default, the
 // lab's), 3 the kernel single sample, 4 the kernel normal plane (1 it.), 5 and
 // 6: 0 and 1 with SNELL_PERSPECTIVE_ONLY 1, 7 snell CBS-5, 8 the kernel CBS-5,
-// 9 snell linear march (32 steps, 4 refinements), 10 the kernel linear march.
-// snell reads its surface from a uniform built once per draw by the C++
-// snellDepthSurface, as the kernels read kCam (the per-draw terms).
+// 9 snell linear march (32 steps, 4 refinements), 10 the kernel linear march,
+// 11: 0 with the surface read from a uniform (built once by the C++
+// snellDepthSurface) instead of built in the shader from constants and the
+// kClipFromView and kClipRange uniforms.
 #if VARIANT == 5 || VARIANT == 6
 #  define SNELL_PERSPECTIVE_ONLY 1
 #endif
@@ -16,8 +17,12 @@
 layout(binding = 2) uniform sampler2D kPyramid;
 layout(binding = 3) uniform sampler2D kRayOrigin;  // xyz, one ray per texel, row-major
 layout(binding = 4) uniform sampler2D kRayDir;
-uniform SnellDepthSurface kSurface;
+uniform mat4 kClipFromView;
+uniform vec2 kClipRange;  // zNear, zFar
 uniform int kRayCount;
+#if VARIANT == 11
+uniform SnellDepthSurface kSurface;
+#endif
 
 layout(location = 0) out vec4 outPosition;  // xyz position
 layout(location = 1) out vec4 outHit;       // uv, valid, fetches
@@ -28,7 +33,10 @@ void main() {
   ivec2 at = ivec2(i % width, i / width);
   vec3 o = texelFetch(kRayOrigin, at, 0).xyz;
   vec3 d = texelFetch(kRayDir, at, 0).xyz;
-#if VARIANT == 0 || VARIANT == 5
+#if VARIANT != 11
+  SnellDepthSurface kSurface = snellDepthSurface(kClipFromView, kClipRange.x, kClipRange.y, SNELL_DEPTH_GL, 0.0);
+#endif
+#if VARIANT == 0 || VARIANT == 5 || VARIANT == 11
   SnellHit h = snellIntersectSingleSample(o, d, kDepth, kSurface);
 #elif VARIANT == 1 || VARIANT == 2 || VARIANT == 6
   SnellHit h = snellIntersectPlaneNormal(o, d, kDepth, kNormal, kPyramid, kSurface, 0.0, 1, VARIANT == 2);

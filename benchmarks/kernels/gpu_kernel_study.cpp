@@ -29,7 +29,7 @@ namespace {
 using namespace snell::gpu;
 
 constexpr int kSize = 512;
-constexpr int kVariants = 11;
+constexpr int kVariants = 12;
 const char* const kNames[kVariants] = {"snell single sample",
                                        "snell normal plane 1 it.",
                                        "snell normal plane 1 it. + far start",
@@ -40,15 +40,16 @@ const char* const kNames[kVariants] = {"snell single sample",
                                        "snell CBS-5",
                                        "kernel CBS-5",
                                        "snell linear march 32x4",
-                                       "kernel linear march 32x4"};
+                                       "kernel linear march 32x4",
+                                       "snell single sample, the surface a uniform"};
 
 // The kernel each variant is measured against (-1: a kernel itself), and the
 // single sample its ratio is taken to (the same build).
-const int kTwin[kVariants] = {3, 4, 4, -1, -1, 3, 4, 8, -1, 10, -1};
-const int kSingle[kVariants] = {0, 0, 0, 3, 3, 5, 5, 0, 3, 0, 3};
+const int kTwin[kVariants] = {3, 4, 4, -1, -1, 3, 4, 8, -1, 10, -1, 3};
+const int kSingle[kVariants] = {0, 0, 0, 3, 3, 5, 5, 0, 3, 0, 3, 0};
 
-// snell's surface as the uniform kSurface, built once by the C++ mirror. A
-// field the variant does not read has no location (-1): GL ignores it.
+// snell's surface as the uniform kSurface (variant 11), built once by the C++
+// mirror. A field the variant does not read has no location (-1): GL ignores it.
 void setSurface(const GlApi& gl, GLuint id, const snell::SnellDepthSurface& s) {
   auto loc = [&](const char* field) { return gl.GetUniformLocation(id, (std::string("kSurface.") + field).c_str()); };
   gl.ProgramUniformMatrix4fv(id, loc("clipFromView"), 1, GL_FALSE, &s.clipFromView[0][0]);
@@ -114,6 +115,9 @@ struct Study {
       const glm::vec4 cam(k.a, k.b, k.det, k.zNear);
       gl.ProgramUniform4fv(id, loc("kCam"), 1, &cam[0]);
       gl.ProgramUniform1f(id, loc("kNearOverFar"), k.nearOverFar);
+      gl.ProgramUniformMatrix4fv(id, loc("kClipFromView"), 1, GL_FALSE, &sc.P[0][0]);
+      const glm::vec2 range(sc.surface.zNear, sc.surface.zFar);
+      gl.ProgramUniform2fv(id, loc("kClipRange"), 1, &range[0]);
       setSurface(gl, id, sc.surface);
       gl.ProgramUniform1i(id, loc("kRayCount"), static_cast<int>(sc.rays.size()));
       checkGl(gl, "uniforms of variant " + std::to_string(v));
@@ -155,7 +159,8 @@ double drawTimed(Study& s, int v) {
     case 7: return drawVariant<7>(s);
     case 8: return drawVariant<8>(s);
     case 9: return drawVariant<9>(s);
-    default: return drawVariant<10>(s);
+    case 10: return drawVariant<10>(s);
+    default: return drawVariant<11>(s);
   }
 }
 
@@ -195,7 +200,7 @@ int main(int argc, char** argv) {
       std::printf("variant %d single %d twin %d: %s\n", v, kSingle[v], kTwin[v], kNames[v]);
     const int rays = static_cast<int>(s.sc.rays.size());
     bool allSame = true;
-    for (const auto& [kernel, snellV] : {std::pair<int, int>{3, 0}, {4, 1}, {3, 5}, {4, 6}, {8, 7}, {10, 9}}) {
+    for (const auto& [kernel, snellV] : {std::pair<int, int>{3, 0}, {4, 1}, {3, 5}, {4, 6}, {8, 7}, {10, 9}, {3, 11}}) {
       float diff = 0.0f;
       const int same = identical(out[static_cast<std::size_t>(kernel)], out[static_cast<std::size_t>(snellV)], rays, diff);
       std::printf("%s vs %s: %d/%d rays with identical bits (position, uv, valid, fetches); max |position diff| %.3g\n",

@@ -76,6 +76,12 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
   }
   int n = clamp(steps, 0, SNELL_CBS_MAX_STEPS);
   float dz = r.e.z - r.s.z;
+  // snellTexRayUv with its per-step guards left out, the same results: every
+  // step's z lies between r.s.z and r.e.z (both <= -SNELL_FLT_MIN), so alpha
+  // is in [0, 1] up to rounding (never NaN, no clamp needed) and uv lies
+  // between the segment's finite ends; its k2 == 0 case (k2 underflowed)
+  // gives alpha 0 through k12 = 0; the product k1 k2 is taken once.
+  float k12 = r.k2 == 0.0f ? 0.0f : r.k1 * r.k2;
   float beta = 0.0f;
   float dBeta = 1.0f;
   float zHit = r.s.z;
@@ -89,7 +95,7 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
     dBeta = dBeta * 0.5f;
     float b = beta + dBeta;
     float z = r.s.z + b * dz;
-    vec2 uv = snellTexRayUv(r, z);
+    vec2 uv = r.ts + (((r.s.z - z) / z) * k12) * r.dt;
     SnellSurfaceSample x = snellSampleSurface(depthTex, uv, surface);
     fetches = fetches + 1;
     if (x.valid && z > x.viewZ) {

@@ -5,9 +5,12 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
      SnellSurfaceSample x = snellSampleSurface(depthTex, uv, s);   // x.viewZ < 0 when x.valid
      s = snellDepthSurfaceComplete(s);   // after filling or changing clipFromView, zNear, zFar, convention
      float v = snellSurfaceLinearDepth(s, depthValue);   // snellLinearizeDepth with s's validated terms
-  The surface is per draw: build it once (in C++ with the same function, as a
-  uniform block or constants, or once per invocation) and pass it to every
-  strategy; the per-step code reads its derived fields.
+  The surface is per draw: build it once per invocation and pass it to every
+  strategy; the per-step code reads its derived fields. In a shader, build it
+  from the camera uniforms with the convention, and any lod, depthFilter and
+  closed assignments, as constants: the compiler then folds the branches on
+  them (on llvmpipe a single sample costs 288 instructions per pixel so, 450
+  with the whole surface read from a uniform: benchmarks/kernels).
   clipFromView  the projection the depth texture was rendered with
   zNear, zFar   its clip distances; convention: SNELL_DEPTH_* (camera/conventions.glsl)
   emptyDepth    the texel value meaning "no surface here": the clear value (0.0f for
