@@ -141,8 +141,8 @@ contract: macros only.
 
 /* SNELL_IN(T) name: a read-only parameter of struct type T. GLSL and HLSL pass
    it by value; C++ by const reference, because a call the compiler does not
-   inline would otherwise copy the whole struct (a SnellDepthSurface is 92
-   bytes: 8 % of a plane ray's instructions). */
+   inline would otherwise copy the whole struct (a SnellDepthSurface is 112
+   bytes; at 92 the copies were 8 % of a plane ray's instructions). */
 #ifndef SNELL_IN
 #  if defined(SNELL_LANG_CXX)
 #    define SNELL_IN(T) const T&
@@ -217,7 +217,7 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
   strategy; the per-step code reads its derived fields. In a shader, build it
   from the camera uniforms with the convention, and any lod, depthFilter and
   closed assignments, as constants: the compiler then folds the branches on
-  them (on llvmpipe a single sample costs 288 instructions per pixel so, 450
+  them (on llvmpipe a single sample costs 289 instructions per pixel so, 451
   with the whole surface read from a uniform: benchmarks/kernels).
   clipFromView  the projection the depth texture was rendered with
   zNear, zFar   its clip distances; convention: SNELL_DEPTH_* (camera/conventions.glsl)
@@ -267,22 +267,29 @@ contract (snellDepthSurfaceComplete):
   - returns s with every derived field computed from its clipFromView, zNear,
     zFar and convention (snellDepthSurface's result for them); lod,
     depthFilter, closed and emptyDepth are kept. snellDepthSurface calls it.
-  - an invalid clipFromView or depth range gives a surface on which every read
-    and reconstruction is invalid (linearizable false, perspectiveDet 0):
-    every strategy misses, with finite outputs.
+  - an invalid depth range or convention gives a surface on which every depth
+    read is invalid (linearizable false): every strategy misses, with finite
+    outputs. A perspective-shaped clipFromView whose a b is not finite or
+    below SNELL_FLT_MIN gives perspectiveDet 0: every reconstruction is
+    invalid. (Any other matrix goes through the general path, which tests its
+    own terms.)
   - a surface whose derived fields disagree with its source fields (filled in
-    by hand, or changed without this call) is read through its derived
-    fields: results are finite and flagged, the same on every runtime, but
-    are those of the surface the derived fields describe. Any field may be
-    hostile (NaN, +-Inf, zero or negative ranges, a perspective flag on a
-    general matrix): never a NaN output, never a crash.
+    by hand, or changed without this call) is read through a mix of both (the
+    derived terms, zNear for the clamp, clipFromView for the projection): its
+    results are finite (never NaN or +-Inf) and flagged, and nothing more is
+    promised (a hand-set denormal term may be flushed to 0 on a GPU and not
+    in C++). Any field may be hostile (NaN, +-Inf, zero or negative ranges, a
+    perspective flag on a general matrix): never a NaN output, never a crash.
+    In C++ start such a surface value-initialized (SnellDepthSurface s{};):
+    an uninitialized bool is undefined behaviour before any of this.
 contract (snellSurfaceLinearDepth):
   - for a complete surface, exactly snellLinearizeDepth(depthValue, s.zNear,
     s.zFar, s.convention) (bit for bit: the same operations, with the
     conventions' branches folded into selects and zNear / zFar precomputed);
     0.0f when s.linearizable is false or depthValue is NaN.
   - for an inconsistent surface: 0.0f or a finite value > 0 (never NaN or
-    +-Inf), the same on every runtime (no clamp with reversed or NaN bounds).
+    +-Inf; no clamp with reversed or NaN bounds, whose result GLSL leaves
+    undefined).
 contract (snellSampleSurface):
   - NEAREST: reads the texel containing uv (no filtering: filtering depth
     invents surfaces between foreground and background, Oliveira & Brauwers
@@ -601,8 +608,8 @@ SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, flo
    selects: GL and ZERO_ONE n / ((1 - d) + d (n / f)), REVERSED n / (d + (1 - d)
    (n / f)); the infinite ones add d 0 or (1 - d) 0 = +0 to the same first term
    (exact), and their far plane (d = 1 INFINITE_GL, d < SNELL_FLT_MIN
-   INFINITE_REVERSED) divides by 0: +Inf, clamped to SNELL_FLT_MAX as the
-   reference returns it. Equations in camera/linearize_depth.glsl. */
+   INFINITE_REVERSED) has a zero denominator: SNELL_FLT_MAX, as the reference
+   returns it. Equations in camera/linearize_depth.glsl. */
 SNELL_FN_INLINE float snellSurfaceLinearDepth(SNELL_IN(SnellDepthSurface) s, float depthValue) {
   if (!s.linearizable || isnan(depthValue)) {
     return 0.0f;
@@ -614,7 +621,11 @@ SNELL_FN_INLINE float snellSurfaceLinearDepth(SNELL_IN(SnellDepthSurface) s, flo
   if (d < s.depthFarBelow) {
     a = 0.0f;
   }
-  float v = s.zNear / (a + b * s.nearOverFar);
+  // den > 0 for a complete surface but at the infinite conventions' far plane
+  // (and where n / f underflows), whose distance is the clamp's top:
+  // SNELL_FLT_MAX there, as the reference returns it, without dividing by 0.
+  float den = a + b * s.nearOverFar;
+  float v = den > 0.0f ? s.zNear / den : SNELL_FLT_MAX;
   // A NaN (only from inconsistent terms) stops here: GPU compilers turn the
   // selects below into fmax / fmin, which would drop it.
   if (!(v > 0.0f)) {
@@ -622,8 +633,8 @@ SNELL_FN_INLINE float snellSurfaceLinearDepth(SNELL_IN(SnellDepthSurface) s, flo
   }
   // clamp(v, zNear, depthFarLimit) as two selects: for a complete surface the
   // same value (zNear <= depthFarLimit); for an inconsistent one (reversed or
-  // NaN bounds, where clamp is undefined) the same on every runtime, and the
-  // last test keeps only a finite result > 0.
+  // NaN bounds, where clamp is undefined) defined, and the last test keeps
+  // only a finite result > 0.
   v = v < s.zNear ? s.zNear : v;
   v = v > s.depthFarLimit ? s.depthFarLimit : v;
   return v > 0.0f && v <= SNELL_FLT_MAX ? v : 0.0f;
@@ -708,8 +719,10 @@ contract:
     an exactly zero ndcZ; with +0 zero entries, as glm::perspective and
     snellPerspective write them, the reconstruction is bit-exact. GPU
     compilers may fold the kept zero products; the parity tolerances cover it.
-  - the flag is the surface's promise: set it false after giving clipFromView
-    another shape.
+  - the flag is the surface's promise: call snellDepthSurfaceComplete after
+    giving clipFromView another shape (it recomputes the flag and
+    perspectiveDet, the reconstruction's validated determinant: 0 makes every
+    reconstruction invalid).
 options:
   SNELL_PERSPECTIVE_ONLY  0 (default): a surface whose perspective flag is
                           false takes the general path above. 1: the general
@@ -1076,7 +1089,10 @@ SNELL_FN_INLINE SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface)
   float b1 = -(viewZ * (c2.y + ny) + 0.0f);
   // The zero coefficients a01, a10 stay as products with +0: they decide the
   // sign of an exactly zero result as in the general path. perspectiveDet is
-  // c0.x c1.y validated once (0 when unusable: x and y are then not finite).
+  // c0.x c1.y validated once, 0 when unusable.
+  if (s.perspectiveDet == 0.0f) {
+    return r;
+  }
   float x = (b0 * c1.y - 0.0f * b1) / s.perspectiveDet;
   float y = (c0.x * b1 - b0 * 0.0f) / s.perspectiveDet;
   if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
@@ -2114,9 +2130,9 @@ texel layout (RGBA32F):
   convention (reversed Z stores the nearest point as the LARGEST depth value).
 contract:
   - snellDepthPyramidBase: invalid when depthValue == surface.emptyDepth, NaN,
-    infinite, or does not linearize (snellLinearizeDepth <= 0: bad zNear/zFar/convention):
+    infinite, or does not linearize (snellSurfaceLinearDepth <= 0: bad zNear/zFar/convention):
     vec4(emptyDepth, 0, 0, 0). Otherwise vec4(depthValue, v, v, 1), v =
-    snellLinearizeDepth(depthValue) > 0.
+    snellSurfaceLinearDepth(surface, depthValue) > 0 (snellLinearizeDepth's value).
   - snellDepthMinMaxReduce: level L has size (W, H) = SNELL_TEXTURE_SIZE(tex, L);
     level L+1 has (max(1, W/2), max(1, H/2)), and px must lie in it. The children
     are columns 2px.x .. 2px.x+1 (and 2px.x+2 for the last column when W is odd:

@@ -312,7 +312,8 @@ SNELL_FN_INLINE float snellSurfaceLinearDepth(SNELL_IN(SnellDepthSurface) s, flo
   if (d < s.depthFarBelow) {
     a = 0.0f;
   }
-  float v = s.zNear / (a + b * s.nearOverFar);
+  float den = a + b * s.nearOverFar;
+  float v = den > 0.0f ? s.zNear / den : SNELL_FLT_MAX;
   if (!(v > 0.0f)) {
     return 0.0f;
   }
@@ -611,6 +612,9 @@ SNELL_FN_INLINE SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface)
   }
   float b0 = -(viewZ * (c2.x + nx) + 0.0f);
   float b1 = -(viewZ * (c2.y + ny) + 0.0f);
+  if (s.perspectiveDet == 0.0f) {
+    return r;
+  }
   float x = (b0 * c1.y - 0.0f * b1) / s.perspectiveDet;
   float y = (c0.x * b1 - b0 * 0.0f) / s.perspectiveDet;
   if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {

@@ -425,8 +425,8 @@ SNELL_PARITY_CASE(snellDepthSurface, surfaceInputs,
                   zeroSum0 = c0.y + c0.z + c0.w + c1.x + c1.z + c1.w;
                   zeroSum1 = c2.x + c2.y + c3.x + c3.y + c3.w;)
 
-// The surface's linearization against the reference it must equal (one
-// division each).
+// The surface's linearization and the reference it equals, each against C++
+// (one division each; the unit test DepthSurface.* compares the two bit for bit).
 SNELL_PARITY_CASE(snellSurfaceLinearDepth, surfaceLinearDepthInputs,
                   (float, depthValue, 0)(float, zNear, 1)(float, zFar, 2)(int, convention, 3),
                   (float, distance, 0, within(1e-6f, 1e-5f))(float, reference, 1, within(1e-6f, 1e-5f)),

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <snell/camera.hpp>
+#include <snell/depth_pyramid.hpp>
 #include <snell/intersect.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -154,12 +155,16 @@ TEST(DepthSurface, InconsistentHandFilledSurfacesGiveFiniteResults) {
   std::mt19937 rng(619);
   std::uniform_real_distribution<float> u(0.0f, 1.0f), uv(-0.2f, 1.2f), span(-3.0f, 3.0f);
   const float hostile[] = {kNaN, kInf, -kInf, 0.0f, -0.0f, -1.0f, 1e-40f, FLT_MIN, 3e38f, -3e38f, 0.5f, 100.0f};
+  const glm::mat4 P = glm::perspective(1.0f, 1.0f, 0.1f, 100.0f);
   auto pick = [&]() { return hostile[static_cast<std::size_t>(u(rng) * 12.0f) % 12]; };
   Image img(16, 16);
   for (int y = 0; y < 16; ++y)
     for (int x = 0; x < 16; ++x) img.at(x, y) = glm::vec4((x + y) % 5 == 0 ? 0.0f : 0.2f + 0.04f * static_cast<float>(x));
   const Texture2D depth(std::move(img));
-  const glm::mat4 P = glm::perspective(1.0f, 1.0f, 0.1f, 100.0f);
+  Image nimg(16, 16, glm::vec4(0.0f, 0.3f, 1.0f, 0.0f));
+  nimg.at(3, 4) = glm::vec4(0.0f);  // a zero normal: the facing fallback
+  const Texture2D normal(std::move(nimg), Filter::Linear);
+  const Texture2D pyramid = snellBuildDepthPyramid(depth, snellDepthSurface(P, 0.1f, 100.0f, SNELL_DEPTH_GL, 0.0f));
   auto finite = [](glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
   int valid = 0;
   for (int i = 0; i < 50000; ++i) {
@@ -190,7 +195,12 @@ TEST(DepthSurface, InconsistentHandFilledSurfacesGiveFiniteResults) {
     ASSERT_TRUE(finite(c.position) && std::isfinite(c.uv.x) && std::isfinite(c.uv.y)) << i;
     const SnellHit m = snellLinearMarch(o, dir, depth, s, 20.0f, 16, 2);
     ASSERT_TRUE(finite(m.position) && std::isfinite(m.uv.x) && std::isfinite(m.uv.y)) << i;
-    valid += h.valid + c.valid + m.valid;
+    const SnellHit pl = snellIntersectPlaneNormal(o, dir, depth, normal, pyramid, s, 0.0f, 2, i % 2 == 0);
+    ASSERT_TRUE(finite(pl.position) && std::isfinite(pl.uv.x) && std::isfinite(pl.uv.y)) << i;
+    const glm::vec4 base = snellDepthPyramidBase(d, s);
+    ASSERT_TRUE(std::isfinite(base.y) && std::isfinite(base.z) && (base.w == 0.0f || (base.y > 0.0f && base.w == 1.0f)))
+        << i;
+    valid += h.valid + c.valid + m.valid + pl.valid;
   }
   EXPECT_GT(valid, 1000);  // the reads are exercised, not all refused
 }

@@ -166,8 +166,9 @@ TEST(SurfaceProjection, HostileEntriesAgreeWithTheGeneralPath) {
   EXPECT_GT(valid, 80000);
 }
 
-// A surface whose matrix is changed to another shape must have its flag
-// cleared: then the general path runs; a stale flag would ignore the shear.
+// A surface whose matrix is changed to another shape must be completed again
+// (snellDepthSurfaceComplete clears its flag): then the general path runs; a
+// stale flag would ignore the shear.
 TEST(SurfaceProjection, ClearedFlagRunsTheGeneralPath) {
   SnellDepthSurface surf = snellDepthSurface(glm::perspective(1.0f, 1.3f, 0.1f, 100.0f), 0.1f, 100.0f,
                                              SNELL_DEPTH_GL, 0.0f);
@@ -177,7 +178,8 @@ TEST(SurfaceProjection, ClearedFlagRunsTheGeneralPath) {
   surf.clipFromView = sheared;
   const glm::vec3 p(0.3f, -0.4f, -2.0f);
   const SnellScreenPoint stale = snellSurfaceViewToUv(surf, p);
-  surf.perspective = false;
+  surf = snellDepthSurfaceComplete(surf);
+  ASSERT_FALSE(surf.perspective);
   const SnellScreenPoint a = snellSurfaceViewToUv(surf, p), b = snellViewToUv(sheared, p);
   EXPECT_TRUE(a.valid && sameBits(a.uv.x, b.uv.x) && sameBits(a.uv.y, b.uv.y));
   EXPECT_GT(std::fabs(stale.uv.x - b.uv.x), 1e-3f);  // what the flag is for

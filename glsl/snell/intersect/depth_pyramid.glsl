@@ -26,9 +26,9 @@ texel layout (RGBA32F):
   convention (reversed Z stores the nearest point as the LARGEST depth value).
 contract:
   - snellDepthPyramidBase: invalid when depthValue == surface.emptyDepth, NaN,
-    infinite, or does not linearize (snellLinearizeDepth <= 0: bad zNear/zFar/convention):
+    infinite, or does not linearize (snellSurfaceLinearDepth <= 0: bad zNear/zFar/convention):
     vec4(emptyDepth, 0, 0, 0). Otherwise vec4(depthValue, v, v, 1), v =
-    snellLinearizeDepth(depthValue) > 0.
+    snellSurfaceLinearDepth(surface, depthValue) > 0 (snellLinearizeDepth's value).
   - snellDepthMinMaxReduce: level L has size (W, H) = SNELL_TEXTURE_SIZE(tex, L);
     level L+1 has (max(1, W/2), max(1, H/2)), and px must lie in it. The children
     are columns 2px.x .. 2px.x+1 (and 2px.x+2 for the last column when W is odd:

@@ -9,7 +9,7 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
   strategy; the per-step code reads its derived fields. In a shader, build it
   from the camera uniforms with the convention, and any lod, depthFilter and
   closed assignments, as constants: the compiler then folds the branches on
-  them (on llvmpipe a single sample costs 288 instructions per pixel so, 450
+  them (on llvmpipe a single sample costs 289 instructions per pixel so, 451
   with the whole surface read from a uniform: benchmarks/kernels).
   clipFromView  the projection the depth texture was rendered with
   zNear, zFar   its clip distances; convention: SNELL_DEPTH_* (camera/conventions.glsl)
@@ -59,22 +59,29 @@ contract (snellDepthSurfaceComplete):
   - returns s with every derived field computed from its clipFromView, zNear,
     zFar and convention (snellDepthSurface's result for them); lod,
     depthFilter, closed and emptyDepth are kept. snellDepthSurface calls it.
-  - an invalid clipFromView or depth range gives a surface on which every read
-    and reconstruction is invalid (linearizable false, perspectiveDet 0):
-    every strategy misses, with finite outputs.
+  - an invalid depth range or convention gives a surface on which every depth
+    read is invalid (linearizable false): every strategy misses, with finite
+    outputs. A perspective-shaped clipFromView whose a b is not finite or
+    below SNELL_FLT_MIN gives perspectiveDet 0: every reconstruction is
+    invalid. (Any other matrix goes through the general path, which tests its
+    own terms.)
   - a surface whose derived fields disagree with its source fields (filled in
-    by hand, or changed without this call) is read through its derived
-    fields: results are finite and flagged, the same on every runtime, but
-    are those of the surface the derived fields describe. Any field may be
-    hostile (NaN, +-Inf, zero or negative ranges, a perspective flag on a
-    general matrix): never a NaN output, never a crash.
+    by hand, or changed without this call) is read through a mix of both (the
+    derived terms, zNear for the clamp, clipFromView for the projection): its
+    results are finite (never NaN or +-Inf) and flagged, and nothing more is
+    promised (a hand-set denormal term may be flushed to 0 on a GPU and not
+    in C++). Any field may be hostile (NaN, +-Inf, zero or negative ranges, a
+    perspective flag on a general matrix): never a NaN output, never a crash.
+    In C++ start such a surface value-initialized (SnellDepthSurface s{};):
+    an uninitialized bool is undefined behaviour before any of this.
 contract (snellSurfaceLinearDepth):
   - for a complete surface, exactly snellLinearizeDepth(depthValue, s.zNear,
     s.zFar, s.convention) (bit for bit: the same operations, with the
     conventions' branches folded into selects and zNear / zFar precomputed);
     0.0f when s.linearizable is false or depthValue is NaN.
   - for an inconsistent surface: 0.0f or a finite value > 0 (never NaN or
-    +-Inf), the same on every runtime (no clamp with reversed or NaN bounds).
+    +-Inf; no clamp with reversed or NaN bounds, whose result GLSL leaves
+    undefined).
 contract (snellSampleSurface):
   - NEAREST: reads the texel containing uv (no filtering: filtering depth
     invents surfaces between foreground and background, Oliveira & Brauwers
@@ -166,8 +173,8 @@ SNELL_FN SnellDepthSurface snellDepthSurface(mat4 clipFromView, float zNear, flo
    selects: GL and ZERO_ONE n / ((1 - d) + d (n / f)), REVERSED n / (d + (1 - d)
    (n / f)); the infinite ones add d 0 or (1 - d) 0 = +0 to the same first term
    (exact), and their far plane (d = 1 INFINITE_GL, d < SNELL_FLT_MIN
-   INFINITE_REVERSED) divides by 0: +Inf, clamped to SNELL_FLT_MAX as the
-   reference returns it. Equations in camera/linearize_depth.glsl. */
+   INFINITE_REVERSED) has a zero denominator: SNELL_FLT_MAX, as the reference
+   returns it. Equations in camera/linearize_depth.glsl. */
 SNELL_FN_INLINE float snellSurfaceLinearDepth(SNELL_IN(SnellDepthSurface) s, float depthValue) {
   if (!s.linearizable || isnan(depthValue)) {
     return 0.0f;
@@ -179,7 +186,11 @@ SNELL_FN_INLINE float snellSurfaceLinearDepth(SNELL_IN(SnellDepthSurface) s, flo
   if (d < s.depthFarBelow) {
     a = 0.0f;
   }
-  float v = s.zNear / (a + b * s.nearOverFar);
+  // den > 0 for a complete surface but at the infinite conventions' far plane
+  // (and where n / f underflows), whose distance is the clamp's top:
+  // SNELL_FLT_MAX there, as the reference returns it, without dividing by 0.
+  float den = a + b * s.nearOverFar;
+  float v = den > 0.0f ? s.zNear / den : SNELL_FLT_MAX;
   // A NaN (only from inconsistent terms) stops here: GPU compilers turn the
   // selects below into fmax / fmin, which would drop it.
   if (!(v > 0.0f)) {
@@ -187,8 +198,8 @@ SNELL_FN_INLINE float snellSurfaceLinearDepth(SNELL_IN(SnellDepthSurface) s, flo
   }
   // clamp(v, zNear, depthFarLimit) as two selects: for a complete surface the
   // same value (zNear <= depthFarLimit); for an inconsistent one (reversed or
-  // NaN bounds, where clamp is undefined) the same on every runtime, and the
-  // last test keeps only a finite result > 0.
+  // NaN bounds, where clamp is undefined) defined, and the last test keeps
+  // only a finite result > 0.
   v = v < s.zNear ? s.zNear : v;
   v = v > s.depthFarLimit ? s.depthFarLimit : v;
   return v > 0.0f && v <= SNELL_FLT_MAX ? v : 0.0f;

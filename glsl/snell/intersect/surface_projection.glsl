@@ -19,8 +19,10 @@ contract:
     an exactly zero ndcZ; with +0 zero entries, as glm::perspective and
     snellPerspective write them, the reconstruction is bit-exact. GPU
     compilers may fold the kept zero products; the parity tolerances cover it.
-  - the flag is the surface's promise: set it false after giving clipFromView
-    another shape.
+  - the flag is the surface's promise: call snellDepthSurfaceComplete after
+    giving clipFromView another shape (it recomputes the flag and
+    perspectiveDet, the reconstruction's validated determinant: 0 makes every
+    reconstruction invalid).
 options:
   SNELL_PERSPECTIVE_ONLY  0 (default): a surface whose perspective flag is
                           false takes the general path above. 1: the general
@@ -121,7 +123,10 @@ SNELL_FN_INLINE SnellViewPoint snellSurfaceUvZToView(SNELL_IN(SnellDepthSurface)
   float b1 = -(viewZ * (c2.y + ny) + 0.0f);
   // The zero coefficients a01, a10 stay as products with +0: they decide the
   // sign of an exactly zero result as in the general path. perspectiveDet is
-  // c0.x c1.y validated once (0 when unusable: x and y are then not finite).
+  // c0.x c1.y validated once, 0 when unusable.
+  if (s.perspectiveDet == 0.0f) {
+    return r;
+  }
   float x = (b0 * c1.y - 0.0f * b1) / s.perspectiveDet;
   float y = (c0.x * b1 - b0 * 0.0f) / s.perspectiveDet;
   if (!SNELL_FINITE(x) || !SNELL_FINITE(y)) {
