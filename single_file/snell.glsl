@@ -1324,6 +1324,9 @@ contract:
     uv in [0,1]^2 and 0 < size < 2^24, without the NaN test, the floor and the
     lower clamp; undefined elsewhere (int() of NaN), so only a caller that has
     just checked the domain uses it.
+  - SNELL_PIXEL_CENTRE(px, size) (a macro) == snellPixelToUv(px, size) for
+    size > 0, without its two size tests; it divides by size, so only a
+    caller that knows size > 0 uses it.
 source: OpenGL 4.5 core spec sec. 8.14.2 (texel coordinates u = s W), sec. 14.5
   (fragment centres at (i + 0.5, j + 0.5)).
 */
@@ -1347,6 +1350,11 @@ SNELL_FN vec2 snellPixelToUv(ivec2 px, ivec2 size) {
    has just checked the domain uses it (intersect/depth_surface.glsl,
    intersect/surface_point.glsl). One line: GLSL 330 has no line continuation. */
 #define SNELL_PIXEL_ON_SCREEN(uv, size) ivec2(min(int((uv).x * float((size).x)), (size).x - 1), min(int((uv).y * float((size).y)), (size).y - 1))
+
+/* SNELL_PIXEL_CENTRE(px, size): snellPixelToUv(px, size), the same operations,
+   for size > 0 (intersect/surface_point.glsl, after a valid read of the
+   level): the two size tests left out. One line, as above. */
+#define SNELL_PIXEL_CENTRE(px, size) vec2((float((px).x) + 0.5f) / float((size).x), (float((px).y) + 0.5f) / float((size).y))
 
 SNELL_FN ivec2 snellUvToPixel(vec2 uv, ivec2 size) {
   if (size.x <= 0 || size.y <= 0) {
@@ -1723,7 +1731,7 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
                    the sign of an exact zero)
     perspectiveDet a * b when perspective and that product is finite with
                    |a b| >= SNELL_FLT_MIN (the reconstruction's determinant), else 0
-                   (every reconstruction is invalid: x / 0 is not finite)
+                   (then every reconstruction is invalid, without dividing by it)
     linearizable   zNear, zFar and convention linearize a depth (the conditions
                    of snellLinearizeDepth's contract), nearOverFar zNear / zFar (0
                    for the infinite conventions), depthReversed (REVERSED,
@@ -2125,12 +2133,11 @@ SNELL_FN_INLINE SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 u
     return r;
   }
   ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
-  // x.valid: uv is on screen and size > 0, so snellPixelToUv's tests of the
-  // size are left out (the same operations otherwise).
+  // x.valid: uv is on screen and size > 0 (the macros' domain)
   vec2 centre = uv;
   if (!x.interpolated) {
     ivec2 px = SNELL_PIXEL_ON_SCREEN(uv, size);
-    centre = vec2((float(px.x) + 0.5f) / float(size.x), (float(px.y) + 0.5f) / float(size.y));
+    centre = SNELL_PIXEL_CENTRE(px, size);
   }
   SnellViewPoint p = snellSurfaceUvZToView(s, centre, x.viewZ);
   if (!p.valid) {

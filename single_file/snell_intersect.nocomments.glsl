@@ -230,6 +230,8 @@ SNELL_FN vec2 snellPixelToUv(ivec2 px, ivec2 size) {
 
 #define SNELL_PIXEL_ON_SCREEN(uv, size) ivec2(min(int((uv).x * float((size).x)), (size).x - 1), min(int((uv).y * float((size).y)), (size).y - 1))
 
+#define SNELL_PIXEL_CENTRE(px, size) vec2((float((px).x) + 0.5f) / float((size).x), (float((px).y) + 0.5f) / float((size).y))
+
 SNELL_FN ivec2 snellUvToPixel(vec2 uv, ivec2 size) {
   if (size.x <= 0 || size.y <= 0) {
     return ivec2(0, 0);
@@ -649,7 +651,7 @@ SNELL_FN_INLINE SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 u
   vec2 centre = uv;
   if (!x.interpolated) {
     ivec2 px = SNELL_PIXEL_ON_SCREEN(uv, size);
-    centre = vec2((float(px.x) + 0.5f) / float(size.x), (float(px.y) + 0.5f) / float(size.y));
+    centre = SNELL_PIXEL_CENTRE(px, size);
   }
   SnellViewPoint p = snellSurfaceUvZToView(s, centre, x.viewZ);
   if (!p.valid) {

@@ -47,7 +47,7 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
                    the sign of an exact zero)
     perspectiveDet a * b when perspective and that product is finite with
                    |a b| >= SNELL_FLT_MIN (the reconstruction's determinant), else 0
-                   (every reconstruction is invalid: x / 0 is not finite)
+                   (then every reconstruction is invalid, without dividing by it)
     linearizable   zNear, zFar and convention linearize a depth (the conditions
                    of snellLinearizeDepth's contract), nearOverFar zNear / zFar (0
                    for the infinite conventions), depthReversed (REVERSED,

@@ -44,12 +44,11 @@ SNELL_FN_INLINE SnellSurfacePoint snellSurfacePoint(SNELL_TEX2D depthTex, vec2 u
     return r;
   }
   ivec2 size = SNELL_TEXTURE_SIZE(depthTex, s.lod);
-  // x.valid: uv is on screen and size > 0, so snellPixelToUv's tests of the
-  // size are left out (the same operations otherwise).
+  // x.valid: uv is on screen and size > 0 (the macros' domain)
   vec2 centre = uv;
   if (!x.interpolated) {
     ivec2 px = SNELL_PIXEL_ON_SCREEN(uv, size);
-    centre = vec2((float(px.x) + 0.5f) / float(size.x), (float(px.y) + 0.5f) / float(size.y));
+    centre = SNELL_PIXEL_CENTRE(px, size);
   }
   SnellViewPoint p = snellSurfaceUvZToView(s, centre, x.viewZ);
   if (!p.valid) {
