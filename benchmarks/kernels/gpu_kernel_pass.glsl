@@ -7,19 +7,29 @@
 // 9 snell linear march (32 steps, 4 refinements), 10 the kernel linear march,
 // 11: 0 with the surface read from a uniform (built once by the C++
 // snellDepthSurface) instead of built in the shader from constants and the
-// kClipFromView and kClipRange uniforms.
+// kClipFromView and kClipRange uniforms; 12 snell's whole two-interface
+// technique (snellTwoInterfaceRefraction, snellPresetPlaneNormal(2), the exit
+// slot on the opaque scene) for one front-face fragment per pixel, 13 the
+// kernel of the same (kTwoInterface).
 #if VARIANT == 5 || VARIANT == 6
 #  define SNELL_PERSPECTIVE_ONLY 1
+#endif
+#if VARIANT == 12
+// Only the strategy the technique calls, as snell-lab compiles each technique
+// (snellStrategiesUsed): 1 << SNELL_STRATEGY_PLANE_NORMAL.
+#  define SNELL_INTERSECT_STRATEGIES (1 << 1)
 #endif
 #include "snell/snell.glsl"
 #include "gpu_kernels.glsl"
 
-layout(binding = 2) uniform sampler2D kPyramid;
 layout(binding = 3) uniform sampler2D kRayOrigin;  // xyz, one ray per texel, row-major
 layout(binding = 4) uniform sampler2D kRayDir;
+layout(binding = 5) uniform sampler2D kFrontPosition;  // xyz, one front-face fragment per texel, row-major
+layout(binding = 6) uniform sampler2D kFrontNormal;
 uniform mat4 kClipFromView;
 uniform vec2 kClipRange;  // zNear, zFar
 uniform int kRayCount;
+uniform int kFrontCount;
 #if VARIANT == 11
 uniform SnellDepthSurface kSurface;
 #endif
@@ -28,6 +38,31 @@ layout(location = 0) out vec4 outPosition;  // xyz position
 layout(location = 1) out vec4 outHit;       // uv, valid, fetches
 
 void main() {
+#if VARIANT == 12 || VARIANT == 13
+  int frontWidth = textureSize(kFrontPosition, 0).x;
+  int f = (int(gl_FragCoord.y) * 512 + int(gl_FragCoord.x)) % kFrontCount;
+  ivec2 fat = ivec2(f % frontWidth, f / frontWidth);
+  vec3 p1 = texelFetch(kFrontPosition, fat, 0).xyz;
+  vec3 n1 = texelFetch(kFrontNormal, fat, 0).xyz;
+#  if VARIANT == 12
+  SnellDepthSurface back = snellDepthSurface(kClipFromView, kClipRange.x, kClipRange.y, SNELL_DEPTH_GL, 0.0);
+  SnellDepthSurface scene = snellDepthSurface(kClipFromView, kClipRange.x, kClipRange.y, SNELL_DEPTH_GL, 1.0);
+  scene.closed = false;
+  SnellTechnique t = snellPresetPlaneNormal(2);
+  t.exit.source = SNELL_SOURCE_BUFFERS;
+  SnellMaterial m = snellMaterial();
+  m.absorption = kAbsorption;
+  SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(p1, n1, 0.0, kDepth, kNormal, kPyramid, back, kDepth, kNormal,
+                                                          back, kSceneDepth, kSceneNormal, kPyramid, kSceneColor, scene,
+                                                          kEnvironment, t, m, snellView());
+  outPosition = vec4(r.color, r.pathLength);
+  outHit = vec4(r.fresnel, float(r.fetches), r.backHit ? 1.0 : 0.0, r.fellBack ? 1.0 : 0.0);
+#  else
+  KShade r = kTwoInterface(p1, n1);
+  outPosition = vec4(r.color, r.pathLength);
+  outHit = vec4(r.fresnel, float(r.fetches), r.backHit ? 1.0 : 0.0, r.fellBack ? 1.0 : 0.0);
+#  endif
+#else
   int width = textureSize(kRayOrigin, 0).x;
   int i = (int(gl_FragCoord.y) * 512 + int(gl_FragCoord.x)) % kRayCount;
   ivec2 at = ivec2(i % width, i / width);
@@ -55,4 +90,5 @@ void main() {
 #endif
   outPosition = vec4(h.position, 0.0);
   outHit = vec4(h.uv, h.valid ? 1.0 : 0.0, float(h.fetches));
+#endif
 }

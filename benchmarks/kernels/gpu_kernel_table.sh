@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The kernel study on the GPU path: snell's GLSL single sample, normal plane
-# (1 it.), CBS-5 and linear march (32 steps, 4 refinements) beside the
-# hand-written GLSL kernels of gpu_kernels.glsl, one ray per pixel of a
+# (1 it.), CBS-5, linear march (32 steps, 4 refinements) and the whole
+# two-interface technique (normal plane, 2 it.) beside the hand-written GLSL
+# kernels of gpu_kernels.glsl, one ray (or front-face fragment) per pixel of a
 # 512x512 pass on Mesa llvmpipe (gpu_kernel_study.cpp). Fails unless each
 # kernel gives snell's output bits on every ray; prints the median pass times
 # (all variants interleaved in one run) and, with callgrind (llvmpipe
