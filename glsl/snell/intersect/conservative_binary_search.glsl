@@ -88,10 +88,7 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
   vec2 uvHit = r.ts;
   bool advanced = false;
   int fetches = 0;
-  for (int i = 0; i < SNELL_CBS_MAX_STEPS; ++i) {
-    if (i >= n) {
-      break;
-    }
+  for (int i = 0; n > 0 && i < SNELL_CBS_MAX_STEPS; ++i) {
     dBeta = dBeta * 0.5f;
     float b = beta + dBeta;
     float z = r.s.z + b * dz;
@@ -103,6 +100,11 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
       zHit = z;
       uvHit = uv;
       advanced = true;
+    }
+    // The count is tested at the end of a pass, not at the top of the next: llvmpipe runs a loop's
+    // body once more, under an empty mask, after every lane has left it at its top.
+    if (i + 1 >= n) {
+      break;
     }
   }
   if (!advanced) {

@@ -212,9 +212,6 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
   vec2 planeUv = vec2(0.0f, 0.0f);
   int fetches = 0;
   for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
-    if (k > n) {
-      break;
-    }
     SnellDepthPlane plk = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
     fetches += plk.fetches;
     // An unbuilt plane has a zero normal, so the ray misses it; its facing plane exists
@@ -242,6 +239,11 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
     }
     p = hk.position;
     planeUv = plk.uv;
+    // The count is tested at the end of a pass, not at the top of the next: llvmpipe runs a loop's
+    // body once more, under an empty mask, after every lane has left it at its top.
+    if (k >= n) {
+      break;
+    }
   }
   return snellPlaneHit(p, planeUv, depthMips, s, fetches);
 }

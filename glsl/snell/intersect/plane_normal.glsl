@@ -118,10 +118,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
   }
   vec3 p = ph.position;
   vec2 planeUv = b.uv;
-  for (int k = 1; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
-    if (k > n) {
-      break;
-    }
+  for (int k = 1; n > 0 && k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
     SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
     if (!sp.valid) {
       break;  // keep P_(k-1) on plane k-1
@@ -144,6 +141,11 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     }
     p = hk.position;
     planeUv = bk.uv;
+    // The count is tested at the end of a pass, not at the top of the next: llvmpipe runs a loop's
+    // body once more, under an empty mask, after every lane has left it at its top.
+    if (k >= n) {
+      break;
+    }
   }
   return snellPlaneHit(p, planeUv, depthTex, s, fetches);
 }

@@ -186,11 +186,15 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   // One interface per pass: the back hit, then each exit the inside slot finds after a bounce. Every
   // interface but the last allowed one reflects on TIR and goes on; the last takes the material's policy.
   for (int k = 0; k <= SNELL_MAX_BOUNCES; ++k) {
+    // Only a bounce reaches a front face. Testing bounces first makes the test a constant false for a
+    // technique without bounces, so the front layer's read drops out: GPUs without uniform branches
+    // (llvmpipe) read both sides of a ?:.
+    bool front = bounces > 0 && p.exitFront;
 #if SNELL_TWO_INTERFACE_NORMAL_SAMPLE
-    vec4 nk = p.exitFront ? SNELL_SAMPLE_LOD(frontLayerNormal, p.exitUv, 0.0f)
-                          : SNELL_SAMPLE_LOD(backNormal, p.exitUv, 0.0f);
+    vec4 nk = front ? SNELL_SAMPLE_LOD(frontLayerNormal, p.exitUv, 0.0f)
+                    : SNELL_SAMPLE_LOD(backNormal, p.exitUv, 0.0f);
 #else
-    vec4 nk = p.exitFront
+    vec4 nk = front
                   ? SNELL_TEXEL_FETCH(frontLayerNormal,
                                       snellUvToPixel(p.exitUv, SNELL_TEXTURE_SIZE(frontLayerNormal, 0)), 0)
                   : SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(p.exitUv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);

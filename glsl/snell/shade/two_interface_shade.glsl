@@ -191,9 +191,6 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   // shader stack with three, and every browser compiles a third of the code.
   int channels = three ? 3 : 1;
   for (int k = 0; k < 3; ++k) {
-    if (k >= channels) {
-      break;
-    }
     float etaK = eta;
     if (k == 1) {
       etaK = snellIorToEta(m.iorOutside, m.iors.x);
@@ -203,9 +200,10 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     SnellTwoInterfacePath p =
         snellTwoInterfaceTrace(frontPosition, frontNormal, etaK, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
     // A path that left through a front face is resolved by the reflect slot (an if: WebGL rejects ?: on
-    // structs).
+    // structs). Only a bounce reaches a front face: testing t.bounces first makes the test a constant
+    // false for a technique without bounces, so the exit slot stays the constant t.exit and its options fold.
     SnellSlot leave = t.exit;
-    if (p.exitFront) {
+    if (t.bounces > 0 && p.exitFront) {
       leave = t.reflect;
     }
     SnellTwoInterfaceExit e =
@@ -233,6 +231,11 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
       }
       r.fetches = r.fetches + p.fetches + e.fetches;
       r.fellBack = r.fellBack || fellBack;
+    }
+    // The count is tested at the end of a pass, not at the top of the next: llvmpipe runs a loop's
+    // body once more, under an empty mask, after every lane has left it at its top.
+    if (k + 1 >= channels) {
+      break;
     }
   }
   r.color = transmitted;
