@@ -64,10 +64,7 @@ SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SNELL_I
   hi = clamp(hi, 0.0f, 1.0f);
   int n = clamp(steps, 0, SNELL_BINARY_SEARCH_MAX_STEPS);
   float dz = r.e.z - r.s.z;
-  for (int i = 0; i < SNELL_BINARY_SEARCH_MAX_STEPS; ++i) {
-    if (i >= n) {
-      break;
-    }
+  for (int i = 0; n > 0 && i < SNELL_BINARY_SEARCH_MAX_STEPS; ++i) {
     float beta = 0.5f * (lo + hi);
     float z = r.s.z + beta * dz;
     vec2 uv = snellTexRayUv(r, z);
@@ -80,6 +77,10 @@ SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SNELL_I
       lo = beta;
     } else {
       hi = beta;
+    }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (i + 1 >= n) {
+      break;
     }
   }
   return h;

@@ -101,8 +101,7 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
       uvHit = uv;
       advanced = true;
     }
-    // The count is tested at the end of a pass, not at the top of the next: llvmpipe runs a loop's
-    // body once more, under an empty mask, after every lane has left it at its top.
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (i + 1 >= n) {
       break;
     }

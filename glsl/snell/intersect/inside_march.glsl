@@ -161,9 +161,6 @@ SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2
   float dt = tMax / float(n);
   bool wasInside = false;
   for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
-    if (i > n) {
-      break;
-    }
     float t = float(i) * dt;
     vec3 p = origin + t * dir;
     SnellScreenPoint sp = snellSurfaceViewToUv(back, p);
@@ -221,6 +218,10 @@ SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2
         hiSide = s;
       }
     }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (i >= n) {
+      break;
+    }
   }
   b.lo = 0.0f;
   b.loUv = vec2(0.0f, 0.0f);
@@ -244,10 +245,7 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
   float lo = b.lo;
   float tHit = b.hi;
   vec2 uvHit = b.uv;
-  for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
-    if (j >= nr) {
-      break;
-    }
+  for (int j = 0; nr > 0 && j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
     float mid = 0.5f * (lo + tHit);
     vec3 q = origin + mid * dir;
     SnellScreenPoint sq = snellSurfaceViewToUv(back, q);
@@ -262,6 +260,10 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
       side = s;
     } else {
       lo = mid;
+    }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (j + 1 >= nr) {
+      break;
     }
   }
   r.hit.uv = uvHit;

@@ -95,9 +95,6 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
   float tHit = 0.0f;
   vec2 uvHit = vec2(0.0f, 0.0f);
   for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
-    if (i > n) {
-      break;
-    }
     float t = float(i) * dt;
     vec3 p = origin + t * dir;
     SnellScreenPoint sp = snellSurfaceViewToUv(surface, p);
@@ -112,15 +109,16 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
       uvHit = sp.uv;
       break;
     }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (i >= n) {
+      break;
+    }
   }
   if (!found) {
     return snellHitMiss(fetches);
   }
   float lo = tHit - dt;
-  for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
-    if (j >= nr) {
-      break;
-    }
+  for (int j = 0; nr > 0 && j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
     float mid = 0.5f * (lo + tHit);
     vec3 q = origin + mid * dir;
     SnellScreenPoint sq = snellSurfaceViewToUv(surface, q);
@@ -135,6 +133,10 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
       uvHit = sq.uv;
     } else {
       lo = mid;
+    }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (j + 1 >= nr) {
+      break;
     }
   }
   SnellHit h;

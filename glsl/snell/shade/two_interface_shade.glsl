@@ -232,8 +232,7 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
       r.fetches = r.fetches + p.fetches + e.fetches;
       r.fellBack = r.fellBack || fellBack;
     }
-    // The count is tested at the end of a pass, not at the top of the next: llvmpipe runs a loop's
-    // body once more, under an empty mask, after every lane has left it at its top.
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (k + 1 >= channels) {
       break;
     }
