@@ -208,7 +208,9 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
       n = -n;
     }
     p.exitNormal = n;
-    bool last = k >= bounces;
+    // bounces == 0 first: a constant for a technique without bounces, so all that follows the first
+    // interface drops out (a compiler does not see that k >= 0 here).
+    bool last = bounces == 0 || k >= bounces;
     SnellRefraction r2 = snellRefract(d, n, 1.0f / eta, last ? tirPolicy : SNELL_TIR_REFLECT);
     if (last || !r2.tir) {
       p.tir = r2.tir;
