@@ -1829,10 +1829,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
   }
   vec3 p = ph.position;
   vec2 planeUv = b.uv;
-  for (int k = 1; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
-    if (k > n) {
-      break;
-    }
+  for (int k = 1; n > 0 && k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
     SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
     if (!sp.valid) {
       break;  // keep P_(k-1) on plane k-1
@@ -1855,6 +1852,10 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     }
     p = hk.position;
     planeUv = bk.uv;
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (k >= n) {
+      break;
+    }
   }
   return snellPlaneHit(p, planeUv, depthTex, s, fetches);
 }
@@ -2074,9 +2075,6 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
   vec2 planeUv = vec2(0.0f, 0.0f);
   int fetches = 0;
   for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
-    if (k > n) {
-      break;
-    }
     SnellDepthPlane plk = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
     fetches += plk.fetches;
     // An unbuilt plane has a zero normal, so the ray misses it; its facing plane exists
@@ -2104,6 +2102,10 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
     }
     p = hk.position;
     planeUv = plk.uv;
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (k >= n) {
+      break;
+    }
   }
   return snellPlaneHit(p, planeUv, depthMips, s, fetches);
 }
@@ -2491,10 +2493,7 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
   vec2 uvHit = r.ts;
   bool advanced = false;
   int fetches = 0;
-  for (int i = 0; i < SNELL_CBS_MAX_STEPS; ++i) {
-    if (i >= n) {
-      break;
-    }
+  for (int i = 0; n > 0 && i < SNELL_CBS_MAX_STEPS; ++i) {
     dBeta = dBeta * 0.5f;
     float b = beta + dBeta;
     float z = r.s.z + b * dz;
@@ -2506,6 +2505,10 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
       zHit = z;
       uvHit = uv;
       advanced = true;
+    }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (i + 1 >= n) {
+      break;
     }
   }
   if (!advanced) {
@@ -2595,10 +2598,7 @@ SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SNELL_I
   hi = clamp(hi, 0.0f, 1.0f);
   int n = clamp(steps, 0, SNELL_BINARY_SEARCH_MAX_STEPS);
   float dz = r.e.z - r.s.z;
-  for (int i = 0; i < SNELL_BINARY_SEARCH_MAX_STEPS; ++i) {
-    if (i >= n) {
-      break;
-    }
+  for (int i = 0; n > 0 && i < SNELL_BINARY_SEARCH_MAX_STEPS; ++i) {
     float beta = 0.5f * (lo + hi);
     float z = r.s.z + beta * dz;
     vec2 uv = snellTexRayUv(r, z);
@@ -2611,6 +2611,10 @@ SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SNELL_I
       lo = beta;
     } else {
       hi = beta;
+    }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (i + 1 >= n) {
+      break;
     }
   }
   return h;
@@ -2843,9 +2847,6 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
   float tHit = 0.0f;
   vec2 uvHit = vec2(0.0f, 0.0f);
   for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
-    if (i > n) {
-      break;
-    }
     float t = float(i) * dt;
     vec3 p = origin + t * dir;
     SnellScreenPoint sp = snellSurfaceViewToUv(surface, p);
@@ -2860,15 +2861,16 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
       uvHit = sp.uv;
       break;
     }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (i >= n) {
+      break;
+    }
   }
   if (!found) {
     return snellHitMiss(fetches);
   }
   float lo = tHit - dt;
-  for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
-    if (j >= nr) {
-      break;
-    }
+  for (int j = 0; nr > 0 && j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
     float mid = 0.5f * (lo + tHit);
     vec3 q = origin + mid * dir;
     SnellScreenPoint sq = snellSurfaceViewToUv(surface, q);
@@ -2883,6 +2885,10 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
       uvHit = sq.uv;
     } else {
       lo = mid;
+    }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (j + 1 >= nr) {
+      break;
     }
   }
   SnellHit h;
@@ -3062,9 +3068,6 @@ SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2
   float dt = tMax / float(n);
   bool wasInside = false;
   for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
-    if (i > n) {
-      break;
-    }
     float t = float(i) * dt;
     vec3 p = origin + t * dir;
     SnellScreenPoint sp = snellSurfaceViewToUv(back, p);
@@ -3122,6 +3125,10 @@ SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2
         hiSide = s;
       }
     }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (i >= n) {
+      break;
+    }
   }
   b.lo = 0.0f;
   b.loUv = vec2(0.0f, 0.0f);
@@ -3145,10 +3152,7 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
   float lo = b.lo;
   float tHit = b.hi;
   vec2 uvHit = b.uv;
-  for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
-    if (j >= nr) {
-      break;
-    }
+  for (int j = 0; nr > 0 && j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
     float mid = 0.5f * (lo + tHit);
     vec3 q = origin + mid * dir;
     SnellScreenPoint sq = snellSurfaceViewToUv(back, q);
@@ -3163,6 +3167,10 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
       side = s;
     } else {
       lo = mid;
+    }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (j + 1 >= nr) {
+      break;
     }
   }
   r.hit.uv = uvHit;

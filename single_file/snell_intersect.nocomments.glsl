@@ -1001,10 +1001,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
   }
   vec3 p = ph.position;
   vec2 planeUv = b.uv;
-  for (int k = 1; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
-    if (k > n) {
-      break;
-    }
+  for (int k = 1; n > 0 && k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
     SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
     if (!sp.valid) {
       break;
@@ -1027,6 +1024,9 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     }
     p = hk.position;
     planeUv = bk.uv;
+    if (k >= n) {
+      break;
+    }
   }
   return snellPlaneHit(p, planeUv, depthTex, s, fetches);
 }
@@ -1157,9 +1157,6 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
   vec2 planeUv = vec2(0.0f, 0.0f);
   int fetches = 0;
   for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
-    if (k > n) {
-      break;
-    }
     SnellDepthPlane plk = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
     fetches += plk.fetches;
     SnellRayPlaneHit hk = snellRayPlane(origin, dir, plk.position, plk.normal);
@@ -1185,6 +1182,9 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
     }
     p = hk.position;
     planeUv = plk.uv;
+    if (k >= n) {
+      break;
+    }
   }
   return snellPlaneHit(p, planeUv, depthMips, s, fetches);
 }
@@ -1368,10 +1368,7 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
   vec2 uvHit = r.ts;
   bool advanced = false;
   int fetches = 0;
-  for (int i = 0; i < SNELL_CBS_MAX_STEPS; ++i) {
-    if (i >= n) {
-      break;
-    }
+  for (int i = 0; n > 0 && i < SNELL_CBS_MAX_STEPS; ++i) {
     dBeta = dBeta * 0.5f;
     float b = beta + dBeta;
     float z = r.s.z + b * dz;
@@ -1383,6 +1380,9 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
       zHit = z;
       uvHit = uv;
       advanced = true;
+    }
+    if (i + 1 >= n) {
+      break;
     }
   }
   if (!advanced) {
@@ -1426,10 +1426,7 @@ SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SNELL_I
   hi = clamp(hi, 0.0f, 1.0f);
   int n = clamp(steps, 0, SNELL_BINARY_SEARCH_MAX_STEPS);
   float dz = r.e.z - r.s.z;
-  for (int i = 0; i < SNELL_BINARY_SEARCH_MAX_STEPS; ++i) {
-    if (i >= n) {
-      break;
-    }
+  for (int i = 0; n > 0 && i < SNELL_BINARY_SEARCH_MAX_STEPS; ++i) {
     float beta = 0.5f * (lo + hi);
     float z = r.s.z + beta * dz;
     vec2 uv = snellTexRayUv(r, z);
@@ -1442,6 +1439,9 @@ SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SNELL_I
       lo = beta;
     } else {
       hi = beta;
+    }
+    if (i + 1 >= n) {
+      break;
     }
   }
   return h;
@@ -1579,9 +1579,6 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
   float tHit = 0.0f;
   vec2 uvHit = vec2(0.0f, 0.0f);
   for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
-    if (i > n) {
-      break;
-    }
     float t = float(i) * dt;
     vec3 p = origin + t * dir;
     SnellScreenPoint sp = snellSurfaceViewToUv(surface, p);
@@ -1596,15 +1593,15 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
       uvHit = sp.uv;
       break;
     }
+    if (i >= n) {
+      break;
+    }
   }
   if (!found) {
     return snellHitMiss(fetches);
   }
   float lo = tHit - dt;
-  for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
-    if (j >= nr) {
-      break;
-    }
+  for (int j = 0; nr > 0 && j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
     float mid = 0.5f * (lo + tHit);
     vec3 q = origin + mid * dir;
     SnellScreenPoint sq = snellSurfaceViewToUv(surface, q);
@@ -1619,6 +1616,9 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
       uvHit = sq.uv;
     } else {
       lo = mid;
+    }
+    if (j + 1 >= nr) {
+      break;
     }
   }
   SnellHit h;
@@ -1711,9 +1711,6 @@ SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2
   float dt = tMax / float(n);
   bool wasInside = false;
   for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
-    if (i > n) {
-      break;
-    }
     float t = float(i) * dt;
     vec3 p = origin + t * dir;
     SnellScreenPoint sp = snellSurfaceViewToUv(back, p);
@@ -1767,6 +1764,9 @@ SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2
         hiSide = s;
       }
     }
+    if (i >= n) {
+      break;
+    }
   }
   b.lo = 0.0f;
   b.loUv = vec2(0.0f, 0.0f);
@@ -1789,10 +1789,7 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
   float lo = b.lo;
   float tHit = b.hi;
   vec2 uvHit = b.uv;
-  for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
-    if (j >= nr) {
-      break;
-    }
+  for (int j = 0; nr > 0 && j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
     float mid = 0.5f * (lo + tHit);
     vec3 q = origin + mid * dir;
     SnellScreenPoint sq = snellSurfaceViewToUv(back, q);
@@ -1807,6 +1804,9 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
       side = s;
     } else {
       lo = mid;
+    }
+    if (j + 1 >= nr) {
+      break;
     }
   }
   r.hit.uv = uvHit;

@@ -3371,10 +3371,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
   }
   vec3 p = ph.position;
   vec2 planeUv = b.uv;
-  for (int k = 1; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
-    if (k > n) {
-      break;
-    }
+  for (int k = 1; n > 0 && k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
     SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
     if (!sp.valid) {
       break;  // keep P_(k-1) on plane k-1
@@ -3397,6 +3394,10 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     }
     p = hk.position;
     planeUv = bk.uv;
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (k >= n) {
+      break;
+    }
   }
   return snellPlaneHit(p, planeUv, depthTex, s, fetches);
 }
@@ -3616,9 +3617,6 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
   vec2 planeUv = vec2(0.0f, 0.0f);
   int fetches = 0;
   for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
-    if (k > n) {
-      break;
-    }
     SnellDepthPlane plk = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
     fetches += plk.fetches;
     // An unbuilt plane has a zero normal, so the ray misses it; its facing plane exists
@@ -3646,6 +3644,10 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
     }
     p = hk.position;
     planeUv = plk.uv;
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (k >= n) {
+      break;
+    }
   }
   return snellPlaneHit(p, planeUv, depthMips, s, fetches);
 }
@@ -3928,10 +3930,7 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
   vec2 uvHit = r.ts;
   bool advanced = false;
   int fetches = 0;
-  for (int i = 0; i < SNELL_CBS_MAX_STEPS; ++i) {
-    if (i >= n) {
-      break;
-    }
+  for (int i = 0; n > 0 && i < SNELL_CBS_MAX_STEPS; ++i) {
     dBeta = dBeta * 0.5f;
     float b = beta + dBeta;
     float z = r.s.z + b * dz;
@@ -3943,6 +3942,10 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
       zHit = z;
       uvHit = uv;
       advanced = true;
+    }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (i + 1 >= n) {
+      break;
     }
   }
   if (!advanced) {
@@ -4032,10 +4035,7 @@ SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SNELL_I
   hi = clamp(hi, 0.0f, 1.0f);
   int n = clamp(steps, 0, SNELL_BINARY_SEARCH_MAX_STEPS);
   float dz = r.e.z - r.s.z;
-  for (int i = 0; i < SNELL_BINARY_SEARCH_MAX_STEPS; ++i) {
-    if (i >= n) {
-      break;
-    }
+  for (int i = 0; n > 0 && i < SNELL_BINARY_SEARCH_MAX_STEPS; ++i) {
     float beta = 0.5f * (lo + hi);
     float z = r.s.z + beta * dz;
     vec2 uv = snellTexRayUv(r, z);
@@ -4048,6 +4048,10 @@ SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SNELL_I
       lo = beta;
     } else {
       hi = beta;
+    }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (i + 1 >= n) {
+      break;
     }
   }
   return h;
@@ -4280,9 +4284,6 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
   float tHit = 0.0f;
   vec2 uvHit = vec2(0.0f, 0.0f);
   for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
-    if (i > n) {
-      break;
-    }
     float t = float(i) * dt;
     vec3 p = origin + t * dir;
     SnellScreenPoint sp = snellSurfaceViewToUv(surface, p);
@@ -4297,15 +4298,16 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
       uvHit = sp.uv;
       break;
     }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (i >= n) {
+      break;
+    }
   }
   if (!found) {
     return snellHitMiss(fetches);
   }
   float lo = tHit - dt;
-  for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
-    if (j >= nr) {
-      break;
-    }
+  for (int j = 0; nr > 0 && j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
     float mid = 0.5f * (lo + tHit);
     vec3 q = origin + mid * dir;
     SnellScreenPoint sq = snellSurfaceViewToUv(surface, q);
@@ -4320,6 +4322,10 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
       uvHit = sq.uv;
     } else {
       lo = mid;
+    }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (j + 1 >= nr) {
+      break;
     }
   }
   SnellHit h;
@@ -5440,9 +5446,6 @@ SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2
   float dt = tMax / float(n);
   bool wasInside = false;
   for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
-    if (i > n) {
-      break;
-    }
     float t = float(i) * dt;
     vec3 p = origin + t * dir;
     SnellScreenPoint sp = snellSurfaceViewToUv(back, p);
@@ -5500,6 +5503,10 @@ SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2
         hiSide = s;
       }
     }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (i >= n) {
+      break;
+    }
   }
   b.lo = 0.0f;
   b.loUv = vec2(0.0f, 0.0f);
@@ -5523,10 +5530,7 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
   float lo = b.lo;
   float tHit = b.hi;
   vec2 uvHit = b.uv;
-  for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
-    if (j >= nr) {
-      break;
-    }
+  for (int j = 0; nr > 0 && j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
     float mid = 0.5f * (lo + tHit);
     vec3 q = origin + mid * dir;
     SnellScreenPoint sq = snellSurfaceViewToUv(back, q);
@@ -5541,6 +5545,10 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
       side = s;
     } else {
       lo = mid;
+    }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (j + 1 >= nr) {
+      break;
     }
   }
   r.hit.uv = uvHit;
@@ -5769,11 +5777,15 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   // One interface per pass: the back hit, then each exit the inside slot finds after a bounce. Every
   // interface but the last allowed one reflects on TIR and goes on; the last takes the material's policy.
   for (int k = 0; k <= SNELL_MAX_BOUNCES; ++k) {
+    // Only a bounce reaches a front face. Testing bounces first makes the test a constant false for a
+    // technique without bounces, so the front layer's read drops out: GPUs without uniform branches
+    // (llvmpipe) read both sides of a ?:.
+    bool front = bounces > 0 && p.exitFront;
 #if SNELL_TWO_INTERFACE_NORMAL_SAMPLE
-    vec4 nk = p.exitFront ? SNELL_SAMPLE_LOD(frontLayerNormal, p.exitUv, 0.0f)
-                          : SNELL_SAMPLE_LOD(backNormal, p.exitUv, 0.0f);
+    vec4 nk = front ? SNELL_SAMPLE_LOD(frontLayerNormal, p.exitUv, 0.0f)
+                    : SNELL_SAMPLE_LOD(backNormal, p.exitUv, 0.0f);
 #else
-    vec4 nk = p.exitFront
+    vec4 nk = front
                   ? SNELL_TEXEL_FETCH(frontLayerNormal,
                                       snellUvToPixel(p.exitUv, SNELL_TEXTURE_SIZE(frontLayerNormal, 0)), 0)
                   : SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(p.exitUv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
@@ -5787,7 +5799,9 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
       n = -n;
     }
     p.exitNormal = n;
-    bool last = k >= bounces;
+    // bounces == 0 first: a constant for a technique without bounces, so all that follows the first
+    // interface drops out (a compiler does not see that k >= 0 here).
+    bool last = bounces == 0 || k >= bounces;
     SnellRefraction r2 = snellRefract(d, n, 1.0f / eta, last ? tirPolicy : SNELL_TIR_REFLECT);
     if (last || !r2.tir) {
       p.tir = r2.tir;
@@ -6126,9 +6140,6 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   // shader stack with three, and every browser compiles a third of the code.
   int channels = three ? 3 : 1;
   for (int k = 0; k < 3; ++k) {
-    if (k >= channels) {
-      break;
-    }
     float etaK = eta;
     if (k == 1) {
       etaK = snellIorToEta(m.iorOutside, m.iors.x);
@@ -6138,9 +6149,10 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     SnellTwoInterfacePath p =
         snellTwoInterfaceTrace(frontPosition, frontNormal, etaK, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
     // A path that left through a front face is resolved by the reflect slot (an if: WebGL rejects ?: on
-    // structs).
+    // structs). Only a bounce reaches a front face: testing t.bounces first makes the test a constant
+    // false for a technique without bounces, so the exit slot stays the constant t.exit and its options fold.
     SnellSlot leave = t.exit;
-    if (p.exitFront) {
+    if (t.bounces > 0 && p.exitFront) {
       leave = t.reflect;
     }
     SnellTwoInterfaceExit e =
@@ -6168,6 +6180,10 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
       }
       r.fetches = r.fetches + p.fetches + e.fetches;
       r.fellBack = r.fellBack || fellBack;
+    }
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    if (k + 1 >= channels) {
+      break;
     }
   }
   r.color = transmitted;

@@ -1723,10 +1723,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
   }
   vec3 p = ph.position;
   vec2 planeUv = b.uv;
-  for (int k = 1; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
-    if (k > n) {
-      break;
-    }
+  for (int k = 1; n > 0 && k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
     SnellScreenPoint sp = snellSurfaceViewToUv(s, p);
     if (!sp.valid) {
       break;
@@ -1749,6 +1746,9 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     }
     p = hk.position;
     planeUv = bk.uv;
+    if (k >= n) {
+      break;
+    }
   }
   return snellPlaneHit(p, planeUv, depthTex, s, fetches);
 }
@@ -1879,9 +1879,6 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
   vec2 planeUv = vec2(0.0f, 0.0f);
   int fetches = 0;
   for (int k = 0; k <= SNELL_PLANE_MAX_ITERATIONS; ++k) {
-    if (k > n) {
-      break;
-    }
     SnellDepthPlane plk = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
     fetches += plk.fetches;
     SnellRayPlaneHit hk = snellRayPlane(origin, dir, plk.position, plk.normal);
@@ -1907,6 +1904,9 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
     }
     p = hk.position;
     planeUv = plk.uv;
+    if (k >= n) {
+      break;
+    }
   }
   return snellPlaneHit(p, planeUv, depthMips, s, fetches);
 }
@@ -2040,10 +2040,7 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
   vec2 uvHit = r.ts;
   bool advanced = false;
   int fetches = 0;
-  for (int i = 0; i < SNELL_CBS_MAX_STEPS; ++i) {
-    if (i >= n) {
-      break;
-    }
+  for (int i = 0; n > 0 && i < SNELL_CBS_MAX_STEPS; ++i) {
     dBeta = dBeta * 0.5f;
     float b = beta + dBeta;
     float z = r.s.z + b * dz;
@@ -2055,6 +2052,9 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
       zHit = z;
       uvHit = uv;
       advanced = true;
+    }
+    if (i + 1 >= n) {
+      break;
     }
   }
   if (!advanced) {
@@ -2098,10 +2098,7 @@ SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SNELL_I
   hi = clamp(hi, 0.0f, 1.0f);
   int n = clamp(steps, 0, SNELL_BINARY_SEARCH_MAX_STEPS);
   float dz = r.e.z - r.s.z;
-  for (int i = 0; i < SNELL_BINARY_SEARCH_MAX_STEPS; ++i) {
-    if (i >= n) {
-      break;
-    }
+  for (int i = 0; n > 0 && i < SNELL_BINARY_SEARCH_MAX_STEPS; ++i) {
     float beta = 0.5f * (lo + hi);
     float z = r.s.z + beta * dz;
     vec2 uv = snellTexRayUv(r, z);
@@ -2114,6 +2111,9 @@ SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SNELL_I
       lo = beta;
     } else {
       hi = beta;
+    }
+    if (i + 1 >= n) {
+      break;
     }
   }
   return h;
@@ -2251,9 +2251,6 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
   float tHit = 0.0f;
   vec2 uvHit = vec2(0.0f, 0.0f);
   for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
-    if (i > n) {
-      break;
-    }
     float t = float(i) * dt;
     vec3 p = origin + t * dir;
     SnellScreenPoint sp = snellSurfaceViewToUv(surface, p);
@@ -2268,15 +2265,15 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
       uvHit = sp.uv;
       break;
     }
+    if (i >= n) {
+      break;
+    }
   }
   if (!found) {
     return snellHitMiss(fetches);
   }
   float lo = tHit - dt;
-  for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
-    if (j >= nr) {
-      break;
-    }
+  for (int j = 0; nr > 0 && j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
     float mid = 0.5f * (lo + tHit);
     vec3 q = origin + mid * dir;
     SnellScreenPoint sq = snellSurfaceViewToUv(surface, q);
@@ -2291,6 +2288,9 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
       uvHit = sq.uv;
     } else {
       lo = mid;
+    }
+    if (j + 1 >= nr) {
+      break;
     }
   }
   SnellHit h;
@@ -2930,9 +2930,6 @@ SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2
   float dt = tMax / float(n);
   bool wasInside = false;
   for (int i = 1; i <= SNELL_LINEAR_MARCH_MAX_STEPS; ++i) {
-    if (i > n) {
-      break;
-    }
     float t = float(i) * dt;
     vec3 p = origin + t * dir;
     SnellScreenPoint sp = snellSurfaceViewToUv(back, p);
@@ -2986,6 +2983,9 @@ SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2
         hiSide = s;
       }
     }
+    if (i >= n) {
+      break;
+    }
   }
   b.lo = 0.0f;
   b.loUv = vec2(0.0f, 0.0f);
@@ -3008,10 +3008,7 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
   float lo = b.lo;
   float tHit = b.hi;
   vec2 uvHit = b.uv;
-  for (int j = 0; j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
-    if (j >= nr) {
-      break;
-    }
+  for (int j = 0; nr > 0 && j < SNELL_LINEAR_MARCH_MAX_REFINE_STEPS; ++j) {
     float mid = 0.5f * (lo + tHit);
     vec3 q = origin + mid * dir;
     SnellScreenPoint sq = snellSurfaceViewToUv(back, q);
@@ -3026,6 +3023,9 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
       side = s;
     } else {
       lo = mid;
+    }
+    if (j + 1 >= nr) {
+      break;
     }
   }
   r.hit.uv = uvHit;
@@ -3181,11 +3181,12 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   int bounces = clamp(t.bounces, 0, SNELL_MAX_BOUNCES);
   vec3 d = t1;
   for (int k = 0; k <= SNELL_MAX_BOUNCES; ++k) {
+    bool front = bounces > 0 && p.exitFront;
 #if SNELL_TWO_INTERFACE_NORMAL_SAMPLE
-    vec4 nk = p.exitFront ? SNELL_SAMPLE_LOD(frontLayerNormal, p.exitUv, 0.0f)
-                          : SNELL_SAMPLE_LOD(backNormal, p.exitUv, 0.0f);
+    vec4 nk = front ? SNELL_SAMPLE_LOD(frontLayerNormal, p.exitUv, 0.0f)
+                    : SNELL_SAMPLE_LOD(backNormal, p.exitUv, 0.0f);
 #else
-    vec4 nk = p.exitFront
+    vec4 nk = front
                   ? SNELL_TEXEL_FETCH(frontLayerNormal,
                                       snellUvToPixel(p.exitUv, SNELL_TEXTURE_SIZE(frontLayerNormal, 0)), 0)
                   : SNELL_TEXEL_FETCH(backNormal, snellUvToPixel(p.exitUv, SNELL_TEXTURE_SIZE(backNormal, 0)), 0);
@@ -3199,7 +3200,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
       n = -n;
     }
     p.exitNormal = n;
-    bool last = k >= bounces;
+    bool last = bounces == 0 || k >= bounces;
     SnellRefraction r2 = snellRefract(d, n, 1.0f / eta, last ? tirPolicy : SNELL_TIR_REFLECT);
     if (last || !r2.tir) {
       p.tir = r2.tir;
@@ -3368,9 +3369,6 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   vec3 transmitted = vec3(0.0f, 0.0f, 0.0f);
   int channels = three ? 3 : 1;
   for (int k = 0; k < 3; ++k) {
-    if (k >= channels) {
-      break;
-    }
     float etaK = eta;
     if (k == 1) {
       etaK = snellIorToEta(m.iorOutside, m.iors.x);
@@ -3380,7 +3378,7 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     SnellTwoInterfacePath p =
         snellTwoInterfaceTrace(frontPosition, frontNormal, etaK, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
     SnellSlot leave = t.exit;
-    if (p.exitFront) {
+    if (t.bounces > 0 && p.exitFront) {
       leave = t.reflect;
     }
     SnellTwoInterfaceExit e =
@@ -3406,6 +3404,9 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
       }
       r.fetches = r.fetches + p.fetches + e.fetches;
       r.fellBack = r.fellBack || fellBack;
+    }
+    if (k + 1 >= channels) {
+      break;
     }
   }
   r.color = transmitted;

@@ -8,7 +8,7 @@
 # (all variants interleaved in one run) and, with callgrind (llvmpipe
 # rendering on the calling thread, LP_NUM_THREADS=0), the instructions per
 # pixel each pass executes, JIT code and texture sampling included:
-# repeatable where the times are not. About 3 minutes; not part of the suite;
+# repeatable where the times are not. About 6 minutes; not part of the suite;
 # the `bench` target runs it. GPU_KERNEL_TABLE_OUT=FILE also writes the output
 # there. Usage: bash benchmarks/kernels/gpu_kernel_table.sh [rounds] [backend]
 set -euo pipefail
