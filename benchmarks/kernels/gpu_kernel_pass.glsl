@@ -52,6 +52,8 @@ void main() {
   t.exit.source = SNELL_SOURCE_BUFFERS;
   SnellMaterial m = snellMaterial();
   m.absorption = kAbsorption;
+  // The front layer is never read without bounces, nor the scene's pyramid on an open surface: the back
+  // buffers stand in for both.
   SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(p1, n1, 0.0, kDepth, kNormal, kPyramid, back, kDepth, kNormal,
                                                           back, kSceneDepth, kSceneNormal, kPyramid, kSceneColor, scene,
                                                           kEnvironment, t, m, snellView());

@@ -123,7 +123,7 @@ struct Study {
   Context ctx;
   const GlApi& gl;
   kscene::Scene sc;
-  ShadeScene sh;
+  ShadeScene sh;  // filled in frontPositions' initializer: it needs sc.P, which depth's initializer builds
   Texture depth, normal, pyramid, origins, dirs, frontPositions, frontNormals, sceneDepth, sceneNormal, sceneColor,
       environment;
   Framebuffer fb;

@@ -141,9 +141,6 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
   float sA = 0.0f;
   float zA = origin.z;
   for (int i = 0; i < SNELL_DDA_MAX_STEPS; ++i) {
-    if (i >= n || sA >= 1.0f) {
-      break;
-    }
     float sC = min(float(i) * ds, 1.0f);
     float sB = min((float(i) + 0.5f) * ds, 1.0f);
     float zB = (q0.z * (1.0f - sB) + q1.z * sB) / (k0 * (1.0f - sB) + k1 * sB);
@@ -170,6 +167,11 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
     }
     sA = sB;
     zA = zB;
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
+    if (i + 1 >= n || sA >= 1.0f) {
+      break;
+    }
   }
   return snellHitMiss(fetches);
 }

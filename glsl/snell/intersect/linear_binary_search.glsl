@@ -70,9 +70,6 @@ SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D dep
   vec2 uv = r.ts;
   bool lastValid = false;
   for (int i = 1; i <= SNELL_LINEAR_SEARCH_MAX_STEPS; ++i) {
-    if (i > nl) {
-      break;
-    }
     beta = float(i) * stepBeta;
     z = r.s.z + beta * dz;
     uv = snellTexRayUv(r, z);
@@ -81,6 +78,11 @@ SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D dep
     if (!(x.valid && z > x.viewZ)) {
       found = i;
       lastValid = x.valid;
+      break;
+    }
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
+    if (i >= nl) {
       break;
     }
   }
