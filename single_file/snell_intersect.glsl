@@ -1852,7 +1852,8 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     }
     p = hk.position;
     planeUv = bk.uv;
-    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
     if (k >= n) {
       break;
     }
@@ -2102,7 +2103,8 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
     }
     p = hk.position;
     planeUv = plk.uv;
-    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
     if (k >= n) {
       break;
     }
@@ -2506,7 +2508,8 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
       uvHit = uv;
       advanced = true;
     }
-    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
     if (i + 1 >= n) {
       break;
     }
@@ -2612,7 +2615,8 @@ SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SNELL_I
     } else {
       hi = beta;
     }
-    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
     if (i + 1 >= n) {
       break;
     }
@@ -2718,9 +2722,6 @@ SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D dep
   vec2 uv = r.ts;
   bool lastValid = false;
   for (int i = 1; i <= SNELL_LINEAR_SEARCH_MAX_STEPS; ++i) {
-    if (i > nl) {
-      break;
-    }
     beta = float(i) * stepBeta;
     z = r.s.z + beta * dz;
     uv = snellTexRayUv(r, z);
@@ -2729,6 +2730,11 @@ SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D dep
     if (!(x.valid && z > x.viewZ)) {
       found = i;
       lastValid = x.valid;
+      break;
+    }
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
+    if (i >= nl) {
       break;
     }
   }
@@ -2861,7 +2867,8 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
       uvHit = sp.uv;
       break;
     }
-    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
     if (i >= n) {
       break;
     }
@@ -2886,7 +2893,8 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
     } else {
       lo = mid;
     }
-    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
     if (j + 1 >= nr) {
       break;
     }
@@ -3125,7 +3133,8 @@ SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2
         hiSide = s;
       }
     }
-    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
     if (i >= n) {
       break;
     }
@@ -3168,7 +3177,8 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
     } else {
       lo = mid;
     }
-    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
     if (j + 1 >= nr) {
       break;
     }
@@ -3273,10 +3283,7 @@ SNELL_FN SnellInsideHit snellInsidePlane(vec3 origin, vec3 dir, SNELL_TEX2D back
   bool readFront = onFront;
   int planes = 0;
   int misses = 0;
-  for (int k = 1; k <= SNELL_PLANE_MAX_ITERATIONS + 2; ++k) {
-    if (planes >= n) {
-      break;
-    }
+  for (int k = 1; n > 0 && k <= SNELL_PLANE_MAX_ITERATIONS + 2; ++k) {
     SnellSurfacePoint s;  // not ?: : WebGL rejects it on structs
     if (readFront) {
       s = snellSurfacePoint(frontDepth, readUv, front);
@@ -3308,6 +3315,11 @@ SNELL_FN SnellInsideHit snellInsidePlane(vec3 origin, vec3 dir, SNELL_TEX2D back
       misses = misses + 1;
       readUv = b.loUv;
       readFront = misses == 1 ? onFront : !onFront;
+    }
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
+    if (planes >= n) {
+      break;
     }
   }
   r.hit.position = origin + t * dir;
@@ -3462,9 +3474,6 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
   float sA = 0.0f;
   float zA = origin.z;
   for (int i = 0; i < SNELL_DDA_MAX_STEPS; ++i) {
-    if (i >= n || sA >= 1.0f) {
-      break;
-    }
     float sC = min(float(i) * ds, 1.0f);
     float sB = min((float(i) + 0.5f) * ds, 1.0f);
     float zB = (q0.z * (1.0f - sB) + q1.z * sB) / (k0 * (1.0f - sB) + k1 * sB);
@@ -3491,6 +3500,11 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
     }
     sA = sB;
     zA = zB;
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
+    if (i + 1 >= n || sA >= 1.0f) {
+      break;
+    }
   }
   return snellHitMiss(fetches);
 }

@@ -1500,9 +1500,6 @@ SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D dep
   vec2 uv = r.ts;
   bool lastValid = false;
   for (int i = 1; i <= SNELL_LINEAR_SEARCH_MAX_STEPS; ++i) {
-    if (i > nl) {
-      break;
-    }
     beta = float(i) * stepBeta;
     z = r.s.z + beta * dz;
     uv = snellTexRayUv(r, z);
@@ -1511,6 +1508,9 @@ SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D dep
     if (!(x.valid && z > x.viewZ)) {
       found = i;
       lastValid = x.valid;
+      break;
+    }
+    if (i >= nl) {
       break;
     }
   }
@@ -1842,10 +1842,7 @@ SNELL_FN SnellInsideHit snellInsidePlane(vec3 origin, vec3 dir, SNELL_TEX2D back
   bool readFront = onFront;
   int planes = 0;
   int misses = 0;
-  for (int k = 1; k <= SNELL_PLANE_MAX_ITERATIONS + 2; ++k) {
-    if (planes >= n) {
-      break;
-    }
+  for (int k = 1; n > 0 && k <= SNELL_PLANE_MAX_ITERATIONS + 2; ++k) {
     SnellSurfacePoint s;
     if (readFront) {
       s = snellSurfacePoint(frontDepth, readUv, front);
@@ -1877,6 +1874,9 @@ SNELL_FN SnellInsideHit snellInsidePlane(vec3 origin, vec3 dir, SNELL_TEX2D back
       misses = misses + 1;
       readUv = b.loUv;
       readFront = misses == 1 ? onFront : !onFront;
+    }
+    if (planes >= n) {
+      break;
     }
   }
   r.hit.position = origin + t * dir;
@@ -1958,9 +1958,6 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
   float sA = 0.0f;
   float zA = origin.z;
   for (int i = 0; i < SNELL_DDA_MAX_STEPS; ++i) {
-    if (i >= n || sA >= 1.0f) {
-      break;
-    }
     float sC = min(float(i) * ds, 1.0f);
     float sB = min((float(i) + 0.5f) * ds, 1.0f);
     float zB = (q0.z * (1.0f - sB) + q1.z * sB) / (k0 * (1.0f - sB) + k1 * sB);
@@ -1986,6 +1983,9 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
     }
     sA = sB;
     zA = zB;
+    if (i + 1 >= n || sA >= 1.0f) {
+      break;
+    }
   }
   return snellHitMiss(fetches);
 }

@@ -3394,7 +3394,8 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     }
     p = hk.position;
     planeUv = bk.uv;
-    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
     if (k >= n) {
       break;
     }
@@ -3644,7 +3645,8 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
     }
     p = hk.position;
     planeUv = plk.uv;
-    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
     if (k >= n) {
       break;
     }
@@ -3943,7 +3945,8 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
       uvHit = uv;
       advanced = true;
     }
-    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
     if (i + 1 >= n) {
       break;
     }
@@ -4049,7 +4052,8 @@ SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SNELL_I
     } else {
       hi = beta;
     }
-    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
     if (i + 1 >= n) {
       break;
     }
@@ -4155,9 +4159,6 @@ SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D dep
   vec2 uv = r.ts;
   bool lastValid = false;
   for (int i = 1; i <= SNELL_LINEAR_SEARCH_MAX_STEPS; ++i) {
-    if (i > nl) {
-      break;
-    }
     beta = float(i) * stepBeta;
     z = r.s.z + beta * dz;
     uv = snellTexRayUv(r, z);
@@ -4166,6 +4167,11 @@ SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D dep
     if (!(x.valid && z > x.viewZ)) {
       found = i;
       lastValid = x.valid;
+      break;
+    }
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
+    if (i >= nl) {
       break;
     }
   }
@@ -4298,7 +4304,8 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
       uvHit = sp.uv;
       break;
     }
-    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
     if (i >= n) {
       break;
     }
@@ -4323,7 +4330,8 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
     } else {
       lo = mid;
     }
-    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
     if (j + 1 >= nr) {
       break;
     }
@@ -4485,9 +4493,6 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
   float sA = 0.0f;
   float zA = origin.z;
   for (int i = 0; i < SNELL_DDA_MAX_STEPS; ++i) {
-    if (i >= n || sA >= 1.0f) {
-      break;
-    }
     float sC = min(float(i) * ds, 1.0f);
     float sB = min((float(i) + 0.5f) * ds, 1.0f);
     float zB = (q0.z * (1.0f - sB) + q1.z * sB) / (k0 * (1.0f - sB) + k1 * sB);
@@ -4514,6 +4519,11 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
     }
     sA = sB;
     zA = zB;
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
+    if (i + 1 >= n || sA >= 1.0f) {
+      break;
+    }
   }
   return snellHitMiss(fetches);
 }
@@ -5503,7 +5513,8 @@ SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2
         hiSide = s;
       }
     }
-    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
     if (i >= n) {
       break;
     }
@@ -5546,7 +5557,8 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
     } else {
       lo = mid;
     }
-    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
     if (j + 1 >= nr) {
       break;
     }
@@ -5651,10 +5663,7 @@ SNELL_FN SnellInsideHit snellInsidePlane(vec3 origin, vec3 dir, SNELL_TEX2D back
   bool readFront = onFront;
   int planes = 0;
   int misses = 0;
-  for (int k = 1; k <= SNELL_PLANE_MAX_ITERATIONS + 2; ++k) {
-    if (planes >= n) {
-      break;
-    }
+  for (int k = 1; n > 0 && k <= SNELL_PLANE_MAX_ITERATIONS + 2; ++k) {
     SnellSurfacePoint s;  // not ?: : WebGL rejects it on structs
     if (readFront) {
       s = snellSurfacePoint(frontDepth, readUv, front);
@@ -5686,6 +5695,11 @@ SNELL_FN SnellInsideHit snellInsidePlane(vec3 origin, vec3 dir, SNELL_TEX2D back
       misses = misses + 1;
       readUv = b.loUv;
       readFront = misses == 1 ? onFront : !onFront;
+    }
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
+    if (planes >= n) {
+      break;
     }
   }
   r.hit.position = origin + t * dir;
@@ -6181,7 +6195,8 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
       r.fetches = r.fetches + p.fetches + e.fetches;
       r.fellBack = r.fellBack || fellBack;
     }
-    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
+    // under an empty mask (docs/DESIGN.md, the common subset).
     if (k + 1 >= channels) {
       break;
     }
