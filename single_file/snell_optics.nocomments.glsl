@@ -104,8 +104,10 @@
 
 #if defined(SNELL_LANG_CXX)
 #  define SNELL_FINITE(x) (std::isfinite(x))
+#elif defined(SNELL_LANG_HLSL)
+#  define SNELL_FINITE(x) ((asuint(x) & 0x7f800000u) != 0x7f800000u)
 #else
-#  define SNELL_FINITE(x) (!isnan(x) && !isinf(x))
+#  define SNELL_FINITE(x) ((floatBitsToUint(x) & 0x7f800000u) != 0x7f800000u)
 #endif
 
 #endif

@@ -195,13 +195,19 @@ contract: macros only.
    that keeps it (llvmpipe, the CPU) the result on the denormal, and the parity
    suite accepts either (and counts the cases: "flushed="). */
 #define SNELL_FLT_MIN 1.175494351e-38f
-/* True when the float x is neither NaN nor +-Inf. C++: std::isfinite, the
-   same answer in one test instead of two (7 % of a plane ray's
-   instructions). */
+/* True when the float x is neither NaN nor +-Inf. C++: std::isfinite, one
+   test instead of isnan and isinf (7 % of a plane ray's instructions). GLSL
+   and HLSL: the exponent's bits are not all ones, one mask and one compare,
+   exact for every float and safe from a compiler that assumes no NaN (on
+   llvmpipe 6 % fewer instructions per pixel than !isnan(x) && !isinf(x) for
+   single sample, 5 % for the whole two-interface technique:
+   benchmarks/kernels/gpu_kernel_table.sh). */
 #if defined(SNELL_LANG_CXX)
 #  define SNELL_FINITE(x) (std::isfinite(x))
+#elif defined(SNELL_LANG_HLSL)
+#  define SNELL_FINITE(x) ((asuint(x) & 0x7f800000u) != 0x7f800000u)
 #else
-#  define SNELL_FINITE(x) (!isnan(x) && !isinf(x))
+#  define SNELL_FINITE(x) ((floatBitsToUint(x) & 0x7f800000u) != 0x7f800000u)
 #endif
 
 #endif

@@ -4,8 +4,9 @@
    include/snell/gpu/parity_webgpu.hpp).
    - isnan / isinf: WGSL has neither and naga's WGSL writer rejects them, so
      both become bit tests on floatBitsToUint: exact for every float, and
-     immune to a compiler that assumes no NaN. The function-like macros also
-     cover SNELL_FINITE and every direct call in snell's bodies.
+     immune to a compiler that assumes no NaN. The function-like macros
+     cover every direct call in snell's bodies (SNELL_FINITE is a bit test
+     in prelude.glsl already).
    - SNELL_FLT_MAX by its bits (below), so the WGSL has no literal Tint
      rejects.
    - `precise` stays: glslang marks the operations NoContraction, which naga
