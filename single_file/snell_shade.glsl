@@ -1928,7 +1928,7 @@ use: SnellDepthSurface s = snellDepthSurface(clipFromView, zNear, zFar, SNELL_DE
   strategy; the per-step code reads its derived fields. In a shader, build it
   from the camera uniforms with the convention, and any lod, depthFilter and
   closed assignments, as constants: the compiler then folds the branches on
-  them (on llvmpipe a single sample costs 289 instructions per pixel so, 451
+  them (on llvmpipe a single sample costs 271 instructions per pixel so, 436
   with the whole surface read from a uniform: benchmarks/kernels).
   clipFromView  the projection the depth texture was rendered with
   zNear, zFar   its clip distances; convention: SNELL_DEPTH_* (camera/conventions.glsl)
