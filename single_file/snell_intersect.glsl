@@ -1858,8 +1858,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     }
     p = hk.position;
     planeUv = bk.uv;
-    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
-    // under an empty mask (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (k >= n) {
       break;
     }
@@ -2109,8 +2108,7 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
     }
     p = hk.position;
     planeUv = plk.uv;
-    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
-    // under an empty mask (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (k >= n) {
       break;
     }
@@ -2514,8 +2512,7 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
       uvHit = uv;
       advanced = true;
     }
-    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
-    // under an empty mask (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (i + 1 >= n) {
       break;
     }
@@ -2621,8 +2618,7 @@ SNELL_FN SnellHit snellBisectTexRay(SnellTexRay r, SNELL_TEX2D depthTex, SNELL_I
     } else {
       hi = beta;
     }
-    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
-    // under an empty mask (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (i + 1 >= n) {
       break;
     }
@@ -2738,8 +2734,7 @@ SNELL_FN SnellHit snellLinearBinarySearch(vec3 origin, vec3 dir, SNELL_TEX2D dep
       lastValid = x.valid;
       break;
     }
-    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
-    // under an empty mask (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (i >= nl) {
       break;
     }
@@ -2873,8 +2868,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
       uvHit = sp.uv;
       break;
     }
-    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
-    // under an empty mask (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (i >= n) {
       break;
     }
@@ -2899,8 +2893,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
     } else {
       lo = mid;
     }
-    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
-    // under an empty mask (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (j + 1 >= nr) {
       break;
     }
@@ -3139,8 +3132,7 @@ SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2
         hiSide = s;
       }
     }
-    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
-    // under an empty mask (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (i >= n) {
       break;
     }
@@ -3183,8 +3175,7 @@ SNELL_FN SnellInsideHit snellInsideMarch(vec3 origin, vec3 dir, SNELL_TEX2D back
     } else {
       lo = mid;
     }
-    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
-    // under an empty mask (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (j + 1 >= nr) {
       break;
     }
@@ -3322,8 +3313,7 @@ SNELL_FN SnellInsideHit snellInsidePlane(vec3 origin, vec3 dir, SNELL_TEX2D back
       readUv = b.loUv;
       readFront = misses == 1 ? onFront : !onFront;
     }
-    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
-    // under an empty mask (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (planes >= n) {
       break;
     }
@@ -3506,8 +3496,7 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
     }
     sA = sB;
     zA = zB;
-    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
-    // under an empty mask (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (i + 1 >= n || sA >= 1.0f) {
       break;
     }

@@ -101,8 +101,7 @@ SNELL_FN SnellHit snellConservativeBinarySearch(vec3 origin, vec3 dir, SNELL_TEX
       uvHit = uv;
       advanced = true;
     }
-    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
-    // under an empty mask (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (i + 1 >= n) {
       break;
     }

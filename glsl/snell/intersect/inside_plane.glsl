@@ -122,8 +122,7 @@ SNELL_FN SnellInsideHit snellInsidePlane(vec3 origin, vec3 dir, SNELL_TEX2D back
       readUv = b.loUv;
       readFront = misses == 1 ? onFront : !onFront;
     }
-    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
-    // under an empty mask (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (planes >= n) {
       break;
     }

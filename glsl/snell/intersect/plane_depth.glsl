@@ -239,8 +239,7 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
     }
     p = hk.position;
     planeUv = plk.uv;
-    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
-    // under an empty mask (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (k >= n) {
       break;
     }

@@ -141,8 +141,7 @@ SNELL_FN SnellHit snellIntersectPlaneNormal(vec3 origin, vec3 dir, SNELL_TEX2D d
     }
     p = hk.position;
     planeUv = bk.uv;
-    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
-    // under an empty mask (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (k >= n) {
       break;
     }

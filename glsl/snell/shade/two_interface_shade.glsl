@@ -232,8 +232,7 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
       r.fetches = r.fetches + p.fetches + e.fetches;
       r.fellBack = r.fellBack || fellBack;
     }
-    // The count at the end of the pass: llvmpipe runs a pass whose lanes all break at its top once more,
-    // under an empty mask (docs/DESIGN.md, the common subset).
+    // The count at the end of the pass, not at the top (docs/DESIGN.md, the common subset).
     if (k + 1 >= channels) {
       break;
     }
