@@ -12,13 +12,19 @@ import fs from "node:fs";
 import os from "node:os";
 import path from "node:path";
 
-export function launchChromium(url, { chromium = "chromium", webgpu = false, onFailure = () => {} } = {}) {
-  const profile = fs.mkdtempSync(path.join(os.tmpdir(), "snell-chromium-"));
+// The flags every Chromium the suite starts shares (also the shared one, shared_chromium.mjs).
+export function chromiumFlags(profile, webgpu) {
   const flags = ["--headless=new", "--no-sandbox", "--no-first-run", "--no-default-browser-check", "--disable-extensions",
     "--use-angle=swiftshader", "--enable-unsafe-swiftshader", `--user-data-dir=${profile}`,
     // The pages draw nothing on screen: without GPU compositing Chromium starts in a third of the time.
     "--disable-gpu-compositing"];
   if (webgpu) flags.push("--enable-unsafe-webgpu", "--use-webgpu-adapter=swiftshader");
+  return flags;
+}
+
+export function launchChromium(url, { chromium = "chromium", webgpu = false, onFailure = () => {} } = {}) {
+  const profile = fs.mkdtempSync(path.join(os.tmpdir(), "snell-chromium-"));
+  const flags = chromiumFlags(profile, webgpu);
   let log = "";
   let closing = false;
   let failed = false;

@@ -1,6 +1,7 @@
 // Runs a parity job in headless Chromium: serves a page module and the job's
-// files on 127.0.0.1, starts one Chromium on that page, and writes what the
-// page posts back. The WebGL 2 runtime (tools/webgl/parity_page.js) and the
+// files on 127.0.0.1, starts one Chromium on that page (or opens it as a tab of
+// the Chromium named by SNELL_SHARED_CHROMIUM, see shared_chromium.mjs), and
+// writes what the page posts back. The WebGL 2 runtime (tools/webgl/parity_page.js) and the
 // WebGPU smoke run in Chromium (tools/webgpu/chromium_page.js) use it.
 //
 //   node run_page.mjs PAGE_JS JOB_DIR RESULTS_FILE [--webgpu] [--chromium=PATH]
@@ -15,14 +16,19 @@ import http from "node:http";
 import path from "node:path";
 
 import { launchChromium } from "./chromium.mjs";
+import { openSharedPage } from "./shared_chromium.mjs";
 
 const args = process.argv.slice(2);
 const webgpu = args.includes("--webgpu");
 const chromium = (args.find((a) => a.startsWith("--chromium=")) ?? "--chromium=chromium").slice("--chromium=".length);
 const [pageJs, dir, resultsFile] = args.filter((a) => !a.startsWith("--"));
+// The state folder of a Chromium started once for the whole test run (shared_chromium.mjs): the page
+// opens there as a tab. WebGPU pages keep a browser of their own (they need its WebGPU flags).
+const shared = webgpu ? "" : process.env.SNELL_SHARED_CHROMIUM ?? "";
 // SwiftShader compiles a whole technique in tens of seconds; a page that says nothing for this long is stuck.
 const timeoutMs = Number(process.env.SNELL_BROWSER_TIMEOUT_MS ?? 600000);
 
+// A promise of the browser (or tab) showing the page, once there is one.
 let browser = null;
 let finishing = false;
 function finish(status, message) {
@@ -30,7 +36,7 @@ function finish(status, message) {
   finishing = true;
   if (message) console.error(`run_page.mjs: ${message}`);
   if (!browser) process.exit(status);
-  browser.close().then(() => process.exit(status));
+  browser.then((b) => b.close(), () => {}).then(() => process.exit(status));
 }
 if (!pageJs || !dir || !resultsFile) finish(1, "usage: run_page.mjs PAGE_JS JOB_DIR RESULTS_FILE [--webgpu] [--chromium=PATH]");
 if (!fs.existsSync(pageJs)) finish(1, `no page module ${pageJs}`);
@@ -78,6 +84,8 @@ const server = http.createServer((req, res) => {
 
 server.listen(0, "127.0.0.1", () => {
   const url = `http://127.0.0.1:${server.address().port}/`;
-  browser = launchChromium(url, { chromium, webgpu, onFailure: (message) => finish(1, message) });
+  const onFailure = (message) => finish(1, message);
+  browser = shared ? openSharedPage(shared, url, onFailure) : Promise.resolve(launchChromium(url, { chromium, webgpu, onFailure }));
+  browser.catch((e) => finish(1, e.message));
 });
 setTimeout(() => finish(1, `no results after ${timeoutMs / 1000} s (SNELL_BROWSER_TIMEOUT_MS)`), timeoutMs).unref();
