@@ -154,6 +154,23 @@ TEST(CameraTexRay, DegenerateAndHostileInputs) {
   // Zero matrix (invalid camera): S projects with w = 0.
   expectZeroInvalid(snellTexRaySetup(p1, t1, -3.0f, -5.0f, glm::mat4(0.0f)));
 
+  // The third row (clip z) is never read: NaN there gives the clean segment.
+  glm::mat4 zRowNaN = m;
+  for (int c = 0; c < 4; ++c) zRowNaN[c][2] = kNaN;
+  const SnellTexRay clean = snellTexRaySetup(p1, t1, -3.0f, -5.0f, m);
+  const SnellTexRay noZ = snellTexRaySetup(p1, t1, -3.0f, -5.0f, zRowNaN);
+  ASSERT_TRUE(clean.valid);
+  EXPECT_TRUE(noZ.valid);
+  EXPECT_EQ(noZ.s, clean.s);
+  EXPECT_EQ(noZ.e, clean.e);
+  EXPECT_EQ(noZ.ts, clean.ts);
+  EXPECT_EQ(noZ.dt, clean.dt);
+  EXPECT_EQ(noZ.k1, clean.k1);
+  EXPECT_EQ(noZ.k2, clean.k2);
+  // S so close to the eye plane (w = 1e-37) that its ndc x overflows
+  // (183 / 1e-37): invalid, not clamped to a huge finite uv.
+  expectZeroInvalid(snellTexRaySetup(glm::vec3(100.0f, 0.0f, -2.0f), glm::vec3(0.0f, 0.0f, -1.0f), -1e-37f, -5.0f, m));
+
   // A ray towards the camera: S and E behind P1 on the line, still valid.
   const SnellTexRay back = snellTexRaySetup(p1, glm::vec3(0.0f, 0.0f, 1.0f), -3.0f, -5.0f, m);
   EXPECT_TRUE(back.valid);
