@@ -855,14 +855,20 @@ SNELL_FN_INLINE SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, f
   float le = (zFarthest - p1.z) / t1.z;
   vec3 s = vec3(p1.x + ls * t1.x, p1.y + ls * t1.y, zNearest);
   vec3 e = vec3(p1.x + le * t1.x, p1.y + le * t1.y, zFarthest);
-  SnellNdc ns = snellClipToNdc(snellViewToClip(clipFromView, s));
-  SnellNdc ne = snellClipToNdc(snellViewToClip(clipFromView, e));
-  if (!SNELL_FINITE(s.x) || !SNELL_FINITE(s.y) || !SNELL_FINITE(e.x) ||
-      !SNELL_FINITE(e.y) || !ns.valid || !ne.valid) {
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
+  vec3 cs = vec3((c0.x * s.x + c1.x * s.y) + (c2.x * s.z + c3.x), (c0.y * s.x + c1.y * s.y) + (c2.y * s.z + c3.y),
+                 (c0.w * s.x + c1.w * s.y) + (c2.w * s.z + c3.w));
+  vec3 ce = vec3((c0.x * e.x + c1.x * e.y) + (c2.x * e.z + c3.x), (c0.y * e.x + c1.y * e.y) + (c2.y * e.z + c3.y),
+                 (c0.w * e.x + c1.w * e.y) + (c2.w * e.z + c3.w));
+  if (!SNELL_FINITE(s.x) || !SNELL_FINITE(s.y) || !SNELL_FINITE(e.x) || !SNELL_FINITE(e.y) ||
+      !(cs.z >= SNELL_FLT_MIN && cs.z <= SNELL_FLT_MAX) || !(ce.z >= SNELL_FLT_MIN && ce.z <= SNELL_FLT_MAX)) {
     return r;
   }
-  vec2 ts = vec2(ns.ndc.x, ns.ndc.y) * 0.5f + 0.5f;
-  vec2 te = vec2(ne.ndc.x, ne.ndc.y) * 0.5f + 0.5f;
+  vec2 ts = vec2(cs.x, cs.y) / cs.z * 0.5f + 0.5f;
+  vec2 te = vec2(ce.x, ce.y) / ce.z * 0.5f + 0.5f;
   vec2 dt = te - ts;
   float k1 = 1.0f / zNearest;
   float k2 = zNearest == zFarthest ? 0.0f : (zNearest * zFarthest) / (zNearest - zFarthest);

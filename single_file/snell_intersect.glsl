@@ -2244,7 +2244,7 @@ contract:
     deeper than zNearest (a search never runs backwards along the ray); it ends
     at E on the plane z = zFarthest. k1, k2, ts, dt as snellTexRaySetup.
   - valid = false (every field 0, finite) when: any input is NaN or Inf (matrix
-    included); dir.z >= 0 or denormal (the ray points towards the camera or runs
+    included, but for its third row, which snellTexRaySetup does not read); dir.z >= 0 or denormal (the ray points towards the camera or runs
     parallel to the image plane: it never reaches deeper planes); zNearest <=
     zFarthest (Zmin == Zmax, swapped or empty range); the origin is at or beyond
     zFarthest (nothing left to search); and every case snellTexRaySetup
@@ -2292,11 +2292,13 @@ contract:
   - zNearest == zFarthest: the segment is a point: S == E, k2 = 0, dt = 0,
     alpha = 0 for every pz, uv = ts; valid is true.
   - valid = false, with every field 0 (so alpha = 0 and uv = (0,0)), when: any
-    input is NaN or Inf (matrix included); T1.z == 0 (the ray is parallel to the
-    planes and never reaches them); zNearest >= 0 or zFarthest >= 0 (denormal
-    values count as 0 throughout: GPUs may flush them); S or E
-    project with clip w <= 0; or any result overflows (e.g. T1.z so small that S
-    is at infinity). A plane at or behind the eye (z >= 0) is rejected rather than
+    input is NaN or Inf (matrix included, but for its third row: clip z is
+    never computed, the segment needs no depth of its ends); T1.z == 0 (the
+    ray is parallel to the planes and never reaches them); zNearest >= 0 or
+    zFarthest >= 0 (denormal values count as 0 throughout: GPUs may flush
+    them); S or E project with clip w <= 0 or not finite; or any result
+    overflows (e.g. T1.z so small that S is at infinity, or a clip w so small
+    that S's or E's ndc does: no clamp keeps such a segment). A plane at or behind the eye (z >= 0) is rejected rather than
     clamped to the near plane: eq. 8 needs S~.w = -S.z > 0, the back-face depth
     extremes of a rendered object always lie in front of the near plane, so such
     input is a caller bug, and clamping would silently search a segment the caller
@@ -2309,7 +2311,6 @@ source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable
 */
 #ifndef SNELL_CAMERA_TEX_RAY_GLSL
 #define SNELL_CAMERA_TEX_RAY_GLSL
-
 
 
 
@@ -2345,14 +2346,25 @@ SNELL_FN_INLINE SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, f
   float le = (zFarthest - p1.z) / t1.z;
   vec3 s = vec3(p1.x + ls * t1.x, p1.y + ls * t1.y, zNearest);
   vec3 e = vec3(p1.x + le * t1.x, p1.y + le * t1.y, zFarthest);
-  SnellNdc ns = snellClipToNdc(snellViewToClip(clipFromView, s));
-  SnellNdc ne = snellClipToNdc(snellViewToClip(clipFromView, e));
-  if (!SNELL_FINITE(s.x) || !SNELL_FINITE(s.y) || !SNELL_FINITE(e.x) ||
-      !SNELL_FINITE(e.y) || !ns.valid || !ne.valid) {
+  // Clip x, y and w only: the segment never needs its ends' depth, so the z
+  // row is neither computed nor tested. The sums keep SNELL_MUL's association
+  // in GLM, (c0 x + c1 y) + (c2 z + c3), so the C++ bits are the product's.
+  vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
+  vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
+  vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
+  vec4 c3 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 3);
+  vec3 cs = vec3((c0.x * s.x + c1.x * s.y) + (c2.x * s.z + c3.x), (c0.y * s.x + c1.y * s.y) + (c2.y * s.z + c3.y),
+                 (c0.w * s.x + c1.w * s.y) + (c2.w * s.z + c3.w));
+  vec3 ce = vec3((c0.x * e.x + c1.x * e.y) + (c2.x * e.z + c3.x), (c0.y * e.x + c1.y * e.y) + (c2.y * e.z + c3.y),
+                 (c0.w * e.x + c1.w * e.y) + (c2.w * e.z + c3.w));
+  // w finite and >= FLT_MIN; a non-finite x or y, or an ndc that overflows,
+  // leaves ts or dt non-finite: rejected below.
+  if (!SNELL_FINITE(s.x) || !SNELL_FINITE(s.y) || !SNELL_FINITE(e.x) || !SNELL_FINITE(e.y) ||
+      !(cs.z >= SNELL_FLT_MIN && cs.z <= SNELL_FLT_MAX) || !(ce.z >= SNELL_FLT_MIN && ce.z <= SNELL_FLT_MAX)) {
     return r;
   }
-  vec2 ts = vec2(ns.ndc.x, ns.ndc.y) * 0.5f + 0.5f;
-  vec2 te = vec2(ne.ndc.x, ne.ndc.y) * 0.5f + 0.5f;
+  vec2 ts = vec2(cs.x, cs.y) / cs.z * 0.5f + 0.5f;
+  vec2 te = vec2(ce.x, ce.y) / ce.z * 0.5f + 0.5f;
   vec2 dt = te - ts;
   float k1 = 1.0f / zNearest;
   float k2 = zNearest == zFarthest ? 0.0f : (zNearest * zFarthest) / (zNearest - zFarthest);
