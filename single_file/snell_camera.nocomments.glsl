@@ -342,15 +342,20 @@ struct SnellScreenPoint {
 };
 
 SNELL_FN SnellScreenPoint snellViewToUv(mat4 clipFromView, vec3 pView) {
-  SnellNdc n = snellClipToNdc(snellViewToClip(clipFromView, pView));
+  vec4 clip = snellViewToClip(clipFromView, pView);
   SnellScreenPoint r;
   r.uv = vec2(0.0f, 0.0f);
   r.ndcZ = 0.0f;
-  r.valid = n.valid;
-  if (n.valid) {
-    r.uv = vec2(n.ndc.x, n.ndc.y) * 0.5f + 0.5f;
-    r.ndcZ = n.ndc.z;
+  r.valid = false;
+  if (!SNELL_FINITE(clip.x) || !SNELL_FINITE(clip.y) || !SNELL_FINITE(clip.w) || !(clip.w >= SNELL_FLT_MIN)) {
+    return r;
   }
+  float ndcX = clamp(clip.x / clip.w, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+  float ndcY = clamp(clip.y / clip.w, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+  float ndcZ = clip.z / clip.w;
+  r.uv = vec2(ndcX, ndcY) * 0.5f + 0.5f;
+  r.ndcZ = isnan(ndcZ) ? 0.0f : clamp(ndcZ, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+  r.valid = true;
   return r;
 }
 

@@ -763,11 +763,18 @@ description: project a view-space point to viewport uv ([0,1]^2, origin
 use: SnellScreenPoint sp = snellViewToUv(clipFromView, pView);
      if (sp.valid) { vec4 c = SNELL_SAMPLE_LOD(tex, sp.uv, 0.0f); float d = snellNdcZToDepth(sp.ndcZ, conv); }
 contract:
-  - uv = 0.5 ndc.xy + 0.5 and ndcZ = ndc.z with ndc from
-    snellClipToNdc(snellViewToClip(clipFromView, pView)); valid is that call's valid.
-  - valid is false (uv = (0,0), ndcZ = 0) for points at or behind the camera
-    (clip w <= 0), NaN or Inf; otherwise all results are finite (clamped to
-    +-SNELL_FLT_MAX), also for points off screen (uv outside [0,1]).
+  - with clip = snellViewToClip(clipFromView, pView): uv = 0.5 clip.xy / clip.w
+    + 0.5 and ndcZ = clip.z / clip.w, each quotient clamped to
+    +-SNELL_FLT_MAX (as snellClipToNdc's ndc).
+  - valid is false (uv = (0,0), ndcZ = 0) when clip x, y or w is NaN or Inf
+    or clip w <= 0 (denormal w counting as 0): points at or behind the camera,
+    NaN or Inf coordinates or matrix entries; otherwise all results are finite,
+    also for points off screen (uv outside [0,1]).
+  - clip z decides nothing, so a caller that reads only uv does not pay for
+    the matrix's third row: a clip z that overflows gives ndcZ = +-SNELL_FLT_MAX,
+    a NaN one (a NaN or Inf in that row) ndcZ = 0; uv and valid are those of a
+    clean row. (snellClipToNdc, which takes the clip point, still rejects a
+    non-finite z.)
   - ndcZ is NDC z, not a depth-buffer value: snellNdcZToDepth converts it.
 source: Oliveira & Brauwers 2007, Algorithm 1 (t' = 0.5 (S~.xy / S~.w) + 0.5).
 */
@@ -831,15 +838,22 @@ struct SnellScreenPoint {
 };
 
 SNELL_FN SnellScreenPoint snellViewToUv(mat4 clipFromView, vec3 pView) {
-  SnellNdc n = snellClipToNdc(snellViewToClip(clipFromView, pView));
+  vec4 clip = snellViewToClip(clipFromView, pView);
   SnellScreenPoint r;
   r.uv = vec2(0.0f, 0.0f);
   r.ndcZ = 0.0f;
-  r.valid = n.valid;
-  if (n.valid) {
-    r.uv = vec2(n.ndc.x, n.ndc.y) * 0.5f + 0.5f;
-    r.ndcZ = n.ndc.z;
+  r.valid = false;
+  // Clip z decides nothing: a caller that reads only uv lets the compiler
+  // drop the matrix's third row.
+  if (!SNELL_FINITE(clip.x) || !SNELL_FINITE(clip.y) || !SNELL_FINITE(clip.w) || !(clip.w >= SNELL_FLT_MIN)) {
+    return r;
   }
+  float ndcX = clamp(clip.x / clip.w, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+  float ndcY = clamp(clip.y / clip.w, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+  float ndcZ = clip.z / clip.w;
+  r.uv = vec2(ndcX, ndcY) * 0.5f + 0.5f;
+  r.ndcZ = isnan(ndcZ) ? 0.0f : clamp(ndcZ, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+  r.valid = true;
   return r;
 }
 
@@ -1055,16 +1069,15 @@ SNELL_FN_INLINE SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface
   float cy = c1.y * pView.y + c2.y * pView.z;
   float cz = c2.z * pView.z + c3.z;
   float cw = -pView.z;
-  // No test of cw = -pView.z for +inf: a non-finite pView.z makes cz non-finite
-  // (c2.z pView.z is +-inf, or NaN when c2.z is 0 or NaN), and NaN fails >=.
-  if (!SNELL_FINITE(cx) || !SNELL_FINITE(cy) || !SNELL_FINITE(cz) || !(cw >= SNELL_FLT_MIN)) {
+  if (!SNELL_FINITE(cx) || !SNELL_FINITE(cy) || !(cw >= SNELL_FLT_MIN && cw <= SNELL_FLT_MAX)) {
     return r;
   }
   // Per component (the same operations as a vec3 clamp; C++ inlines them).
   float ndcX = clamp(cx / cw, -SNELL_FLT_MAX, SNELL_FLT_MAX);
   float ndcY = clamp(cy / cw, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+  float ndcZ = cz / cw;
   r.uv = vec2(ndcX, ndcY) * 0.5f + 0.5f;
-  r.ndcZ = clamp(cz / cw, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+  r.ndcZ = isnan(ndcZ) ? 0.0f : clamp(ndcZ, -SNELL_FLT_MAX, SNELL_FLT_MAX);
   r.valid = true;
   return r;
 }

@@ -191,6 +191,21 @@ TEST(CameraProjection, BehindCameraAndHostileInputs) {
   EXPECT_TRUE(std::isfinite(tiny.ndc.x) && std::isfinite(tiny.ndc.y));
   EXPECT_EQ(tiny.ndc.x, std::numeric_limits<float>::max());
   EXPECT_EQ(tiny.ndc.y, -std::numeric_limits<float>::max());
+  // Clip z decides nothing: a NaN third row leaves uv as with the clean matrix
+  // (ndcZ 0), an overflowing one clamps ndcZ.
+  const glm::vec3 q(0.3f, -0.2f, -2.0f);
+  const SnellScreenPoint clean = snellViewToUv(m, q);
+  glm::mat4 zNaN = m, zHuge = m;
+  zNaN[2][2] = kNaN;
+  zHuge[2][2] = 3e38f;
+  const SnellScreenPoint noZ = snellViewToUv(zNaN, q), bigZ = snellViewToUv(zHuge, q);
+  ASSERT_TRUE(clean.valid);
+  EXPECT_TRUE(noZ.valid);
+  EXPECT_EQ(noZ.uv, clean.uv);
+  EXPECT_EQ(noZ.ndcZ, 0.0f);
+  EXPECT_TRUE(bigZ.valid);
+  EXPECT_EQ(bigZ.uv, clean.uv);
+  EXPECT_EQ(bigZ.ndcZ, -std::numeric_limits<float>::max());
   // A point in front but off screen: valid, uv outside [0,1].
   const SnellScreenPoint off = snellViewToUv(m, glm::vec3(50.0f, 0.0f, -1.0f));
   EXPECT_TRUE(off.valid);

@@ -75,16 +75,15 @@ SNELL_FN_INLINE SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface
   float cy = c1.y * pView.y + c2.y * pView.z;
   float cz = c2.z * pView.z + c3.z;
   float cw = -pView.z;
-  // No test of cw = -pView.z for +inf: a non-finite pView.z makes cz non-finite
-  // (c2.z pView.z is +-inf, or NaN when c2.z is 0 or NaN), and NaN fails >=.
-  if (!SNELL_FINITE(cx) || !SNELL_FINITE(cy) || !SNELL_FINITE(cz) || !(cw >= SNELL_FLT_MIN)) {
+  if (!SNELL_FINITE(cx) || !SNELL_FINITE(cy) || !(cw >= SNELL_FLT_MIN && cw <= SNELL_FLT_MAX)) {
     return r;
   }
   // Per component (the same operations as a vec3 clamp; C++ inlines them).
   float ndcX = clamp(cx / cw, -SNELL_FLT_MAX, SNELL_FLT_MAX);
   float ndcY = clamp(cy / cw, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+  float ndcZ = cz / cw;
   r.uv = vec2(ndcX, ndcY) * 0.5f + 0.5f;
-  r.ndcZ = clamp(cz / cw, -SNELL_FLT_MAX, SNELL_FLT_MAX);
+  r.ndcZ = isnan(ndcZ) ? 0.0f : clamp(ndcZ, -SNELL_FLT_MAX, SNELL_FLT_MAX);
   r.valid = true;
   return r;
 }
