@@ -2644,7 +2644,7 @@ options:
                           llvmpipe runs the general path beside the
                           perspective one although the flag is uniform
                           (benchmarks/kernels/gpu_kernel_table.sh: single
-                          sample 10 %, normal plane (1 it.) 11 % fewer
+                          sample 10 %, normal plane (1 it.) 9 % fewer
                           instructions per pixel); C++ and GPU drivers that
                           branch on uniform values gain little.
 source: OpenGL 4.5 core spec sec. 13.6 (clip -> NDC); the equations in
