@@ -572,12 +572,14 @@ contract:
     +-SNELL_FLT_MAX (as snellClipToNdc's ndc).
   - valid is false (uv = (0,0), ndcZ = 0) when clip x, y or w is NaN or Inf
     or clip w <= 0 (denormal w counting as 0): points at or behind the camera,
-    NaN or Inf coordinates or matrix entries; otherwise all results are finite,
-    also for points off screen (uv outside [0,1]).
+    NaN or Inf coordinates, NaN or Inf entries outside the matrix's third row;
+    otherwise all results are finite, also for points off screen (uv outside
+    [0,1]).
   - clip z decides nothing, so a caller that reads only uv does not pay for
-    the matrix's third row: a clip z that overflows gives ndcZ = +-SNELL_FLT_MAX,
-    a NaN one (a NaN or Inf in that row) ndcZ = 0; uv and valid are those of a
-    clean row. (snellClipToNdc, which takes the clip point, still rejects a
+    the matrix's third row: an infinite clip z (an Inf in that row, or an
+    overflow) gives ndcZ = +-SNELL_FLT_MAX, a NaN one (a NaN in that row, or
+    Inf - Inf, Inf * 0 there) ndcZ = 0; uv and valid are those of a clean
+    row. (snellClipToNdc, which takes the clip point, still rejects a
     non-finite z.)
   - ndcZ is NDC z, not a depth-buffer value: snellNdcZToDepth converts it.
 source: Oliveira & Brauwers 2007, Algorithm 1 (t' = 0.5 (S~.xy / S~.w) + 0.5).

@@ -191,8 +191,8 @@ TEST(CameraProjection, BehindCameraAndHostileInputs) {
   EXPECT_TRUE(std::isfinite(tiny.ndc.x) && std::isfinite(tiny.ndc.y));
   EXPECT_EQ(tiny.ndc.x, std::numeric_limits<float>::max());
   EXPECT_EQ(tiny.ndc.y, -std::numeric_limits<float>::max());
-  // Clip z decides nothing: a NaN third row leaves uv as with the clean matrix
-  // (ndcZ 0), an overflowing one clamps ndcZ.
+  // Clip z decides nothing: a NaN in the third row leaves uv as with the clean
+  // matrix (ndcZ 0), a huge entry there (clip z overflows) clamps ndcZ.
   const glm::vec3 q(0.3f, -0.2f, -2.0f);
   const SnellScreenPoint clean = snellViewToUv(m, q);
   glm::mat4 zNaN = m, zHuge = m;

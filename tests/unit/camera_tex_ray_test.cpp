@@ -168,7 +168,7 @@ TEST(CameraTexRay, DegenerateAndHostileInputs) {
   EXPECT_EQ(noZ.k1, clean.k1);
   EXPECT_EQ(noZ.k2, clean.k2);
   // S so close to the eye plane (w = 1e-37) that its ndc x overflows
-  // (183 / 1e-37): invalid, not clamped to a huge finite uv.
+  // (about 122 / 1e-37): invalid, not clamped to a huge finite uv.
   expectZeroInvalid(snellTexRaySetup(glm::vec3(100.0f, 0.0f, -2.0f), glm::vec3(0.0f, 0.0f, -1.0f), -1e-37f, -5.0f, m));
 
   // A ray towards the camera: S and E behind P1 on the line, still valid.

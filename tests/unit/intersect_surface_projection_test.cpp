@@ -166,6 +166,26 @@ TEST(SurfaceProjection, HostileEntriesAgreeWithTheGeneralPath) {
   EXPECT_GT(valid, 80000);
 }
 
+// Clip z decides nothing on the perspective path either: NaN or a huge value
+// in the third row leaves valid and uv as with the clean matrix; ndcZ is 0
+// for a NaN clip z and clamped for an overflowing one.
+TEST(SurfaceProjection, ClipZDecidesNothing) {
+  const glm::mat4 m = glm::perspective(1.0f, 1.3f, 0.1f, 100.0f);
+  const glm::vec3 p(0.4f, -0.3f, -3.0f);
+  const SnellScreenPoint clean = snellSurfaceViewToUv(snellDepthSurface(m, 0.1f, 100.0f, SNELL_DEPTH_GL, 0.0f), p);
+  ASSERT_TRUE(clean.valid);
+  for (float e : {kNaN, 3e38f}) {
+    glm::mat4 bad = m;
+    bad[2][2] = e;
+    const SnellDepthSurface surf = snellDepthSurface(bad, 0.1f, 100.0f, SNELL_DEPTH_GL, 0.0f);
+    ASSERT_TRUE(surf.perspective);
+    const SnellScreenPoint sp = snellSurfaceViewToUv(surf, p);
+    EXPECT_TRUE(sp.valid) << e;
+    EXPECT_EQ(sp.uv, clean.uv) << e;
+    EXPECT_EQ(sp.ndcZ, std::isnan(e) ? 0.0f : -std::numeric_limits<float>::max()) << e;
+  }
+}
+
 // A surface whose matrix is changed to another shape must be completed again
 // (snellDepthSurfaceComplete clears its flag): then the general path runs; a
 // stale flag would ignore the shear.

@@ -45,7 +45,8 @@ contract:
     performed (+1 for the start test).
   - valid = false, with snellHitMiss numbers (finite), when the segment is
     invalid (dir.z >= 0: rays towards the camera; zNearest <= zFarthest
-    including Zmin == Zmax; NaN/Inf inputs; planes at or behind the eye): 0
+    including Zmin == Zmax; NaN/Inf inputs, but for the matrix's third row,
+    which the segment does not read; planes at or behind the eye): 0
     fetches; or when nothing advanced and S maps to an empty or off-screen
     texel (rays leaving the screen, all-empty buffers).
 source: M. M. Oliveira, M. Brauwers, "Real-Time Refraction Through Deformable

@@ -75,6 +75,8 @@ SNELL_FN_INLINE SnellScreenPoint snellSurfaceViewToUv(SNELL_IN(SnellDepthSurface
   float cy = c1.y * pView.y + c2.y * pView.z;
   float cz = c2.z * pView.z + c3.z;
   float cw = -pView.z;
+  // cw's upper bound is implied by cx (c2.x times an infinite z is never
+  // finite) unless a compiler folds a constant zero c2.x: tested outright.
   if (!SNELL_FINITE(cx) || !SNELL_FINITE(cy) || !(cw >= SNELL_FLT_MIN && cw <= SNELL_FLT_MAX)) {
     return r;
   }
