@@ -3776,11 +3776,12 @@ contract:
     zFarthest >= 0 (denormal values count as 0 throughout: GPUs may flush
     them); S or E project with clip w <= 0 or not finite; or any result
     overflows (e.g. T1.z so small that S is at infinity, or a clip w so small
-    that S's or E's ndc does: no clamp keeps such a segment). A plane at or behind the eye (z >= 0) is rejected rather than
-    clamped to the near plane: eq. 8 needs S~.w = -S.z > 0, the back-face depth
-    extremes of a rendered object always lie in front of the near plane, so such
-    input is a caller bug, and clamping would silently search a segment the caller
-    did not ask for.
+    that S's or E's ndc does: no clamp keeps such a segment). A plane at or
+    behind the eye (z >= 0) is rejected rather than clamped to the near
+    plane: eq. 8 needs S~.w = -S.z > 0, the back-face depth extremes of a
+    rendered object always lie in front of the near plane, so such input is a
+    caller bug, and clamping would silently search a segment the caller did
+    not ask for.
   - alpha (and uv) for a valid ray and pz >= 0 (or denormal), NaN or Inf (no
     projection): alpha 0,
     uv = ts, i.e. the search start.
@@ -3902,8 +3903,9 @@ contract:
     deeper than zNearest (a search never runs backwards along the ray); it ends
     at E on the plane z = zFarthest. k1, k2, ts, dt as snellTexRaySetup.
   - valid = false (every field 0, finite) when: any input is NaN or Inf (matrix
-    included, but for its third row, which snellTexRaySetup does not read); dir.z >= 0 or denormal (the ray points towards the camera or runs
-    parallel to the image plane: it never reaches deeper planes); zNearest <=
+    included, but for its third row, which snellTexRaySetup does not read);
+    dir.z >= 0 or denormal (the ray points towards the camera or runs parallel
+    to the image plane: it never reaches deeper planes); zNearest <=
     zFarthest (Zmin == Zmax, swapped or empty range); the origin is at or beyond
     zFarthest (nothing left to search); and every case snellTexRaySetup
     rejects (a plane at or behind the eye, S or E not projectable, overflow).

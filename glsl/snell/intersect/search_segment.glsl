@@ -21,8 +21,9 @@ contract:
     deeper than zNearest (a search never runs backwards along the ray); it ends
     at E on the plane z = zFarthest. k1, k2, ts, dt as snellTexRaySetup.
   - valid = false (every field 0, finite) when: any input is NaN or Inf (matrix
-    included, but for its third row, which snellTexRaySetup does not read); dir.z >= 0 or denormal (the ray points towards the camera or runs
-    parallel to the image plane: it never reaches deeper planes); zNearest <=
+    included, but for its third row, which snellTexRaySetup does not read);
+    dir.z >= 0 or denormal (the ray points towards the camera or runs parallel
+    to the image plane: it never reaches deeper planes); zNearest <=
     zFarthest (Zmin == Zmax, swapped or empty range); the origin is at or beyond
     zFarthest (nothing left to search); and every case snellTexRaySetup
     rejects (a plane at or behind the eye, S or E not projectable, overflow).
