@@ -92,6 +92,9 @@ SNELL_FN_INLINE SnellTexRay snellTexRaySetup(vec3 p1, vec3 t1, float zNearest, f
   // Clip x, y and w only: the segment never needs its ends' depth, so the z
   // row is neither computed nor tested. The sums keep SNELL_MUL's association
   // in GLM, (c0 x + c1 y) + (c2 z + c3), so the C++ bits are the product's.
+  // Written out rather than through snellViewToClip: llvmpipe drops the
+  // unused row either way, g++ keeps the whole product (CBS-5 in C++: 1071
+  // instead of 996 instructions per ray, benchmarks/kernels/kernel_table.sh).
   vec4 c0 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 0);
   vec4 c1 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 1);
   vec4 c2 = SNELL_CAMERA_MAT_COLUMN(clipFromView, 2);
