@@ -23,7 +23,11 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 gpu=0
-[ "${1:-}" = --gpu ] && gpu=1
+case "${1:-}" in
+  "") ;;
+  --gpu) gpu=1 ;;
+  *) echo "guard_study.sh: unknown argument '$1' (usage: bash benchmarks/kernels/guard_study.sh [--gpu])" >&2; exit 2 ;;
+esac
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mkdir "$tmp/tree"
