@@ -112,6 +112,35 @@ TEST(LabScene, UnknownFieldIsATypo) {
   EXPECT_NE(top.find("enviroment: unknown field"), std::string::npos) << top;
 }
 
+// nlohmann::json keeps the last of two equal keys; the scene reader refuses them (a second "object" used to
+// replace the first silently), naming both lines; an escaped spelling of the same key is the same key.
+TEST(LabScene, AKeyGivenTwiceIsAnError) {
+  const std::string twice = "{\n"
+                            "  \"camera\": { \"position\": [0, 0, 5] },\n"
+                            "  \"object\": { \"mesh\": { \"type\": \"icosphere\" } },\n"
+                            "  \"object\": { \"mesh\": { \"type\": \"torus\" } }\n"
+                            "}\n";
+  const std::string msg = schemaError(twice, "twice.json");
+  EXPECT_EQ(msg.rfind("twice.json:4: object: given twice (first on line 3)", 0), 0u) << msg;
+  const std::string nested = schemaError(withCamera(R"({ "position": [0, 0, 5], "fov": 40, "fov": 50 })"));
+  EXPECT_NE(nested.find("camera.fov: given twice"), std::string::npos) << nested;
+  const std::string escaped = schemaError(withCamera(R"({ "position": [0, 0, 5], "f\u006Fv": 40, "fov": 50 })"));
+  EXPECT_NE(escaped.find("camera.fov: given twice"), std::string::npos) << escaped;
+  // Equal values in an array are no duplicate keys.
+  EXPECT_NO_THROW(parseScene(withCamera(R"({ "position": [5, 5, 5] })"), "array.json"));
+}
+
+// A misspelt required field is reported as the unknown field it is, with the name it was meant to be; a
+// missing one that nothing resembles stays "missing".
+TEST(LabScene, AMisspeltRequiredFieldIsUnknownNotMissing) {
+  const std::string objet = schemaError(R"({ "camera": { "position": [0, 0, 5] }, "objet": { "mesh": { "type": "icosphere" } } })");
+  EXPECT_NE(objet.find("objet: unknown field (did you mean \"object\"?"), std::string::npos) << objet;
+  const std::string mesh = schemaError(R"({ "camera": { "position": [0, 0, 5] }, "object": { "mesh": { "tpye": "icosphere" } } })");
+  EXPECT_NE(mesh.find("object.mesh.tpye: unknown field (did you mean \"type\"?"), std::string::npos) << mesh;
+  const std::string absent = schemaError(R"({ "camera": { "position": [0, 0, 5] }, "colour": 1 })");
+  EXPECT_NE(absent.find("object: missing (required: an object)"), std::string::npos) << absent;
+}
+
 TEST(LabScene, EachBadFieldIsNamed) {
   struct Case {
     const char* text;

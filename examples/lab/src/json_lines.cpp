@@ -1,5 +1,6 @@
 #include "json_lines.hpp"
 
+#include <cstdlib>
 #include <string_view>
 
 namespace snell::lab::detail {
@@ -45,7 +46,21 @@ std::string JsonLines::stringToken() {
     if (text_[pos_] == '\\' && pos_ + 1 < text_.size()) {
       advance();
       const char e = text_[pos_];
-      s += e == 'n' ? '\n' : e == 't' ? '\t' : e;  // \uXXXX kept raw: keys are ASCII
+      if (e == 'u' && pos_ + 4 < text_.size()) {
+        // \uXXXX: an ASCII code point is that character (so "\u006Fbject" is the key object, as the JSON
+        // parser reads it); any other is kept raw (no schema key uses one).
+        const std::string hex = text_.substr(pos_ + 1, 4);
+        char* end = nullptr;
+        const long code = std::strtol(hex.c_str(), &end, 16);
+        if (end == hex.c_str() + 4 && code > 0 && code < 0x80) {
+          for (int i = 0; i < 4; ++i) advance();
+          s += static_cast<char>(code);
+        } else {
+          s += e;
+        }
+      } else {
+        s += e == 'n' ? '\n' : e == 't' ? '\t' : e;
+      }
     } else {
       s += text_[pos_];
     }
@@ -91,7 +106,10 @@ void JsonLines::value(const std::string& path, int depth) {
     skipValue();
     return;
   }
-  lines_.emplace(path, lineNo_);
+  // A path is recorded once; only a key repeated in one object reaches an existing one (array elements
+  // carry their index).
+  const auto inserted = lines_.emplace(path, lineNo_);
+  if (!inserted.second && duplicate_.path.empty()) duplicate_ = {path, inserted.first->second, lineNo_};
   const char c = text_[pos_];
   if (c == '{') {
     advance();

@@ -2,6 +2,7 @@
 
 #include "lab/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -114,7 +115,7 @@ double ObjectReader::number(const std::string& key, double fallback, Range range
 }
 
 double ObjectReader::requiredNumber(const std::string& key, Range range) {
-  if (!has(key)) fail(key, "missing (required: a number" + range.describe() + ")");
+  if (!has(key)) failMissing(key, "a number" + range.describe());
   return number(key, 0.0, range);
 }
 
@@ -143,7 +144,7 @@ std::string ObjectReader::string(const std::string& key, const std::string& fall
 }
 
 std::string ObjectReader::requiredString(const std::string& key) {
-  if (!has(key)) fail(key, "missing (required: a string)");
+  if (!has(key)) failMissing(key, "a string");
   const std::string s = string(key, "");
   if (s.empty()) fail(key, "expected a non-empty string, got \"\"");
   return s;
@@ -153,7 +154,7 @@ std::string ObjectReader::choice(const std::string& key, std::initializer_list<c
                                  const std::string& fallback, bool required) {
   std::string list;
   for (const char* o : options) list += (list.empty() ? "\"" : ", \"") + std::string(o) + "\"";
-  if (required && !has(key)) fail(key, "missing (required: one of " + list + ")");
+  if (required && !has(key)) failMissing(key, "one of " + list);
   const Json* j = get(key);
   if (!j) return fallback;
   if (j->is_string())
@@ -163,7 +164,7 @@ std::string ObjectReader::choice(const std::string& key, std::initializer_list<c
 }
 
 vec3 ObjectReader::vector3(const std::string& key, vec3 fallback, Range element, bool required) {
-  if (required && !has(key)) fail(key, "missing (required: an array of 3 numbers)");
+  if (required && !has(key)) failMissing(key, "an array of 3 numbers");
   const Json* j = get(key);
   if (!j) return fallback;
   const std::string want = "expected an array of 3 numbers" + (element.describe().empty() ? std::string() : " each" + element.describe());
@@ -249,7 +250,7 @@ std::vector<vec3> ObjectReader::colorList(const std::string& key, std::size_t mi
 
 ObjectReader ObjectReader::object(const std::string& key) {
   const Json* j = get(key);
-  if (!j) fail(key, "missing (required: an object)");
+  if (!j) failMissing(key, "an object");
   return ObjectReader(*j, childPath(key), src_);
 }
 
@@ -263,6 +264,42 @@ std::vector<ObjectReader> ObjectReader::objectArray(const std::string& key, std:
   for (std::size_t i = 0; i < j->size(); ++i)
     out.emplace_back((*j)[i], childPath(key) + "[" + std::to_string(i) + "]", src_);
   return out;
+}
+
+namespace {
+// Edit distance (insertions, deletions, substitutions, adjacent swaps) of two short keys.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i)
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0u : 1u)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+}  // namespace
+
+// A required field is missing. When the object holds a field nobody asked for that is a likely misspelling
+// of it ("objet" for "object"), that field is the error: the user wrote it, and "missing" would send them
+// looking for the wrong thing.
+void ObjectReader::failMissing(const std::string& key, const std::string& required) const {
+  const std::size_t limit = std::max<std::size_t>(1, key.size() / 3);
+  std::string best;
+  std::size_t bestDistance = limit + 1;
+  if (node_.is_object())
+    for (auto it = node_.begin(); it != node_.end(); ++it) {
+      if (known_.count(it.key()) || it.key().size() > key.size() + limit) continue;
+      const std::size_t d = editDistance(it.key(), key);
+      if (d < bestDistance) {
+        bestDistance = d;
+        best = it.key();
+      }
+    }
+  if (!best.empty())
+    detail::fail(src_, childPath(best), "unknown field (did you mean \"" + key + "\"? it is required: " + required + ")");
+  fail(key, "missing (required: " + required + ")");
 }
 
 void ObjectReader::finish() const {

@@ -52,6 +52,9 @@ class ObjectReader {
   const std::string& path() const { return path_; }
   bool has(const std::string& key);  // also declares the key as known
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+  // "missing (required: <required>)", or, when a field nobody asked for is a likely misspelling of `key`,
+  // "unknown field (did you mean ...)" on that field.
+  [[noreturn]] void failMissing(const std::string& key, const std::string& required) const;
 
   double number(const std::string& key, double fallback, Range range);
   double requiredNumber(const std::string& key, Range range);

@@ -176,7 +176,7 @@ TextureSpec readTexture(ObjectReader r, const std::string& sceneFile) {
       t.colorB = r.vector3("color_b", t.colorB, kColor);
     } else if (type == "gradient") {
       t.kind = TextureKind::Gradient;
-      if (!r.has("colors")) r.fail("colors", "missing (required: an array of at least 2 colours [r, g, b])");
+      if (!r.has("colors")) r.failMissing("colors", "an array of at least 2 colours [r, g, b]");
       t.colors = r.colorList("colors", 2, kColor);
       const std::string dir = r.choice("direction", {"horizontal", "vertical", "diagonal"}, "horizontal");
       t.direction = dir == "horizontal" ? 0 : dir == "vertical" ? 1 : 2;
@@ -268,6 +268,12 @@ Scene parseScene(const std::string& text, const std::string& file) {
     throw Error(ErrorKind::Parse, (file.empty() ? std::string("<scene>") : file) + ": malformed JSON: " + what);
   }
   const detail::JsonLines lines(text);
+  if (!lines.duplicate().path.empty()) {
+    const detail::JsonLines::Duplicate& d = lines.duplicate();
+    throw Error(ErrorKind::Schema, (file.empty() ? std::string("<scene>") : file) + ":" +
+                                       std::to_string(d.secondLine) + ": " + d.path + ": given twice (first on line " +
+                                       std::to_string(d.firstLine) + "); each field may appear once");
+  }
   const detail::SourceInfo src{file, &lines};
   ObjectReader r(root, "", src);
   Scene s;
