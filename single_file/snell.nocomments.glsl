@@ -2497,6 +2497,33 @@ SNELL_FN SnellHit snellIntersectWith(vec3 origin, vec3 dir, SNELL_TEX2D depthTex
 }
 
 #endif
+
+#ifndef SNELL_INTERSECT_FOREGROUND_GLSL
+#define SNELL_INTERSECT_FOREGROUND_GLSL
+
+#ifndef SNELL_FOREGROUND_TOLERANCE
+#  define SNELL_FOREGROUND_TOLERANCE 0.01f
+#endif
+
+SNELL_FN SnellHit snellRejectForeground(SnellHit h, vec3 origin, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) s,
+                                        float tolerance) {
+  if (!h.valid) {
+    return h;
+  }
+  if (!SNELL_FINITE(origin.z) || !SNELL_FINITE(h.position.z)) {
+    return snellHitMiss(h.fetches);
+  }
+  SnellSurfaceSample x = snellSampleSurface(depthTex, h.uv, s);
+  h.fetches = h.fetches + 1;
+  float t = tolerance > 0.0f ? min(tolerance, 1.0f) : 0.0f;
+  float dNear = min(-origin.z, -h.position.z);
+  if (x.valid && -x.viewZ < dNear * (1.0f - t)) {
+    return snellHitMiss(h.fetches);
+  }
+  return h;
+}
+
+#endif
 #endif
 #ifndef SNELL_SHADE_GLSL
 #define SNELL_SHADE_GLSL
@@ -3520,6 +3547,9 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
   vec3 world = d.x * v.envX + d.y * v.envY + d.z * v.envZ;
   if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
     e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, slot.intersect);
+    SnellDepthSurface readAs = scene;
+    readAs.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+    e.hit = snellRejectForeground(e.hit, origin, sceneDepth, readAs, SNELL_FOREGROUND_TOLERANCE);
     e.fetches = e.hit.fetches;
     if (e.hit.valid) {
       vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);

@@ -2126,4 +2126,31 @@ SNELL_FN SnellHit snellIntersectWith(vec3 origin, vec3 dir, SNELL_TEX2D depthTex
 }
 
 #endif
+
+#ifndef SNELL_INTERSECT_FOREGROUND_GLSL
+#define SNELL_INTERSECT_FOREGROUND_GLSL
+
+#ifndef SNELL_FOREGROUND_TOLERANCE
+#  define SNELL_FOREGROUND_TOLERANCE 0.01f
+#endif
+
+SNELL_FN SnellHit snellRejectForeground(SnellHit h, vec3 origin, SNELL_TEX2D depthTex, SNELL_IN(SnellDepthSurface) s,
+                                        float tolerance) {
+  if (!h.valid) {
+    return h;
+  }
+  if (!SNELL_FINITE(origin.z) || !SNELL_FINITE(h.position.z)) {
+    return snellHitMiss(h.fetches);
+  }
+  SnellSurfaceSample x = snellSampleSurface(depthTex, h.uv, s);
+  h.fetches = h.fetches + 1;
+  float t = tolerance > 0.0f ? min(tolerance, 1.0f) : 0.0f;
+  float dNear = min(-origin.z, -h.position.z);
+  if (x.valid && -x.viewZ < dNear * (1.0f - t)) {
+    return snellHitMiss(h.fetches);
+  }
+  return h;
+}
+
+#endif
 #endif

@@ -18,6 +18,7 @@ struct KHit {
   vec2 uv;
   bool valid;
   int fetches;
+  float depth;  // kPlaneNormalOn: the depth texel its last lookup read at uv (the foreground rule reuses it)
 };
 
 KHit kMiss(int fetches) {
@@ -26,6 +27,7 @@ KHit kMiss(int fetches) {
   h.uv = vec2(0.0);
   h.valid = false;
   h.fetches = fetches;
+  h.depth = 0.0;
   return h;
 }
 
@@ -173,13 +175,15 @@ KHit kPlaneNormalOn(sampler2D depthTex, sampler2D normalTex, float emptyDepth, b
   if (!projected && !kProject(p, uv)) return kMiss(fetches);
   fetches += 1;
   if (!kOnScreen(uv)) return kMiss(fetches);
-  bool onSurface = texelFetch(depthTex, kTexel(uv, size), 0).x != emptyDepth;
+  float last = texelFetch(depthTex, kTexel(uv, size), 0).x;
+  bool onSurface = last != emptyDepth;
   if (!onSurface && !closed) return kMiss(fetches);
   KHit h;
   h.position = p;
   h.uv = onSurface ? uv : planeUv;
   h.valid = true;
   h.fetches = fetches;
+  h.depth = last;
   return h;
 }
 
@@ -378,6 +382,12 @@ KShade kTwoInterface(vec3 p1, vec3 n1) {
     exitDirection = kRefract(t1, dot(n2, t1) > 0.0 ? -n2 : n2, 1.0 / kEta);
   }
   KHit scene = kPlaneNormalOn(kSceneDepth, kSceneNormal, 1.0, false, false, exitPoint, exitDirection, 2);
+  // The foreground rule (snellRejectForeground, tolerance 0.01) on the texel the hit's last lookup read: on
+  // an open scene a hit is on a surface, so no second read (snell counts one; so does the kernel).
+  if (scene.valid) {
+    scene.fetches += 1;
+    if (-kViewZ(scene.depth) < min(-exitPoint.z, -scene.position.z) * (1.0 - 0.01)) scene = kMiss(scene.fetches);
+  }
   r.fetches += scene.fetches + 1;
   r.fellBack = !back.valid || !scene.valid;
   vec3 exitColor = scene.valid ? textureLod(kSceneColor, scene.uv, 0.0).xyz : kEnvironmentAlong(exitDirection);

@@ -22,4 +22,5 @@
 #include "intersect/inside_plane.glsl"
 #include "intersect/dda_march.glsl"
 #include "intersect/intersect_with.glsl"
+#include "intersect/foreground.glsl"
 #endif

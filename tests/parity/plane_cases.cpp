@@ -1,6 +1,7 @@
 // The plane-family intersect/ parity and property cases (see parity_case.hpp):
 // hit, depth surface, surface point, single sample, the two plane strategies
-// with refinement and the normal plane's far start, and the depth pyramid reduction.
+// with refinement and the normal plane's far start, the depth pyramid reduction,
+// and the foreground rule of the scene slots.
 //
 // Textures: two analytic scenes of tests/support/depth_scenes.hpp at 160x120
 // (sphereBack, GL convention, a back-face buffer; silhouette, reversed Z, an
@@ -375,6 +376,34 @@ std::vector<ParityIO> reduceInputs() {
   return v;
 }
 
+// A strategy's hit (on the pixel ray of its uv, in front of and behind the surfaces) and a ray origin
+// depth, for the foreground rule: both verdicts are common. Layout: (uv, origin z, scene), (position,
+// valid), the projection's entries, (depth filter, fetches so far, tolerance).
+std::vector<ParityIO> foregroundInputs() {
+  InputGen g(617);
+  std::vector<ParityIO> v;
+  const float tolerances[] = {0.0f, 0.01f, 0.2f, 1.0f, -0.5f, 3.0f};
+  for (int i = 0; i < kInputs; ++i) {
+    const int which = g.chance(0.5f) ? 0 : 1;
+    const snell_test::DepthScene& sc = which ? sceneB() : sceneA();
+    glm::vec2 uv(g.uniform(-0.05f, 1.05f), g.uniform(-0.05f, 1.05f));
+    glm::vec3 p = glm::vec3(sc.pixelRay(glm::dvec2(uv)) * double(g.uniform(1.0f, 15.0f)));
+    float originZ = -g.uniform(1.0f, 15.0f);
+    float tolerance = tolerances[g.integer(0, 5)];
+    if (g.chance(0.03f)) uv[g.integer(0, 1)] = g.hostile();
+    if (g.chance(0.03f)) p = g.hostileVector();
+    if (g.chance(0.03f)) originZ = g.hostile();
+    if (g.chance(0.03f)) tolerance = g.hostile();
+    ParityIO in{};
+    in.v[0] = glm::vec4(uv, originZ, float(which));
+    in.v[1] = glm::vec4(p, g.chance(0.9f) ? 1.0f : 0.0f);
+    in.v[2] = matrixEntries(sc);
+    in.v[3] = glm::vec4(float(i % 2), float(g.integer(0, 20)), tolerance, 0.0f);
+    v.push_back(in);
+  }
+  return v;
+}
+
 }  // namespace
 
 namespace parity_plane {
@@ -578,6 +607,27 @@ SNELL_PARITY_CASE(snellIntersectSingleSample, [] { return rayInputs(609, false);
                     PLANE_PARITY_SET_HIT(snellIntersectSingleSample(origin, dir, planeDepthB, s));
                   } else {
                     PLANE_PARITY_SET_HIT(snellIntersectSingleSample(origin, dir, planeDepthA, s));
+                  })
+// The rule returns the hit it is given or a miss: uv and position exactly (a hit given with non-finite ones
+// is returned as it is, the pass-through).
+SNELL_PARITY_CASE(snellRejectForeground, foregroundInputs,
+                  (vec2, hitUv, 0)(float, originZ, 2)(bool, sceneB, 3)(vec3, hitPosition, 4)(bool, hitValid, 7)
+                  (vec4, entries, 8)(int, depthFilter, 12)(int, hitFetches, 13)(float, tolerance, 14),
+                  PLANE_HIT_OUT(exact),
+                  sampling().passThrough({"hitUv", "hitPosition"}, {"uv", "position"},
+                                         "intersect/foreground.glsl: an invalid hit, or one kept, is returned as it "
+                                         "was given"),
+                  SnellDepthSurface s = planeParitySurface(sceneB, entries);
+                  s.depthFilter = depthFilter;
+                  SnellHit h;
+                  h.uv = hitUv;
+                  h.position = hitPosition;
+                  h.valid = hitValid;
+                  h.fetches = hitFetches;
+                  if (sceneB) {
+                    PLANE_PARITY_SET_HIT(snellRejectForeground(h, vec3(0.0f, 0.0f, originZ), planeDepthB, s, tolerance));
+                  } else {
+                    PLANE_PARITY_SET_HIT(snellRejectForeground(h, vec3(0.0f, 0.0f, originZ), planeDepthA, s, tolerance));
                   })
 SNELL_PARITY_CASE(snellHitOnSurface, hitOnSurfaceInputs,
                   (vec3, p, 0)(bool, sceneB, 3)(int, fetchesSoFar, 7)(vec4, entries, 8),

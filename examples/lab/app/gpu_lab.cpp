@@ -13,8 +13,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
+#include <limits>
 
 namespace snell::lab {
 
@@ -49,6 +51,10 @@ ShadeConstants shadeConstants(const SceneFrame& frame, int margin) {
   k.params.envZ = m[2];
   const Bounds box = meshBounds(frame.object);
   k.params.backRange = box.diagonal();
+  // The Behind layer's clip plane: the object's nearest vertex along the view axis.
+  float nearest = std::numeric_limits<float>::max();
+  for (const vec3& p : frame.object.positions) nearest = std::min(nearest, -(k.viewFromWorld * vec4(p, 1.0f)).z);
+  k.objectNearDistance = frame.object.positions.empty() ? 0.0f : std::max(0.0f, nearest);
   // Every exit ray starts inside the object and ends on the object or the opaque scene (else it leaves
   // the scene): the diagonal of the box around both bounds how far it can travel to a hit.
   vec3 lo = box.lo, hi = box.hi;
@@ -106,8 +112,8 @@ struct GpuLab::Impl {
   gpu::Program background, scene, back;
   gpu::DepthPyramidPass pyramidPass;
   std::vector<gpu::Program> refract;
-  gpu::Framebuffer sceneFb, backFb, objectFrontFb, frontFb;
-  gpu::DepthPyramid scenePyramid, backPyramid;
+  gpu::Framebuffer sceneFb, fullFb, backFb, objectFrontFb, frontFb;
+  gpu::DepthPyramid scenePyramid, fullPyramid, backPyramid;
   gpu::VertexArray vao;
   gpu::UniformBuffer labUniforms;
 
@@ -133,10 +139,12 @@ struct GpuLab::Impl {
                                     flatten(dirs.labGlsl / "lab_back.frag", dirs))),
         pyramidPass(gl, dirs.snellGlsl),
         sceneFb(gl, bufferWidth, bufferHeight, 2, true),
+        fullFb(gl, bufferWidth, bufferHeight, 2, true),
         backFb(gl, bufferWidth, bufferHeight, 1, true),
         objectFrontFb(gl, bufferWidth, bufferHeight, 1, true),
         frontFb(gl, width, height, 4, true),
         scenePyramid(gl, bufferWidth, bufferHeight),
+        fullPyramid(gl, bufferWidth, bufferHeight),
         backPyramid(gl, bufferWidth, bufferHeight),
         vao(gl),
         labUniforms(gl, &k.params, sizeof(LabParams)) {
@@ -156,11 +164,14 @@ struct GpuLab::Impl {
       paintingCorners.push_back(painting.corners());
     }
     // The scene colour is read with bilinear filtering (no mips) on both sides.
-    gl.BindTexture(GL_TEXTURE_2D, sceneFb.colorTexture(0));
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    for (GLuint colorTexture : {sceneFb.colorTexture(0), fullFb.colorTexture(0)}) {
+      gl.BindTexture(GL_TEXTURE_2D, colorTexture);
+      gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+      gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    }
     const GLint normalGl = k.normalFilter == NormalFilter::Linear ? GL_LINEAR : GL_NEAREST;
-    for (GLuint normalTexture : {backFb.colorTexture(0), objectFrontFb.colorTexture(0), sceneFb.colorTexture(1)}) {
+    for (GLuint normalTexture :
+         {backFb.colorTexture(0), objectFrontFb.colorTexture(0), sceneFb.colorTexture(1), fullFb.colorTexture(1)}) {
       gl.BindTexture(GL_TEXTURE_2D, normalTexture);
       gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, normalGl);
       gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, normalGl);
@@ -213,13 +224,13 @@ struct GpuLab::Impl {
     indices.bindBase(2);
   }
 
-  void drawStatic() {
-    vao.bind();
-    // (1) The opaque scene: environment background (depth untouched), then the paintings.
-    sceneFb.clearColor(0, vec4(0.0f));
-    sceneFb.clearColor(1, vec4(0.0f));
-    sceneFb.clearDepth(1.0f);
-    sceneFb.bind();
+  // (1) The opaque scene: environment background (depth untouched), then the paintings, those nearer than
+  // `clipNearerThan` (a view distance; 0: none) clipped away.
+  void drawScene(const gpu::Framebuffer& fb, float clipNearerThan) {
+    fb.clearColor(0, vec4(0.0f));
+    fb.clearColor(1, vec4(0.0f));
+    fb.clearDepth(1.0f);
+    fb.bind();
     gl.Disable(GL_CULL_FACE);
     gl.Disable(GL_DEPTH_TEST);
     gl.DepthMask(GL_FALSE);
@@ -230,12 +241,22 @@ struct GpuLab::Impl {
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthFunc(GL_LESS);
     scene.use();
+    scene.set("clipNearerThan", clipNearerThan);
+    if (clipNearerThan > 0.0f) gl.Enable(GL_CLIP_DISTANCE0);
     for (std::size_t i = 0; i < paintingTextures.size(); ++i) {
       paintingTextures[i].bind(0);
       for (int c = 0; c < 4; ++c) scene.set("corners[" + std::to_string(c) + "]", paintingCorners[i][static_cast<std::size_t>(c)]);
       gl.DrawArrays(GL_TRIANGLES, 0, 6);
     }
+    gl.Disable(GL_CLIP_DISTANCE0);
     gpu::checkGl(gl, "scene pass");
+  }
+
+  void drawStatic() {
+    vao.bind();
+    // (1) The whole opaque scene, and the layer snell's rows read.
+    drawScene(fullFb, 0.0f);
+    drawScene(sceneFb, k.sceneLayer == SceneLayer::Behind ? k.objectNearDistance : 0.0f);
     // (2) The object's back faces: nearest-to-camera test reversed.
     backFb.clearColor(0, vec4(0.0f));
     backFb.clearDepth(0.0f);
@@ -259,22 +280,34 @@ struct GpuLab::Impl {
     // (3) Both depth pyramids.
     pyramidPass.build(backPyramid, backFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 0.0f);
     pyramidPass.build(scenePyramid, sceneFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 1.0f);
+    pyramidPass.build(fullPyramid, fullFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 1.0f);
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+
+  // Before pass 4 (not timed: an engine draws its glass into the depth its opaque pass left): the glass is
+  // drawn where it is nearer than the whole opaque scene, whose depth (the viewport's part of the
+  // guard-banded buffer, texel for texel) becomes the pass's depth.
+  void prepareTechnique() {
+    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, fullFb.id());
+    gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, frontFb.id());
+    gl.BlitFramebuffer(k.margin, k.margin, k.margin + width, k.margin + height, 0, 0, width, height,
+                       GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    gpu::checkGl(gl, "depth copy before the refraction pass");
   }
 
   void drawTechnique(std::size_t index) {
     frontFb.bind();
     const vec4 zero(0.0f);
     for (int a = 0; a < 4; ++a) gl.ClearBufferfv(GL_COLOR, a, &zero[0]);
-    const float one = 1.0f;
-    gl.ClearBufferfv(GL_DEPTH, 0, &one);
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthFunc(GL_LESS);
     gl.Enable(GL_CULL_FACE);
     gl.CullFace(GL_BACK);
-    const GLuint units[10] = {backFb.depthTexture(),   backFb.colorTexture(0),   backPyramid.texture(),
-                              sceneFb.depthTexture(),  sceneFb.colorTexture(1),  scenePyramid.texture(),
-                              sceneFb.colorTexture(0), environment.id(),         objectFrontFb.depthTexture(),
+    const gpu::Framebuffer& sceneRead = shaders.at(index).readsFullScene() ? fullFb : sceneFb;
+    const gpu::DepthPyramid& pyramidRead = shaders.at(index).readsFullScene() ? fullPyramid : scenePyramid;
+    const GLuint units[10] = {backFb.depthTexture(),     backFb.colorTexture(0),     backPyramid.texture(),
+                              sceneRead.depthTexture(),  sceneRead.colorTexture(1),  pyramidRead.texture(),
+                              sceneRead.colorTexture(0), environment.id(),           objectFrontFb.depthTexture(),
                               objectFrontFb.colorTexture(0)};
     for (int u = 0; u < 10; ++u) {
       gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(u));
@@ -314,6 +347,9 @@ StaticBuffers GpuLab::readStatic() const {
   b.sceneColor = impl_->sceneFb.readColor(0);
   b.sceneNormal = impl_->sceneFb.readColor(1);
   b.sceneDepth = impl_->sceneFb.readDepth();
+  b.fullColor = impl_->fullFb.readColor(0);
+  b.fullNormal = impl_->fullFb.readColor(1);
+  b.fullDepth = impl_->fullFb.readDepth();
   b.backNormal = impl_->backFb.readColor(0);
   b.backDepth = impl_->backFb.readDepth();
   b.frontNormal = impl_->objectFrontFb.readColor(0);
@@ -322,6 +358,7 @@ StaticBuffers GpuLab::readStatic() const {
 }
 
 double GpuLab::renderTechnique(std::size_t index) {
+  impl_->prepareTechnique();
   impl_->gl.Finish();
   const auto t0 = std::chrono::steady_clock::now();
   impl_->drawTechnique(index);

@@ -1,11 +1,14 @@
 // The lab's GL pipeline on one context (OSMesa or EGL, Mesa llvmpipe by
 // default): (1) the opaque scene (environment background, paintings: colour,
-// depth, view-space normal), (2) the refractive object's back faces (depth
+// depth, view-space normal), whole and as the layer behind the object's nearest
+// point (SceneLayer), (2) the refractive object's back faces (depth
 // GL_GREATER after clearing to 0, front faces culled, normals) and its front
 // faces (depth GL_LESS after clearing to 1, normals), (3) the depth
 // min/max pyramids of both depth buffers (glsl/passes/depth_pyramid.frag),
-// (4) the front faces with one technique (examples/glsl/lab_refract.frag):
-// colour, per-pixel stats and the fragment inputs, in RGBA32F attachments.
+// (4) the front faces with one technique (examples/glsl/lab_refract.frag),
+// depth-tested against the whole opaque scene (its depth copied in first, as an
+// engine draws its glass after its opaque pass): colour, per-pixel stats and
+// the fragment inputs, in RGBA32F attachments.
 #pragma once
 #include "lab/scene.hpp"
 
@@ -32,7 +35,12 @@ struct ShaderDirs {
 // Read back after passes 1-3: the viewport plus the guard band on every side
 // (ShadeConstants::margin texels), rendered with ShadeConstants::params.clipFromView.
 struct StaticBuffers {
-  Image sceneColor, sceneDepth, sceneNormal;  // depth in .x (window depth, GL convention, 1 = empty)
+  // The layer of the opaque scene that snell's rows read (SceneLayer): depth in .x (window depth, GL
+  // convention, 1 = empty).
+  Image sceneColor, sceneDepth, sceneNormal;
+  // The whole opaque scene: what the picture shows around the object, what the object is depth-tested
+  // against, and what the engine rows read (their opaque colour copy).
+  Image fullColor, fullDepth, fullNormal;
   Image backDepth, backNormal;                // depth in .x (0 = empty)
   Image frontDepth, frontNormal;              // the object's front faces: depth in .x (1 = empty)
 };
@@ -44,6 +52,13 @@ struct TechniqueBuffers {
   Image position;  // xyz view-space front position, w d_N
   Image normal;    // xyz interpolated front normal, w coverage (1 on the object)
 };
+
+// Which layer of the opaque scene snell's rows read (their exit and reflect slots). Behind: only what lies
+// beyond the object's nearest point (the scene drawn with a clip plane there), so an opaque object between
+// the camera and the glass is not in the buffers the refraction reads and what it hides is; Full: the
+// whole opaque scene, as an engine's colour copy holds it (the foreground rule then refuses the hits on
+// it, intersect/foreground.glsl, and the slot falls back). The engine rows always read the whole scene.
+enum class SceneLayer { Behind, Full };
 
 // How both sides read the normal buffers (back faces and opaque scene): GL_LINEAR
 // (the default: empty texels hold a zero normal, so a filtered read renormalized
@@ -64,6 +79,9 @@ struct ShadeConstants {
   // H / (H + 2 margin)); the techniques read the buffers through it, so exits just off the viewport are found.
   int margin = 0;
   NormalFilter normalFilter = NormalFilter::Linear;   // how both sides read the normal buffers
+  SceneLayer sceneLayer = SceneLayer::Behind;         // what snell's rows read
+  // The object's nearest view distance (its vertices'): where the Behind layer's clip plane lies.
+  float objectNearDistance = 0.0f;
 
   static LabParams defaultLabParams() {
     LabParams p{};
@@ -96,6 +114,7 @@ struct LabShader {
   int technique = -1;
   bool reference = false;
   int engineModel = -1;
+  bool readsFullScene() const { return engineModel >= 0; }  // an engine row reads its colour copy
 };
 
 class GpuLab {

@@ -61,7 +61,8 @@ constexpr int kTieUlps = 4;
 struct CpuBuffers {
   Texture2D backDepth, backNormal, backPyramid;
   Texture2D frontDepth, frontNormal;
-  Texture2D sceneDepth, sceneNormal, scenePyramid, sceneColor;
+  Texture2D sceneDepth, sceneNormal, scenePyramid, sceneColor;  // the layer snell's rows read
+  Texture2D fullDepth, fullNormal, fullPyramid, fullColor;      // the whole opaque scene (engine rows)
   Texture2D environment;
 };
 
@@ -75,6 +76,11 @@ CpuBuffers cpuBuffers(const StaticBuffers& b, const ShadeConstants& k, const Sce
   c.sceneDepth = Texture2D(b.sceneDepth);
   c.sceneNormal = Texture2D(b.sceneNormal, normalFilter);
   c.sceneColor = Texture2D(b.sceneColor, Filter::Linear);
+  c.fullDepth = Texture2D(b.fullDepth);
+  c.fullNormal = Texture2D(b.fullNormal, normalFilter);
+  c.fullColor = Texture2D(b.fullColor, Filter::Linear);
+  c.fullPyramid =
+      snellBuildDepthPyramid(c.fullDepth, snellDepthSurface(k.params.clipFromView, k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 1.0f));
   c.backPyramid =
       snellBuildDepthPyramid(c.backDepth, snellDepthSurface(k.params.clipFromView, k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 0.0f));
   c.scenePyramid =
@@ -122,13 +128,14 @@ Image downscale(const Image& img, int factor) {
 std::string markdownTable(const LabResult& r) {
   std::string s;
   s += "| technique | MSE vs ray traced | on TIR | MSE vs two-interface ref. | x bound | own error (MSE vs bound) | unshaded | "
-       "invalid | fetches/px | time ratio | time (ms) | CPU-GPU max | CPU-GPU > 1/255 | CPU-GPU > 4/255 (ties) |\n";
-  s += "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+       "invalid | leaks | fetches/px | time ratio | time (ms) | CPU-GPU max | CPU-GPU > 1/255 | CPU-GPU > 4/255 (ties) |\n";
+  s += "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const TechniqueRow& t : r.rows) {
     s += "| " + t.label + " | " + fmt("%.3g", t.mseFull) + " | " + fmt("%.3g", t.mseFullTir) + " | " +
          fmt("%.3g", t.mseTwo) + " | " +
          fmt("%.2fx", t.boundRatio) + " | " + fmt("%.3g", t.mseBound) + " | " + fmt("%.2f %%", 100.0 * t.unshadedShare) +
-         " | " + fmt("%.2f %%", 100.0 * t.invalidShare) + " | " + fmt("%.1f", t.fetchesPerPixel) + " | " +
+         " | " + fmt("%.2f %%", 100.0 * t.invalidShare) + " | " + std::to_string(t.leakPixels) + " | " +
+         fmt("%.1f", t.fetchesPerPixel) + " | " +
          fmt("%.2fx", t.costRatio) + " | " + fmt("%.2f", t.medianMs) + " | " + fmt("%.1f/255", 255.0 * t.cpuGpuMaxAbs) +
          " | " + fmt("%.3f %%", 100.0 * t.cpuGpuBeyond1) + " | " + std::to_string(t.cpuGpuBeyond4Pixels) + " (" +
          std::to_string(t.cpuGpuBeyond4Ties) + ") |\n";
@@ -193,7 +200,12 @@ std::string markdownTable(const LabResult& r) {
   }
   if (engineRows) s += ".\n";
   s += "\nunshaded: object pixels the technique's front-face pass did not cover (they show the scene behind). "
-       "invalid: pixels that fell back (no back-face or exit hit: environment along the ray). Time: the refraction "
+       "invalid: pixels that fell back (no back-face or exit hit: environment along the ray). leaks: pixels whose "
+       "refracted colour comes from an opaque surface nearer the camera than the object's own front face there (a "
+       "foreground shown inside the glass; snell's rows read " +
+       std::string(r.sceneLayer == SceneLayer::Behind ? "the scene layer behind the object's nearest point"
+                                                      : "the whole opaque scene") +
+       ", the engines' the whole scene, as their colour copy holds it). Time: the refraction "
        "pass alone, glFinish + steady clock, median of " + std::to_string(r.frames) + " frames (the bound: 1), all "
        "techniques interleaved, on " + r.gpu + "; ratios are to " + (unit ? unit->label : std::string("the first row")) +
        "; a software rasterizer's milliseconds say little about a GPU. CPU-GPU: the same technique function run in "
@@ -283,6 +295,7 @@ void writeJson(const fs::path& path, const LabResult& r) {
   j["height"] = r.height;
   j["object_pixels"] = r.objectPixels;
   j["guard_band_texels"] = r.guardBand;
+  j["scene_layer"] = r.sceneLayer == SceneLayer::Behind ? "behind" : "full";
   j["frames"] = r.frames;
   j["gpu"] = r.gpu;
   j["mse_two_interface_vs_full"] = r.mseTwoVsFull;
@@ -325,6 +338,8 @@ void writeJson(const fs::path& path, const LabResult& r) {
                     {"cpu_gpu_pixels_beyond_4_255", t.cpuGpuBeyond4Pixels},
                     {"cpu_gpu_pixels_beyond_4_255_ties", t.cpuGpuBeyond4Ties},
                     {"cpu_gpu_fetch_count_mismatch_share", t.fetchMismatch},
+                    {"leak_pixels", t.leakPixels},
+                    {"overdrawn_share", t.overdrawnShare},
                     {"cpu_gpu_worst_pixel", {t.worstX, t.worstY}}});
     if (const SnellEngineModelInfo* m = snellFindEngineModel(t.name)) {
       nlohmann::json sweep = nlohmann::json::array();
@@ -505,10 +520,33 @@ struct CpuShader {
   const LabParams& params;
   int margin;  // guard band of the buffers, texels per side
 
+  bool readsFullScene() const { return info.engine != nullptr; }
+
   SnellTwoInterfaceResult operator()(vec3 p1, vec3 n1, float dN) const {
+    const bool full = readsFullScene();
     return labShadeRow(info.techniqueId(), info.engineModel(), engineParameter, info.reference(), p1, n1, dN,
-                       cb.backDepth, cb.backNormal, cb.backPyramid, cb.frontDepth, cb.frontNormal, cb.sceneDepth,
-                       cb.sceneNormal, cb.scenePyramid, cb.sceneColor, cb.environment, params);
+                       cb.backDepth, cb.backNormal, cb.backPyramid, cb.frontDepth, cb.frontNormal,
+                       full ? cb.fullDepth : cb.sceneDepth, full ? cb.fullNormal : cb.sceneNormal,
+                       full ? cb.fullPyramid : cb.scenePyramid, full ? cb.fullColor : cb.sceneColor, cb.environment,
+                       params);
+  }
+
+  // A foreground leak: the transmitted colour of the pixel whose front face is at p1 comes from an opaque
+  // surface nearer the camera than that front face (the surface at the exit hit's texel of the depth
+  // buffer the row read). Counted where the exit ray heads away from the camera: a path that leaves
+  // through the front faces after bouncing inside may rightly see what stands in front.
+  bool leaks(vec3 p1, const SnellTwoInterfaceResult& r) const {
+    if (!r.exitHit.valid || !(r.exitDirection.z <= 0.0f)) return false;
+    const Image& depth = (readsFullScene() ? cb.fullDepth : cb.sceneDepth).level(0);
+    const vec2 uv = glm::clamp(r.exitHit.uv, vec2(0.0f), vec2(1.0f));
+    const int x = std::min(depth.width - 1, static_cast<int>(uv.x * static_cast<float>(depth.width)));
+    const int y = std::min(depth.height - 1, static_cast<int>(uv.y * static_cast<float>(depth.height)));
+    const double d = static_cast<double>(depth.at(x, y).x);
+    if (!(d < 1.0)) return false;  // empty: the environment
+    // Window depth to view distance in double (GL convention: d = (f (z - n)) / (z (f - n)) for distance z).
+    const double n = static_cast<double>(params.zNear), f = static_cast<double>(params.zFar);
+    const double distance = n * f / (f - d * (f - n));
+    return distance < -static_cast<double>(p1.z);
   }
 
   // Is a CPU/GPU difference at (x, y) a rounding tie (a texel or TIR boundary that the two builds'
@@ -544,7 +582,8 @@ struct CpuShader {
 };
 
 // Stage 4a: the C++ image of one technique: the same labShade per covered pixel of the GPU's front
-// pass, on the read-back inputs. rgb colour; stats x = fell back, y = fetches.
+// pass, on the read-back inputs. rgb colour; stats x = fell back, y = fetches, z = a foreground leak
+// (CpuShader::leaks).
 void shadeOnCpu(const CpuShader& shade, const TechniqueBuffers& tb, int threads, Image& color, Image& stats) {
   parallelRows(tb.normal.height, threads, [&](int y) {
     for (int x = 0; x < tb.normal.width; ++x) {
@@ -553,7 +592,8 @@ void shadeOnCpu(const CpuShader& shade, const TechniqueBuffers& tb, int threads,
       const vec4 p = tb.position.at(x, y);
       const SnellTwoInterfaceResult r = shade(vec3(p), vec3(n), p.w);
       color.at(x, y) = vec4(r.color, 1.0f);
-      stats.at(x, y) = vec4(r.fellBack ? 1.0f : 0.0f, static_cast<float>(r.fetches), 0.0f, 0.0f);
+      stats.at(x, y) = vec4(r.fellBack ? 1.0f : 0.0f, static_cast<float>(r.fetches),
+                            shade.leaks(vec3(p), r) ? 1.0f : 0.0f, 0.0f);
     }
   });
 }
@@ -570,7 +610,7 @@ void compareCpuGpu(const CpuShader& shade, const TechniqueBuffers& tb, const Ima
   row.worstX = c.worstX;
   row.worstY = c.worstY;
   row.cpuGpuBeyond4Pixels = static_cast<int>(c.beyond4);
-  std::size_t invalid = 0, backMiss = 0, exitMiss = 0, fetchDiff = 0;
+  std::size_t invalid = 0, backMiss = 0, exitMiss = 0, fetchDiff = 0, leaks = 0;
   double fetches = 0.0;
   for (int y = 0; y < tb.normal.height; ++y)
     for (int x = 0; x < tb.normal.width; ++x) {
@@ -581,6 +621,7 @@ void compareCpuGpu(const CpuShader& shade, const TechniqueBuffers& tb, const Ima
       exitMiss += s.w < 0.5f;
       fetches += static_cast<double>(s.y);
       fetchDiff += s.y != cpuStats.at(x, y).y;
+      leaks += cpuStats.at(x, y).z > 0.5f;
     }
   const double n = c.pixels ? static_cast<double>(c.pixels) : 1.0;
   row.invalidShare = static_cast<double>(invalid) / n;
@@ -590,6 +631,7 @@ void compareCpuGpu(const CpuShader& shade, const TechniqueBuffers& tb, const Ima
   row.cpuGpuBeyond1 = static_cast<double>(c.pixels - c.within1) / n;
   row.cpuGpuBeyond4 = static_cast<double>(c.beyond4) / n;
   row.fetchMismatch = static_cast<double>(fetchDiff) / n;
+  row.leakPixels = static_cast<int>(leaks);
 }
 
 // SNELL_LAB_DEBUG_PARITY: the worst pixel's inputs and both builds' results, on stderr.
@@ -628,9 +670,13 @@ TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const CpuShader& shade
   // silhouette rasterization) hold the scene colour in the composite; say how many, and refuse to score
   // a technique that shaded none of them.
   const Mask& object = refs.full.mask;
-  std::size_t unshaded = 0;
+  std::size_t unshaded = 0, overdrawn = 0;
   for (int y = 0; y < tb.normal.height; ++y)
-    for (int x = 0; x < tb.normal.width; ++x) unshaded += object.at(x, y) && !(tb.normal.at(x, y).w > 0.0f);
+    for (int x = 0; x < tb.normal.width; ++x) {
+      const bool covered = tb.normal.at(x, y).w > 0.0f;
+      unshaded += object.at(x, y) && !covered;
+      overdrawn += !object.at(x, y) && covered;
+    }
   const std::size_t objectPixels = object.count();
   if (unshaded == objectPixels)
     throw Error(ErrorKind::Render,
@@ -638,7 +684,8 @@ TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const CpuShader& shade
                     " pixels where the ray tracer sees the object (does the near plane cut the object, or does the "
                     "camera sit inside it?); no error can be measured");
   row.unshadedShare = objectPixels ? static_cast<double>(unshaded) / static_cast<double>(objectPixels) : 0.0;
-  image = composite(tb.color, tb.normal, sb.sceneColor, shade.margin);
+  row.overdrawnShare = objectPixels ? static_cast<double>(overdrawn) / static_cast<double>(objectPixels) : 0.0;
+  image = composite(tb.color, tb.normal, sb.fullColor, shade.margin);
   row.mseFull = compareImages(refs.full.color, image, refs.full.mask).mse;
   row.mseTwo = compareImages(refs.two.color, image, refs.full.mask).mse;
   row.mseFullTir = compareImages(refs.full.color, image, refs.tir).mse;
@@ -679,7 +726,7 @@ EngineSweep sweepEngineParameter(GpuLab& gpu, std::size_t index, const LabRowSpe
     Image color(tb.color.width, tb.color.height), stats(tb.color.width, tb.color.height);
     shadeOnCpu(CpuShader{row, value, cb, params, margin}, tb, threads, color, stats);
     const double mse =
-        compareImages(refs.full.color, composite(color, tb.normal, sb.sceneColor, margin), refs.full.mask).mse;
+        compareImages(refs.full.color, composite(color, tb.normal, sb.fullColor, margin), refs.full.mask).mse;
     sweep.tried.emplace_back(value, mse);
     if (sweep.tried.size() == 1 || mse < bestMse) {
       bestMse = mse;
@@ -879,6 +926,8 @@ LabResult runLab(const LabOptions& options) {
   k.normalFilter = options.normalFilter;
   k.params.depthFilter = options.depthFilter;
   k.params.reflectSource = options.reflectSource;
+  k.sceneLayer = options.sceneLayer;
+  result.sceneLayer = options.sceneLayer;
   // The web page offers every technique, ISR's d_N included.
   const std::vector<float> dN = options.webBundleDir.empty()
                                     ? wymanDnIfNeeded(frame, techniques)

@@ -28,6 +28,7 @@ struct LabOptions {
   NormalFilter normalFilter = NormalFilter::Linear;  // how both sides read the normal buffers
   int depthFilter = SNELL_DEPTH_FILTER_NEAREST;      // how every technique reads the depth buffers
   int reflectSource = SNELL_SOURCE_BUFFERS;          // what the first surface reflects (the reflect slot's source)
+  SceneLayer sceneLayer = SceneLayer::Behind;        // the opaque scene's layer snell's rows read
   std::string webBundleDir;  // "": none; else the three.js page's bundle (web_bundle.hpp) is written there
   double guardBand = 0.1;  // scene and back-face buffers wider than the viewport by this share of its size per side
   ShaderDirs dirs;
@@ -56,6 +57,12 @@ struct TechniqueRow {
   int cpuGpuBeyond4Ties = 0;    // of them, reproduced by the C++ build from inputs nudged by a few ulps
   int worstX = -1, worstY = -1;  // the pixel of cpuGpuMaxAbs
   double fetchMismatch = 0.0;  // share of object pixels whose CPU fetch count differs from the GPU's
+  // Covered pixels whose transmitted colour comes from an opaque surface nearer the camera than the pixel's
+  // front face (a foreground leaked into the refraction; CpuShader::leaks in lab_run.cpp).
+  int leakPixels = 0;
+  // Covered pixels where the ray tracer sees something else first (an opaque object in front of the glass),
+  // as a share of the object pixels: the glass drawn over what hides it (silhouette rasterization adds a few).
+  double overdrawnShare = 0.0;
   double mseFullTir = 0.0;     // vs the full ray tracer on the object pixels with TIR (LabResult::tirShare)
   // An engine row: the value of its free parameter it ran with, the best of the sweep (value, MSE vs the full
   // ray tracer) on this scene.
@@ -75,6 +82,7 @@ struct LabResult {
   std::string scene;
   int width = 0, height = 0;
   int guardBand = 0;  // texels the scene and back-face buffers extend beyond the viewport on every side
+  SceneLayer sceneLayer = SceneLayer::Behind;  // the opaque scene's layer snell's rows read
   std::size_t objectPixels = 0;
   double mseTwoVsFull = 0.0;  // the two-interface model's own error (model + TIR)
   double mseTwoVsFullTir = 0.0;  // ... on the object pixels with TIR

@@ -133,6 +133,14 @@ int main(int argc, char** argv) {
                  "environment (the environment only)")
       ->check(CLI::IsMember({"scene", "environment"}))
       ->capture_default_str();
+  std::string sceneLayer = "behind";
+  app.add_option("--scene-layer", sceneLayer,
+                 "what snell's rows read of the opaque scene: behind (only what lies beyond the object's nearest "
+                 "point, so an opaque object in front of the glass does not show inside it and what it hides does) "
+                 "or full (the whole scene, as an engine's colour copy holds it: hits on a foreground are refused "
+                 "and fall back); the engine rows always read the whole scene")
+      ->check(CLI::IsMember({"behind", "full"}))
+      ->capture_default_str();
   app.add_option("--guard-band", o.guardBand,
                  "extra border of the scene and back-face buffers beyond the viewport, per side, as a share of the "
                  "render size (0: the viewport only), so that exits just off screen are found")
@@ -170,6 +178,7 @@ int main(int argc, char** argv) {
   o.normalFilter = normalFilter == "nearest" ? NormalFilter::Nearest : NormalFilter::Linear;
   o.depthFilter = depthFilter == "bilinear" ? SNELL_DEPTH_FILTER_BILINEAR : SNELL_DEPTH_FILTER_NEAREST;
   o.reflectSource = reflection == "environment" ? SNELL_SOURCE_ENVIRONMENT : SNELL_SOURCE_BUFFERS;
+  o.sceneLayer = sceneLayer == "full" ? SceneLayer::Full : SceneLayer::Behind;
   o.dirs = shaderDirs();
   try {
     const LabResult r = runLab(o);

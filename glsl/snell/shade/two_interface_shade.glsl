@@ -42,7 +42,13 @@ contract (snellTwoInterfaceExit(origin, dir, ..., slot, m, v)):
     world(dir / |dir|), envLod).xyz, 1 fetch, hit = snellHitMiss(0), fellBack
     false.
   - any other source (BUFFERS; WYMAN reads as BUFFERS here): hit =
-    snellIntersectWith(origin, dir, scene..., slot.intersect); valid: color =
+    snellIntersectWith(origin, dir, scene..., slot.intersect), then the
+    foreground rule, snellRejectForeground(hit, origin, sceneDepth, scene
+    read at the texel containing the hit (SNELL_DEPTH_FILTER_NEAREST),
+    SNELL_FOREGROUND_TOLERANCE)
+    (intersect/foreground.glsl: 1 fetch when the strategy hit; a hit on a
+    surface nearer the camera than the whole ray is refused, so a foreground
+    never shows through the object); valid: color =
     SNELL_SAMPLE_LOD(sceneColor, hit.uv, sceneLod).xyz (+1 fetch). Invalid (ray
     leaves the screen, points towards the camera where a search cannot
     follow, lands on an empty texel): fellBack = true and slot.fallback
@@ -51,7 +57,8 @@ contract (snellTwoInterfaceExit(origin, dir, ..., slot, m, v)):
     slot.edgeFadeWidth) (0 when q does not project), color = mix(environment,
     sceneColor at the projection clamped to [0,1]^2, w) (the scene read only
     when w > 0). Never black unless the environment is.
-  - fetches: the strategy's plus one per colour or environment read.
+  - fetches: the strategy's, the foreground rule's read, and one per colour
+    or environment read.
 contract (snellTwoInterfaceRefraction):
   - one trace with eta = snellIorToEta(m.iorOutside, m.ior) (m.dispersion != 3),
     or three (m.dispersion == 3), with m.iors.x/.y/.z for red/green/blue, each
@@ -100,6 +107,7 @@ source: Wyman 2005 and Oliveira & Brauwers 2007 (two interfaces, distant
 #include "environment.glsl"
 #include "perturb_edge_fade.glsl"
 #include "../intersect/intersect_with.glsl"
+#include "../intersect/foreground.glsl"
 #include "technique_options.glsl"
 #include "technique_buffers.glsl"
 #include "two_interface.glsl"
@@ -145,6 +153,11 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
   vec3 world = d.x * v.envX + d.y * v.envY + d.z * v.envZ;
   if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
     e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, slot.intersect);
+    // The texel the hit falls in, whatever the strategy's filter: a bilinear read across the foreground's
+    // silhouette would blend its depth with the background's and let it through.
+    SnellDepthSurface readAs = scene;
+    readAs.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+    e.hit = snellRejectForeground(e.hit, origin, sceneDepth, readAs, SNELL_FOREGROUND_TOLERANCE);
     e.fetches = e.hit.fetches;
     if (e.hit.valid) {
       vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);

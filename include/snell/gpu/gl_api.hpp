@@ -101,6 +101,7 @@ namespace snell::gpu {
   X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                  \
   X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)            \
   X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                  \
+  X(PFNGLBLITFRAMEBUFFERPROC, BlitFramebuffer)                  \
   X(PFNGLFRAMEBUFFERTEXTURE2DPROC, FramebufferTexture2D)        \
   X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer)  \
   X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)    \

@@ -1,7 +1,7 @@
 /* The shared part of the plane-family intersect/ parity cases (described in
    tests/parity/plane_cases.cpp: hit.glsl, depth_surface.glsl, surface_point.glsl,
    single_sample.glsl, plane_refine.glsl, plane_far_start.glsl, plane_normal.glsl,
-   plane_depth.glsl, depth_pyramid.glsl). Two analytic scenes
+   plane_depth.glsl, depth_pyramid.glsl, foreground.glsl). Two analytic scenes
    (tests/support/depth_scenes.hpp) as textures:
      A = sphereBack 160x120, SNELL_DEPTH_GL, emptyDepth 0 (a back-face buffer)
      B = silhouette 160x120, SNELL_DEPTH_REVERSED, emptyDepth 0 (an opaque buffer
