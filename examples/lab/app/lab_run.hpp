@@ -58,7 +58,7 @@ struct TechniqueRow {
   int worstX = -1, worstY = -1;  // the pixel of cpuGpuMaxAbs
   double fetchMismatch = 0.0;  // share of object pixels whose CPU fetch count differs from the GPU's
   // Covered pixels whose transmitted colour comes from an opaque surface nearer the camera than the pixel's
-  // front face (a foreground leaked into the refraction; CpuShader::leaks in lab_run.cpp).
+  // front face (a foreground leaked into the refraction; CpuShader::leaks in cpu_mirror.hpp).
   int leakPixels = 0;
   // Covered pixels where the ray tracer sees something else first (an opaque object in front of the glass),
   // as a share of the object pixels: the glass drawn over what hides it (silhouette rasterization adds a few).

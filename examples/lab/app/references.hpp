@@ -1,0 +1,52 @@
+// The lab's references (stages 2 and 4c of a run): the ray-traced ground truth and model references, the
+// pixels whose path the buffers cannot show, and every row scored against the image-space bound.
+#pragma once
+#include "gpu_lab.hpp"
+#include "lab_run.hpp"
+#include "technique.hpp"
+
+#include "lab/mask.hpp"
+#include "lab/scene.hpp"
+#include "lab/tracer.hpp"
+
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace snell::lab {
+
+// Stage 2: the ground truth, full paths and the two-interface reference.
+struct References {
+  std::unique_ptr<ReferenceTracer> tracer;
+  TraceResult full, two;
+  Mask tir;  // object pixels with TIR on the principal path (LabResult::tirShare)
+  // The principal path of 2 + B events for each bounce count B > 0 a row follows: the model reference
+  // of those rows, as `two` is of the two-interface ones.
+  std::map<int, TraceResult> principal;
+
+  const TraceResult& modelOf(int bounces) const { return bounces > 0 ? principal.at(2 + bounces) : two; }
+};
+
+References traceReferences(const SceneFrame& frame, const std::vector<LabRowSpec>& techniques,
+                            const LabOptions& options, LabResult& result);
+
+// Stage 3a: the object pixels whose two-interface path the buffers cannot show any image-space method:
+// the exact exit point P2 (critical-angle TIR, as the techniques) off screen or not the farthest back
+// face at its pixel (a middle layer of a concave object), or the exit ray's hit on the opaque scene off
+// screen or behind a nearer surface. Rays that leave into the environment lack nothing.
+struct MissingInformation {
+  Mask any;
+  // Of them, the pixels whose P2 is on screen but in front of the farthest back face there: a middle
+  // layer of a concave object, what a second (depth-peeled) back-face buffer could hold.
+  Mask middleLayer;
+};
+
+MissingInformation missingInformation(const References& refs, const SceneFrame& frame, const StaticBuffers& sb,
+                                      const ShadeConstants& k);
+
+// Stage 4c: every row against the image-space bound, and the bound's own error split into the pixels
+// whose path the buffers do not hold (missingInformation) and the rest.
+void scoreAgainstTheBound(const std::vector<LabRowSpec>& techniques, const std::vector<Image>& images,
+                          const MissingInformation& missing, const References& refs, LabResult& result);
+
+}  // namespace snell::lab
