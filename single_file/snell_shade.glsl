@@ -1720,7 +1720,8 @@ description: what a two-interface refraction technique is made of, split by
     inside), inside (where a ray reflected inside the object leaves it). The
     exit and the reflection are the same call with their own slot.
   - bounces: how many total internal reflections inside the object a ray
-    follows (0: none, the two-interface model).
+    follows (0: none, the two-interface model); insideScene: whether the
+    opaque scene has surfaces inside the object.
   - SnellTechnique: the technique's choices, the set of slots (the presets,
     technique_presets.glsl, return one).
   - SnellMaterial: the object's optics (IORs, dispersion, absorption, TIR
@@ -1769,7 +1770,14 @@ contract (defaults):
     bracket). Any other
     strategy or source
     ends the path at the reflection, as a fallback), bounces = 0 (clamped to
-    [0, SNELL_MAX_BOUNCES], default 4, a compile-time bound).
+    [0, SNELL_MAX_BOUNCES], default 4, a compile-time bound), insideScene =
+    false (true: the opaque scene may have surfaces inside the object, a
+    candle in a hurricane glass, a card in a paperweight: the refracted ray
+    is also run against the scene buffers with the exit slot's strategy, and
+    the nearer of that hit and the back faces ends the first segment,
+    two_interface_shade.glsl; the scene buffers are read whatever the exit
+    slot's source; one more scene search per trace, so set it only where
+    something opaque is inside).
   snellMaterial(): ior = 1.5, iorOutside = 1, dispersion = 1 (one trace; 3 =
     one per channel with iors, e.g. snellDispersionIors(1.5168f, 64.17f) from
     shade/dispersion.glsl), iors = (1.5, 1.5, 1.5), absorption = 0
@@ -4707,6 +4715,7 @@ struct SnellTechnique {
   SnellSlot reflect;
   SnellSlot inside;
   int bounces;
+  bool insideScene;
 };
 
 struct SnellMaterial {
@@ -4745,6 +4754,7 @@ SNELL_FN SnellTechnique snellTechnique() {
   t.reflect = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_LINEAR_MARCH);
   t.inside = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_LINEAR_MARCH);
   t.bounces = 0;
+  t.insideScene = false;
   return t;
 }
 
@@ -5152,7 +5162,8 @@ contract:
     (SNELL_TWO_INTERFACE_NORMAL_SAMPLE: filtered sample or texel fetch; 1
     fetch), normalized and flipped to face T1 (dot(N2, T1) <= 0); T2 =
     snellRefract(T1, N2, 1 / eta, tirPolicy). hit = true, exitPoint = P2,
-    exitUv = the hit uv, exitNormal = N2, pathLength = |P2 - P1|, tir = TIR at
+    exitUv = the hit uv, exitNormal = N2, pathLength = entryLength = |P2 -
+    P1| (entryLength keeps the first segment's when bounces add more), tir = TIR at
     the second interface (T2 follows the policy: critical-angle tangent or
     mirror; the reflected ray is not traced further).
   - fallback (fellBack = true, the path still valid): no back hit (invalid or
@@ -5755,6 +5766,7 @@ struct SnellTwoInterfacePath {
   vec3 exitDirection;   // T2 (T1 on fallback)
   vec2 exitUv;          // uv of P2 in the back buffers (in the front buffers when exitFront)
   float pathLength;     // |P2 - P1|, plus every segment after a bounce
+  float entryLength;    // |P2 - P1| of the first segment alone (0 without a back hit)
   int fetches;
   int bounces;          // total internal reflections followed inside
   bool hit;
@@ -5774,6 +5786,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitDirection = vec3(0.0f, 0.0f, 0.0f);
   p.exitUv = vec2(0.0f, 0.0f);
   p.pathLength = 0.0f;
+  p.entryLength = 0.0f;
   p.fetches = 0;
   p.bounces = 0;
   p.hit = false;
@@ -5816,6 +5829,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitPoint = h.position;
   p.exitUv = h.uv;
   p.pathLength = pathLength;
+  p.entryLength = pathLength;
   int bounces = clamp(t.bounces, 0, SNELL_MAX_BOUNCES);
   vec3 d = t1;
   // One interface per pass: the back hit, then each exit the inside slot finds after a bounce. Every
@@ -5964,6 +5978,20 @@ contract (snellTwoInterfaceRefraction):
     (two_interface.glsl) or the exit slot did; a reflect slot that resolves a
     path leaving through a front face and finds no scene shows the
     environment, as the first surface's reflection does, and is no fallback.
+  - t.insideScene (the opaque scene has surfaces inside the object): after
+    a trace that found a back hit, the refracted ray T1 from P1 is also run
+    against the scene buffers with the exit slot's strategy
+    (snellIntersectWith with t.exit.intersect, then snellRejectForeground
+    with the hit itself as the segment's origin: the surface at its texel
+    may not be nearer than the hit by more than the tolerance, so a search
+    that passed behind a surface's silhouette is not taken for a hit on it;
+    its fetches added). A hit nearer than the back hit
+    (|hit - P1| < the path's entryLength) ends the path on that surface:
+    colour = sceneColor at the hit (sceneLod; 1 fetch), exitPoint = the hit,
+    exitDirection = T1, exitHit = the hit, pathLength = |hit - P1|, no tir,
+    no bounces, no fallback, insideHit = true (the single / green trace's).
+    The surface is shaded as the opaque surface it is: its colour, absorbed
+    over the path inside, no second refraction.
   - transmitted = exit color * snellBeerLambert(m.absorption, pathLength) per
     channel, pathLength = |P2 - P1| of that channel's trace (0 on fallback
     without a back hit; finite: a back hit whose |P2 - P1| overflows a float
@@ -6202,6 +6230,7 @@ struct SnellTwoInterfaceResult {
   bool fellBack;       // any fallback: back hit, TIR under ZERO, a bounce not followed, exit slot
   bool tir;            // TIR at the last interface
   int bounces;         // total internal reflections followed inside (SnellTechnique.bounces at most)
+  bool insideHit;      // the refracted ray met the opaque scene inside the object (t.insideScene)
 };
 
 /* Mayer & Assarsson: a ray from the object resolved by one slot against the scene buffers or the environment */
@@ -6282,6 +6311,32 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     }
     SnellTwoInterfacePath p =
         snellTwoInterfaceTrace(frontPosition, frontNormal, etaK, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
+    // An opaque surface inside the object: the refracted ray against the scene too (the exit slot's strategy);
+    // nearer than the back faces, it ends the path there, unrefracted.
+    bool inside = false;
+    SnellHit ih = snellHitMiss(0);
+    if (t.insideScene && p.hit) {
+      ih = snellIntersectWith(frontPosition, p.entryDirection, sceneDepth, sceneNormal, scenePyramid, scene,
+                              t.exit.intersect);
+      SnellDepthSurface readAs = scene;
+      readAs.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+      // The hit must lie on the surface at its texel: the rule with the hit as the whole segment refuses a
+      // surface nearer than the hit, i.e. a march that passed behind the card's silhouette (it did not hit it).
+      ih = snellRejectForeground(ih, ih.position, sceneDepth, readAs, SNELL_FOREGROUND_TOLERANCE);
+      float d = length(ih.position - frontPosition);
+      inside = ih.valid && d < p.entryLength;
+      if (inside) {
+        p.exitPoint = ih.position;
+        p.exitDirection = p.entryDirection;
+        p.exitUv = ih.uv;
+        p.pathLength = d;
+        p.tir = false;
+        p.fellBack = false;
+        p.exitFront = false;
+        p.bounces = 0;
+      }
+      p.fetches = p.fetches + ih.fetches;
+    }
     // A path that left through a front face is resolved by the reflect slot (an if: WebGL rejects ?: on
     // structs). Only a bounce reaches a front face: testing t.bounces first makes the test a constant
     // false for a technique without bounces, so the exit slot stays the constant t.exit and its options fold.
@@ -6289,8 +6344,16 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     if (t.bounces > 0 && p.exitFront) {
       leave = t.reflect;
     }
-    SnellTwoInterfaceExit e =
-        snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, leave, m, v);
+    SnellTwoInterfaceExit e;
+    if (inside) {
+      vec4 c = SNELL_SAMPLE_LOD(sceneColor, ih.uv, snellRoughnessToLod(m.roughness, v.sceneColorLevels));
+      e.color = vec3(c.x, c.y, c.z);
+      e.hit = ih;
+      e.fellBack = false;
+      e.fetches = 1;
+    } else {
+      e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, leave, m, v);
+    }
     vec3 c = e.color * snellBeerLambert(m.absorption, p.pathLength);
     // Where the reflect slot finds no scene after a front-face exit, the environment is what is there,
     // as for the first surface's reflection: not a fallback.
@@ -6306,6 +6369,7 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
       r.fellBack = fellBack || !p.valid;
       r.tir = p.tir;
       r.bounces = p.bounces;
+      r.insideHit = inside;
     } else {
       if (k == 1) {
         transmitted.x = c.x;

@@ -2568,6 +2568,7 @@ struct SnellTechnique {
   SnellSlot reflect;
   SnellSlot inside;
   int bounces;
+  bool insideScene;
 };
 
 struct SnellMaterial {
@@ -2606,6 +2607,7 @@ SNELL_FN SnellTechnique snellTechnique() {
   t.reflect = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_LINEAR_MARCH);
   t.inside = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_LINEAR_MARCH);
   t.bounces = 0;
+  t.insideScene = false;
   return t;
 }
 
@@ -3133,6 +3135,7 @@ struct SnellTwoInterfacePath {
   vec3 exitDirection;
   vec2 exitUv;
   float pathLength;
+  float entryLength;
   int fetches;
   int bounces;
   bool hit;
@@ -3151,6 +3154,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitDirection = vec3(0.0f, 0.0f, 0.0f);
   p.exitUv = vec2(0.0f, 0.0f);
   p.pathLength = 0.0f;
+  p.entryLength = 0.0f;
   p.fetches = 0;
   p.bounces = 0;
   p.hit = false;
@@ -3192,6 +3196,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitPoint = h.position;
   p.exitUv = h.uv;
   p.pathLength = pathLength;
+  p.entryLength = pathLength;
   int bounces = clamp(t.bounces, 0, SNELL_MAX_BOUNCES);
   vec3 d = t1;
   for (int k = 0; k <= SNELL_MAX_BOUNCES; ++k) {
@@ -3348,6 +3353,7 @@ struct SnellTwoInterfaceResult {
   bool fellBack;
   bool tir;
   int bounces;
+  bool insideHit;
 };
 
 SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_SCENE_BUFFERS,
@@ -3421,12 +3427,42 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     }
     SnellTwoInterfacePath p =
         snellTwoInterfaceTrace(frontPosition, frontNormal, etaK, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
+    bool inside = false;
+    SnellHit ih = snellHitMiss(0);
+    if (t.insideScene && p.hit) {
+      ih = snellIntersectWith(frontPosition, p.entryDirection, sceneDepth, sceneNormal, scenePyramid, scene,
+                              t.exit.intersect);
+      SnellDepthSurface readAs = scene;
+      readAs.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+      ih = snellRejectForeground(ih, ih.position, sceneDepth, readAs, SNELL_FOREGROUND_TOLERANCE);
+      float d = length(ih.position - frontPosition);
+      inside = ih.valid && d < p.entryLength;
+      if (inside) {
+        p.exitPoint = ih.position;
+        p.exitDirection = p.entryDirection;
+        p.exitUv = ih.uv;
+        p.pathLength = d;
+        p.tir = false;
+        p.fellBack = false;
+        p.exitFront = false;
+        p.bounces = 0;
+      }
+      p.fetches = p.fetches + ih.fetches;
+    }
     SnellSlot leave = t.exit;
     if (t.bounces > 0 && p.exitFront) {
       leave = t.reflect;
     }
-    SnellTwoInterfaceExit e =
-        snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, leave, m, v);
+    SnellTwoInterfaceExit e;
+    if (inside) {
+      vec4 c = SNELL_SAMPLE_LOD(sceneColor, ih.uv, snellRoughnessToLod(m.roughness, v.sceneColorLevels));
+      e.color = vec3(c.x, c.y, c.z);
+      e.hit = ih;
+      e.fellBack = false;
+      e.fetches = 1;
+    } else {
+      e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, leave, m, v);
+    }
     vec3 c = e.color * snellBeerLambert(m.absorption, p.pathLength);
     bool fellBack = p.fellBack || (e.fellBack && !p.exitFront);
     if (k == 0) {
@@ -3440,6 +3476,7 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
       r.fellBack = fellBack || !p.valid;
       r.tir = p.tir;
       r.bounces = p.bounces;
+      r.insideHit = inside;
     } else {
       if (k == 1) {
         transmitted.x = c.x;

@@ -73,6 +73,7 @@ struct LabParams {
   float exitRange;    // the box around object and scene: the image-space bound's exit range
   int depthFilter;    // SNELL_DEPTH_FILTER_*: how every slot reads both depth buffers
   int reflectSource;  // SNELL_SOURCE_*: the reflect slot's source
+  int insideScene;    // 1: the opaque scene has surfaces inside the object (SnellTechnique.insideScene)
 };
 
 SNELL_FN SnellTechnique labTechnique(int technique, bool reference, LabParams p) {
@@ -91,6 +92,7 @@ SNELL_FN SnellTechnique labTechnique(int technique, bool reference, LabParams p)
   t.exit.fallback = SNELL_FALLBACK_ENVIRONMENT;
   t.reflect = t.exit;
   t.reflect.source = p.reflectSource;
+  t.insideScene = p.insideScene != 0;
   return t;
 }
 
@@ -156,6 +158,7 @@ SNELL_FN SnellTwoInterfaceResult labEngineShade(int model, float parameter, vec3
   r.fellBack = !e.valid || e.sceneWeight < 1.0f;
   r.tir = false;
   r.bounces = 0;
+  r.insideHit = false;
   vec3 transmitted = vec3(0.0f, 0.0f, 0.0f);
   if (e.valid) {
     vec4 c = SNELL_SAMPLE_LOD(sceneColor, clamp(e.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f)), 0.0f);

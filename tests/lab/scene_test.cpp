@@ -34,7 +34,7 @@ std::string schemaError(const std::string& text, const std::string& file = "test
 }  // namespace
 
 TEST(LabScene, BundledScenesLoadAndBuild) {
-  for (const char* name : {"bunny", "bunny_pillar", "sphere_painting", "torus", "blob"}) {
+  for (const char* name : {"bunny", "bunny_pillar", "paperweight", "sphere_painting", "torus", "blob"}) {
     SCOPED_TRACE(name);
     const Scene s = loadScene(labtest::scenesDir() + "/" + name + ".json");
     EXPECT_EQ(s.name, name);

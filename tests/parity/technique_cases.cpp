@@ -109,7 +109,7 @@ std::vector<ParityIO> techniqueInputs(std::uint32_t seed) {
     in.v[1] = glm::vec4(n, float(g.integer(0, 8)));
     in.v[2] = matrixEntries();
     const float roughness = g.chance(0.7f) ? 0.0f : g.uniform(0.0f, 1.0f);
-    in.v[3] = glm::vec4(ior, g.uniform(0.0f, 5.0f), float(g.integer(0, 1023)), roughness);
+    in.v[3] = glm::vec4(ior, g.uniform(0.0f, 5.0f), float(g.integer(0, 2047)), roughness);
     v.push_back(in);
   }
   return v;

@@ -72,7 +72,9 @@ struct Scene {
   (s).back.depth, (s).backNormalMips, (s).backPyramid, (s).backSurface(), (s).front.depth, (s).front.normals, (s).frontSurface()
 #define TECH_SCENE_ARGS(s) (s).plane.depth, (s).sceneNormalMips, (s).scenePyramid, (s).sceneColor, (s).sceneSurface(), (s).env
 
-inline Scene makeScene(int w, int h) {
+// planePoint, planeNormal: the painting plane (a plane through the sphere puts an opaque card inside it).
+inline Scene makeScene(int w, int h, const glm::dvec3& planePoint = kPlanePoint,
+                       const glm::dvec3& planeNormal = kPlaneNormal) {
   Scene s;
   s.width = w;
   s.height = h;
@@ -80,7 +82,7 @@ inline Scene makeScene(int w, int h) {
                                           sphereFront);
   s.back = snell_test::sphereBack(w, h, SNELL_DEPTH_GL);
   s.plane = snell_test::detail::makeScene("painting", w, h, SNELL_DEPTH_GL, false, snell_test::kScenePlane,
-                                          [](glm::dvec3 q) { return snell_test::detail::rayPlane(q, kPlanePoint, kPlaneNormal); });
+                                          [=](glm::dvec3 q) { return snell_test::detail::rayPlane(q, planePoint, planeNormal); });
   s.backPyramid = snell::snellBuildDepthPyramid(s.back.depth, s.back.surface());
   s.backNormalMips = snell::snellBuildNormalMips(s.back.normals);
   s.scenePyramid = snell::snellBuildDepthPyramid(s.plane.depth, s.plane.surface());
@@ -89,7 +91,7 @@ inline Scene makeScene(int w, int h) {
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
       const glm::dvec3 q = s.plane.pixelRay(glm::dvec2((i + 0.5) / w, (j + 0.5) / h));
-      const snell_test::AnalyticSample a = snell_test::detail::rayPlane(q, kPlanePoint, kPlaneNormal);
+      const snell_test::AnalyticSample a = snell_test::detail::rayPlane(q, planePoint, planeNormal);
       if (a.valid) color.at(i, j) = glm::vec4(paintingColor(a.s * q), 1.0f);
     }
   s.sceneColor = snell::Texture2D(color, snell::Filter::Linear, snell::MipFilter::Linear);

@@ -22,6 +22,24 @@ namespace snell::lab {
 
 namespace fs = std::filesystem;
 
+namespace {
+// Whether any painting reaches inside the object: a 9 x 9 grid of points over each (the techniques then
+// search the scene from the entry point too, SnellTechnique.insideScene).
+bool paintingInsideMesh(const std::vector<Painting>& paintings, const Mesh& object) {
+  for (const Painting& painting : paintings) {
+    const std::array<vec3, 4> c = painting.corners();
+    for (int i = 0; i <= 8; ++i)
+      for (int j = 0; j <= 8; ++j) {
+        const double u = i / 8.0, v = j / 8.0;
+        const glm::dvec3 bottom = glm::mix(glm::dvec3(c[0]), glm::dvec3(c[1]), u);
+        const glm::dvec3 top = glm::mix(glm::dvec3(c[3]), glm::dvec3(c[2]), u);
+        if (pointInsideMesh(object, glm::mix(bottom, top, v))) return true;
+      }
+  }
+  return false;
+}
+}  // namespace
+
 ShadeConstants shadeConstants(const SceneFrame& frame, int margin) {
   // GL gets the camera's float matrices: refuse non-finite ones here (the
   // scene loader already does, naming the field) instead of drawing nothing.
@@ -64,6 +82,7 @@ ShadeConstants shadeConstants(const SceneFrame& frame, int margin) {
       hi = glm::max(hi, c);
     }
   k.params.exitRange = glm::length(hi - lo);
+  k.params.insideScene = paintingInsideMesh(frame.paintings, frame.object) ? 1 : 0;
   const vec3 half = glm::max(0.5f * (hi - lo), vec3(1e-6f));
   k.params.proxyFromView = glm::scale(mat4(1.0f), 1.0f / half) * glm::translate(mat4(1.0f), -0.5f * (lo + hi)) *
                            frame.camera.worldFromView();
@@ -88,7 +107,8 @@ static_assert(offsetof(LabParams, clipFromView) == 0 && offsetof(LabParams, prox
                   offsetof(LabParams, envY) == 160 && offsetof(LabParams, ior) == 172 &&
                   offsetof(LabParams, envZ) == 176 && offsetof(LabParams, backRange) == 188 &&
                   offsetof(LabParams, exitRange) == 192 && offsetof(LabParams, depthFilter) == 196 &&
-                  offsetof(LabParams, reflectSource) == 200 && sizeof(LabParams) == 204,
+                  offsetof(LabParams, reflectSource) == 200 && offsetof(LabParams, insideScene) == 204 &&
+                  sizeof(LabParams) == 208,
               "LabParams must keep the std140 layout of the uniform block LabUniforms");
 
 gpu::FlatSource flatten(const fs::path& file, const ShaderDirs& dirs, const std::vector<std::string>& defines = {}) {
@@ -226,7 +246,7 @@ struct GpuLab::Impl {
 
   // (1) The opaque scene: environment background (depth untouched), then the paintings, those nearer than
   // `clipNearerThan` (a view distance; 0: none) clipped away.
-  void drawScene(const gpu::Framebuffer& fb, float clipNearerThan) {
+  void drawScene(const gpu::Framebuffer& fb, float clipNearerThan, bool peel = false) {
     fb.clearColor(0, vec4(0.0f));
     fb.clearColor(1, vec4(0.0f));
     fb.clearDepth(1.0f);
@@ -242,6 +262,12 @@ struct GpuLab::Impl {
     gl.DepthFunc(GL_LESS);
     scene.use();
     scene.set("clipNearerThan", clipNearerThan);
+    scene.set("peel", peel ? 1 : 0);
+    if (peel) {
+      gl.ActiveTexture(GL_TEXTURE1);
+      gl.BindTexture(GL_TEXTURE_2D, backFb.depthTexture());
+      gl.ActiveTexture(GL_TEXTURE0);
+    }
     if (clipNearerThan > 0.0f) gl.Enable(GL_CLIP_DISTANCE0);
     for (std::size_t i = 0; i < paintingTextures.size(); ++i) {
       paintingTextures[i].bind(0);
@@ -254,9 +280,8 @@ struct GpuLab::Impl {
 
   void drawStatic() {
     vao.bind();
-    // (1) The whole opaque scene, and the layer snell's rows read.
+    // (1) The whole opaque scene (the layer snell's rows read after the back faces: Peeled reads them).
     drawScene(fullFb, 0.0f);
-    drawScene(sceneFb, k.sceneLayer == SceneLayer::Behind ? k.objectNearDistance : 0.0f);
     // (2) The object's back faces: nearest-to-camera test reversed.
     backFb.clearColor(0, vec4(0.0f));
     backFb.clearDepth(0.0f);
@@ -277,6 +302,9 @@ struct GpuLab::Impl {
     objectFrontFb.bind();
     gl.DrawArrays(GL_TRIANGLES, 0, vertexCount);
     gpu::checkGl(gl, "front-face pass");
+    // (1b) The layer of the scene snell's rows read.
+    drawScene(sceneFb, k.sceneLayer == SceneLayer::Behind ? k.objectNearDistance : 0.0f,
+              k.sceneLayer == SceneLayer::Peeled);
     // (3) Both depth pyramids.
     pyramidPass.build(backPyramid, backFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 0.0f);
     pyramidPass.build(scenePyramid, sceneFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 1.0f);

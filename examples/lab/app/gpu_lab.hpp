@@ -57,8 +57,11 @@ struct TechniqueBuffers {
 // beyond the object's nearest point (the scene drawn with a clip plane there), so an opaque object between
 // the camera and the glass is not in the buffers the refraction reads and what it hides is; Full: the
 // whole opaque scene, as an engine's colour copy holds it (the foreground rule then refuses the hits on
-// it, intersect/foreground.glsl, and the slot falls back). The engine rows always read the whole scene.
-enum class SceneLayer { Behind, Full };
+// it, intersect/foreground.glsl, and the slot falls back); Peeled: only what lies behind the object's
+// back faces at each texel (the scene drawn after the back faces, discarding what is nearer): all that an
+// exit ray leaving a convex object can meet, without what stands in front of the object or inside it. The
+// engine rows always read the whole scene.
+enum class SceneLayer { Behind, Full, Peeled };
 
 // How both sides read the normal buffers (back faces and opaque scene): GL_LINEAR
 // (the default: empty texels hold a zero normal, so a filtered read renormalized
@@ -97,6 +100,7 @@ struct ShadeConstants {
     p.exitRange = 10.0f;  // diagonal of the box around object and opaque scene
     p.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
     p.reflectSource = SNELL_SOURCE_BUFFERS;
+    p.insideScene = 0;  // shadeConstants: 1 when a painting reaches inside the object
     p.proxyFromView = mat4(1.0f);  // shadeConstants: the world-axis box around the object and the paintings
     return p;
   }

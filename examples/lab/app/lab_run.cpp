@@ -173,6 +173,8 @@ LabResult runLab(const LabOptions& options) {
   k.params.depthFilter = options.depthFilter;
   k.params.reflectSource = options.reflectSource;
   k.sceneLayer = options.sceneLayer;
+  if (options.insideScene >= 0) k.params.insideScene = options.insideScene;
+  result.insideScene = k.params.insideScene != 0;
   result.sceneLayer = options.sceneLayer;
   // The web page offers every technique, ISR's d_N included.
   const std::vector<float> dN = options.webBundleDir.empty()

@@ -29,6 +29,8 @@ struct LabOptions {
   int depthFilter = SNELL_DEPTH_FILTER_NEAREST;      // how every technique reads the depth buffers
   int reflectSource = SNELL_SOURCE_BUFFERS;          // what the first surface reflects (the reflect slot's source)
   SceneLayer sceneLayer = SceneLayer::Behind;        // the opaque scene's layer snell's rows read
+  // SnellTechnique.insideScene for snell's rows: -1 auto (on when a painting reaches inside the object), 0 off, 1 on.
+  int insideScene = -1;
   std::string webBundleDir;  // "": none; else the three.js page's bundle (web_bundle.hpp) is written there
   double guardBand = 0.1;  // scene and back-face buffers wider than the viewport by this share of its size per side
   ShaderDirs dirs;
@@ -83,6 +85,7 @@ struct LabResult {
   int width = 0, height = 0;
   int guardBand = 0;  // texels the scene and back-face buffers extend beyond the viewport on every side
   SceneLayer sceneLayer = SceneLayer::Behind;  // the opaque scene's layer snell's rows read
+  bool insideScene = false;  // snell's rows also searched the scene along the refracted ray (SnellTechnique.insideScene)
   std::size_t objectPixels = 0;
   double mseTwoVsFull = 0.0;  // the two-interface model's own error (model + TIR)
   double mseTwoVsFullTir = 0.0;  // ... on the object pixels with TIR

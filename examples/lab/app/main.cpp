@@ -138,8 +138,17 @@ int main(int argc, char** argv) {
                  "what snell's rows read of the opaque scene: behind (only what lies beyond the object's nearest "
                  "point, so an opaque object in front of the glass does not show inside it and what it hides does) "
                  "or full (the whole scene, as an engine's colour copy holds it: hits on a foreground are refused "
-                 "and fall back); the engine rows always read the whole scene")
-      ->check(CLI::IsMember({"behind", "full"}))
+                 "and fall back) or peeled (only what lies behind the object's back faces at each texel: what an "
+                 "exit ray can meet, without what stands in front of the object or inside it); the engine rows "
+                 "always read the whole scene")
+      ->check(CLI::IsMember({"behind", "full", "peeled"}))
+      ->capture_default_str();
+  std::string insideScene = "auto";
+  app.add_option("--inside-scene", insideScene,
+                 "whether snell's rows also search the opaque scene along the refracted ray, for opaque surfaces "
+                 "inside the object (SnellTechnique.insideScene): auto (when a painting reaches inside the object), "
+                 "on or off")
+      ->check(CLI::IsMember({"auto", "on", "off"}))
       ->capture_default_str();
   app.add_option("--guard-band", o.guardBand,
                  "extra border of the scene and back-face buffers beyond the viewport, per side, as a share of the "
@@ -178,7 +187,8 @@ int main(int argc, char** argv) {
   o.normalFilter = normalFilter == "nearest" ? NormalFilter::Nearest : NormalFilter::Linear;
   o.depthFilter = depthFilter == "bilinear" ? SNELL_DEPTH_FILTER_BILINEAR : SNELL_DEPTH_FILTER_NEAREST;
   o.reflectSource = reflection == "environment" ? SNELL_SOURCE_ENVIRONMENT : SNELL_SOURCE_BUFFERS;
-  o.sceneLayer = sceneLayer == "full" ? SceneLayer::Full : SceneLayer::Behind;
+  o.sceneLayer = sceneLayer == "full" ? SceneLayer::Full : sceneLayer == "peeled" ? SceneLayer::Peeled : SceneLayer::Behind;
+  o.insideScene = insideScene == "auto" ? -1 : insideScene == "on" ? 1 : 0;
   o.dirs = shaderDirs();
   try {
     const LabResult r = runLab(o);

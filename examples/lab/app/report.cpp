@@ -94,9 +94,15 @@ std::string markdownTable(const LabResult& r) {
        "invalid: pixels that fell back (no back-face or exit hit: environment along the ray). leaks: pixels whose "
        "refracted colour comes from an opaque surface nearer the camera than the object's own front face there (a "
        "foreground shown inside the glass; snell's rows read " +
-       std::string(r.sceneLayer == SceneLayer::Behind ? "the scene layer behind the object's nearest point"
-                                                      : "the whole opaque scene") +
-       ", the engines' the whole scene, as their colour copy holds it). Time: the refraction "
+       std::string(r.sceneLayer == SceneLayer::Behind   ? "the scene layer behind the object's nearest point"
+                   : r.sceneLayer == SceneLayer::Peeled ? "the scene layer behind the object's back faces"
+                                                        : "the whole opaque scene") +
+       ", the engines' the whole scene, as their colour copy holds it)." +
+       std::string(r.insideScene ? " An opaque surface reaches inside the object: snell's rows also search the scene "
+                                   "along the refracted ray and stop on it where it is nearer than the back faces "
+                                   "(SnellTechnique.insideScene)."
+                                 : "") +
+       " Time: the refraction "
        "pass alone, glFinish + steady clock, median of " + std::to_string(r.frames) + " frames (the bound: 1), all "
        "techniques interleaved, on " + r.gpu + "; ratios are to " + (unit ? unit->label : std::string("the first row")) +
        "; a software rasterizer's milliseconds say little about a GPU. CPU-GPU: the same technique function run in "
@@ -186,7 +192,8 @@ void writeJson(const fs::path& path, const LabResult& r) {
   j["height"] = r.height;
   j["object_pixels"] = r.objectPixels;
   j["guard_band_texels"] = r.guardBand;
-  j["scene_layer"] = r.sceneLayer == SceneLayer::Behind ? "behind" : "full";
+  j["scene_layer"] = r.sceneLayer == SceneLayer::Behind ? "behind" : r.sceneLayer == SceneLayer::Peeled ? "peeled" : "full";
+  j["inside_scene"] = r.insideScene;
   j["frames"] = r.frames;
   j["gpu"] = r.gpu;
   j["mse_two_interface_vs_full"] = r.mseTwoVsFull;

@@ -33,6 +33,32 @@ double signedVolume(const Mesh& mesh) {
   return v / 6.0;
 }
 
+bool pointInsideMesh(const Mesh& closed, const glm::dvec3& p) {
+  const Bounds b = meshBounds(closed);
+  if (!(p.x > double(b.lo.x) && p.y > double(b.lo.y) && p.z > double(b.lo.z) && p.x < double(b.hi.x) &&
+        p.y < double(b.hi.y) && p.z < double(b.hi.z)))
+    return false;
+  const glm::dvec3 d = glm::normalize(glm::dvec3(0.5773, 0.5779, 0.5769));
+  int crossings = 0;
+  for (std::size_t t = 0; t + 2 < closed.indices.size(); t += 3) {
+    const glm::dvec3 a(closed.positions[closed.indices[t]]);
+    const glm::dvec3 e1 = glm::dvec3(closed.positions[closed.indices[t + 1]]) - a;
+    const glm::dvec3 e2 = glm::dvec3(closed.positions[closed.indices[t + 2]]) - a;
+    // Moller-Trumbore.
+    const glm::dvec3 q = glm::cross(d, e2);
+    const double det = glm::dot(e1, q);
+    if (std::abs(det) < 1e-300) continue;
+    const glm::dvec3 s = p - a;
+    const double u = glm::dot(s, q) / det;
+    if (u < 0.0 || u > 1.0) continue;
+    const glm::dvec3 r = glm::cross(s, e1);
+    const double v = glm::dot(d, r) / det;
+    if (v < 0.0 || u + v > 1.0) continue;
+    if (glm::dot(e2, r) / det > 0.0) ++crossings;
+  }
+  return crossings % 2 == 1;
+}
+
 void computeSmoothNormals(Mesh& mesh) {
   std::vector<glm::dvec3> sum(mesh.positions.size(), glm::dvec3(0.0));
   for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {

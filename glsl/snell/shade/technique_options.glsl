@@ -9,7 +9,8 @@ description: what a two-interface refraction technique is made of, split by
     inside), inside (where a ray reflected inside the object leaves it). The
     exit and the reflection are the same call with their own slot.
   - bounces: how many total internal reflections inside the object a ray
-    follows (0: none, the two-interface model).
+    follows (0: none, the two-interface model); insideScene: whether the
+    opaque scene has surfaces inside the object.
   - SnellTechnique: the technique's choices, the set of slots (the presets,
     technique_presets.glsl, return one).
   - SnellMaterial: the object's optics (IORs, dispersion, absorption, TIR
@@ -58,7 +59,14 @@ contract (defaults):
     bracket). Any other
     strategy or source
     ends the path at the reflection, as a fallback), bounces = 0 (clamped to
-    [0, SNELL_MAX_BOUNCES], default 4, a compile-time bound).
+    [0, SNELL_MAX_BOUNCES], default 4, a compile-time bound), insideScene =
+    false (true: the opaque scene may have surfaces inside the object, a
+    candle in a hurricane glass, a card in a paperweight: the refracted ray
+    is also run against the scene buffers with the exit slot's strategy, and
+    the nearer of that hit and the back faces ends the first segment,
+    two_interface_shade.glsl; the scene buffers are read whatever the exit
+    slot's source; one more scene search per trace, so set it only where
+    something opaque is inside).
   snellMaterial(): ior = 1.5, iorOutside = 1, dispersion = 1 (one trace; 3 =
     one per channel with iors, e.g. snellDispersionIors(1.5168f, 64.17f) from
     shade/dispersion.glsl), iors = (1.5, 1.5, 1.5), absorption = 0
@@ -105,6 +113,7 @@ struct SnellTechnique {
   SnellSlot reflect;
   SnellSlot inside;
   int bounces;
+  bool insideScene;
 };
 
 struct SnellMaterial {
@@ -143,6 +152,7 @@ SNELL_FN SnellTechnique snellTechnique() {
   t.reflect = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_LINEAR_MARCH);
   t.inside = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_LINEAR_MARCH);
   t.bounces = 0;
+  t.insideScene = false;
   return t;
 }
 

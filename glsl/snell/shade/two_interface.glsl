@@ -53,7 +53,8 @@ contract:
     (SNELL_TWO_INTERFACE_NORMAL_SAMPLE: filtered sample or texel fetch; 1
     fetch), normalized and flipped to face T1 (dot(N2, T1) <= 0); T2 =
     snellRefract(T1, N2, 1 / eta, tirPolicy). hit = true, exitPoint = P2,
-    exitUv = the hit uv, exitNormal = N2, pathLength = |P2 - P1|, tir = TIR at
+    exitUv = the hit uv, exitNormal = N2, pathLength = entryLength = |P2 -
+    P1| (entryLength keeps the first segment's when bounces add more), tir = TIR at
     the second interface (T2 follows the policy: critical-angle tangent or
     mirror; the reflected ray is not traced further).
   - fallback (fellBack = true, the path still valid): no back hit (invalid or
@@ -120,6 +121,7 @@ struct SnellTwoInterfacePath {
   vec3 exitDirection;   // T2 (T1 on fallback)
   vec2 exitUv;          // uv of P2 in the back buffers (in the front buffers when exitFront)
   float pathLength;     // |P2 - P1|, plus every segment after a bounce
+  float entryLength;    // |P2 - P1| of the first segment alone (0 without a back hit)
   int fetches;
   int bounces;          // total internal reflections followed inside
   bool hit;
@@ -139,6 +141,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitDirection = vec3(0.0f, 0.0f, 0.0f);
   p.exitUv = vec2(0.0f, 0.0f);
   p.pathLength = 0.0f;
+  p.entryLength = 0.0f;
   p.fetches = 0;
   p.bounces = 0;
   p.hit = false;
@@ -181,6 +184,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.exitPoint = h.position;
   p.exitUv = h.uv;
   p.pathLength = pathLength;
+  p.entryLength = pathLength;
   int bounces = clamp(t.bounces, 0, SNELL_MAX_BOUNCES);
   vec3 d = t1;
   // One interface per pass: the back hit, then each exit the inside slot finds after a bounce. Every

@@ -72,6 +72,20 @@ contract (snellTwoInterfaceRefraction):
     (two_interface.glsl) or the exit slot did; a reflect slot that resolves a
     path leaving through a front face and finds no scene shows the
     environment, as the first surface's reflection does, and is no fallback.
+  - t.insideScene (the opaque scene has surfaces inside the object): after
+    a trace that found a back hit, the refracted ray T1 from P1 is also run
+    against the scene buffers with the exit slot's strategy
+    (snellIntersectWith with t.exit.intersect, then snellRejectForeground
+    with the hit itself as the segment's origin: the surface at its texel
+    may not be nearer than the hit by more than the tolerance, so a search
+    that passed behind a surface's silhouette is not taken for a hit on it;
+    its fetches added). A hit nearer than the back hit
+    (|hit - P1| < the path's entryLength) ends the path on that surface:
+    colour = sceneColor at the hit (sceneLod; 1 fetch), exitPoint = the hit,
+    exitDirection = T1, exitHit = the hit, pathLength = |hit - P1|, no tir,
+    no bounces, no fallback, insideHit = true (the single / green trace's).
+    The surface is shaded as the opaque surface it is: its colour, absorbed
+    over the path inside, no second refraction.
   - transmitted = exit color * snellBeerLambert(m.absorption, pathLength) per
     channel, pathLength = |P2 - P1| of that channel's trace (0 on fallback
     without a back hit; finite: a back hit whose |P2 - P1| overflows a float
@@ -132,6 +146,7 @@ struct SnellTwoInterfaceResult {
   bool fellBack;       // any fallback: back hit, TIR under ZERO, a bounce not followed, exit slot
   bool tir;            // TIR at the last interface
   int bounces;         // total internal reflections followed inside (SnellTechnique.bounces at most)
+  bool insideHit;      // the refracted ray met the opaque scene inside the object (t.insideScene)
 };
 
 /* Mayer & Assarsson: a ray from the object resolved by one slot against the scene buffers or the environment */
@@ -212,6 +227,32 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     }
     SnellTwoInterfacePath p =
         snellTwoInterfaceTrace(frontPosition, frontNormal, etaK, dN, SNELL_OBJECT_BUFFER_ARGS, t, m.tirPolicy);
+    // An opaque surface inside the object: the refracted ray against the scene too (the exit slot's strategy);
+    // nearer than the back faces, it ends the path there, unrefracted.
+    bool inside = false;
+    SnellHit ih = snellHitMiss(0);
+    if (t.insideScene && p.hit) {
+      ih = snellIntersectWith(frontPosition, p.entryDirection, sceneDepth, sceneNormal, scenePyramid, scene,
+                              t.exit.intersect);
+      SnellDepthSurface readAs = scene;
+      readAs.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+      // The hit must lie on the surface at its texel: the rule with the hit as the whole segment refuses a
+      // surface nearer than the hit, i.e. a march that passed behind the card's silhouette (it did not hit it).
+      ih = snellRejectForeground(ih, ih.position, sceneDepth, readAs, SNELL_FOREGROUND_TOLERANCE);
+      float d = length(ih.position - frontPosition);
+      inside = ih.valid && d < p.entryLength;
+      if (inside) {
+        p.exitPoint = ih.position;
+        p.exitDirection = p.entryDirection;
+        p.exitUv = ih.uv;
+        p.pathLength = d;
+        p.tir = false;
+        p.fellBack = false;
+        p.exitFront = false;
+        p.bounces = 0;
+      }
+      p.fetches = p.fetches + ih.fetches;
+    }
     // A path that left through a front face is resolved by the reflect slot (an if: WebGL rejects ?: on
     // structs). Only a bounce reaches a front face: testing t.bounces first makes the test a constant
     // false for a technique without bounces, so the exit slot stays the constant t.exit and its options fold.
@@ -219,8 +260,16 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     if (t.bounces > 0 && p.exitFront) {
       leave = t.reflect;
     }
-    SnellTwoInterfaceExit e =
-        snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, leave, m, v);
+    SnellTwoInterfaceExit e;
+    if (inside) {
+      vec4 c = SNELL_SAMPLE_LOD(sceneColor, ih.uv, snellRoughnessToLod(m.roughness, v.sceneColorLevels));
+      e.color = vec3(c.x, c.y, c.z);
+      e.hit = ih;
+      e.fellBack = false;
+      e.fetches = 1;
+    } else {
+      e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, leave, m, v);
+    }
     vec3 c = e.color * snellBeerLambert(m.absorption, p.pathLength);
     // Where the reflect slot finds no scene after a front-face exit, the environment is what is there,
     // as for the first surface's reflection: not a fallback.
@@ -236,6 +285,7 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
       r.fellBack = fellBack || !p.valid;
       r.tir = p.tir;
       r.bounces = p.bounces;
+      r.insideHit = inside;
     } else {
       if (k == 1) {
         transmitted.x = c.x;

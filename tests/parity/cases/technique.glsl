@@ -100,7 +100,8 @@ SNELL_FN SnellTechnique techPreset(int preset, int steps) {
    mode bits: 1 exit slot to the scene, 2 edge-fade fallback, 4 dispersion (3 traces), 8 no reflection, 16 TIR
    policy ZERO, 32 REFLECT, 64 absorption, 128 reflect slot to the scene (with the exit slot's intersector), 256
    the normal plane inside (steps planes after a 12-step march), 512 a hostile bounce count (steps < 4: steps - 2,
-   so -2 .. 1; else steps * 250, far past SNELL_MAX_BOUNCES). */
+   so -2 .. 1; else steps * 250, far past SNELL_MAX_BOUNCES), 1024 insideScene (the refracted ray searched
+   against the scene too). */
 SNELL_FN SnellTechnique techTechnique(int preset, int steps, int modes) {
   SnellTechnique t = techPreset(preset, steps);
   t.exit.source = techBit(modes, 1) ? SNELL_SOURCE_BUFFERS : SNELL_SOURCE_ENVIRONMENT;
@@ -117,6 +118,7 @@ SNELL_FN SnellTechnique techTechnique(int preset, int steps, int modes) {
   if (techBit(modes, 512)) {
     t.bounces = steps < 4 ? steps - 2 : steps * 250;
   }
+  t.insideScene = techBit(modes, 1024);
   return t;
 }
 

@@ -34,6 +34,10 @@ Bounds meshBounds(const Mesh& mesh);
 // Signed volume (positive for a closed mesh with outward winding).
 double signedVolume(const Mesh& mesh);
 
+// Whether p lies inside a closed mesh: the parity of the triangles a ray from p crosses (double precision,
+// along a direction no axis-aligned edge lies on). Outside the mesh's bounds: false without a test.
+bool pointInsideMesh(const Mesh& closed, const glm::dvec3& p);
+
 // Area-weighted smooth vertex normals from the triangles (replaces mesh.normals).
 // Vertices that belong to no non-degenerate triangle get (0, 0, 1).
 void computeSmoothNormals(Mesh& mesh);
