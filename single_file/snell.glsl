@@ -4531,10 +4531,11 @@ use: h = snellRejectForeground(h, origin, depthTex, surface, SNELL_FOREGROUND_TO
   h         the strategy's hit for the ray (origin, any direction)
   origin    the ray's view-space start (z < 0): P2 for the exit slot, P1 for
             the reflect slot
-  depthTex, surface  the buffer the strategy read and how to read it
-            (snellTwoInterfaceExit reads the texel containing the hit:
-            SNELL_DEPTH_FILTER_NEAREST, so that a bilinear read across a
-            foreground's silhouette does not blend it away)
+  depthTex, surface  the buffer the strategy read and how it describes the
+            depth (its depthFilter is not used: the rule reads the texel
+            containing the hit, SNELL_DEPTH_FILTER_NEAREST, so that a
+            bilinear read across a foreground's silhouette does not blend
+            its depth with the background's and let it through)
   tolerance the share of the ray's nearest distance by which the surface must
             be nearer to count as foreground: it absorbs the depth read's own
             error (a texel's footprint on a sloped surface, depth
@@ -4547,8 +4548,8 @@ contract:
   - origin.z or h.position.z not finite (no strategy returns such a hit):
     snellHitMiss(h.fetches) (no fetch), so that no runtime's NaN-ignoring
     min decides.
-  - else one read x = snellSampleSurface(depthTex, h.uv, surface) (fetches
-    h.fetches + 1). dNear = min(-origin.z, -h.position.z), the distance of the
+  - else one read x = snellSampleSurface(depthTex, h.uv, surface with
+    depthFilter SNELL_DEPTH_FILTER_NEAREST) (fetches h.fetches + 1). dNear = min(-origin.z, -h.position.z), the distance of the
     segment's nearest point along the view axis (a ray's view depth is affine
     in its parameter, so the segment is nowhere nearer). When x is valid and
     -x.viewZ < dNear (1 - t), t = tolerance clamped to [0, 1] (NaN and
@@ -4583,7 +4584,9 @@ SNELL_FN SnellHit snellRejectForeground(SnellHit h, vec3 origin, SNELL_TEX2D dep
   if (!SNELL_FINITE(origin.z) || !SNELL_FINITE(h.position.z)) {
     return snellHitMiss(h.fetches);
   }
-  SnellSurfaceSample x = snellSampleSurface(depthTex, h.uv, s);
+  SnellDepthSurface texel = s;
+  texel.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+  SnellSurfaceSample x = snellSampleSurface(depthTex, h.uv, texel);
   h.fetches = h.fetches + 1;
   float t = tolerance > 0.0f ? min(tolerance, 1.0f) : 0.0f;
   float dNear = min(-origin.z, -h.position.z);
@@ -6485,9 +6488,8 @@ contract (snellTwoInterfaceExit(origin, dir, ..., slot, m, v)):
     false.
   - any other source (BUFFERS; WYMAN reads as BUFFERS here): hit =
     snellIntersectWith(origin, dir, scene..., slot.intersect), then the
-    foreground rule, snellRejectForeground(hit, origin, sceneDepth, scene
-    read at the texel containing the hit (SNELL_DEPTH_FILTER_NEAREST),
-    SNELL_FOREGROUND_TOLERANCE)
+    foreground rule, snellRejectForeground(hit, origin, sceneDepth, scene,
+    SNELL_FOREGROUND_TOLERANCE) (it reads the texel containing the hit)
     (intersect/foreground.glsl: 1 fetch when the strategy hit; a hit on a
     surface nearer the camera than the whole ray is refused, so a foreground
     never shows through the object); valid: color =
@@ -6610,11 +6612,7 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
   vec3 world = d.x * v.envX + d.y * v.envY + d.z * v.envZ;
   if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
     e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, slot.intersect);
-    // The texel the hit falls in, whatever the strategy's filter: a bilinear read across the foreground's
-    // silhouette would blend its depth with the background's and let it through.
-    SnellDepthSurface readAs = scene;
-    readAs.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
-    e.hit = snellRejectForeground(e.hit, origin, sceneDepth, readAs, SNELL_FOREGROUND_TOLERANCE);
+    e.hit = snellRejectForeground(e.hit, origin, sceneDepth, scene, SNELL_FOREGROUND_TOLERANCE);
     e.fetches = e.hit.fetches;
     if (e.hit.valid) {
       vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);
@@ -6676,11 +6674,9 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     if (t.insideScene && p.hit) {
       ih = snellIntersectWith(frontPosition, p.entryDirection, sceneDepth, sceneNormal, scenePyramid, scene,
                               t.exit.intersect);
-      SnellDepthSurface readAs = scene;
-      readAs.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
       // The hit must lie on the surface at its texel: the rule with the hit as the whole segment refuses a
       // surface nearer than the hit, i.e. a march that passed behind the card's silhouette (it did not hit it).
-      ih = snellRejectForeground(ih, ih.position, sceneDepth, readAs, SNELL_FOREGROUND_TOLERANCE);
+      ih = snellRejectForeground(ih, ih.position, sceneDepth, scene, SNELL_FOREGROUND_TOLERANCE);
       float d = length(ih.position - frontPosition);
       inside = ih.valid && d < p.entryLength;
       if (inside) {

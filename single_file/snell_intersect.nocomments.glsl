@@ -2142,7 +2142,9 @@ SNELL_FN SnellHit snellRejectForeground(SnellHit h, vec3 origin, SNELL_TEX2D dep
   if (!SNELL_FINITE(origin.z) || !SNELL_FINITE(h.position.z)) {
     return snellHitMiss(h.fetches);
   }
-  SnellSurfaceSample x = snellSampleSurface(depthTex, h.uv, s);
+  SnellDepthSurface texel = s;
+  texel.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+  SnellSurfaceSample x = snellSampleSurface(depthTex, h.uv, texel);
   h.fetches = h.fetches + 1;
   float t = tolerance > 0.0f ? min(tolerance, 1.0f) : 0.0f;
   float dNear = min(-origin.z, -h.position.z);

@@ -3321,7 +3321,9 @@ SNELL_FN SnellHit snellRejectForeground(SnellHit h, vec3 origin, SNELL_TEX2D dep
   if (!SNELL_FINITE(origin.z) || !SNELL_FINITE(h.position.z)) {
     return snellHitMiss(h.fetches);
   }
-  SnellSurfaceSample x = snellSampleSurface(depthTex, h.uv, s);
+  SnellDepthSurface texel = s;
+  texel.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+  SnellSurfaceSample x = snellSampleSurface(depthTex, h.uv, texel);
   h.fetches = h.fetches + 1;
   float t = tolerance > 0.0f ? min(tolerance, 1.0f) : 0.0f;
   float dNear = min(-origin.z, -h.position.z);
@@ -3374,9 +3376,7 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
   vec3 world = d.x * v.envX + d.y * v.envY + d.z * v.envZ;
   if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
     e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, slot.intersect);
-    SnellDepthSurface readAs = scene;
-    readAs.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
-    e.hit = snellRejectForeground(e.hit, origin, sceneDepth, readAs, SNELL_FOREGROUND_TOLERANCE);
+    e.hit = snellRejectForeground(e.hit, origin, sceneDepth, scene, SNELL_FOREGROUND_TOLERANCE);
     e.fetches = e.hit.fetches;
     if (e.hit.valid) {
       vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);
@@ -3432,9 +3432,7 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     if (t.insideScene && p.hit) {
       ih = snellIntersectWith(frontPosition, p.entryDirection, sceneDepth, sceneNormal, scenePyramid, scene,
                               t.exit.intersect);
-      SnellDepthSurface readAs = scene;
-      readAs.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
-      ih = snellRejectForeground(ih, ih.position, sceneDepth, readAs, SNELL_FOREGROUND_TOLERANCE);
+      ih = snellRejectForeground(ih, ih.position, sceneDepth, scene, SNELL_FOREGROUND_TOLERANCE);
       float d = length(ih.position - frontPosition);
       inside = ih.valid && d < p.entryLength;
       if (inside) {

@@ -86,6 +86,18 @@ TEST(IntersectForeground, AnExitRayBehindAForegroundNeverShowsIt) {
   const SnellHit onStep = snellRejectForeground(hitAt(sc, {0.3, 0.5}, 7.0, 3), origin, sc.depth, s, 0.01f);
   EXPECT_FALSE(onStep.valid);
   EXPECT_EQ(onStep.fetches, 4);
+  // A bilinear surface is read at the texel all the same: a hit in the step's last texel column, from a ray
+  // whose nearest point is at 3.5, is refused (the step there is at 3); the bilinear depth would blend the
+  // step with the plane behind it (about 8) to about 4 and let it through.
+  SnellDepthSurface bilinear = s;
+  bilinear.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  int lastStep = 0;
+  for (int i = 0; i < kW; ++i)
+    if (std::abs(sc.sampleAt(glm::dvec2((i + 0.5) / kW, (60 + 0.5) / kH)).s - 3.0) < 1e-9) lastStep = i;
+  ASSERT_GT(lastStep, 0);
+  const glm::dvec2 edge((lastStep + 0.9) / kW, (60 + 0.5) / kH);
+  const glm::vec3 near(0.0f, 0.0f, -3.5f);
+  EXPECT_FALSE(snellRejectForeground(hitAt(sc, edge, 7.0, 0), near, sc.depth, bilinear, 0.01f).valid);
   const SnellHit behind = snellRejectForeground(hitAt(sc, {0.8, 0.5}, 8.0, 3), origin, sc.depth, s, 0.01f);
   EXPECT_TRUE(behind.valid);
   EXPECT_EQ(behind.fetches, 4);

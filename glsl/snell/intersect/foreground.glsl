@@ -13,10 +13,11 @@ use: h = snellRejectForeground(h, origin, depthTex, surface, SNELL_FOREGROUND_TO
   h         the strategy's hit for the ray (origin, any direction)
   origin    the ray's view-space start (z < 0): P2 for the exit slot, P1 for
             the reflect slot
-  depthTex, surface  the buffer the strategy read and how to read it
-            (snellTwoInterfaceExit reads the texel containing the hit:
-            SNELL_DEPTH_FILTER_NEAREST, so that a bilinear read across a
-            foreground's silhouette does not blend it away)
+  depthTex, surface  the buffer the strategy read and how it describes the
+            depth (its depthFilter is not used: the rule reads the texel
+            containing the hit, SNELL_DEPTH_FILTER_NEAREST, so that a
+            bilinear read across a foreground's silhouette does not blend
+            its depth with the background's and let it through)
   tolerance the share of the ray's nearest distance by which the surface must
             be nearer to count as foreground: it absorbs the depth read's own
             error (a texel's footprint on a sloped surface, depth
@@ -29,8 +30,8 @@ contract:
   - origin.z or h.position.z not finite (no strategy returns such a hit):
     snellHitMiss(h.fetches) (no fetch), so that no runtime's NaN-ignoring
     min decides.
-  - else one read x = snellSampleSurface(depthTex, h.uv, surface) (fetches
-    h.fetches + 1). dNear = min(-origin.z, -h.position.z), the distance of the
+  - else one read x = snellSampleSurface(depthTex, h.uv, surface with
+    depthFilter SNELL_DEPTH_FILTER_NEAREST) (fetches h.fetches + 1). dNear = min(-origin.z, -h.position.z), the distance of the
     segment's nearest point along the view axis (a ray's view depth is affine
     in its parameter, so the segment is nowhere nearer). When x is valid and
     -x.viewZ < dNear (1 - t), t = tolerance clamped to [0, 1] (NaN and
@@ -65,7 +66,9 @@ SNELL_FN SnellHit snellRejectForeground(SnellHit h, vec3 origin, SNELL_TEX2D dep
   if (!SNELL_FINITE(origin.z) || !SNELL_FINITE(h.position.z)) {
     return snellHitMiss(h.fetches);
   }
-  SnellSurfaceSample x = snellSampleSurface(depthTex, h.uv, s);
+  SnellDepthSurface texel = s;
+  texel.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
+  SnellSurfaceSample x = snellSampleSurface(depthTex, h.uv, texel);
   h.fetches = h.fetches + 1;
   float t = tolerance > 0.0f ? min(tolerance, 1.0f) : 0.0f;
   float dNear = min(-origin.z, -h.position.z);

@@ -43,9 +43,8 @@ contract (snellTwoInterfaceExit(origin, dir, ..., slot, m, v)):
     false.
   - any other source (BUFFERS; WYMAN reads as BUFFERS here): hit =
     snellIntersectWith(origin, dir, scene..., slot.intersect), then the
-    foreground rule, snellRejectForeground(hit, origin, sceneDepth, scene
-    read at the texel containing the hit (SNELL_DEPTH_FILTER_NEAREST),
-    SNELL_FOREGROUND_TOLERANCE)
+    foreground rule, snellRejectForeground(hit, origin, sceneDepth, scene,
+    SNELL_FOREGROUND_TOLERANCE) (it reads the texel containing the hit)
     (intersect/foreground.glsl: 1 fetch when the strategy hit; a hit on a
     surface nearer the camera than the whole ray is refused, so a foreground
     never shows through the object); valid: color =
@@ -168,11 +167,7 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
   vec3 world = d.x * v.envX + d.y * v.envY + d.z * v.envZ;
   if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
     e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, slot.intersect);
-    // The texel the hit falls in, whatever the strategy's filter: a bilinear read across the foreground's
-    // silhouette would blend its depth with the background's and let it through.
-    SnellDepthSurface readAs = scene;
-    readAs.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
-    e.hit = snellRejectForeground(e.hit, origin, sceneDepth, readAs, SNELL_FOREGROUND_TOLERANCE);
+    e.hit = snellRejectForeground(e.hit, origin, sceneDepth, scene, SNELL_FOREGROUND_TOLERANCE);
     e.fetches = e.hit.fetches;
     if (e.hit.valid) {
       vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);
@@ -234,11 +229,9 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     if (t.insideScene && p.hit) {
       ih = snellIntersectWith(frontPosition, p.entryDirection, sceneDepth, sceneNormal, scenePyramid, scene,
                               t.exit.intersect);
-      SnellDepthSurface readAs = scene;
-      readAs.depthFilter = SNELL_DEPTH_FILTER_NEAREST;
       // The hit must lie on the surface at its texel: the rule with the hit as the whole segment refuses a
       // surface nearer than the hit, i.e. a march that passed behind the card's silhouette (it did not hit it).
-      ih = snellRejectForeground(ih, ih.position, sceneDepth, readAs, SNELL_FOREGROUND_TOLERANCE);
+      ih = snellRejectForeground(ih, ih.position, sceneDepth, scene, SNELL_FOREGROUND_TOLERANCE);
       float d = length(ih.position - frontPosition);
       inside = ih.valid && d < p.entryLength;
       if (inside) {
