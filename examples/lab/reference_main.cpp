@@ -82,9 +82,11 @@ int main(int argc, char** argv) {
                                          caption));
     }
     const double pixels = static_cast<double>(f.camera.width) * f.camera.height;
+    std::size_t triangles = 0;
+    for (const FrameObject& o : f.objects) triangles += o.mesh.triangleCount();
     std::printf("%s: %dx%d, %zu triangles, %s mode: %.3f s (%.0f ms/Mpixel), %.2f Mrays/s, object pixels %llu, "
                 "TIR %llu, leaks %llu, truncated %llu -> %s\n",
-                scene.name.c_str(), f.camera.width, f.camera.height, f.object.triangleCount(), mode.c_str(),
+                scene.name.c_str(), f.camera.width, f.camera.height, triangles, mode.c_str(),
                 r.stats.seconds, 1e3 * r.stats.seconds / (pixels / 1e6),
                 static_cast<double>(r.stats.rays) / r.stats.seconds / 1e6,
                 static_cast<unsigned long long>(r.stats.objectPixels), static_cast<unsigned long long>(r.stats.tirEvents),

@@ -42,9 +42,9 @@ int checkBounces(const Prism& prism, const dvec3& enterNormal, const dvec3& tirN
   const snell::lab::SceneFrame frame = snell::lab::buildFrame(snell::lab::loadScene(scene));
   const snell::lab::ShadeConstants k = snell::lab::shadeConstants(frame, 0);
   snell::lab::GpuLab gpu("auto", frame, {}, {snell::lab::LabShader{SNELL_TECHNIQUE_SINGLE, false, -1}},
-                         {SNELL_LAB_GLSL_DIR, SNELL_GLSL_DIR}, k);
+                         {SNELL_LAB_GLSL_DIR, SNELL_GLSL_DIR}, {k});
   gpu.renderStatic();
-  const snell::lab::StaticBuffers sb = gpu.readStatic();
+  const snell::lab::StaticBuffers sb = gpu.readStatic(0);
   const snell::Texture2D backDepth(sb.backDepth, snell::Filter::Nearest), backNormal(sb.backNormal, snell::Filter::Linear);
   const snell::Texture2D frontDepth(sb.frontDepth, snell::Filter::Nearest),
       frontNormal(sb.frontNormal, snell::Filter::Linear);

@@ -121,6 +121,19 @@ TEST(LabMesh, GeneratorsEncloseTheAnalyticVolume) {
   EXPECT_GT(signedVolume(blob), 0.0);
   expectUnitNormals(blob);
   EXPECT_EQ(makeIcosphere(1.0f, 3).triangleCount(), 20u * 64u);
+  // The box: its volume, its faces' normals along the axes, points inside and out by parity.
+  const Mesh box = makeBox(snell::vec3(0.5f, 1.2f, 2.0f));
+  EXPECT_NEAR(signedVolume(box), 0.5 * 1.2 * 2.0, 1e-6);
+  EXPECT_EQ(box.triangleCount(), 12u);
+  for (std::size_t t = 0; t < box.indices.size(); t += 3) {
+    const snell::vec3 a = box.positions[box.indices[t]], b = box.positions[box.indices[t + 1]], c = box.positions[box.indices[t + 2]];
+    const snell::vec3 n = snell::normalize(snell::cross(b - a, c - a));
+    EXPECT_NEAR(snell::dot(n, box.normals[box.indices[t]]), 1.0f, 1e-6f);  // outward winding, flat normals
+    EXPECT_NEAR(std::abs(n.x) + std::abs(n.y) + std::abs(n.z), 1.0f, 1e-6f);
+  }
+  EXPECT_TRUE(pointInsideMesh(box, glm::dvec3(0.24, -0.59, 0.99)));
+  EXPECT_FALSE(pointInsideMesh(box, glm::dvec3(0.26, 0.0, 0.0)));
+  EXPECT_FALSE(pointInsideMesh(box, glm::dvec3(0.0, 0.0, 1.01)));
   for (const Mesh& m : {makeIcosphere(2.0f, 3), makeUvSphere(2.0f, 16, 8)})
     for (std::size_t i = 0; i < m.positions.size(); ++i) {
       EXPECT_NEAR(snell::length(m.positions[i]), 2.0f, 1e-5f);
@@ -132,6 +145,7 @@ TEST(LabMesh, GeneratorArgumentsAreChecked) {
   EXPECT_THROW(makeTorus(0.5f, 1.0f, 8, 8), Error);
   EXPECT_THROW(makeUvSphere(1.0f, 2, 8), Error);
   EXPECT_THROW(makeIcosphere(-1.0f, 2), Error);
+  EXPECT_THROW(makeBox(snell::vec3(1.0f, 0.0f, 1.0f)), Error);
 }
 
 TEST(LabMesh, TransformScalesRotatesTranslatesAndKeepsWinding) {

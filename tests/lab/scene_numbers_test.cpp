@@ -180,7 +180,7 @@ TEST(LabSceneNumbers, LargeButUsableValuesLoadWithFiniteCornerRays) {
     try {
       const Scene s = parseScene(text, kFile);
       expectFiniteCornerRays(s.camera);
-      const Mesh m = buildObjectMesh(s, s.frameTime(s.animation.frames - 1));
+      const Mesh m = buildObjectMesh(s, 0, s.frameTime(s.animation.frames - 1));
       EXPECT_FALSE(m.positions.empty());
     } catch (const Error& e) {
       ADD_FAILURE() << e.what();
@@ -205,13 +205,13 @@ TEST(LabSceneNumbers, TransformsThatOverflowTheMeshNameTheField) {
                                               c.transform + "}"));
     SCOPED_TRACE(text);
     const Scene s = parseScene(text, kFile);
-    const std::string message = labtest::errorOf([&] { buildObjectMesh(s); }, ErrorKind::Schema);
+    const std::string message = labtest::errorOf([&] { buildObjectMesh(s, 0); }, ErrorKind::Schema);
     EXPECT_EQ(message.rfind(std::string(kFile) + ": " + c.field + ": the transformed mesh has non-finite vertex", 0), 0u)
         << message;
   }
   // A tiny scale (a finite float) keeps finite unit normals: its float inverse overflowed.
   const Scene s = parseScene(sceneText(object(R"("mesh": { "type": "icosphere" }, "transform": { "scale": 1e-20 })")), kFile);
-  const Mesh m = buildObjectMesh(s);
+  const Mesh m = buildObjectMesh(s, 0);
   for (const glm::vec3& n : m.normals) ASSERT_NEAR(glm::length(n), 1.0f, 1e-5f);
 }
 

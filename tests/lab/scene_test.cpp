@@ -34,7 +34,8 @@ std::string schemaError(const std::string& text, const std::string& file = "test
 }  // namespace
 
 TEST(LabScene, BundledScenesLoadAndBuild) {
-  for (const char* name : {"bunny", "bunny_pillar", "paperweight", "sphere_painting", "torus", "blob"}) {
+  for (const char* name : {"bunny", "bunny_pillar", "paperweight", "sphere_painting", "torus", "blob", "two_spheres",
+                           "cube_sphere", "panes", "snow_globe"}) {
     SCOPED_TRACE(name);
     const Scene s = loadScene(labtest::scenesDir() + "/" + name + ".json");
     EXPECT_EQ(s.name, name);
@@ -42,8 +43,11 @@ TEST(LabScene, BundledScenesLoadAndBuild) {
     EXPECT_EQ(s.camera.width, 512);
     EXPECT_GE(s.paintings.size(), 1u);
     const snell::lab::SceneFrame f = snell::lab::buildFrame(s, 0.0f);
-    EXPECT_GT(f.object.triangleCount(), 1000u);
-    EXPECT_GT(snell::lab::signedVolume(f.object), 0.0);  // outward winding
+    ASSERT_EQ(f.objects.size(), s.objects.size());
+    for (const snell::lab::FrameObject& o : f.objects) {
+      EXPECT_GE(o.mesh.triangleCount(), 12u);
+      EXPECT_GT(snell::lab::signedVolume(o.mesh), 0.0);  // outward winding
+    }
     EXPECT_GT(f.environment.image().width, 1);
   }
 }
@@ -58,11 +62,11 @@ TEST(LabScene, DefaultsForOptionalFields) {
   EXPECT_FLOAT_EQ(s.camera.zFar, 100.0f);
   EXPECT_EQ(s.camera.target, snell::vec3(0.0f));
   EXPECT_EQ(s.camera.up, snell::vec3(0.0f, 1.0f, 0.0f));
-  EXPECT_FLOAT_EQ(s.object.ior, 1.5f);
-  EXPECT_EQ(s.object.absorption, snell::vec3(0.0f));
-  EXPECT_EQ(s.object.mesh.kind, snell::lab::MeshKind::Icosphere);
-  EXPECT_EQ(s.object.mesh.subdivisions, 2);
-  EXPECT_FLOAT_EQ(s.object.mesh.radius, 1.0f);
+  EXPECT_FLOAT_EQ(s.objects.front().ior, 1.5f);
+  EXPECT_EQ(s.objects.front().absorption, snell::vec3(0.0f));
+  EXPECT_EQ(s.objects.front().mesh.kind, snell::lab::MeshKind::Icosphere);
+  EXPECT_EQ(s.objects.front().mesh.subdivisions, 2);
+  EXPECT_FLOAT_EQ(s.objects.front().mesh.radius, 1.0f);
   EXPECT_EQ(s.environment.kind, snell::lab::EnvironmentKind::Sky);
   EXPECT_TRUE(s.paintings.empty());
   EXPECT_EQ(s.animation.frames, 1);
@@ -86,14 +90,14 @@ TEST(LabScene, CommentsAndAllFieldKinds) {
   })", "all.json");
   EXPECT_EQ(s.camera.width, 320);
   EXPECT_EQ(s.camera.height, 200);
-  EXPECT_EQ(s.object.mesh.kind, snell::lab::MeshKind::Torus);
-  EXPECT_FLOAT_EQ(s.object.transform.scale.y, 2.0f);
+  EXPECT_EQ(s.objects.front().mesh.kind, snell::lab::MeshKind::Torus);
+  EXPECT_FLOAT_EQ(s.objects.front().transform.scale.y, 2.0f);
   EXPECT_EQ(s.environment.kind, snell::lab::EnvironmentKind::Color);
   ASSERT_EQ(s.paintings.size(), 2u);
   EXPECT_EQ(s.paintings[0].texture.direction, 1);
   EXPECT_FLOAT_EQ(s.frameTime(4), 3.0f);
   const snell::lab::SceneFrame f = snell::lab::buildFrame(s, 0.0f);
-  EXPECT_EQ(f.object.triangleCount(), 8u * 6u * 2u);
+  EXPECT_EQ(f.objects.front().mesh.triangleCount(), 8u * 6u * 2u);
   EXPECT_NEAR(f.environment.lookup(snell::vec3(0, 1, 0)).z, 0.8f, 1e-6f);
 }
 
@@ -168,7 +172,7 @@ TEST(LabScene, EachBadFieldIsNamed) {
       {R"({ "camera": { "position": [0, 0, 5], "up": [0, 0, 1] }, "object": { "mesh": { "type": "icosphere" } } })",
        "camera.up: must be non-zero and not parallel"},
       {R"({ "camera": { "position": [0, 0, 5] }, "object": { "mesh": { "type": "cube" } } })",
-       "object.mesh.type: expected one of \"obj\", \"sphere\", \"icosphere\", \"torus\", \"blob\", got \"cube\""},
+       "object.mesh.type: expected one of \"obj\", \"sphere\", \"icosphere\", \"torus\", \"blob\", \"box\", got \"cube\""},
       {R"({ "camera": { "position": [0, 0, 5] }, "object": { "mesh": { "radius": 1 } } })", "object.mesh.type: missing"},
       {R"({ "camera": { "position": [0, 0, 5] }, "object": { "mesh": { "type": "obj" } } })", "object.mesh.path: missing"},
       {R"({ "camera": { "position": [0, 0, 5] }, "object": { "mesh": { "type": "icosphere", "subdivisions": 9 } } })",
@@ -202,6 +206,16 @@ TEST(LabScene, EachBadFieldIsNamed) {
       {R"({ "camera": { "position": [0, 0, 5] }, "object": { "mesh": { "type": "icosphere" } }, "animation": { "frames": 0 } })",
        "animation.frames: expected an integer in [1, 100000], got 0"},
       {R"([1, 2, 3])", "(top level): expected an object, got [1,2,3]"},
+      // Several objects: a list of the same fields, named by position.
+      {R"({ "camera": { "position": [0, 0, 5] }, "object": { "mesh": { "type": "icosphere" } }, "objects": [ { "mesh": { "type": "icosphere" } } ] })",
+       "give either \"object\" (one refractive object) or \"objects\" (a list), not both"},
+      {R"({ "camera": { "position": [0, 0, 5] }, "objects": [] })", "objects: the list is empty"},
+      {R"({ "camera": { "position": [0, 0, 5] }, "objects": { "mesh": { "type": "icosphere" } } })",
+       "objects: expected an array of objects, got {"},
+      {R"({ "camera": { "position": [0, 0, 5] }, "objects": [ { "mesh": { "type": "icosphere" } }, { "mesh": { "type": "icosphere" }, "ior": 0 } ] })",
+       "objects[1].ior: expected a number in (0, 10], got 0"},
+      {R"({ "camera": { "position": [0, 0, 5] }, "objects": [ { "mesh": { "type": "icosphere" } }, { "mesh": { "type": "icosphere" }, "iro": 1.3 } ] })",
+       "objects[1].iro: unknown field"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.text);
@@ -209,6 +223,32 @@ TEST(LabScene, EachBadFieldIsNamed) {
     EXPECT_NE(msg.find(c.expected), std::string::npos) << "message: " << msg;
     EXPECT_EQ(msg.rfind("test.json", 0), 0u) << msg;  // names the file first
   }
+}
+
+// A list of objects loads each with its own fields, in order; one object given as a one-element list is
+// the same scene as one given as "object".
+TEST(LabScene, ObjectsListLoadsEveryObject) {
+  const Scene list = parseScene(R"({ "camera": { "position": [0, 0, 5] }, "objects": [
+      { "mesh": { "type": "icosphere", "subdivisions": 2 }, "ior": 1.33, "transform": { "translate": [1, 0, 0] } },
+      { "mesh": { "type": "sphere", "segments": 8, "rings": 4 }, "ior": 2.4, "absorption": [0.1, 0.2, 0.3] } ] })",
+                                "list.json");
+  ASSERT_EQ(list.objects.size(), 2u);
+  EXPECT_EQ(list.objects[0].field, "objects[0]");
+  EXPECT_FLOAT_EQ(list.objects[0].ior, 1.33f);
+  EXPECT_FLOAT_EQ(list.objects[1].ior, 2.4f);
+  EXPECT_FLOAT_EQ(list.objects[1].absorption.z, 0.3f);
+  const snell::lab::SceneFrame f = snell::lab::buildFrame(list);
+  ASSERT_EQ(f.objects.size(), 2u);
+  EXPECT_EQ(f.objects[0].mesh.triangleCount(), 20u * 16u);
+  EXPECT_NEAR(snell::lab::meshBounds(f.objects[0].mesh).center().x, 1.0f, 1e-5f);
+  EXPECT_EQ(f.objects[1].mesh.triangleCount(), 8u * (2u * 4u - 2u));  // single triangles at the poles
+  const Scene one = parseScene(R"({ "camera": { "position": [0, 0, 5] }, "object": { "mesh": { "type": "icosphere" }, "ior": 1.7 } })", "one.json");
+  const Scene oneList = parseScene(R"({ "camera": { "position": [0, 0, 5] }, "objects": [ { "mesh": { "type": "icosphere" }, "ior": 1.7 } ] })", "one.json");
+  ASSERT_EQ(one.objects.size(), 1u);
+  ASSERT_EQ(oneList.objects.size(), 1u);
+  EXPECT_EQ(one.objects[0].field, "object");
+  EXPECT_EQ(snell::lab::buildFrame(one).objects[0].mesh.positions, snell::lab::buildFrame(oneList).objects[0].mesh.positions);
+  EXPECT_EQ(one.objects[0].ior, oneList.objects[0].ior);
 }
 
 TEST(LabScene, LineOfTheBadField) {
@@ -256,8 +296,8 @@ TEST(LabScene, MissingMeshAndImageFilesNameThePath) {
     "object": { "mesh": { "type": "obj", "path": "meshes/missing.obj" } }
   })");
   const Scene s = loadScene(scenePath);
-  EXPECT_EQ(s.object.mesh.path, dir.file("meshes/missing.obj"));  // relative to the scene file
-  const std::string msg = labtest::errorOf([&] { snell::lab::buildObjectMesh(s); }, ErrorKind::Io);
+  EXPECT_EQ(s.objects.front().mesh.path, dir.file("meshes/missing.obj"));  // relative to the scene file
+  const std::string msg = labtest::errorOf([&] { snell::lab::buildObjectMesh(s, 0); }, ErrorKind::Io);
   EXPECT_NE(msg.find("mesh file not found: " + dir.file("meshes/missing.obj")), std::string::npos) << msg;
 
   const Scene env = parseScene(R"({
@@ -275,8 +315,8 @@ TEST(LabScene, MissingMeshAndImageFilesNameThePath) {
 TEST(LabScene, BlobDeformsOverFrames) {
   const Scene s = loadScene(labtest::scenesDir() + "/blob.json");
   EXPECT_EQ(s.animation.frames, 60);
-  const snell::lab::Mesh a = snell::lab::buildObjectMesh(s, s.frameTime(0));
-  const snell::lab::Mesh b = snell::lab::buildObjectMesh(s, s.frameTime(10));
+  const snell::lab::Mesh a = snell::lab::buildObjectMesh(s, 0, s.frameTime(0));
+  const snell::lab::Mesh b = snell::lab::buildObjectMesh(s, 0, s.frameTime(10));
   ASSERT_EQ(a.positions.size(), b.positions.size());
   EXPECT_EQ(a.indices, b.indices);  // same topology: one deformable mesh
   float moved = 0.0f;

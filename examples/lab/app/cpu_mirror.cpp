@@ -46,52 +46,61 @@ void shadeOnCpu(const CpuShader& shade, const TechniqueBuffers& tb, int threads,
 }
 
 void compareCpuGpu(const CpuShader& shade, const TechniqueBuffers& tb, const Image& cpuColor, const Image& cpuStats,
-                   TechniqueRow& row) {
+                   CpuGpuTally& tally) {
   auto covered = [&](int x, int y) { return tb.normal.at(x, y).w > 0.0f; };
   const gpu::FrameComparison c =
       gpu::compareFrames(tb.color, cpuColor, covered, gpu::ClampChannels::ToUnit, [&](int x, int y) {
-        row.cpuGpuBeyond4Ties += shade.tieUlps(tb, x, y, kTieUlps, nullptr, nullptr) > 0;
+        tally.ties += shade.tieUlps(tb, x, y, kTieUlps, nullptr, nullptr) > 0;
       });
-  row.cpuGpuMaxAbs = c.maxAbs;
-  row.worstX = c.worstX;
-  row.worstY = c.worstY;
-  row.cpuGpuBeyond4Pixels = static_cast<int>(c.beyond4);
-  std::size_t invalid = 0, backMiss = 0, exitMiss = 0, fetchDiff = 0, leaks = 0;
-  double fetches = 0.0;
+  if (c.worstX >= 0 && (tally.worstX < 0 || c.maxAbs > tally.maxAbs)) {
+    tally.maxAbs = c.maxAbs;
+    tally.worstX = c.worstX;
+    tally.worstY = c.worstY;
+  }
+  tally.pixels += c.pixels;
+  tally.within1 += c.within1;
+  tally.beyond4 += c.beyond4;
   for (int y = 0; y < tb.normal.height; ++y)
     for (int x = 0; x < tb.normal.width; ++x) {
       if (!covered(x, y)) continue;
       const vec4 s = tb.stats.at(x, y);
-      invalid += s.x > 0.5f;
-      backMiss += s.z < 0.5f;
-      exitMiss += s.w < 0.5f;
-      fetches += static_cast<double>(s.y);
-      fetchDiff += s.y != cpuStats.at(x, y).y;
-      leaks += cpuStats.at(x, y).z > 0.5f;
+      tally.invalid += s.x > 0.5f;
+      tally.backMiss += s.z < 0.5f;
+      tally.exitMiss += s.w < 0.5f;
+      tally.fetches += static_cast<double>(s.y);
+      tally.fetchDiff += s.y != cpuStats.at(x, y).y;
+      tally.leaks += cpuStats.at(x, y).z > 0.5f;
     }
-  const double n = c.pixels ? static_cast<double>(c.pixels) : 1.0;
+}
+
+void CpuGpuTally::into(TechniqueRow& row) const {
+  row.cpuGpuMaxAbs = maxAbs;
+  row.worstX = worstX;
+  row.worstY = worstY;
+  row.cpuGpuBeyond4Pixels = static_cast<int>(beyond4);
+  row.cpuGpuBeyond4Ties = static_cast<int>(ties);
+  const double n = pixels ? static_cast<double>(pixels) : 1.0;
   row.invalidShare = static_cast<double>(invalid) / n;
   row.backMissShare = static_cast<double>(backMiss) / n;
   row.exitMissShare = static_cast<double>(exitMiss) / n;
   row.fetchesPerPixel = fetches / n;
-  row.cpuGpuBeyond1 = static_cast<double>(c.pixels - c.within1) / n;
-  row.cpuGpuBeyond4 = static_cast<double>(c.beyond4) / n;
+  row.cpuGpuBeyond1 = static_cast<double>(pixels - within1) / n;
+  row.cpuGpuBeyond4 = static_cast<double>(beyond4) / n;
   row.fetchMismatch = static_cast<double>(fetchDiff) / n;
   row.leakPixels = static_cast<int>(leaks);
 }
 
-
 void debugWorstPixel(const CpuShader& shade, const TechniqueBuffers& tb, const Image& cpuColor, const Image& cpuStats,
-                     const TechniqueRow& row) {
-  if (!std::getenv("SNELL_LAB_DEBUG_PARITY") || row.worstX < 0) return;
-  const int x = row.worstX, y = row.worstY;
+                     const CpuGpuTally& tally) {
+  if (!std::getenv("SNELL_LAB_DEBUG_PARITY") || tally.worstX < 0) return;
+  const int x = tally.worstX, y = tally.worstY;
   const glm::dvec4 p(tb.position.at(x, y)), nn(tb.normal.at(x, y)), g(tb.color.at(x, y)), c(cpuColor.at(x, y));
   const glm::dvec4 gs(tb.stats.at(x, y)), cs(cpuStats.at(x, y));
   std::fprintf(stderr,
                "[parity] %s worst pixel (%d, %d): |d| %.2f/255; P1 (%.9g %.9g %.9g) N1 (%.9g %.9g %.9g) dN %.9g\n"
                "  gpu rgb (%.5f %.5f %.5f) fellBack %g fetches %g backHit %g exitHit %g\n"
                "  cpu rgb (%.5f %.5f %.5f) fellBack %g fetches %g\n",
-               shade.info.name().c_str(), x, y, 255.0 * row.cpuGpuMaxAbs, p.x, p.y, p.z, nn.x, nn.y, nn.z, p.w, g.x, g.y, g.z,
+               shade.info.name().c_str(), x, y, 255.0 * tally.maxAbs, p.x, p.y, p.z, nn.x, nn.y, nn.z, p.w, g.x, g.y, g.z,
                gs.x, gs.y, gs.z, gs.w, c.x, c.y, c.z, cs.x, cs.y);
   int reproduced = 0, tried = 0;
   const int bestUlps = shade.tieUlps(tb, x, y, 32, &reproduced, &tried);

@@ -120,12 +120,23 @@ struct CpuShader {
 // (CpuShader::leaks).
 void shadeOnCpu(const CpuShader& shade, const TechniqueBuffers& tb, int threads, Image& color, Image& stats);
 
-// Stage 4b: the row's shares and the CPU-vs-GPU agreement, over the front pass's covered pixels.
-void compareCpuGpu(const CpuShader& shade, const TechniqueBuffers& tb, const Image& cpuColor, const Image& cpuStats,
-                   TechniqueRow& row);
+// The row's shares and the CPU-vs-GPU agreement, summed over the front passes of the objects.
+struct CpuGpuTally {
+  std::size_t pixels = 0, within1 = 0, beyond4 = 0, ties = 0;
+  std::size_t invalid = 0, backMiss = 0, exitMiss = 0, fetchDiff = 0, leaks = 0;
+  double fetches = 0.0;
+  double maxAbs = 0.0;
+  int worstX = -1, worstY = -1;  // the pixel of maxAbs
+  void into(TechniqueRow& row) const;
+};
 
-// SNELL_LAB_DEBUG_PARITY: the worst pixel's inputs and both builds' results, on stderr.
+// Stage 4b: one object's front pass (its covered pixels) added to the tally.
+void compareCpuGpu(const CpuShader& shade, const TechniqueBuffers& tb, const Image& cpuColor, const Image& cpuStats,
+                   CpuGpuTally& tally);
+
+// SNELL_LAB_DEBUG_PARITY: the worst pixel of one object's pass (`tally` of that pass alone): its inputs and both
+// builds' results, on stderr.
 void debugWorstPixel(const CpuShader& shade, const TechniqueBuffers& tb, const Image& cpuColor, const Image& cpuStats,
-                     const TechniqueRow& row);
+                     const CpuGpuTally& tally);
 
 }  // namespace snell::lab

@@ -1,5 +1,4 @@
 #include "engine_sweep.hpp"
-#include "pictures.hpp"
 
 #include "lab/metrics.hpp"
 
@@ -13,8 +12,8 @@ namespace {
 // default is 0.05), on in steps of 1.25x while the grid's last value is the best (to 8 d, or Godot's clamp 1), then
 // six halvings of the step on both sides of the best. Each value costs one C++ frame of the cheap model (about
 // 20 ms at 512x512 on 2 cores).
-std::vector<float> engineGrid(const SnellEngineModelInfo& m, const LabParams& p) {
-  const float top = m.kind == SnellEngineParameterKind::UvScale ? 0.3f : p.backRange;
+std::vector<float> engineGrid(const SnellEngineModelInfo& m, float range) {
+  const float top = m.kind == SnellEngineParameterKind::UvScale ? 0.3f : range;
   std::vector<float> v;
   for (int i = 0; i <= 40; ++i) v.push_back(top * static_cast<float>(i) / 40.0f);
   return v;
@@ -22,28 +21,22 @@ std::vector<float> engineGrid(const SnellEngineModelInfo& m, const LabParams& p)
 
 }  // namespace
 
-EngineSweep sweepEngineParameter(GpuLab& gpu, std::size_t index, const LabRowSpec& row, const CpuBuffers& cb,
-                                 const LabParams& params, const StaticBuffers& sb, const References& refs,
-                                 int threads, int margin) {
-  gpu.renderTechnique(index);
-  const TechniqueBuffers tb = gpu.readTechnique();
+EngineSweep sweepEngineParameter(const LabRowSpec& row, float range, const References& refs,
+                                 const std::function<Image(float)>& imageFor) {
   EngineSweep sweep;
   double bestMse = 0.0;
   const auto tryValue = [&](float value) {
-    Image color(tb.color.width, tb.color.height), stats(tb.color.width, tb.color.height);
-    shadeOnCpu(CpuShader{row, value, cb, params, margin}, tb, threads, color, stats);
-    const double mse =
-        compareImages(refs.full.color, composite(color, tb.normal, sb.fullColor, margin), refs.full.mask).mse;
+    const double mse = compareImages(refs.full.color, imageFor(value), refs.full.mask).mse;
     sweep.tried.emplace_back(value, mse);
     if (sweep.tried.size() == 1 || mse < bestMse) {
       bestMse = mse;
       sweep.best = value;
     }
   };
-  std::vector<float> grid = engineGrid(*row.engine, params);
+  std::vector<float> grid = engineGrid(*row.engine, range);
   for (float value : grid) tryValue(value);
   const bool uv = row.engine->kind == SnellEngineParameterKind::UvScale;
-  const float cap = uv ? 1.0f : 8.0f * params.backRange;
+  const float cap = uv ? 1.0f : 8.0f * range;
   float step = grid[1] - grid[0];
   while (sweep.best == grid.back() && grid.back() > 0.0f && grid.back() < cap) {
     step = std::min(cap, 1.25f * grid.back()) - grid.back();

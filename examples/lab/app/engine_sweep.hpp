@@ -5,6 +5,7 @@
 #include "references.hpp"
 #include "technique.hpp"
 
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -19,8 +20,9 @@ struct EngineSweep {
   std::vector<std::pair<float, double>> tried;  // (value, MSE vs the full ray tracer), in the order tried
 };
 
-EngineSweep sweepEngineParameter(GpuLab& gpu, std::size_t index, const LabRowSpec& row, const CpuBuffers& cb,
-                                 const LabParams& params, const StaticBuffers& sb, const References& refs,
-                                 int threads, int margin);
+// `imageFor(value)`: the row's picture with that value (the C++ build of every object's pass, composited);
+// `range`: the largest object's bounding-box diagonal (lengths are swept in it).
+EngineSweep sweepEngineParameter(const LabRowSpec& row, float range, const References& refs,
+                                 const std::function<Image(float)>& imageFor);
 
 }  // namespace snell::lab

@@ -1,14 +1,17 @@
 // The lab's GL pipeline on one context (OSMesa or EGL, Mesa llvmpipe by
-// default): (1) the opaque scene (environment background, paintings: colour,
-// depth, view-space normal), whole and as the layer behind the object's nearest
-// point (SceneLayer), (2) the refractive object's back faces (depth
-// GL_GREATER after clearing to 0, front faces culled, normals) and its front
-// faces (depth GL_LESS after clearing to 1, normals), (3) the depth
-// min/max pyramids of both depth buffers (glsl/passes/depth_pyramid.frag),
-// (4) the front faces with one technique (examples/glsl/lab_refract.frag),
-// depth-tested against the whole opaque scene (its depth copied in first, as an
-// engine draws its glass after its opaque pass): colour, per-pixel stats and
-// the fragment inputs, in RGBA32F attachments.
+// default): (1) the whole opaque scene (environment background, paintings:
+// colour, depth, view-space normal), (2) each refractive object's back faces
+// (depth GL_GREATER after clearing to 0, front faces culled, normals) and front
+// faces (depth GL_LESS after clearing to 1, normals), (3) the depth min/max
+// pyramids (glsl/passes/depth_pyramid.frag), then per object, back to front:
+// (1b) the scene layer the object reads (SceneLayer): the opaque scene behind
+// its nearest point and the objects already drawn, with the colours the frame
+// holds for them so far (examples/glsl/lab_layer.frag), and its pyramid,
+// (4) the object's front faces with one technique
+// (examples/glsl/lab_refract.frag), depth-tested against the whole opaque
+// scene (its depth copied in first, as an engine draws its glass after its
+// opaque pass): colour, per-pixel stats and the fragment inputs, in RGBA32F
+// attachments.
 #pragma once
 #include "lab/scene.hpp"
 
@@ -32,11 +35,11 @@ struct ShaderDirs {
   std::filesystem::path snellGlsl;
 };
 
-// Read back after passes 1-3: the viewport plus the guard band on every side
+// Read back after passes 1-3 and 1b for one object: the viewport plus the guard band on every side
 // (ShadeConstants::margin texels), rendered with ShadeConstants::params.clipFromView.
 struct StaticBuffers {
-  // The layer of the opaque scene that snell's rows read (SceneLayer): depth in .x (window depth, GL
-  // convention, 1 = empty).
+  // The layer of the scene that snell's rows read for the object (SceneLayer; the objects drawn before it
+  // included): depth in .x (window depth, GL convention, 1 = empty).
   Image sceneColor, sceneDepth, sceneNormal;
   // The whole opaque scene: what the picture shows around the object, what the object is depth-tested
   // against, and what the engine rows read (their opaque colour copy).
@@ -83,8 +86,12 @@ struct ShadeConstants {
   int margin = 0;
   NormalFilter normalFilter = NormalFilter::Linear;   // how both sides read the normal buffers
   SceneLayer sceneLayer = SceneLayer::Behind;         // what snell's rows read
-  // The object's nearest view distance (its vertices'): where the Behind layer's clip plane lies.
+  // The object's nearest view distance (its vertices'): where the Behind layer's clip plane lies, and
+  // the key of the back-to-front order (drawOrder).
   float objectNearDistance = 0.0f;
+  // The object that contains this one (nested media, -1: none). params.ior stays the object's own index
+  // (shadeConstants says why).
+  int enclosing = -1;
 
   static LabParams defaultLabParams() {
     LabParams p{};
@@ -105,9 +112,16 @@ struct ShadeConstants {
     return p;
   }
 };
-// The frame's constants with a guard band of `margin` texels per side; the read
-// modes keep their defaults (set the fields).
-ShadeConstants shadeConstants(const SceneFrame& frame, int margin = 0);
+// The frame's constants for frame.objects[object] with a guard band of `margin` texels per side; the read
+// modes keep their defaults (set the fields). An object inside another (all its vertices inside that
+// object's mesh; the innermost such object) is `enclosing` it; insideScene is on when a painting or another
+// object reaches inside it.
+ShadeConstants shadeConstants(const SceneFrame& frame, std::size_t object, int margin = 0);
+
+// The order the lab draws the objects in: back to front by their nearest point (ShadeConstants::
+// objectNearDistance), so an object inside another (its nearest point farther) comes before it; ties
+// keep the file's order. Each object's exit and reflect slots read the ones drawn before it.
+std::vector<std::size_t> drawOrder(const std::vector<ShadeConstants>& objects);
 
 // The environment as both sides sample it: intensity applied, GL_LINEAR, clamp to edge.
 Texture2D environmentTexture(const SceneFrame& frame);
@@ -123,11 +137,11 @@ struct LabShader {
 
 class GpuLab {
  public:
-  // backend: "auto", "osmesa" or "egl". `shaders`: one program each. dN: Wyman's
-  // d_N per vertex of frame.object (zeros when absent). k: shadeConstants(frame,
-  // margin) with the read modes the C++ side uses too.
-  GpuLab(const std::string& backend, const SceneFrame& frame, const std::vector<float>& dN,
-         const std::vector<LabShader>& shaders, const ShaderDirs& dirs, const ShadeConstants& k);
+  // backend: "auto", "osmesa" or "egl". `shaders`: one program each. dN[i]: Wyman's d_N per vertex of
+  // frame.objects[i] (zeros when absent or empty). k[i]: shadeConstants(frame, i, margin) with the read
+  // modes the C++ side uses too (margin and read modes the same for every object).
+  GpuLab(const std::string& backend, const SceneFrame& frame, const std::vector<std::vector<float>>& dN,
+         const std::vector<LabShader>& shaders, const ShaderDirs& dirs, const std::vector<ShadeConstants>& k);
   ~GpuLab();
   GpuLab(const GpuLab&) = delete;
   GpuLab& operator=(const GpuLab&) = delete;
@@ -136,13 +150,25 @@ class GpuLab {
 
   // Passes 1-3; returns their wall time in ms (glFinish on both sides).
   double renderStatic();
-  StaticBuffers readStatic() const;
+  // Pass 1b for `object`: its scene layer, with the objects in `drawn` (drawn before it) coloured as
+  // `composite` holds them (the frame so far, buffer-sized: viewport plus guard band; nullptr when `drawn`
+  // is empty). Returns its wall time in ms (the composite's upload not included).
+  double renderLayer(std::size_t object, const std::vector<std::size_t>& drawn, const Image* composite);
+  // The buffers `object` is shaded from: its own and the scene layer pass 1b drew last.
+  StaticBuffers readStatic(std::size_t object) const;
+  // GPU memory of one object's own buffers (mesh, back and front faces, back-face pyramid), bytes.
+  std::size_t objectBytes(std::size_t object) const;
+  // GPU memory shared by all objects (the scene layers and their pyramids, the refraction pass's targets).
+  std::size_t sharedBytes() const;
 
-  // Pass 4 with shaders[index]: glFinish, steady clock, draw, glFinish.
+  // Pass 4 of `object` with shaders[index]: glFinish, steady clock, draw, glFinish.
   // Returns the pass's wall time in ms.
-  double renderTechnique(std::size_t index);
+  double renderTechnique(std::size_t index, std::size_t object);
   // The free value of shaders[index]'s engine model (0 until set).
   void setEngineParameter(std::size_t index, float value);
+  // The colour copy the engine rows read (buffer-sized; Bevy's steps copy the frame so far before each group
+  // of objects); nullptr: the whole opaque scene's colour, as the one copy of every engine row.
+  void setColorCopy(const Image* frame);
   TechniqueBuffers readTechnique() const;
 
  private:

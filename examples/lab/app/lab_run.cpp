@@ -58,77 +58,249 @@ std::vector<LabRowSpec> selectTechniques(const LabOptions& options) {
   // The engines' models after the techniques: snell's cheapest tier, compared on the same buffers.
   for (const SnellEngineModelInfo& m : snellEngineModelTable())
     if (asked(m.name)) rows.push_back(LabRowSpec{nullptr, &m});
+  // Bevy's steps: named, or with every row when the scene has several objects (runLab drops them
+  // otherwise: with one object they are the three.js / Bevy row).
+  for (const LabRowSpec& r : bevyStepRows())
+    if (asked(r.name())) rows.push_back(r);
   return rows;
 }
 
-// Wyman's d_N per vertex, when a technique reads it (else none: the shaders read 0).
-std::vector<float> wymanDnIfNeeded(const SceneFrame& frame, const std::vector<LabRowSpec>& techniques) {
-  const bool wanted = std::any_of(techniques.begin(), techniques.end(),
-                                  [](const LabRowSpec& t) { return t.needsDn(); });
-  if (!wanted) return {};
-  return computeWymanDn(frame.object.positions, frame.object.normals, frame.object.indices);
+// Wyman's d_N per vertex of each object, when a technique reads it or `always` (else none: the shaders read 0).
+std::vector<std::vector<float>> wymanDn(const SceneFrame& frame, const std::vector<LabRowSpec>& techniques, bool always) {
+  const bool wanted = always || std::any_of(techniques.begin(), techniques.end(),
+                                            [](const LabRowSpec& t) { return t.needsDn(); });
+  std::vector<std::vector<float>> dN(frame.objects.size());
+  if (wanted)
+    for (std::size_t i = 0; i < frame.objects.size(); ++i)
+      dN[i] = computeWymanDn(frame.objects[i].mesh.positions, frame.objects[i].mesh.normals, frame.objects[i].mesh.indices);
+  return dN;
 }
 
-// Stage 4: one technique on the GPU, the same in C++, compared; its image (the object composited over
-// the scene) for the pictures.
-TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const CpuShader& shade, const StaticBuffers& sb,
-                          const References& refs, int threads, Image& image) {
-  gpu.renderTechnique(index);  // also compiles the shader's JIT code: not timed
-  const TechniqueBuffers tb = gpu.readTechnique();
-  Image cpuColor(tb.color.width, tb.color.height), cpuStats(tb.color.width, tb.color.height);
-  shadeOnCpu(shade, tb, threads, cpuColor, cpuStats);
+// What every row's GPU run shares: the objects' constants and order, the whole opaque scene.
+struct FrameSetup {
+  std::vector<ShadeConstants> k;   // per object, in the file's order
+  std::vector<std::size_t> order;  // draw order: back to front
+  Image fullColor;                 // the whole opaque scene, buffer-sized (the frame before any object)
+  int margin = 0;
+  bool several() const { return order.size() > 1; }
+};
+
+// One object's pass of one row: the buffers it was shaded from (C++ textures) and what the GPU wrote.
+struct ObjectPass {
+  std::size_t object = 0;
+  CpuBuffers cb;
+  TechniqueBuffers tb;
+};
+
+// Bevy's steps over n objects in draw order (its split_range): whether a group, and its colour copy, starts at
+// each position; the first n % groups groups hold one object more.
+std::vector<bool> stepStarts(std::size_t n, int steps) {
+  std::vector<bool> starts(n, false);
+  if (n == 0) return starts;
+  const std::size_t groups = std::min<std::size_t>(n, static_cast<std::size_t>(std::max(1, steps)));
+  std::size_t rem = n % groups, start = 0;
+  for (std::size_t g = 0; g < groups; ++g) {
+    starts[start] = true;
+    start += n / groups + (rem > 0 ? 1 : 0);
+    if (rem > 0) --rem;
+  }
+  return starts;
+}
+
+// The objects drawn before the one at `position` of the draw order.
+std::vector<std::size_t> drawnBefore(const FrameSetup& setup, std::size_t position) {
+  return std::vector<std::size_t>(setup.order.begin(), setup.order.begin() + static_cast<std::ptrdiff_t>(position));
+}
+
+// The object's colour over `frame` (buffer-sized) where its pass covered the pixel.
+void drawOver(Image& frame, const Image& color, const Image& coverage, int margin) {
+  for (int y = 0; y < color.height; ++y)
+    for (int x = 0; x < color.width; ++x)
+      if (coverage.at(x, y).w > 0.0f) frame.at(x + margin, y + margin) = vec4(vec3(color.at(x, y)), 1.0f);
+}
+
+// The viewport's part of a buffer-sized frame.
+Image viewportOf(const Image& frame, int margin, int width, int height) {
+  Image out(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) out.at(x, y) = frame.at(x + margin, y + margin);
+  return out;
+}
+
+// Row `index` on the GPU, object after object back to front: snell's rows read each object's scene layer with
+// the objects drawn before it as this row drew them (an engine row reads its opaque colour copy); each pass's
+// colour goes over `frame`, which starts as the whole opaque scene. `keep`: the buffers each object read.
+std::vector<ObjectPass> renderObjects(GpuLab& gpu, std::size_t index, const LabRowSpec& row, const FrameSetup& setup,
+                                      const SceneFrame& sceneFrame, Image& frame, std::vector<StaticBuffers>* keep) {
+  frame = setup.fullColor;
+  std::vector<ObjectPass> passes;
+  for (std::size_t position = 0; position < setup.order.size(); ++position) {
+    const std::size_t o = setup.order[position];
+    if (setup.several() && row.engine == nullptr) gpu.renderLayer(o, drawnBefore(setup, position), &frame);
+    StaticBuffers sb = gpu.readStatic(o);
+    gpu.renderTechnique(index, o);  // also compiles the shader's JIT code: not timed
+    ObjectPass pass{o, cpuBuffers(sb, setup.k[o], sceneFrame), gpu.readTechnique()};
+    drawOver(frame, pass.tb.color, pass.tb.normal, setup.margin);
+    if (keep) keep->push_back(std::move(sb));
+    passes.push_back(std::move(pass));
+  }
+  gpu.setColorCopy(nullptr);
+  return passes;
+}
+
+// Stage 4: one row on the GPU, the same in C++, compared; its image (the objects composited over the scene)
+// for the pictures.
+TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const LabRowSpec& spec, float engineParameter,
+                          const FrameSetup& setup, const SceneFrame& sceneFrame, const References& refs, int threads,
+                          Image& image, Image& finalFrame, std::vector<StaticBuffers>* keep) {
+  const std::vector<ObjectPass> passes = renderObjects(gpu, index, spec, setup, sceneFrame, finalFrame, keep);
   TechniqueRow row;
-  row.name = shade.info.name();
-  row.label = shade.info.label();
-  compareCpuGpu(shade, tb, cpuColor, cpuStats, row);
-  debugWorstPixel(shade, tb, cpuColor, cpuStats, row);
-  // Coverage: the ray tracer's object pixels that the front pass did not shade (near-plane clipping,
-  // silhouette rasterization) hold the scene colour in the composite; say how many, and refuse to score
-  // a technique that shaded none of them.
+  row.name = spec.name();
+  row.label = spec.label();
+  row.engine = spec.engine;
+  row.steps = spec.steps;
+  CpuGpuTally tally;
+  const int W = sceneFrame.camera.width, H = sceneFrame.camera.height;
+  Mask coveredAny(W, H);
+  for (const ObjectPass& pass : passes) {
+    const CpuShader shade{spec, engineParameter, pass.cb, setup.k[pass.object].params, setup.margin};
+    Image cpuColor(W, H), cpuStats(W, H);
+    shadeOnCpu(shade, pass.tb, threads, cpuColor, cpuStats);
+    CpuGpuTally own;
+    compareCpuGpu(shade, pass.tb, cpuColor, cpuStats, own);
+    debugWorstPixel(shade, pass.tb, cpuColor, cpuStats, own);
+    compareCpuGpu(shade, pass.tb, cpuColor, cpuStats, tally);
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x)
+        if (pass.tb.normal.at(x, y).w > 0.0f) coveredAny.set(x, y, true);
+  }
+  tally.into(row);
+  // Coverage: the ray tracer's object pixels that no front pass shaded (near-plane clipping, silhouette
+  // rasterization) hold the scene colour in the composite; say how many, and refuse to score a technique
+  // that shaded none of them.
   const Mask& object = refs.full.mask;
   std::size_t unshaded = 0, overdrawn = 0;
-  for (int y = 0; y < tb.normal.height; ++y)
-    for (int x = 0; x < tb.normal.width; ++x) {
-      const bool covered = tb.normal.at(x, y).w > 0.0f;
-      unshaded += object.at(x, y) && !covered;
-      overdrawn += !object.at(x, y) && covered;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      unshaded += object.at(x, y) && !coveredAny.at(x, y);
+      overdrawn += !object.at(x, y) && coveredAny.at(x, y);
     }
   const std::size_t objectPixels = object.count();
   if (unshaded == objectPixels)
     throw Error(ErrorKind::Render,
-                "technique " + shade.info.name() + " shaded none of the " + std::to_string(objectPixels) +
+                "technique " + spec.name() + " shaded none of the " + std::to_string(objectPixels) +
                     " pixels where the ray tracer sees the object (does the near plane cut the object, or does the "
                     "camera sit inside it?); no error can be measured");
   row.unshadedShare = objectPixels ? static_cast<double>(unshaded) / static_cast<double>(objectPixels) : 0.0;
   row.overdrawnShare = objectPixels ? static_cast<double>(overdrawn) / static_cast<double>(objectPixels) : 0.0;
-  image = composite(tb.color, tb.normal, sb.fullColor, shade.margin);
+  image = viewportOf(finalFrame, setup.margin, W, H);
   row.mseFull = compareImages(refs.full.color, image, refs.full.mask).mse;
   row.mseTwo = compareImages(refs.two.color, image, refs.full.mask).mse;
   row.mseFullTir = compareImages(refs.full.color, image, refs.tir).mse;
-  row.bounces = shade.info.bounces();
+  row.bounces = spec.bounces();
   row.modelEvents = 2 + row.bounces;
   row.mseModel = compareImages(refs.modelOf(row.bounces).color, image, refs.full.mask).mse;
+  if (setup.several()) row.mseComposited = compareImages(refs.composited.color, image, refs.full.mask).mse;
   return row;
 }
 
-// Stage 5: all techniques interleaved, frame after frame; median per technique, ratios to single sample
-// (to the first row when single sample did not run).
-void timeTechniques(GpuLab& gpu, const std::vector<LabRowSpec>& techniques, int frames,
-                    LabResult& result) {
+// Before an engine row runs: its free value, swept on the C++ build of every object's pass (an engine row's
+// passes read the opaque copy, so the GPU's fragment inputs do not depend on the value).
+EngineSweep sweepEngineRow(GpuLab& gpu, std::size_t index, const LabRowSpec& spec, const FrameSetup& setup,
+                           const SceneFrame& sceneFrame, const References& refs, int threads) {
+  Image frame;
+  std::vector<ObjectPass> passes = renderObjects(gpu, index, spec, setup, sceneFrame, frame, nullptr);
+  const bool stepped = setup.several() && spec.steps > 1;
+  const std::vector<bool> copies = stepStarts(passes.size(), spec.steps);
+  float range = 0.0f;
+  for (const ShadeConstants& k : setup.k) range = std::max(range, k.params.backRange);
+  const int W = sceneFrame.camera.width, H = sceneFrame.camera.height;
+  return sweepEngineParameter(spec, range, refs, [&](float value) {
+    Image f = setup.fullColor;
+    for (std::size_t position = 0; position < passes.size(); ++position) {
+      ObjectPass& pass = passes[position];
+      // Bevy's steps: the objects of a group read the frame as it was when the group began.
+      if (stepped && copies[position]) {
+        const Texture2D copy(f, Filter::Linear);
+        for (std::size_t later = position; later < passes.size() && (later == position || !copies[later]); ++later)
+          passes[later].cb.fullColor = copy;
+      }
+      Image color(W, H), stats(W, H);
+      shadeOnCpu(CpuShader{spec, value, pass.cb, setup.k[pass.object].params, setup.margin}, pass.tb, threads, color,
+                 stats);
+      drawOver(f, color, pass.tb.normal, setup.margin);
+    }
+    return viewportOf(f, setup.margin, W, H);
+  });
+}
+
+// Stage 5: all techniques interleaved, frame after frame; median per technique (the sum of its objects'
+// passes), ratios to single sample (to the first row when single sample did not run). With several objects,
+// snell's rows draw each object's scene layer first from the row's own final frame (untimed: the layer's
+// content changes no cost), and every object is timed alone too (its layer without the others).
+void timeTechniques(GpuLab& gpu, const std::vector<LabRowSpec>& techniques, const FrameSetup& setup,
+                    const std::vector<Image>& finalFrames, int frames, LabResult& result) {
+  const std::size_t n = setup.order.size();
   std::vector<std::vector<double>> times(techniques.size());
+  std::vector<std::vector<std::vector<double>>> perObject(techniques.size(), std::vector<std::vector<double>>(n)),
+      alone = perObject;
+  std::vector<std::vector<double>> layerMs(n);  // each object's scene layer, over snell's rows and frames
   // The bound is a reference, not a contender: one timed frame is enough to show its cost.
   for (int f = 0; f < frames; ++f)
-    for (std::size_t i = 0; i < techniques.size(); ++i)
-      if (f == 0 || !techniques[i].reference()) times[i].push_back(gpu.renderTechnique(i));
+    for (std::size_t i = 0; i < techniques.size(); ++i) {
+      if (f > 0 && techniques[i].reference()) continue;
+      const bool layers = setup.several() && techniques[i].engine == nullptr;
+      const std::vector<bool> copies = stepStarts(n, techniques[i].steps);
+      double total = 0.0;
+      for (std::size_t position = 0; position < n; ++position) {
+        const std::size_t o = setup.order[position];
+        if (layers) layerMs[position].push_back(gpu.renderLayer(o, drawnBefore(setup, position), &finalFrames[i]));
+        if (setup.several() && techniques[i].steps > 1 && copies[position]) gpu.setColorCopy(&finalFrames[i]);
+        const double ms = gpu.renderTechnique(i, o);
+        perObject[i][position].push_back(ms);
+        total += ms;
+      }
+      times[i].push_back(total);
+      gpu.setColorCopy(nullptr);
+      if (!setup.several()) continue;
+      for (std::size_t position = 0; position < n; ++position) {
+        const std::size_t o = setup.order[position];
+        if (layers) gpu.renderLayer(o, {}, nullptr);
+        alone[i][position].push_back(gpu.renderTechnique(i, o));
+      }
+    }
   double unit = 0.0;
   for (std::size_t i = 0; i < techniques.size(); ++i) {
-    result.rows[i].medianMs = median(times[i]);
-    if (techniques[i].costUnit()) unit = result.rows[i].medianMs;
+    TechniqueRow& row = result.rows[i];
+    row.medianMs = median(times[i]);
+    if (setup.several()) {
+      row.objectMs.clear();
+      row.aloneMs = 0.0;
+      for (std::size_t position = 0; position < n; ++position) {
+        row.objectMs.push_back(median(perObject[i][position]));
+        row.aloneMs += median(alone[i][position]);
+      }
+    }
+    if (techniques[i].costUnit()) unit = row.medianMs;
   }
   if (unit <= 0.0 && !result.rows.empty()) unit = result.rows[0].medianMs;
   for (TechniqueRow& r : result.rows) r.costRatio = unit > 0.0 ? r.medianMs / unit : 0.0;
+  for (std::size_t position = 0; position < n && position < result.objects.size(); ++position)
+    result.objects[position].layerMs = median(layerMs[position]);
 }
 
+// The pixels where the ray tracer's primary ray meets each object first.
+std::vector<std::size_t> pixelsPerObject(const References& refs, const SceneFrame& frame) {
+  std::vector<std::size_t> count(frame.objects.size(), 0);
+  const Mask& mask = refs.full.mask;
+  for (int y = 0; y < mask.height; ++y)
+    for (int x = 0; x < mask.width; ++x) {
+      if (!mask.at(x, y)) continue;
+      const std::vector<PathEvent> ev = refs.tracer->principalPath(primaryRay(frame.camera, x, y), 1, TirPolicy::Critical);
+      if (!ev.empty() && ev[0].object >= 0) ++count[static_cast<std::size_t>(ev[0].object)];
+    }
+  return count;
+}
 
 }  // namespace
 
@@ -147,9 +319,16 @@ int guardBandMargin(double fraction, int width, int height) {
 
 LabResult runLab(const LabOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<LabRowSpec> techniques = selectTechniques(options);
+  std::vector<LabRowSpec> techniques = selectTechniques(options);
 
   Scene scene = loadScene(options.scenePath);
+  if (!options.webBundleDir.empty() && scene.objects.size() > 1)
+    throw Error(ErrorKind::Render, "--web-bundle: the three.js page renders one refractive object; " +
+                                       (scene.name.empty() ? fs::path(options.scenePath).stem().string() : scene.name) +
+                                       " has " + std::to_string(scene.objects.size()));
+  if (scene.objects.size() < 2 && options.techniques.empty())
+    techniques.erase(std::remove_if(techniques.begin(), techniques.end(), [](const LabRowSpec& t) { return t.steps > 1; }),
+                     techniques.end());
   if (options.width > 0) scene.camera.width = options.width;
   if (options.height > 0) scene.camera.height = options.height;
   const SceneFrame frame = buildFrame(scene, scene.frameTime(0));
@@ -160,7 +339,7 @@ LabResult runLab(const LabOptions& options) {
   result.height = frame.camera.height;
   result.frames = options.frames;
 
-  const References refs = traceReferences(frame, techniques, options, result);
+  References refs = traceReferences(frame, techniques, options, result);
 
   // Stage 3: the GPU passes that do not depend on the technique (scene, back faces, pyramids), once:
   // the frame is static. Their read-back buffers are what the C++ side shades from.
@@ -168,42 +347,66 @@ LabResult runLab(const LabOptions& options) {
   for (const LabRowSpec& t : techniques) shaders.push_back({t.techniqueId(), t.reference(), t.engineModel()});
   const int margin = guardBandMargin(options.guardBand, result.width, result.height);
   result.guardBand = margin;
-  ShadeConstants k = shadeConstants(frame, margin);
-  k.normalFilter = options.normalFilter;
-  k.params.depthFilter = options.depthFilter;
-  k.params.reflectSource = options.reflectSource;
-  k.sceneLayer = options.sceneLayer;
-  if (options.insideScene >= 0) k.params.insideScene = options.insideScene;
-  result.insideScene = k.params.insideScene != 0;
+  FrameSetup setup;
+  setup.margin = margin;
+  for (std::size_t i = 0; i < frame.objects.size(); ++i) {
+    ShadeConstants k = shadeConstants(frame, i, margin);
+    k.normalFilter = options.normalFilter;
+    k.params.depthFilter = options.depthFilter;
+    k.params.reflectSource = options.reflectSource;
+    k.sceneLayer = options.sceneLayer;
+    if (options.insideScene >= 0) k.params.insideScene = options.insideScene;
+    setup.k.push_back(k);
+  }
+  setup.order = drawOrder(setup.k);
+  if (setup.several()) traceComposited(refs, frame, setup.order, setup.k, options, result);
+  result.insideScene = std::any_of(setup.k.begin(), setup.k.end(), [](const ShadeConstants& k) { return k.params.insideScene != 0; });
   result.sceneLayer = options.sceneLayer;
   // The web page offers every technique, ISR's d_N included.
-  const std::vector<float> dN = options.webBundleDir.empty()
-                                    ? wymanDnIfNeeded(frame, techniques)
-                                    : computeWymanDn(frame.object.positions, frame.object.normals, frame.object.indices);
-  GpuLab gpu(options.backend, frame, dN, shaders, options.dirs, k);
+  const std::vector<std::vector<float>> dN = wymanDn(frame, techniques, !options.webBundleDir.empty());
+  GpuLab gpu(options.backend, frame, dN, shaders, options.dirs, setup.k);
   result.gpu = gpu.description();
   result.staticPassMs = gpu.renderStatic();
-  const StaticBuffers sb = gpu.readStatic();
-  const CpuBuffers cb = cpuBuffers(sb, k, frame);
-  const LabParams& params = k.params;
-  result.objectDiagonal = params.backRange;
+  // One object reads the same scene layer in every row: drawn once, with the static passes.
+  if (!setup.several()) result.staticPassMs += gpu.renderLayer(0, {}, nullptr);
+  setup.fullColor = gpu.readStatic(setup.order.front()).fullColor;
+  for (const ShadeConstants& k : setup.k) result.objectDiagonal = std::max(result.objectDiagonal, k.params.backRange);
+  const std::vector<std::size_t> pixels = pixelsPerObject(refs, frame);
+  for (std::size_t o : setup.order) {
+    ObjectReport report;
+    report.index = o;
+    report.ior = frame.objects[o].ior;
+    report.enclosing = setup.k[o].enclosing;
+    report.insideScene = setup.k[o].params.insideScene != 0;
+    report.pixels = pixels[o];
+    report.bytes = gpu.objectBytes(o);
+    result.objects.push_back(report);
+  }
+  result.sharedBytes = gpu.sharedBytes();
 
-  std::vector<Image> images(techniques.size());
+  std::vector<Image> images(techniques.size()), finalFrames(techniques.size());
+  std::vector<StaticBuffers> boundBuffers;  // per object, in draw order: what the two-interface bound read
+  std::size_t boundIndex = techniques.size();
+  for (std::size_t i = 0; i < techniques.size(); ++i)
+    if (techniques[i].reference() && techniques[i].bounces() == 0) boundIndex = i;
   for (std::size_t i = 0; i < techniques.size(); ++i) {
     EngineSweep sweep;
     if (techniques[i].engine) {
-      sweep = sweepEngineParameter(gpu, i, techniques[i], cb, params, sb, refs, options.threads, k.margin);
+      sweep = sweepEngineRow(gpu, i, techniques[i], setup, frame, refs, options.threads);
       gpu.setEngineParameter(i, sweep.best);
     }
-    TechniqueRow row = runTechnique(gpu, i, CpuShader{techniques[i], sweep.best, cb, params, k.margin}, sb, refs,
-                                    options.threads, images[i]);
+    TechniqueRow row = runTechnique(gpu, i, techniques[i], sweep.best, setup, frame, refs, options.threads, images[i],
+                                    finalFrames[i], i == boundIndex ? &boundBuffers : nullptr);
     row.engineSweep = sweep.tried;
     row.engineParameter = sweep.best;
     result.rows.push_back(std::move(row));
+    if (!setup.several()) finalFrames[i] = Image();  // the timing reads them only for several objects
   }
-  scoreAgainstTheBound(techniques, images, missingInformation(refs, frame, sb, k), refs, result);
+  if (!boundBuffers.empty())
+    scoreAgainstTheBound(techniques, images, missingInformation(refs, frame, boundBuffers, setup.k, setup.order), refs,
+                         result);
 
-  timeTechniques(gpu, techniques, options.frames, result);
+  timeTechniques(gpu, techniques, setup, finalFrames, options.frames, result);
   result.markdown = markdownTable(result);
   result.targets = targetsText(result) + whichToPick(result);
   if (!options.outDir.empty()) writeOutputs(options.outDir, refs, images, gpu.description(), result, start);
@@ -212,7 +415,8 @@ LabResult runLab(const LabOptions& options) {
     for (std::size_t i = 0; i < techniques.size(); ++i) ran.push_back({techniques[i], &images[i]});
     // The front pass's fragment inputs are the same for every row: the last timed draw left them in pass 4's
     // buffers, so no draw is needed.
-    writeWebBundle(options.webBundleDir, result.scene, frame, dN, k, ran, refs.full.mask, sb, gpu.readTechnique());
+    writeWebBundle(options.webBundleDir, result.scene, frame, dN.front(), setup.k.front(), ran, refs.full.mask,
+                   gpu.readStatic(0), gpu.readTechnique());
   }
   result.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -5,6 +5,7 @@
 #pragma once
 #include "gpu_lab.hpp"
 
+#include <snell/engine_model_table.hpp>
 #include <snell/technique_table.hpp>
 
 #include <cstdio>
@@ -38,11 +39,14 @@ struct LabOptions {
 
 struct TechniqueRow {
   std::string name, label;
+  const SnellEngineModelInfo* engine = nullptr;  // an engine row's model (nullptr: a technique of the table)
+  int steps = 1;                                 // an engine row's Bevy steps (LabRowSpec::steps)
   double mseFull = 0.0;        // vs the full ray tracer (Fresnel + TIR), object pixels
   double mseTwo = 0.0;         // vs the two-interface reference
   int bounces = 0;             // the preset's bounce count (0: a two-interface technique)
   int modelEvents = 2;         // the interface events of the model it follows: 2 + bounces
   double mseModel = 0.0;       // vs that model's reference: mseTwo, or the principal path of modelEvents
+  double mseComposited = -1.0;  // several objects: vs the composited two-interface model (-1 with one)
   double mseBound = 0.0;       // vs its image-space bound's image (the bound with its bounces): its own error
   double boundRatio = 0.0;     // mseModel / its bound's mseModel (1 = as good as any image-space method)
   double unshadedShare = 0.0;  // object pixels (ray tracer's mask) the technique's front pass did not shade
@@ -66,6 +70,10 @@ struct TechniqueRow {
   // as a share of the object pixels: the glass drawn over what hides it (silhouette rasterization adds a few).
   double overdrawnShare = 0.0;
   double mseFullTir = 0.0;     // vs the full ray tracer on the object pixels with TIR (LabResult::tirShare)
+  // Several objects: the refraction pass's median ms per object (draw order; their sum is medianMs), and the
+  // sum of each object's median drawn alone (its scene layer without the other objects; 0 with one object).
+  std::vector<double> objectMs;
+  double aloneMs = 0.0;
   // An engine row: the value of its free parameter it ran with, the best of the sweep (value, MSE vs the full
   // ray tracer) on this scene.
   float engineParameter = 0.0f;
@@ -80,6 +88,17 @@ struct ModelFloor {
   double mseFullTir = 0.0;  // ... on the object pixels with TIR
 };
 
+// A refractive object of the scene, as the lab drew it.
+struct ObjectReport {
+  std::size_t index = 0;      // in the scene file's order
+  float ior = 1.5f;           // its material's
+  int enclosing = -1;         // the object it lies in (-1: none)
+  bool insideScene = false;   // its rows also search the scene along the refracted ray
+  std::size_t pixels = 0;     // pixels where the ray tracer's primary ray meets it first
+  double layerMs = 0.0;       // its scene layer (pass 1b: the scene behind it and the objects drawn before it)
+  std::size_t bytes = 0;      // GPU memory of its own buffers (mesh, back and front faces, back-face pyramid)
+};
+
 struct LabResult {
   std::string scene;
   int width = 0, height = 0;
@@ -87,7 +106,12 @@ struct LabResult {
   SceneLayer sceneLayer = SceneLayer::Behind;  // the opaque scene's layer snell's rows read
   bool insideScene = false;  // snell's rows also searched the scene along the refracted ray (SnellTechnique.insideScene)
   std::size_t objectPixels = 0;
+  std::vector<ObjectReport> objects;  // in draw order: back to front
+  std::size_t sharedBytes = 0;        // GPU memory every object shares (scene layers, the pass's targets)
   double mseTwoVsFull = 0.0;  // the two-interface model's own error (model + TIR)
+  // Several objects: the composited two-interface model's (References::composited) error, the floor of
+  // the rows (-1 with one object, where it is the two-interface model).
+  double mseCompositedVsFull = -1.0;
   double mseTwoVsFullTir = 0.0;  // ... on the object pixels with TIR
   // Object pixels whose principal path meets total internal reflection at its second interface (where
   // every two-interface technique clamps to the critical angle), as a share of the object pixels.

@@ -29,14 +29,6 @@ Image downscale(const Image& img, int factor) {
 
 }  // namespace
 
-Image composite(const Image& object, const Image& coverage, const Image& scene, int margin) {
-  Image out(object.width, object.height);
-  for (int y = 0; y < out.height; ++y)
-    for (int x = 0; x < out.width; ++x)
-      out.at(x, y) = coverage.at(x, y).w > 0.0f ? vec4(vec3(object.at(x, y)), 1.0f) : scene.at(x + margin, y + margin);
-  return out;
-}
-
 void writeOutputs(const fs::path& out, const References& refs, const std::vector<Image>& images,
                   const std::string& gpuDescription, LabResult& result,
                   std::chrono::steady_clock::time_point start) {
@@ -51,6 +43,13 @@ void writeOutputs(const fs::path& out, const References& refs, const std::vector
   writePng((out / "reference_two_interfaces.png").string(),
            composePanel({{&full, "ray traced (full)"}, {&two, "two interfaces"}, {&modelHeat, "error"}},
                         result.scene + ": two-interface model, MSE " + fmt("%.3g", result.mseTwoVsFull)));
+  if (result.mseCompositedVsFull >= 0.0) {
+    const Image& comp = refs.composited.color;
+    const Image heat = errorHeatMap(full, comp, refs.full.mask);
+    writePng((out / "reference_composited.png").string(),
+             composePanel({{&full, "ray traced (full)"}, {&comp, "objects composited"}, {&heat, "error"}},
+                          result.scene + ": composited two-interface model, MSE " + fmt("%.3g", result.mseCompositedVsFull)));
+  }
   const int factor = W >= 512 ? 2 : 1;
   std::vector<Image> tiles;
   std::vector<std::string> labels;

@@ -1,4 +1,4 @@
-// The lab's pictures (stage 6 of a run): the object composited over the scene, the panels, the overview.
+// The lab's pictures (stage 6 of a run): the panels, the overview.
 #pragma once
 #include "lab_run.hpp"
 #include "references.hpp"
@@ -11,10 +11,6 @@
 #include <vector>
 
 namespace snell::lab {
-
-// Composite: the object's pixels from `object` where the front pass covered them, else the scene (whose
-// buffer holds `margin` more texels on every side: the guard band).
-Image composite(const Image& object, const Image& coverage, const Image& scene, int margin);
 
 // Stage 6: the pictures (ground truth, model error, a panel per technique, the overview) and the tables.
 void writeOutputs(const std::filesystem::path& out, const References& refs, const std::vector<Image>& images,

@@ -64,14 +64,30 @@ References traceReferences(const SceneFrame& frame, const std::vector<LabRowSpec
   return refs;
 }
 
-MissingInformation missingInformation(const References& refs, const SceneFrame& frame, const StaticBuffers& sb,
-                                      const ShadeConstants& k) {
+void traceComposited(References& refs, const SceneFrame& frame, const std::vector<std::size_t>& order,
+                     const std::vector<ShadeConstants>& k, const LabOptions& options, LabResult& result) {
+  TraceOptions to;
+  to.threads = options.threads;
+  to.progress = !options.quiet;
+  std::vector<double> index;  // what the passes use (shadeConstants)
+  for (const ShadeConstants& c : k) index.push_back(static_cast<double>(c.params.ior));
+  refs.composited = refs.tracer->renderComposited(frame.camera, order, index, to);
+  result.traceSeconds += refs.composited.stats.seconds;
+  result.mseCompositedVsFull = compareImages(refs.full.color, refs.composited.color, refs.full.mask).mse;
+}
+
+MissingInformation missingInformation(const References& refs, const SceneFrame& frame,
+                                      const std::vector<StaticBuffers>& buffers, const std::vector<ShadeConstants>& ks,
+                                      const std::vector<std::size_t>& order) {
   const Mask& object = refs.full.mask;
   MissingInformation info{Mask(object.width, object.height), Mask(object.width, object.height)};
   Mask& missing = info.any;
+  std::vector<std::size_t> position(order.size());
+  for (std::size_t p = 0; p < order.size(); ++p) position[order[p]] = p;
   // What the buffers hold: the viewport and the guard band around it.
-  const int W = sb.backDepth.width, H = sb.backDepth.height;
-  const glm::dmat4 clipFromWorld = glm::dmat4(k.params.clipFromView) * glm::dmat4(k.viewFromWorld);
+  const int W = buffers.front().backDepth.width, H = buffers.front().backDepth.height;
+  const ShadeConstants& k0 = ks.front();  // the camera's matrices: the same for every object
+  const glm::dmat4 clipFromWorld = glm::dmat4(k0.params.clipFromView) * glm::dmat4(k0.viewFromWorld);
   // The buffer texel a world point projects to, or false when it is off screen / behind the camera.
   const auto texel = [&](const glm::dvec3& p, int* px, int* py) {
     const glm::dvec4 c = clipFromWorld * glm::dvec4(p, 1.0);
@@ -82,18 +98,20 @@ MissingInformation missingInformation(const References& refs, const SceneFrame& 
     *py = std::min(H - 1, static_cast<int>(v * H));
     return true;
   };
-  const auto viewDistance = [&](const glm::dvec3& p) { return -(glm::dmat4(k.viewFromWorld) * glm::dvec4(p, 1.0)).z; };
+  const auto viewDistance = [&](const glm::dvec3& p) { return -(glm::dmat4(k0.viewFromWorld) * glm::dvec4(p, 1.0)).z; };
   const auto bufferDistance = [&](const Image& depth, int x, int y) {
-    return static_cast<double>(snellLinearizeDepth(depth.at(x, y).x, k.params.zNear, k.params.zFar, SNELL_DEPTH_GL));
+    return static_cast<double>(snellLinearizeDepth(depth.at(x, y).x, k0.params.zNear, k0.params.zFar, SNELL_DEPTH_GL));
   };
-  const double backTolerance = 0.02 * static_cast<double>(k.params.backRange);
   for (int y = 0; y < object.height; ++y)
     for (int x = 0; x < object.width; ++x) {
       if (!object.at(x, y)) continue;
       const std::vector<PathEvent> in = refs.tracer->principalPath(primaryRay(frame.camera, x, y), 2, TirPolicy::Critical);
       if (in.size() < 2 || in[0].type != PathEventType::Enter ||
-          (in[1].type != PathEventType::Exit && in[1].type != PathEventType::CriticalClamp))
-        continue;  // not a two-interface path (grazing or open mesh): nothing to classify
+          (in[1].type != PathEventType::Exit && in[1].type != PathEventType::CriticalClamp) || in[1].object != in[0].object)
+        continue;  // not a two-interface path of its object (grazing, open mesh, nested): nothing to classify
+      const std::size_t o = static_cast<std::size_t>(in[0].object);
+      const StaticBuffers& sb = buffers[position[o]];
+      const double backTolerance = 0.02 * static_cast<double>(ks[o].params.backRange);
       int bx = 0, by = 0;
       const glm::dvec3 p2 = in[1].point;
       // P2's distance in front of (< 0) or behind the back face the buffer holds at its texel.
@@ -108,7 +126,14 @@ MissingInformation missingInformation(const References& refs, const SceneFrame& 
       out.origin = p2 + refs.tracer->offsetEpsilon() * in[1].direction;
       out.direction = in[1].direction;
       const std::vector<PathEvent> ev = refs.tracer->principalPath(out, 1, TirPolicy::Critical);
-      if (ev.empty() || ev[0].type != PathEventType::HitOpaque) continue;
+      if (ev.empty()) continue;
+      // The exit ray meets an opaque surface, or another object: in the layer when drawn before this one.
+      const bool other = ev[0].type == PathEventType::Enter && ev[0].object >= 0 && static_cast<std::size_t>(ev[0].object) != o;
+      if (other && position[static_cast<std::size_t>(ev[0].object)] > position[o]) {
+        missing.set(x, y, true);
+        continue;
+      }
+      if (ev[0].type != PathEventType::HitOpaque && !other) continue;
       int sx = 0, sy = 0;
       const double d = viewDistance(ev[0].point);
       if (!texel(ev[0].point, &sx, &sy) || bufferDistance(sb.sceneDepth, sx, sy) < d * (1.0 - 1e-2))

@@ -23,12 +23,19 @@ struct References {
   // The principal path of 2 + B events for each bounce count B > 0 a row follows: the model reference
   // of those rows, as `two` is of the two-interface ones.
   std::map<int, TraceResult> principal;
+  // Several objects: the composited two-interface model (ReferenceTracer::renderComposited), in the lab's
+  // draw order with the relative indices its passes use: the floor of the rows.
+  TraceResult composited;
 
   const TraceResult& modelOf(int bounces) const { return bounces > 0 ? principal.at(2 + bounces) : two; }
 };
 
 References traceReferences(const SceneFrame& frame, const std::vector<LabRowSpec>& techniques,
                             const LabOptions& options, LabResult& result);
+
+// Stage 2b, with several objects: refs.composited, and its error in the result.
+void traceComposited(References& refs, const SceneFrame& frame, const std::vector<std::size_t>& order,
+                     const std::vector<ShadeConstants>& k, const LabOptions& options, LabResult& result);
 
 // Stage 3a: the object pixels whose two-interface path the buffers cannot show any image-space method:
 // the exact exit point P2 (critical-angle TIR, as the techniques) off screen or not the farthest back
@@ -41,8 +48,13 @@ struct MissingInformation {
   Mask middleLayer;
 };
 
-MissingInformation missingInformation(const References& refs, const SceneFrame& frame, const StaticBuffers& sb,
-                                      const ShadeConstants& k);
+// With several objects, each pixel is classified with the buffers of the object its primary ray meets first:
+// `buffers` in draw order (`order`, as the bound read them), `k` in the file's order. A path whose second event
+// is on another object (a nested one) is not a two-interface path of its object and is left out; an exit ray
+// that meets an object drawn after its own (not in the layer) lacks information.
+MissingInformation missingInformation(const References& refs, const SceneFrame& frame,
+                                      const std::vector<StaticBuffers>& buffers, const std::vector<ShadeConstants>& k,
+                                      const std::vector<std::size_t>& order);
 
 // Stage 4c: every row against the image-space bound, and the bound's own error split into the pixels
 // whose path the buffers do not hold (missingInformation) and the rest.

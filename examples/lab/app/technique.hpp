@@ -17,13 +17,25 @@ namespace snell {
 
 namespace snell::lab {
 
+// Bevy's transmission steps (bevy_pbr transmission/node.rs): the transmissive objects, sorted back to
+// front, are split into `steps` groups (the first groups one object more where the count does not divide),
+// and the colour target is copied before each group, whose objects read that copy. One step is the one copy
+// of the opaque scene every engine row reads; the lab adds these rows with the three.js / Bevy model when a
+// scene has several objects.
+constexpr int kBevySteps[] = {2, 3};
+
 // One row of the lab: a technique of the table or an engine model, never both.
 struct LabRowSpec {
   const SnellTechniqueInfo* technique = nullptr;
   const SnellEngineModelInfo* engine = nullptr;
+  int steps = 1;  // an engine row: Bevy's steps (the colour copies, kBevySteps); 1: the opaque copy only
 
-  std::string name() const { return technique ? technique->name : engine->name; }
-  std::string label() const { return technique ? technique->label : engine->label; }
+  std::string name() const {
+    return technique ? technique->name : steps > 1 ? "engine-bevy-steps-" + std::to_string(steps) : engine->name;
+  }
+  std::string label() const {
+    return technique ? technique->label : steps > 1 ? "Bevy, " + std::to_string(steps) + " steps" : engine->label;
+  }
   // A Reference row (the image-space bounds) is measured against, not a contender.
   bool reference() const { return technique && technique->kind == SnellTechniqueKind::Reference; }
   bool costUnit() const { return technique && technique->costUnit; }
@@ -36,7 +48,10 @@ struct LabRowSpec {
 // "single, plane-normal-0, ..., engine-godot" for messages.
 std::string techniqueNames();
 
-// The row of that command-line name (a technique or an engine model), or a spec with neither.
+// The row of that command-line name (a technique, an engine model, engine-bevy-steps-N), or a spec with neither.
 LabRowSpec findRow(const std::string& name);
+
+// The rows of Bevy's steps (kBevySteps), with the three.js / Bevy model.
+std::vector<LabRowSpec> bevyStepRows();
 
 }  // namespace snell::lab

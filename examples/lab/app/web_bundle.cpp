@@ -71,7 +71,7 @@ void writeWebBundle(const fs::path& dir, const std::string& sceneName, const Sce
 
   // The mesh as the lab's GL pass pulls it: positions with Wyman's d_N in w (0 where the lab computed none),
   // normals, triangle indices.
-  const Mesh& m = frame.object;
+  const Mesh& m = frame.objects.front().mesh;
   std::vector<glm::vec4> positions(m.vertexCount()), normals(m.vertexCount());
   for (std::size_t i = 0; i < m.vertexCount(); ++i) {
     positions[i] = glm::vec4(m.positions[i], i < dN.size() ? dN[i] : 0.0f);

@@ -117,6 +117,27 @@ Mesh makeTorus(float majorRadius, float minorRadius, int majorSegments, int mino
   return m;
 }
 
+Mesh makeBox(glm::vec3 size) {
+  requireArg(size.x > 0.0f && size.y > 0.0f && size.z > 0.0f, "box: needs every edge length > 0");
+  const glm::vec3 h = 0.5f * size;
+  Mesh m;
+  // Each face: its outward normal n and two in-face axes u, v with u x v = n (counter-clockwise from outside).
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = -1; side <= 1; side += 2) {
+      glm::vec3 n(0.0f), u(0.0f), v(0.0f);
+      n[axis] = static_cast<float>(side);
+      u[(axis + 1) % 3] = 1.0f;
+      v = glm::cross(n, u);
+      const auto base = u32(m.positions.size());
+      for (const glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+        m.positions.push_back(h * (n + c.x * u + c.y * v));
+        m.normals.push_back(n);
+      }
+      m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    }
+  return m;
+}
+
 Mesh makeBlob(const BlobParams& params, float time) {
   requireArg(params.amplitude >= 0.0f && params.amplitude < 1.0f,
              "blob: needs 0 <= amplitude < 1 (the radius must stay positive)");

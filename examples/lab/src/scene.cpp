@@ -77,7 +77,7 @@ Camera readCamera(ObjectReader r) {
 
 MeshSpec readMesh(ObjectReader r, const std::string& sceneFile) {
   MeshSpec m;
-  const std::string type = r.choice("type", {"obj", "sphere", "icosphere", "torus", "blob"}, "", true);
+  const std::string type = r.choice("type", {"obj", "sphere", "icosphere", "torus", "blob", "box"}, "", true);
   if (type == "obj") {
     m.kind = MeshKind::Obj;
     m.path = resolvePath(r.requiredString("path"), sceneFile);
@@ -87,6 +87,9 @@ MeshSpec readMesh(ObjectReader r, const std::string& sceneFile) {
     m.radius = static_cast<float>(r.number("radius", 1.0, Range::positive()));
     m.segments = r.integer("segments", m.segments, 3, 4096);
     m.rings = r.integer("rings", m.rings, 2, 4096);
+  } else if (type == "box") {
+    m.kind = MeshKind::Box;
+    m.size = r.vector3OrScalar("size", m.size, Range::positive());
   } else if (type == "icosphere") {
     m.kind = MeshKind::Icosphere;
     m.radius = static_cast<float>(r.number("radius", 1.0, Range::positive()));
@@ -120,8 +123,9 @@ Transform readTransform(ObjectReader r) {
   return t;
 }
 
-RefractiveObject readObject(ObjectReader r, const std::string& sceneFile) {
+RefractiveObject readObject(ObjectReader r, std::string field, const std::string& sceneFile) {
   RefractiveObject o;
+  o.field = std::move(field);
   o.mesh = readMesh(r.object("mesh"), sceneFile);
   if (r.has("transform")) o.transform = readTransform(r.object("transform"));
   o.ior = static_cast<float>(r.number("ior", o.ior, Range{0.0, 10.0, true, false}));
@@ -282,7 +286,20 @@ Scene parseScene(const std::string& text, const std::string& file) {
   s.name = r.string("name", readableUtf8(stem));
   s.description = r.string("description", "");
   s.camera = readCamera(r.object("camera"));
-  s.object = readObject(r.object("object"), file);
+  // One object or a list, not both: two ways of saying the same thing would let a file say both.
+  if (r.has("object") && r.has("objects"))
+    throw Error(ErrorKind::Schema, (file.empty() ? std::string("<scene>") : file) +
+                                       ": give either \"object\" (one refractive object) or \"objects\" (a list), not both");
+  if (r.has("objects")) {
+    std::vector<ObjectReader> list = r.objectArray("objects", kMaxObjects);
+    if (list.empty())
+      throw Error(ErrorKind::Schema, (file.empty() ? std::string("<scene>") : file) +
+                                         ": objects: the list is empty; a scene holds at least one refractive object");
+    for (std::size_t i = 0; i < list.size(); ++i)
+      s.objects.push_back(readObject(std::move(list[i]), "objects[" + std::to_string(i) + "]", file));
+  } else {
+    s.objects.push_back(readObject(r.object("object"), "object", file));
+  }
   if (r.has("environment")) {
     s.environment = readEnvironment(r.object("environment"), file);
   }
@@ -324,8 +341,12 @@ std::string transformCulprit(const std::vector<vec3>& before, std::size_t i, con
 
 }  // namespace
 
-Mesh buildObjectMesh(const Scene& scene, float time) {
-  const MeshSpec& m = scene.object.mesh;
+Mesh buildObjectMesh(const Scene& scene, std::size_t index, float time) {
+  if (index >= scene.objects.size())
+    throw Error(ErrorKind::Schema, sceneWhere(scene) + ": no refractive object " + std::to_string(index) + " (the scene has " +
+                                       std::to_string(scene.objects.size()) + ")");
+  const RefractiveObject& object = scene.objects[index];
+  const MeshSpec& m = object.mesh;
   Mesh mesh;
   switch (m.kind) {
     case MeshKind::Obj: {
@@ -340,7 +361,7 @@ Mesh buildObjectMesh(const Scene& scene, float time) {
         applyTransform(mesh, fit);
         const long bad = firstNonFiniteVertex(mesh);
         if (bad >= 0)
-          throw Error(ErrorKind::Schema, sceneWhere(scene) + ": object.mesh.fit_size: the fitted mesh (" + m.path +
+          throw Error(ErrorKind::Schema, sceneWhere(scene) + ": " + object.field + ".mesh.fit_size: the fitted mesh (" + m.path +
                                              ") has non-finite vertex " + std::to_string(bad) +
                                              " (its bounding box is empty or too large for float arithmetic)");
       }
@@ -350,21 +371,22 @@ Mesh buildObjectMesh(const Scene& scene, float time) {
     case MeshKind::Icosphere: mesh = makeIcosphere(m.radius, m.subdivisions); break;
     case MeshKind::Torus: mesh = makeTorus(m.majorRadius, m.minorRadius, m.majorSegments, m.minorSegments); break;
     case MeshKind::Blob: mesh = makeBlob(m.blob, time); break;
+    case MeshKind::Box: mesh = makeBox(m.size); break;
   }
   const std::string what = m.kind == MeshKind::Obj ? m.path : std::string("built-in mesh");
   // The untransformed mesh first, so that a transform that overflows is named
   // as such rather than as a bad mesh.
   const long badBefore = firstNonFiniteVertex(mesh);
   if (badBefore >= 0)
-    throw Error(ErrorKind::Mesh, sceneWhere(scene) + ": object.mesh: " + what + ": vertex " +
+    throw Error(ErrorKind::Mesh, sceneWhere(scene) + ": " + object.field + ".mesh: " + what + ": vertex " +
                                      std::to_string(badBefore) + " is not finite" +
                                      (m.kind == MeshKind::Blob ? " at time " + detail::formatNumber(time) : ""));
   const std::vector<vec3> before = mesh.positions;
-  applyTransform(mesh, scene.object.transform);
+  applyTransform(mesh, object.transform);
   const long bad = firstNonFiniteVertex(mesh);
   if (bad >= 0)
-    throw Error(ErrorKind::Schema, sceneWhere(scene) + ": object.transform." +
-                                       transformCulprit(before, static_cast<std::size_t>(bad), scene.object.transform) +
+    throw Error(ErrorKind::Schema, sceneWhere(scene) + ": " + object.field + ".transform." +
+                                       transformCulprit(before, static_cast<std::size_t>(bad), object.transform) +
                                        ": the transformed mesh has non-finite vertex " + std::to_string(bad));
   validateMesh(mesh, what);
   return mesh;
@@ -410,9 +432,8 @@ std::vector<Painting> buildPaintings(const Scene& scene) {
 SceneFrame buildFrame(const Scene& scene, float time) {
   SceneFrame f;
   f.camera = scene.camera;
-  f.object = buildObjectMesh(scene, time);
-  f.ior = scene.object.ior;
-  f.absorption = scene.object.absorption;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i)
+    f.objects.push_back(FrameObject{buildObjectMesh(scene, i, time), scene.objects[i].ior, scene.objects[i].absorption});
   f.environment = buildEnvironment(scene);
   f.paintings = buildPaintings(scene);
   return f;

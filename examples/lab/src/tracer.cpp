@@ -6,6 +6,7 @@
 #include <embree3/rtcore.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -32,6 +33,7 @@ enum class HitKind { None, Object, Painting };
 
 struct Hit {
   HitKind kind = HitKind::None;
+  int object = -1;  // Object: which one
   double t = 0.0;
   unsigned prim = 0;
   double u = 0.0, v = 0.0;
@@ -44,18 +46,86 @@ void embreeError(void* user, RTCError code, const char* message) {
 
 glm::dvec3 toD(const vec3& v) { return glm::dvec3(v); }
 
+// The media a ray travels in, innermost last: crossing into an object pushes it, out of one removes it.
+// Where two objects overlap, the one entered last is the medium: the surface of the other one there
+// separates that medium from itself and does not bend the ray. Deeper nesting than kMax drops the
+// outermost medium (no bundled scene comes near).
+struct Media {
+  static constexpr int kMax = 8;
+  std::array<int, kMax> stack{};
+  int size = 0;
+
+  int top() const { return size > 0 ? stack[static_cast<std::size_t>(size - 1)] : -1; }
+  bool contains(int object) const {
+    for (int i = 0; i < size; ++i)
+      if (stack[static_cast<std::size_t>(i)] == object) return true;
+    return false;
+  }
+  Media without(int object) const {
+    Media m;
+    for (int i = 0; i < size; ++i)
+      if (stack[static_cast<std::size_t>(i)] != object) m.stack[static_cast<std::size_t>(m.size++)] = stack[static_cast<std::size_t>(i)];
+    return m;
+  }
+  Media with(int object) const {
+    Media m = without(object);
+    if (m.size == kMax) {
+      for (int i = 1; i < kMax; ++i) m.stack[static_cast<std::size_t>(i - 1)] = m.stack[static_cast<std::size_t>(i)];
+      --m.size;
+    }
+    m.stack[static_cast<std::size_t>(m.size++)] = object;
+    return m;
+  }
+};
+
+// Runs row(y, stats) for every image row on `threads` threads, rows handed out in turn; each thread's stats
+// are added to `total`. The first exception stops the others and is rethrown.
+template <class Row>
+void traceRows(int height, unsigned threads, ProgressBar& bar, TraceStats& total, Row&& row) {
+  std::atomic<int> nextRow{0};
+  std::mutex statsMutex;
+  std::exception_ptr failure;
+  const auto work = [&] {
+    TraceStats local;
+    try {
+      for (int y = nextRow++; y < height; y = nextRow++) {
+        row(y, local);
+        bar.advance();
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(statsMutex);
+      if (!failure) failure = std::current_exception();
+      nextRow = height;
+    }
+    std::lock_guard<std::mutex> lock(statsMutex);
+    total += local;
+  };
+  std::vector<std::thread> pool;
+  for (unsigned i = 1; i < threads; ++i) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  if (failure) {
+    bar.finish();
+    std::rethrow_exception(failure);
+  }
+}
+
 }  // namespace
 
 struct ReferenceTracer::Impl {
   RTCDevice device = nullptr;
-  RTCScene full = nullptr;        // object (geomID kObject) + paintings (kPaintings)
+  RTCScene full = nullptr;        // the objects + the paintings
   RTCScene background = nullptr;  // paintings only (geomID 0)
-  unsigned objectGeom = RTC_INVALID_GEOMETRY_ID, paintingGeomFull = RTC_INVALID_GEOMETRY_ID;
   std::string error;
 
-  Mesh mesh;
-  double ior = 1.5;
-  glm::dvec3 sigma{0.0};
+  struct Object {
+    Mesh mesh;
+    double ior = 1.5;
+    glm::dvec3 sigma{0.0};
+  };
+  std::vector<Object> objects;
+  std::vector<int> objectOfGeom;  // full's geomID -> object index, -1 for the paintings
+  std::uint32_t allObjects = 0;   // a bit per object
   std::vector<Painting> paintings;
   Environment environment;
   double eps = 1e-5;
@@ -108,20 +178,28 @@ struct ReferenceTracer::Impl {
       rtcSetSceneFlags(s, RTC_SCENE_FLAG_ROBUST);  // watertight: no rays through shared edges
       rtcSetSceneBuildQuality(s, RTC_BUILD_QUALITY_HIGH);
     }
-    objectGeom = attachMesh(full, mesh.positions, mesh.indices);
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      const unsigned id = attachMesh(full, objects[i].mesh.positions, objects[i].mesh.indices);
+      if (objectOfGeom.size() <= id) objectOfGeom.resize(id + 1, -1);
+      objectOfGeom[id] = static_cast<int>(i);
+      allObjects |= 1u << i;
+    }
     if (!paintings.empty()) {
       std::vector<vec3> pp;
       std::vector<std::uint32_t> pi;
       paintingTriangles(pp, pi);
-      paintingGeomFull = attachMesh(full, pp, pi);
+      attachMesh(full, pp, pi);
       attachMesh(background, pp, pi);
     }
     rtcCommitScene(full);
     rtcCommitScene(background);
     check("building the Embree scenes");
     // Self-intersection offset: a few float ulps of the largest coordinate.
-    const Bounds b = meshBounds(mesh);
-    const double extent = std::max({1.0, static_cast<double>(glm::length(b.lo)), static_cast<double>(glm::length(b.hi))});
+    double extent = 1.0;
+    for (const Object& o : objects) {
+      const Bounds b = meshBounds(o.mesh);
+      extent = std::max({extent, static_cast<double>(glm::length(b.lo)), static_cast<double>(glm::length(b.hi))});
+    }
     eps = 2e-5 * extent;
   }
 
@@ -159,7 +237,8 @@ struct ReferenceTracer::Impl {
     ++stats.rays;
     Hit h;
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return h;
-    h.kind = (sceneIsFull && rh.hit.geomID == objectGeom) ? HitKind::Object : HitKind::Painting;
+    h.object = sceneIsFull && rh.hit.geomID < objectOfGeom.size() ? objectOfGeom[rh.hit.geomID] : -1;
+    h.kind = h.object >= 0 ? HitKind::Object : HitKind::Painting;
     h.t = static_cast<double>(rh.ray.tfar);
     h.prim = rh.hit.primID;
     h.u = static_cast<double>(rh.hit.u);
@@ -171,7 +250,54 @@ struct ReferenceTracer::Impl {
     glm::dvec3 point, geometricNormal, normal;  // both normals unit and outward
   };
 
+  // The nearest hit on the paintings or on an object not in `skip` (a bit per object). With every object
+  // skipped, the paintings' own scene answers.
+  Hit intersectSkipping(std::uint32_t skip, const glm::dvec3& o, const glm::dvec3& d, double tNear, double tFar,
+                        TraceStats& stats) const {
+    if ((skip & allObjects) == allObjects) return intersect(background, false, o, d, tNear, tFar, stats);
+    for (;;) {
+      const Hit h = intersect(full, true, o, d, tNear, tFar, stats);
+      if (h.kind != HitKind::Object || (skip & (1u << h.object)) == 0) return h;
+      tNear = static_cast<double>(std::nextafter(static_cast<float>(h.t), std::numeric_limits<float>::infinity()));
+    }
+  }
+
+  double iorOf(int object) const { return object < 0 ? 1.0 : objects[static_cast<std::size_t>(object)].ior; }
+
+  // Beer-Lambert over a segment in `medium` (-1: air, exactly 1).
+  glm::dvec3 beer(int medium, double distance, const TraceOptions& o) const {
+    if (!o.absorption || medium < 0) return glm::dvec3(1.0);
+    return glm::exp(-objects[static_cast<std::size_t>(medium)].sigma * distance);
+  }
+
+  // Crossing object b's surface from media `m`: the relative index, the media on the refracted side and
+  // the medium the ray came through. The geometric normal decides the side (`exiting`); a ray that leaves
+  // b without having entered it (it started inside, or leaked in) is taken to have been in it.
+  struct Crossing {
+    double eta = 1.0;
+    Media refracted, reflected;
+    int before = -1;  // the medium of the segment that led to the surface
+  };
+  Crossing crossing(const Media& m, int b, bool exiting) const {
+    Crossing c;
+    if (exiting) {
+      const Media in = m.contains(b) ? m : m.with(b);
+      c.reflected = in;
+      c.refracted = m.without(b);
+      c.before = in.top();
+      c.eta = iorOf(in.top()) / iorOf(c.refracted.top());
+    } else {
+      const Media out = m.without(b);
+      c.reflected = out;
+      c.refracted = out.with(b);
+      c.before = out.top();
+      c.eta = iorOf(out.top()) / iorOf(b);
+    }
+    return c;
+  }
+
   Surface objectSurface(const Hit& h) const {
+    const Mesh& mesh = objects[static_cast<std::size_t>(h.object)].mesh;
     const std::uint32_t i0 = mesh.indices[3 * h.prim], i1 = mesh.indices[3 * h.prim + 1], i2 = mesh.indices[3 * h.prim + 2];
     const glm::dvec3 p0 = toD(mesh.positions[i0]), p1 = toD(mesh.positions[i1]), p2 = toD(mesh.positions[i2]);
     const double w = 1.0 - h.u - h.v;
@@ -203,109 +329,204 @@ struct ReferenceTracer::Impl {
     return s.point + (glm::dot(d, s.geometricNormal) >= 0.0 ? eps : -eps) * s.geometricNormal;
   }
 
-  glm::dvec3 beer(double distance, const TraceOptions& o) const {
-    if (!o.absorption) return glm::dvec3(1.0);
-    return glm::exp(-sigma * distance);
-  }
-
-  // Background lookup: paintings, else the environment (the object is ignored).
-  glm::dvec3 backgroundRadiance(const glm::dvec3& o, const glm::dvec3& d, TraceStats& stats) const {
-    const Hit h = intersect(background, false, o, d, 0.0, 1e30, stats);
-    if (h.kind == HitKind::None) return env(d);
-    return paintingColor(h);
-  }
-
   glm::dvec3 traceFull(const glm::dvec3& o, const glm::dvec3& d, double tNear, double tFar, int depth, double weight,
-                       bool inside, const TraceOptions& opt, TraceStats& stats, bool* firstHitObject) const {
+                       const Media& media, const TraceOptions& opt, TraceStats& stats, bool* firstHitObject) const {
     const Hit h = intersect(full, true, o, d, tNear, tFar, stats);
     if (firstHitObject) *firstHitObject = h.kind == HitKind::Object;
     if (h.kind == HitKind::None) {
-      if (inside) ++stats.leaks;
+      if (media.size > 0) ++stats.leaks;
       return env(d);
     }
-    if (h.kind == HitKind::Painting) return paintingColor(h) * (inside ? beer(h.t, opt) : glm::dvec3(1.0));
+    if (h.kind == HitKind::Painting) return paintingColor(h) * beer(media.top(), h.t, opt);
     const Surface s = objectSurface(h);
     const bool exiting = glm::dot(d, s.geometricNormal) > 0.0;
-    const glm::dvec3 atten = exiting ? beer(h.t, opt) : glm::dvec3(1.0);
+    const Crossing c = crossing(media, h.object, exiting);
+    const glm::dvec3 atten = beer(c.before, h.t, opt);
     if (depth >= opt.maxDepth) {
       ++stats.truncated;
       return glm::dvec3(0.0);
     }
     const double w = weight * std::max({atten.x, atten.y, atten.z});
-    const double eta = exiting ? ior : 1.0 / ior;
-    const ExactRefraction r = refractExact(d, s.normal, eta, TirPolicy::Reflect);
+    const ExactRefraction r = refractExact(d, s.normal, c.eta, TirPolicy::Reflect);
     if (r.tir) {
       ++stats.tirEvents;
-      return atten * traceFull(spawn(s, r.direction), r.direction, 0.0, 1e30, depth + 1, w, exiting, opt, stats, nullptr);
+      return atten * traceFull(spawn(s, r.direction), r.direction, 0.0, 1e30, depth + 1, w, c.reflected, opt, stats,
+                               nullptr);
     }
-    const double F = opt.fresnel ? fresnelExact(glm::dot(d, s.normal), eta) : 0.0;
+    const double F = opt.fresnel ? fresnelExact(glm::dot(d, s.normal), c.eta) : 0.0;
     glm::dvec3 L(0.0);
     if (F > 0.0 && w * F >= opt.minWeight) {
       const glm::dvec3 refl = reflectExact(d, s.normal);
-      L += F * traceFull(spawn(s, refl), refl, 0.0, 1e30, depth + 1, w * F, exiting, opt, stats, nullptr);
+      L += F * traceFull(spawn(s, refl), refl, 0.0, 1e30, depth + 1, w * F, c.reflected, opt, stats, nullptr);
     }
-    L += (1.0 - F) * traceFull(spawn(s, r.direction), r.direction, 0.0, 1e30, depth + 1, w * (1.0 - F), !exiting, opt,
-                               stats, nullptr);
+    L += (1.0 - F) * traceFull(spawn(s, r.direction), r.direction, 0.0, 1e30, depth + 1, w * (1.0 - F), c.refracted,
+                               opt, stats, nullptr);
     return atten * L;
   }
 
-  // The principal path for `events` interface events (TraceMode::Principal; TwoInterfaces is 2).
-  glm::dvec3 tracePrincipal(const Ray& ray, int events, const TraceOptions& opt, TraceStats& stats,
-                            bool* firstHitObject) const {
-    const Hit h = intersect(full, true, ray.origin, ray.direction, ray.tNear, ray.tFar, stats);
+  // The principal path with at most `events` interface events on each object (TraceMode::Principal;
+  // TwoInterfaces is 2): what image-space techniques that render the objects one after the other, back to
+  // front, each reading what lies behind it, can reach at best. The first surface of an object that the
+  // path meets is its entry (refract, TIR clamped to the critical angle; Fresnel adds its reflection, traced
+  // on with that object left out, as its reflect slot reads the scene without it). Every later one counts
+  // as an exit whatever its normal says (the model's back face): refract where Snell allows, else reflect
+  // and go on inside; the object's last event clamps TIR to the critical angle. Once out, the object is
+  // not met again: its image lies over what is behind it. Another object met inside is nested: entered and
+  // left with its own events and the relative index. `done`: a bit per object passed; `count`: the events
+  // on each object so far.
+  using EventCounts = std::array<std::uint8_t, kMaxObjects>;
+  glm::dvec3 tracePrincipal(const glm::dvec3& o, const glm::dvec3& d, double tNear, double tFar, const Media& media,
+                            std::uint32_t done, EventCounts count, int events, const TraceOptions& opt,
+                            TraceStats& stats, bool* firstHitObject) const {
+    const Hit h = intersectSkipping(done, o, d, tNear, tFar, stats);
     if (firstHitObject) *firstHitObject = h.kind == HitKind::Object;
-    if (h.kind == HitKind::None) return env(ray.direction);
-    if (h.kind == HitKind::Painting) return paintingColor(h);
+    if (h.kind == HitKind::None) {
+      if (media.size > 0) ++stats.leaks;
+      return env(d);
+    }
+    if (h.kind == HitKind::Painting) return paintingColor(h) * beer(media.top(), h.t, opt);
+    const int b = h.object;
+    const Surface s = objectSurface(h);
+    const int n = ++count[static_cast<std::size_t>(b)];
+    if (n == 1) {
+      const Media outside = media.without(b);
+      const double eta = iorOf(outside.top()) / iorOf(b);
+      const ExactRefraction t = refractExact(d, s.normal, eta, TirPolicy::Critical);
+      if (t.tir) ++stats.tirEvents;
+      const double F = opt.fresnel ? fresnelExact(glm::dot(d, s.normal), eta) : 0.0;
+      glm::dvec3 L(0.0);
+      if (F > 0.0) {
+        const glm::dvec3 refl = reflectExact(d, s.normal);
+        L += F * tracePrincipal(spawn(s, refl), refl, 0.0, 1e30, outside, done | (1u << b), count, events, opt, stats,
+                                nullptr);
+      }
+      L += (1.0 - F) * tracePrincipal(spawn(s, t.direction), t.direction, 0.0, 1e30, outside.with(b), done, count,
+                                      events, opt, stats, nullptr);
+      return beer(outside.top(), h.t, opt) * L;
+    }
+    const Media in = media.contains(b) ? media : media.with(b);
+    const Media after = media.without(b);
+    const bool last = n >= events;
+    const ExactRefraction t = refractExact(d, s.normal, iorOf(in.top()) / iorOf(after.top()),
+                                           last ? TirPolicy::Critical : TirPolicy::Reflect);
+    if (t.tir) ++stats.tirEvents;
+    const bool out = last || !t.tir;
+    return beer(in.top(), h.t, opt) * tracePrincipal(spawn(s, t.direction), t.direction, 0.0, 1e30, out ? after : in,
+                                                     out ? done | (1u << b) : done, count, events, opt, stats, nullptr);
+  }
+
+  // The frame so far as a picture (renderComposited): what an object drawn later sees of the ones before it.
+  struct FrameView {
+    glm::dmat4 clipFromWorld{1.0};
+    const Image* frame = nullptr;
+    // The frame's colour where world point p projects, bilinear between pixel centres (clamped at the
+    // edges); false when p is off screen or behind the camera.
+    bool sample(const glm::dvec3& p, glm::dvec3* color) const {
+      const glm::dvec4 c = clipFromWorld * glm::dvec4(p, 1.0);
+      if (!(c.w > 0.0)) return false;
+      const double u = 0.5 * (c.x / c.w + 1.0), v = 0.5 * (c.y / c.w + 1.0);
+      if (!(u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0)) return false;
+      const int W = frame->width, H = frame->height;
+      const double fx = std::min(std::max(u * W - 0.5, 0.0), W - 1.0), fy = std::min(std::max(v * H - 0.5, 0.0), H - 1.0);
+      const int x0 = static_cast<int>(fx), y0 = static_cast<int>(fy);
+      const int x1 = std::min(x0 + 1, W - 1), y1 = std::min(y0 + 1, H - 1);
+      const double ax = fx - x0, ay = fy - y0;
+      const auto at = [&](int x, int y) { return glm::dvec3(vec3(frame->at(x, y))); };
+      *color = (1.0 - ay) * ((1.0 - ax) * at(x0, y0) + ax * at(x1, y0)) + ay * ((1.0 - ax) * at(x0, y1) + ax * at(x1, y1));
+      return true;
+    }
+  };
+
+  // What a ray sees of the paintings and of the objects in `layers` (a bit each), those as the frame shows
+  // them where it meets them (off screen: as if they were not there, as a guard band holding the opaque
+  // scene only); `skip`: objects it passes through. Else the environment.
+  glm::dvec3 layerLookup(const glm::dvec3& o, const glm::dvec3& d, std::uint32_t layers, std::uint32_t skip,
+                         const FrameView& view, TraceStats& stats, double* distance = nullptr) const {
+    skip |= allObjects & ~layers;
+    for (;;) {
+      const Hit h = intersectSkipping(skip, o, d, 0.0, 1e30, stats);
+      if (distance) *distance = h.t;
+      if (h.kind == HitKind::None) return env(d);
+      if (h.kind == HitKind::Painting) return paintingColor(h);
+      glm::dvec3 c;
+      if (view.sample(o + h.t * d, &c)) return c;
+      skip |= 1u << h.object;
+    }
+  }
+
+  // One pixel of object b's pass in renderComposited: its exact two-interface path (relative index
+  // `eta`), reading the paintings and the objects in `layers` as the frame shows them. False when b's
+  // front face is not what the pixel sees first among b and the paintings.
+  bool compositedPixel(const Ray& ray, int b, double eta, std::uint32_t layers, const FrameView& view,
+                       const TraceOptions& opt, TraceStats& stats, glm::dvec3* color) const {
+    const std::uint32_t own = 1u << b;
+    const Hit h = intersectSkipping(allObjects & ~own, ray.origin, ray.direction, ray.tNear, ray.tFar, stats);
+    if (h.kind != HitKind::Object) return false;
     const glm::dvec3& d = ray.direction;
     const Surface s1 = objectSurface(h);
-    const double eta1 = 1.0 / ior;
-    const ExactRefraction t1 = refractExact(d, s1.normal, eta1, TirPolicy::Critical);
-    if (t1.tir) ++stats.tirEvents;
-    const double F1 = opt.fresnel ? fresnelExact(glm::dot(d, s1.normal), eta1) : 0.0;
+    if (glm::dot(d, s1.geometricNormal) > 0.0) return false;  // a back face first: the camera is inside
+    const ExactRefraction t1 = refractExact(d, s1.normal, 1.0 / eta, TirPolicy::Critical);
+    const double F1 = opt.fresnel ? fresnelExact(glm::dot(d, s1.normal), 1.0 / eta) : 0.0;
     glm::dvec3 L(0.0);
     if (F1 > 0.0) {
       const glm::dvec3 refl = reflectExact(d, s1.normal);
-      L += F1 * backgroundRadiance(spawn(s1, refl), refl, stats);
+      L += F1 * layerLookup(spawn(s1, refl), refl, layers, own, view, stats);
     }
-    // Inside: every later hit counts as an exit (eta = ior), as the image-space model treats its back face.
-    glm::dvec3 origin = spawn(s1, t1.direction), dir = t1.direction, throughput(1.0), Lt(0.0);
-    for (int k = 2; k <= events; ++k) {
-      const Hit hk = intersect(full, true, origin, dir, 0.0, 1e30, stats);
+    // Inside: b's next surface, or a painting or a layer object in front of it (one inside b).
+    const glm::dvec3 origin = spawn(s1, t1.direction), dir = t1.direction;
+    std::uint32_t skip = allObjects & ~(layers | own);
+    glm::dvec3 Lt(0.0);
+    for (;;) {
+      const Hit hk = intersectSkipping(skip, origin, dir, 0.0, 1e30, stats);
       if (hk.kind == HitKind::None) {
         ++stats.leaks;
-        Lt = throughput * env(dir);
+        Lt = env(dir);
         break;
       }
+      const glm::dvec3 inside = beer(b, hk.t, opt);
       if (hk.kind == HitKind::Painting) {
-        Lt = throughput * (paintingColor(hk) * beer(hk.t, opt));
+        Lt = paintingColor(hk) * inside;
         break;
       }
-      const Surface sk = objectSurface(hk);
-      const bool last = k == events;
-      const ExactRefraction tk = refractExact(dir, sk.normal, ior, last ? TirPolicy::Critical : TirPolicy::Reflect);
-      if (tk.tir) ++stats.tirEvents;
-      throughput = throughput * beer(hk.t, opt);
-      if (last || !tk.tir) {
-        Lt = throughput * backgroundRadiance(spawn(sk, tk.direction), tk.direction, stats);
-        break;
+      if (hk.object != b) {
+        glm::dvec3 c;
+        if (view.sample(origin + hk.t * dir, &c)) {
+          Lt = c * inside;
+          break;
+        }
+        skip |= 1u << hk.object;
+        continue;
       }
-      origin = spawn(sk, tk.direction);
-      dir = tk.direction;
+      const Surface s2 = objectSurface(hk);
+      const ExactRefraction t2 = refractExact(dir, s2.normal, eta, TirPolicy::Critical);
+      if (t2.tir) ++stats.tirEvents;
+      Lt = inside * layerLookup(spawn(s2, t2.direction), t2.direction, layers, own, view, stats);
+      break;
     }
-    return L + (1.0 - F1) * Lt;
+    *color = L + (1.0 - F1) * Lt;
+    return true;
   }
 };
 
 ReferenceTracer::ReferenceTracer(const SceneFrame& frame)
-    : ReferenceTracer(frame.object, frame.ior, frame.absorption, frame.paintings, frame.environment) {}
+    : ReferenceTracer(frame.objects, frame.paintings, frame.environment) {}
 
 ReferenceTracer::ReferenceTracer(const Mesh& object, float ior, vec3 absorption, std::vector<Painting> paintings,
                                  Environment environment)
+    : ReferenceTracer(std::vector<FrameObject>{FrameObject{object, ior, absorption}}, std::move(paintings),
+                      std::move(environment)) {}
+
+ReferenceTracer::ReferenceTracer(const std::vector<FrameObject>& objects, std::vector<Painting> paintings,
+                                 Environment environment)
     : impl_(std::make_unique<Impl>()) {
-  validateMesh(object, "reference tracer mesh");
-  impl_->mesh = object;
-  impl_->ior = static_cast<double>(ior);
-  impl_->sigma = glm::dvec3(absorption);
+  if (objects.empty() || objects.size() > kMaxObjects)
+    throw Error(ErrorKind::Render, "ray tracer: " + std::to_string(objects.size()) + " refractive objects (1 to " +
+                                       std::to_string(kMaxObjects) + " are supported)");
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    validateMesh(objects[i].mesh, "reference tracer mesh " + std::to_string(i));
+    impl_->objects.push_back(
+        Impl::Object{objects[i].mesh, static_cast<double>(objects[i].ior), glm::dvec3(objects[i].absorption)});
+  }
   impl_->paintings = std::move(paintings);
   impl_->environment = std::move(environment);
   impl_->build();
@@ -313,21 +534,22 @@ ReferenceTracer::ReferenceTracer(const Mesh& object, float ior, vec3 absorption,
 
 ReferenceTracer::~ReferenceTracer() = default;
 
-double ReferenceTracer::ior() const { return impl_->ior; }
+double ReferenceTracer::ior() const { return impl_->objects.front().ior; }
 double ReferenceTracer::offsetEpsilon() const { return impl_->eps; }
 
 glm::dvec3 ReferenceTracer::radiance(const Ray& ray, const TraceOptions& options, TraceStats* stats,
                                      bool* hitObject) const {
   TraceStats local;
   TraceStats& s = stats ? *stats : local;
-  if (options.mode == TraceMode::TwoInterfaces) return impl_->tracePrincipal(ray, 2, options, s, hitObject);
-  if (options.mode == TraceMode::Principal) {
-    if (options.events < 2)
-      throw Error(ErrorKind::Render, "ray tracer: a principal path needs at least 2 interface events (got " +
+  if (options.mode != TraceMode::Full) {
+    const int events = options.mode == TraceMode::TwoInterfaces ? 2 : options.events;
+    if (events < 2 || events > 255)
+      throw Error(ErrorKind::Render, "ray tracer: a principal path needs 2 to 255 interface events (got " +
                                          std::to_string(options.events) + ")");
-    return impl_->tracePrincipal(ray, options.events, options, s, hitObject);
+    return impl_->tracePrincipal(ray.origin, ray.direction, ray.tNear, ray.tFar, Media{}, 0u, Impl::EventCounts{},
+                                 events, options, s, hitObject);
   }
-  return impl_->traceFull(ray.origin, ray.direction, ray.tNear, ray.tFar, 0, 1.0, false, options, s, hitObject);
+  return impl_->traceFull(ray.origin, ray.direction, ray.tNear, ray.tFar, 0, 1.0, Media{}, options, s, hitObject);
 }
 
 TraceResult ReferenceTracer::render(const Camera& camera, const TraceOptions& options) const {
@@ -345,38 +567,74 @@ TraceResult ReferenceTracer::render(const Camera& camera, const TraceOptions& op
                                                                       : "ray tracing (principal path, " +
                                                                             std::to_string(options.events) + " events)";
   ProgressBar bar(what, camera.height, options.progress);
-  std::atomic<int> nextRow{0};
-  std::mutex statsMutex;
-  std::exception_ptr failure;
-  const auto work = [&] {
-    TraceStats local;
-    try {
-      for (int y = nextRow++; y < camera.height; y = nextRow++) {
-        for (int x = 0; x < camera.width; ++x) {
-          bool hitObject = false;
-          const std::uint64_t tirBefore = local.tirEvents;
-          const glm::dvec3 c = radiance(primaryRay(camera, x, y), options, &local, &hitObject);
-          result.color.at(x, y) = vec4(vec3(c), 1.0f);
-          result.mask.set(x, y, hitObject);
-          result.tir.set(x, y, local.tirEvents != tirBefore);
-          if (hitObject) ++local.objectPixels;
-        }
-        bar.advance();
-      }
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(statsMutex);
-      if (!failure) failure = std::current_exception();
-      nextRow = camera.height;
+  traceRows(camera.height, threads, bar, result.stats, [&](int y, TraceStats& local) {
+    for (int x = 0; x < camera.width; ++x) {
+      bool hitObject = false;
+      const std::uint64_t tirBefore = local.tirEvents;
+      const glm::dvec3 c = radiance(primaryRay(camera, x, y), options, &local, &hitObject);
+      result.color.at(x, y) = vec4(vec3(c), 1.0f);
+      result.mask.set(x, y, hitObject);
+      result.tir.set(x, y, local.tirEvents != tirBefore);
+      if (hitObject) ++local.objectPixels;
     }
-    std::lock_guard<std::mutex> lock(statsMutex);
-    result.stats += local;
-  };
-  std::vector<std::thread> pool;
-  for (unsigned i = 1; i < threads; ++i) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
+  });
   bar.finish();
-  if (failure) std::rethrow_exception(failure);
+  result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+TraceResult ReferenceTracer::renderComposited(const Camera& camera, const std::vector<std::size_t>& order,
+                                              const std::vector<double>& index, const TraceOptions& options) const {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string problem = cameraProblem(camera);
+  if (!problem.empty()) throw Error(ErrorKind::Render, "ray tracer: camera: " + problem);
+  const std::size_t n = impl_->objects.size();
+  if (order.size() != n || index.size() != n)
+    throw Error(ErrorKind::Render, "ray tracer: the composited model needs an order and an index for each of the " +
+                                       std::to_string(n) + " objects");
+  std::vector<bool> seen(n, false);
+  for (std::size_t o : order) {
+    if (o >= n || seen[o]) throw Error(ErrorKind::Render, "ray tracer: the composited model's order must name each object once");
+    seen[o] = true;
+  }
+  TraceResult result;
+  result.color = Image(camera.width, camera.height, vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  result.mask = Mask(camera.width, camera.height);
+  result.tir = Mask(camera.width, camera.height);
+  Impl::FrameView view;
+  view.clipFromWorld = glm::dmat4(camera.clipFromView()) * glm::dmat4(camera.viewFromWorld());
+  view.frame = &result.color;
+  unsigned threads = options.threads > 0 ? static_cast<unsigned>(options.threads) : std::thread::hardware_concurrency();
+  threads = std::max(1u, std::min(threads, static_cast<unsigned>(camera.height)));
+  ProgressBar bar("ray tracing (objects composited)", camera.height * static_cast<int>(n + 1), options.progress);
+  // Pass -1 is the opaque scene; pass k draws order[k] over the frame so far, reading it.
+  std::uint32_t layers = 0;
+  for (int pass = -1; pass < static_cast<int>(n); ++pass) {
+    const int b = pass < 0 ? -1 : static_cast<int>(order[static_cast<std::size_t>(pass)]);
+    Image next = result.color;
+    traceRows(camera.height, threads, bar, result.stats, [&](int y, TraceStats& local) {
+      for (int x = 0; x < camera.width; ++x) {
+        const Ray ray = primaryRay(camera, x, y);
+        glm::dvec3 c;
+        if (b < 0) {
+          c = impl_->layerLookup(ray.origin, ray.direction, 0u, 0u, view, local, nullptr);
+          const Hit h = impl_->intersect(impl_->full, true, ray.origin, ray.direction, ray.tNear, ray.tFar, local);
+          result.mask.set(x, y, h.kind == HitKind::Object);
+          next.at(x, y) = vec4(vec3(c), 1.0f);
+          continue;
+        }
+        const std::uint64_t tirBefore = local.tirEvents;
+        if (impl_->compositedPixel(ray, b, index[static_cast<std::size_t>(b)], layers, view, options, local, &c)) {
+          next.at(x, y) = vec4(vec3(c), 1.0f);
+          if (local.tirEvents != tirBefore) result.tir.set(x, y, true);
+        }
+      }
+    });
+    result.color = std::move(next);
+    if (b >= 0) layers |= 1u << b;
+  }
+  bar.finish();
+  result.stats.objectPixels = result.mask.count();
   result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
@@ -386,6 +644,7 @@ std::vector<PathEvent> ReferenceTracer::principalPath(const Ray& ray, int maxEve
   TraceStats stats;
   glm::dvec3 o = ray.origin, d = ray.direction;
   double tNear = ray.tNear, tFar = ray.tFar;
+  Media media;
   for (int k = 0; k < maxEvents; ++k) {
     const Hit h = impl_->intersect(impl_->full, true, o, d, tNear, tFar, stats);
     PathEvent e;
@@ -406,7 +665,10 @@ std::vector<PathEvent> ReferenceTracer::principalPath(const Ray& ray, int maxEve
     }
     const Impl::Surface s = impl_->objectSurface(h);
     const bool exiting = glm::dot(d, s.geometricNormal) > 0.0;
-    const ExactRefraction r = refractExact(d, s.normal, exiting ? impl_->ior : 1.0 / impl_->ior, policy);
+    const Impl::Crossing c = impl_->crossing(media, h.object, exiting);
+    const ExactRefraction r = refractExact(d, s.normal, c.eta, policy);
+    media = r.tir ? c.reflected : c.refracted;
+    e.object = h.object;
     e.point = s.point;
     e.normal = s.normal;
     e.direction = r.direction;

@@ -16,6 +16,10 @@ Mesh makeIcosphere(float radius, int subdivisions);
 // (0 < minor < major), `majorSegments` x `minorSegments` quads (each >= 3).
 Mesh makeTorus(float majorRadius, float minorRadius, int majorSegments, int minorSegments);
 
+// Axis-aligned box with edge lengths `size` (each > 0): 12 triangles, 4 vertices per face with the face's
+// normal (sharp edges: a pane, a cube).
+Mesh makeBox(glm::vec3 size);
+
 // The deforming blob: an icosphere whose radius is modulated by
 //   r(p, t) = radius * (1 + amplitude * sin(f p.x + w t) sin(f p.y + 1.3 w t) sin(f p.z + 0.7 w t))
 // with p the unit direction, f = frequency, w = speed (radians per time unit).

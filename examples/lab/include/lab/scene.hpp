@@ -17,7 +17,7 @@
 
 namespace snell::lab {
 
-enum class MeshKind { Obj, Sphere, Icosphere, Torus, Blob };
+enum class MeshKind { Obj, Sphere, Icosphere, Torus, Blob, Box };
 
 struct MeshSpec {
   MeshKind kind = MeshKind::Icosphere;
@@ -28,12 +28,14 @@ struct MeshSpec {
   float majorRadius = 1.0f, minorRadius = 0.4f;
   int majorSegments = 96, minorSegments = 48;
   BlobParams blob;  // Blob (radius and subdivisions copied in)
+  vec3 size{1.0f};  // Box: edge lengths
   // Obj: fit the mesh's bounding box into a cube of this edge length centred at
   // the origin before the transform (0: keep the file's coordinates).
   float fitSize = 0.0f;
 };
 
 struct RefractiveObject {
+  std::string field;  // where it stands in the file ("object", "objects[1]"), for messages
   MeshSpec mesh;
   Transform transform;
   float ior = 1.5f;
@@ -83,7 +85,8 @@ struct Scene {
   std::string name;
   std::string description;
   Camera camera;
-  RefractiveObject object;
+  // The glass: `object` in the file (one), or `objects` (a list of 1 to kMaxObjects).
+  std::vector<RefractiveObject> objects;
   EnvironmentSpec environment;
   std::vector<PaintingSpec> paintings;
   AnimationSpec animation;
@@ -98,17 +101,25 @@ Scene loadScene(const std::string& path);
 // The same from text; `file` is used in messages and to resolve relative paths.
 Scene parseScene(const std::string& text, const std::string& file);
 
+// How many refractive objects a scene may hold.
+constexpr std::size_t kMaxObjects = 16;
+
 // Resources, built from a checked scene. Errors name the missing file.
-Mesh buildObjectMesh(const Scene& scene, float time = 0.0f);  // world space
+Mesh buildObjectMesh(const Scene& scene, std::size_t index, float time = 0.0f);  // world space
 Environment buildEnvironment(const Scene& scene);
 std::vector<Painting> buildPaintings(const Scene& scene);
+
+// One refractive object of a frame.
+struct FrameObject {
+  Mesh mesh;  // world space
+  float ior = 1.5f;
+  vec3 absorption{0.0f};
+};
 
 // Everything a renderer needs for one frame.
 struct SceneFrame {
   Camera camera;
-  Mesh object;  // world space
-  float ior = 1.5f;
-  vec3 absorption{0.0f};
+  std::vector<FrameObject> objects;  // at least one, in the file's order
   Environment environment;
   std::vector<Painting> paintings;
 };

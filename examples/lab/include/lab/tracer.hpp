@@ -1,9 +1,12 @@
 // The ground truth: a CPU ray tracer on Embree 3 through the real triangles of
-// the refractive mesh, with interpolated (smooth) normals, exact Snell
+// the refractive meshes, with interpolated (smooth) normals, exact Snell
 // refraction and exact Fresnel (double precision, lab/exact_optics.hpp) at
 // every interface, total internal reflection followed up to a depth limit,
 // Beer-Lambert absorption over the path length inside, and the same
-// environment and opaque paintings the GL renderer draws. One ray per pixel
+// environment and opaque paintings the GL renderer draws. Several objects are
+// nested media: the ray carries the stack of objects it is inside; at a
+// surface the relative index is the medium's before over the medium's after
+// (where two objects overlap, the one entered last is the medium). One ray per pixel
 // through the pixel centre (what a rasterizer shades), deterministic: no noise.
 #pragma once
 #include "lab/camera.hpp"
@@ -31,7 +34,7 @@ enum class TraceMode {
   // angle, as SNELL_TIR_CRITICAL), then look up the background (paintings,
   // else environment) without meeting the object again. With `fresnel`, the
   // first surface's reflection of the background is added. The principal
-  // path below with 2 events.
+  // path below with 2 events (on each object it meets).
   TwoInterfaces,
   // The principal path for at most TraceOptions::events interface events
   // (the entry is the first): refract wherever Snell allows, reflect on TIR
@@ -40,14 +43,19 @@ enum class TraceMode {
   // leaves, or is clamped at the last event, looks up the background
   // (paintings, else environment) without meeting the object again: what an
   // image-space method that follows bounces can reach (the model floor for
-  // that many events). `fresnel` adds the first surface's reflection.
+  // that many events). `fresnel` adds the first surface's reflection. With
+  // several objects, the events count per object and the path goes on past an
+  // object it left to the others (never back into it): what rendering the
+  // objects back to front, each reading what is drawn behind it, can reach.
+  // Fresnel then adds each object's first-surface reflection, traced on
+  // without that object.
   Principal,
 };
 
 struct TraceOptions {
   TraceMode mode = TraceMode::Full;
   int maxDepth = 16;         // Full: interface events on one path (deeper: black)
-  int events = 2;            // Principal: interface events on the path (at least 2)
+  int events = 2;            // Principal: interface events on the path per object (2 to 255)
   double minWeight = 1e-4;   // Full: reflection branches below this throughput are dropped
   bool fresnel = true;       // false: transmission only (weight 1; Full: TIR still reflects)
   bool absorption = true;    // Beer-Lambert inside the object
@@ -93,20 +101,33 @@ struct PathEvent {
   glm::dvec3 normal{0.0};     // interpolated normal, outward (object events)
   glm::dvec3 direction{0.0};  // direction after the event
   double distance = 0.0;      // length of the segment that led here (Escape: 0)
+  int object = -1;            // the refractive object of an object event (SceneFrame::objects' order)
 };
 
 class ReferenceTracer {
  public:
   // Copies what it needs; builds the Embree scenes (Error(Render) on failure).
   explicit ReferenceTracer(const SceneFrame& frame);
+  ReferenceTracer(const std::vector<FrameObject>& objects, std::vector<Painting> paintings, Environment environment);
   ReferenceTracer(const Mesh& object, float ior, vec3 absorption, std::vector<Painting> paintings,
-                  Environment environment);
+                  Environment environment);  // one object
   ~ReferenceTracer();
   ReferenceTracer(const ReferenceTracer&) = delete;
   ReferenceTracer& operator=(const ReferenceTracer&) = delete;
 
   // Renders camera.width x camera.height pixels on options.threads threads.
   TraceResult render(const Camera& camera, const TraceOptions& options) const;
+
+  // The composited two-interface model: what drawing the objects one after the other in `order`, each
+  // with its exact two-interface path (refract in with index[object], TIR clamped to the critical
+  // angle at the exit, Fresnel reflection at the entry), reading what is drawn behind it as a picture, can
+  // reach. Each object's pass covers the pixels where its front face is nearer than the paintings and
+  // shades them over the frame so far; its rays see the paintings, and the objects drawn before it as
+  // the frame shows them where they meet them (bilinear between pixel centres; off screen: as if they
+  // were not there). The floor of any image-space method that composites objects (mask: pixels whose
+  // primary ray meets an object first; tir: clamped exits).
+  TraceResult renderComposited(const Camera& camera, const std::vector<std::size_t>& order,
+                               const std::vector<double>& index, const TraceOptions& options) const;
 
   // Radiance along one ray (linear RGB). hitObject: whether the ray's first
   // hit is the refractive object.
@@ -120,7 +141,7 @@ class ReferenceTracer {
   // geometric normal (outward winding), so rays may start inside the object.
   std::vector<PathEvent> principalPath(const Ray& ray, int maxEvents, TirPolicy policy) const;
 
-  double ior() const;
+  double ior() const;  // the first object's
   double offsetEpsilon() const;  // the self-intersection offset along the normal
 
  private:
