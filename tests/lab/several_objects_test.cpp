@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <string>
@@ -54,7 +55,7 @@ bool isEngine(const TechniqueRow& t) { return t.name.rfind("engine-", 0) == 0; }
 // rows read it (the layer test below); their error stays within 4x of what compositing exact two-interface
 // paths reaches at this size, and under half of three.js's model's, which reads the opaque copy.
 TEST(LabSeveralObjects, GlassBehindGlassIsSeenThroughTheNearBall) {
-  const LabResult r = runScene("two_spheres", {"plane-normal-2", "linear-march", "engine-threejs"});
+  const LabResult r = runScene("two_spheres", {"plane-normal-2", "linear-march", "engine-threejs", "engine-bevy-steps-2"});
   EXPECT_EQ(drawnOrder(r), (std::vector<std::size_t>{1, 0}));
   ASSERT_GT(r.mseCompositedVsFull, 0.0);
   const TechniqueRow* engine = r.row("engine-threejs");
@@ -71,6 +72,16 @@ TEST(LabSeveralObjects, GlassBehindGlassIsSeenThroughTheNearBall) {
     EXPECT_NEAR(std::accumulate(t->objectMs.begin(), t->objectMs.end(), 0.0), t->medianMs, 1e-9);
     EXPECT_GT(t->aloneMs, 0.0);
   }
+  // Bevy's steps: the near ball reads a copy of the frame with the far ball in it, on the GPU as in the C++
+  // sweep that chose its thickness: the GPU image scores what the sweep measured for that value, and the
+  // C++ build of the row agrees with it pixel for pixel (ties aside).
+  const TechniqueRow* steps = r.row("engine-bevy-steps-2");
+  ASSERT_NE(steps, nullptr);
+  ASSERT_FALSE(steps->engineSweep.empty());
+  double best = steps->engineSweep.front().second;
+  for (const auto& tried : steps->engineSweep) best = std::min(best, tried.second);
+  EXPECT_NEAR(steps->mseFull, best, 1e-3 * best);
+  EXPECT_EQ(steps->cpuGpuBeyond4Pixels, steps->cpuGpuBeyond4Ties);
 }
 
 // Three panes at z 0.7, 0 and -0.7 (objects 0, 1, 2) are drawn from the farthest; every pixel the ray tracer

@@ -83,6 +83,9 @@ struct FrameSetup {
   Image fullColor;                 // the whole opaque scene, buffer-sized (the frame before any object)
   int margin = 0;
   bool several() const { return order.size() > 1; }
+  // Whether `row` copies the frame before groups of objects (Bevy's steps; one object: the one copy is the
+  // opaque scene).
+  bool stepped(const LabRowSpec& row) const { return several() && row.steps > 1; }
 };
 
 // One object's pass of one row: the buffers it was shaded from (C++ textures) and what the GPU wrote.
@@ -134,10 +137,18 @@ std::vector<ObjectPass> renderObjects(GpuLab& gpu, std::size_t index, const LabR
                                       const SceneFrame& sceneFrame, Image& frame, std::vector<StaticBuffers>* keep) {
   frame = setup.fullColor;
   std::vector<ObjectPass> passes;
+  const bool stepped = setup.stepped(row);
+  const std::vector<bool> copies = stepStarts(setup.order.size(), row.steps);
+  Image copy;
   for (std::size_t position = 0; position < setup.order.size(); ++position) {
     const std::size_t o = setup.order[position];
     if (setup.several() && row.engine == nullptr) gpu.renderLayer(o, drawnBefore(setup, position), &frame);
+    if (stepped && copies[position]) {
+      copy = frame;
+      gpu.setColorCopy(&copy);
+    }
     StaticBuffers sb = gpu.readStatic(o);
+    if (stepped) sb.fullColor = copy;  // what the C++ side shades from, as the GPU reads it
     gpu.renderTechnique(index, o);  // also compiles the shader's JIT code: not timed
     ObjectPass pass{o, cpuBuffers(sb, setup.k[o], sceneFrame), gpu.readTechnique()};
     drawOver(frame, pass.tb.color, pass.tb.normal, setup.margin);
@@ -166,10 +177,9 @@ TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const LabRowSpec& spec
     const CpuShader shade{spec, engineParameter, pass.cb, setup.k[pass.object].params, setup.margin};
     Image cpuColor(W, H), cpuStats(W, H);
     shadeOnCpu(shade, pass.tb, threads, cpuColor, cpuStats);
-    CpuGpuTally own;
-    compareCpuGpu(shade, pass.tb, cpuColor, cpuStats, own);
+    const CpuGpuTally own = compareCpuGpu(shade, pass.tb, cpuColor, cpuStats);
     debugWorstPixel(shade, pass.tb, cpuColor, cpuStats, own);
-    compareCpuGpu(shade, pass.tb, cpuColor, cpuStats, tally);
+    tally += own;
     for (int y = 0; y < H; ++y)
       for (int x = 0; x < W; ++x)
         if (pass.tb.normal.at(x, y).w > 0.0f) coveredAny.set(x, y, true);
@@ -210,21 +220,19 @@ EngineSweep sweepEngineRow(GpuLab& gpu, std::size_t index, const LabRowSpec& spe
                            const SceneFrame& sceneFrame, const References& refs, int threads) {
   Image frame;
   std::vector<ObjectPass> passes = renderObjects(gpu, index, spec, setup, sceneFrame, frame, nullptr);
-  const bool stepped = setup.several() && spec.steps > 1;
+  const bool stepped = setup.stepped(spec);
   const std::vector<bool> copies = stepStarts(passes.size(), spec.steps);
   float range = 0.0f;
   for (const ShadeConstants& k : setup.k) range = std::max(range, k.params.backRange);
   const int W = sceneFrame.camera.width, H = sceneFrame.camera.height;
   return sweepEngineParameter(spec, range, refs, [&](float value) {
     Image f = setup.fullColor;
+    Texture2D copy;
     for (std::size_t position = 0; position < passes.size(); ++position) {
       ObjectPass& pass = passes[position];
       // Bevy's steps: the objects of a group read the frame as it was when the group began.
-      if (stepped && copies[position]) {
-        const Texture2D copy(f, Filter::Linear);
-        for (std::size_t later = position; later < passes.size() && (later == position || !copies[later]); ++later)
-          passes[later].cb.fullColor = copy;
-      }
+      if (stepped && copies[position]) copy = Texture2D(f, Filter::Linear);
+      if (stepped) pass.cb.fullColor = copy;
       Image color(W, H), stats(W, H);
       shadeOnCpu(CpuShader{spec, value, pass.cb, setup.k[pass.object].params, setup.margin}, pass.tb, threads, color,
                  stats);
@@ -255,7 +263,7 @@ void timeTechniques(GpuLab& gpu, const std::vector<LabRowSpec>& techniques, cons
       for (std::size_t position = 0; position < n; ++position) {
         const std::size_t o = setup.order[position];
         if (layers) layerMs[position].push_back(gpu.renderLayer(o, drawnBefore(setup, position), &finalFrames[i]));
-        if (setup.several() && techniques[i].steps > 1 && copies[position]) gpu.setColorCopy(&finalFrames[i]);
+        if (setup.stepped(techniques[i]) && copies[position]) gpu.setColorCopy(&finalFrames[i]);
         const double ms = gpu.renderTechnique(i, o);
         perObject[i][position].push_back(ms);
         total += ms;
