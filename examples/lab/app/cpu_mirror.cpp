@@ -45,21 +45,20 @@ void shadeOnCpu(const CpuShader& shade, const TechniqueBuffers& tb, int threads,
   });
 }
 
-void compareCpuGpu(const CpuShader& shade, const TechniqueBuffers& tb, const Image& cpuColor, const Image& cpuStats,
-                   CpuGpuTally& tally) {
+CpuGpuTally compareCpuGpu(const CpuShader& shade, const TechniqueBuffers& tb, const Image& cpuColor,
+                          const Image& cpuStats) {
+  CpuGpuTally tally;
   auto covered = [&](int x, int y) { return tb.normal.at(x, y).w > 0.0f; };
   const gpu::FrameComparison c =
       gpu::compareFrames(tb.color, cpuColor, covered, gpu::ClampChannels::ToUnit, [&](int x, int y) {
         tally.ties += shade.tieUlps(tb, x, y, kTieUlps, nullptr, nullptr) > 0;
       });
-  if (c.worstX >= 0 && (tally.worstX < 0 || c.maxAbs > tally.maxAbs)) {
-    tally.maxAbs = c.maxAbs;
-    tally.worstX = c.worstX;
-    tally.worstY = c.worstY;
-  }
-  tally.pixels += c.pixels;
-  tally.within1 += c.within1;
-  tally.beyond4 += c.beyond4;
+  tally.maxAbs = c.maxAbs;
+  tally.worstX = c.worstX;
+  tally.worstY = c.worstY;
+  tally.pixels = c.pixels;
+  tally.within1 = c.within1;
+  tally.beyond4 = c.beyond4;
   for (int y = 0; y < tb.normal.height; ++y)
     for (int x = 0; x < tb.normal.width; ++x) {
       if (!covered(x, y)) continue;
@@ -71,6 +70,26 @@ void compareCpuGpu(const CpuShader& shade, const TechniqueBuffers& tb, const Ima
       tally.fetchDiff += s.y != cpuStats.at(x, y).y;
       tally.leaks += cpuStats.at(x, y).z > 0.5f;
     }
+  return tally;
+}
+
+CpuGpuTally& CpuGpuTally::operator+=(const CpuGpuTally& o) {
+  if (o.worstX >= 0 && (worstX < 0 || o.maxAbs > maxAbs)) {
+    maxAbs = o.maxAbs;
+    worstX = o.worstX;
+    worstY = o.worstY;
+  }
+  pixels += o.pixels;
+  within1 += o.within1;
+  beyond4 += o.beyond4;
+  ties += o.ties;
+  invalid += o.invalid;
+  backMiss += o.backMiss;
+  exitMiss += o.exitMiss;
+  fetchDiff += o.fetchDiff;
+  leaks += o.leaks;
+  fetches += o.fetches;
+  return *this;
 }
 
 void CpuGpuTally::into(TechniqueRow& row) const {

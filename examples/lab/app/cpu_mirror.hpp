@@ -127,12 +127,13 @@ struct CpuGpuTally {
   double fetches = 0.0;
   double maxAbs = 0.0;
   int worstX = -1, worstY = -1;  // the pixel of maxAbs
+  CpuGpuTally& operator+=(const CpuGpuTally& o);  // another object's pass
   void into(TechniqueRow& row) const;
 };
 
-// Stage 4b: one object's front pass (its covered pixels) added to the tally.
-void compareCpuGpu(const CpuShader& shade, const TechniqueBuffers& tb, const Image& cpuColor, const Image& cpuStats,
-                   CpuGpuTally& tally);
+// Stage 4b: the tally of one object's front pass (its covered pixels).
+CpuGpuTally compareCpuGpu(const CpuShader& shade, const TechniqueBuffers& tb, const Image& cpuColor,
+                          const Image& cpuStats);
 
 // SNELL_LAB_DEBUG_PARITY: the worst pixel of one object's pass (`tally` of that pass alone): its inputs and both
 // builds' results, on stderr.

@@ -210,13 +210,11 @@ struct ObjectPasses {
   }
 };
 
-// Bytes of an RGBA32F level chain from w x h down to 1 x 1 (the depth pyramids).
-std::size_t pyramidBytes(int w, int h) {
+// Bytes of a depth pyramid's RGBA32F levels.
+std::size_t pyramidBytes(const gpu::DepthPyramid& pyramid) {
   std::size_t bytes = 0;
-  for (;; w = std::max(1, w / 2), h = std::max(1, h / 2)) {
-    bytes += static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 16u;
-    if (w == 1 && h == 1) break;
-  }
+  for (int lod = 0; lod < pyramid.levels(); ++lod)
+    bytes += static_cast<std::size_t>(pyramid.size(lod).x) * static_cast<std::size_t>(pyramid.size(lod).y) * 16u;
   return bytes;
 }
 
@@ -534,14 +532,15 @@ std::size_t GpuLab::objectBytes(std::size_t object) const {
   const ObjectPasses& o = *impl_->objects.at(object);
   const std::size_t texels = static_cast<std::size_t>(impl_->bufferWidth) * static_cast<std::size_t>(impl_->bufferHeight);
   // Back and front faces: an RGBA32F normal and a 32-bit depth each; the back faces' min/max pyramid.
-  return o.meshBytes + 2 * texels * (16u + 4u) + pyramidBytes(impl_->bufferWidth, impl_->bufferHeight);
+  return o.meshBytes + 2 * texels * (16u + 4u) + pyramidBytes(o.backPyramid);
 }
 
 std::size_t GpuLab::sharedBytes() const {
   const std::size_t texels = static_cast<std::size_t>(impl_->bufferWidth) * static_cast<std::size_t>(impl_->bufferHeight);
   const std::size_t pass = static_cast<std::size_t>(impl_->width) * static_cast<std::size_t>(impl_->height);
   // Two scene layers (colour, normal, depth) with their pyramids; the pass's four RGBA32F targets and depth.
-  return 2 * (texels * (16u + 16u + 4u) + pyramidBytes(impl_->bufferWidth, impl_->bufferHeight)) + pass * (4u * 16u + 4u);
+  return 2 * texels * (16u + 16u + 4u) + pyramidBytes(impl_->scenePyramid) + pyramidBytes(impl_->fullPyramid) +
+         pass * (4u * 16u + 4u);
 }
 
 double GpuLab::renderTechnique(std::size_t index, std::size_t object) {

@@ -257,9 +257,13 @@ AnimationSpec readAnimation(ObjectReader r) {
   return a;
 }
 
+// How messages name a scene file ("" when the scene was parsed from text).
+std::string sceneWhere(const std::string& file) { return file.empty() ? std::string("<scene>") : file; }
+
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::string& file) {
+  const std::string where = sceneWhere(file);
   Json root;
   try {
     root = Json::parse(text, nullptr, true, /*ignore_comments=*/true);
@@ -269,12 +273,12 @@ Scene parseScene(const std::string& text, const std::string& file) {
     std::string what = e.what();
     const std::size_t cut = what.find("] ");
     if (cut != std::string::npos) what = what.substr(cut + 2);
-    throw Error(ErrorKind::Parse, (file.empty() ? std::string("<scene>") : file) + ": malformed JSON: " + what);
+    throw Error(ErrorKind::Parse, where + ": malformed JSON: " + what);
   }
   const detail::JsonLines lines(text);
   if (!lines.duplicate().path.empty()) {
     const detail::JsonLines::Duplicate& d = lines.duplicate();
-    throw Error(ErrorKind::Schema, (file.empty() ? std::string("<scene>") : file) + ":" +
+    throw Error(ErrorKind::Schema, where + ":" +
                                        std::to_string(d.secondLine) + ": " + d.path + ": given twice (first on line " +
                                        std::to_string(d.firstLine) + "); each field may appear once");
   }
@@ -288,12 +292,12 @@ Scene parseScene(const std::string& text, const std::string& file) {
   s.camera = readCamera(r.object("camera"));
   // One object or a list, not both: two ways of saying the same thing would let a file say both.
   if (r.has("object") && r.has("objects"))
-    throw Error(ErrorKind::Schema, (file.empty() ? std::string("<scene>") : file) +
+    throw Error(ErrorKind::Schema, where +
                                        ": give either \"object\" (one refractive object) or \"objects\" (a list), not both");
   if (r.has("objects")) {
     std::vector<ObjectReader> list = r.objectArray("objects", kMaxObjects);
     if (list.empty())
-      throw Error(ErrorKind::Schema, (file.empty() ? std::string("<scene>") : file) +
+      throw Error(ErrorKind::Schema, where +
                                          ": objects: the list is empty; a scene holds at least one refractive object");
     for (std::size_t i = 0; i < list.size(); ++i)
       s.objects.push_back(readObject(std::move(list[i]), "objects[" + std::to_string(i) + "]", file));
@@ -313,7 +317,6 @@ Scene loadScene(const std::string& path) { return parseScene(readTextFile(path, 
 
 namespace {
 
-std::string sceneWhere(const Scene& scene) { return scene.file.empty() ? std::string("<scene>") : scene.file; }
 
 // The first vertex of `mesh` with a non-finite position, or -1.
 long firstNonFiniteVertex(const Mesh& mesh) {
@@ -343,7 +346,7 @@ std::string transformCulprit(const std::vector<vec3>& before, std::size_t i, con
 
 Mesh buildObjectMesh(const Scene& scene, std::size_t index, float time) {
   if (index >= scene.objects.size())
-    throw Error(ErrorKind::Schema, sceneWhere(scene) + ": no refractive object " + std::to_string(index) + " (the scene has " +
+    throw Error(ErrorKind::Schema, sceneWhere(scene.file) + ": no refractive object " + std::to_string(index) + " (the scene has " +
                                        std::to_string(scene.objects.size()) + ")");
   const RefractiveObject& object = scene.objects[index];
   const MeshSpec& m = object.mesh;
@@ -361,7 +364,7 @@ Mesh buildObjectMesh(const Scene& scene, std::size_t index, float time) {
         applyTransform(mesh, fit);
         const long bad = firstNonFiniteVertex(mesh);
         if (bad >= 0)
-          throw Error(ErrorKind::Schema, sceneWhere(scene) + ": " + object.field + ".mesh.fit_size: the fitted mesh (" + m.path +
+          throw Error(ErrorKind::Schema, sceneWhere(scene.file) + ": " + object.field + ".mesh.fit_size: the fitted mesh (" + m.path +
                                              ") has non-finite vertex " + std::to_string(bad) +
                                              " (its bounding box is empty or too large for float arithmetic)");
       }
@@ -378,14 +381,14 @@ Mesh buildObjectMesh(const Scene& scene, std::size_t index, float time) {
   // as such rather than as a bad mesh.
   const long badBefore = firstNonFiniteVertex(mesh);
   if (badBefore >= 0)
-    throw Error(ErrorKind::Mesh, sceneWhere(scene) + ": " + object.field + ".mesh: " + what + ": vertex " +
+    throw Error(ErrorKind::Mesh, sceneWhere(scene.file) + ": " + object.field + ".mesh: " + what + ": vertex " +
                                      std::to_string(badBefore) + " is not finite" +
                                      (m.kind == MeshKind::Blob ? " at time " + detail::formatNumber(time) : ""));
   const std::vector<vec3> before = mesh.positions;
   applyTransform(mesh, object.transform);
   const long bad = firstNonFiniteVertex(mesh);
   if (bad >= 0)
-    throw Error(ErrorKind::Schema, sceneWhere(scene) + ": " + object.field + ".transform." +
+    throw Error(ErrorKind::Schema, sceneWhere(scene.file) + ": " + object.field + ".transform." +
                                        transformCulprit(before, static_cast<std::size_t>(bad), object.transform) +
                                        ": the transformed mesh has non-finite vertex " + std::to_string(bad));
   validateMesh(mesh, what);

@@ -388,31 +388,29 @@ struct ReferenceTracer::Impl {
     const int b = h.object;
     const Surface s = objectSurface(h);
     const int n = ++count[static_cast<std::size_t>(b)];
+    // The first surface met is the entry, every later one an exit, whatever the normal says.
+    const Crossing c = crossing(media, b, n > 1);
     if (n == 1) {
-      const Media outside = media.without(b);
-      const double eta = iorOf(outside.top()) / iorOf(b);
-      const ExactRefraction t = refractExact(d, s.normal, eta, TirPolicy::Critical);
+      const ExactRefraction t = refractExact(d, s.normal, c.eta, TirPolicy::Critical);
       if (t.tir) ++stats.tirEvents;
-      const double F = opt.fresnel ? fresnelExact(glm::dot(d, s.normal), eta) : 0.0;
+      const double F = opt.fresnel ? fresnelExact(glm::dot(d, s.normal), c.eta) : 0.0;
       glm::dvec3 L(0.0);
       if (F > 0.0) {
         const glm::dvec3 refl = reflectExact(d, s.normal);
-        L += F * tracePrincipal(spawn(s, refl), refl, 0.0, 1e30, outside, done | (1u << b), count, events, opt, stats,
-                                nullptr);
+        L += F * tracePrincipal(spawn(s, refl), refl, 0.0, 1e30, c.reflected, done | (1u << b), count, events, opt,
+                                stats, nullptr);
       }
-      L += (1.0 - F) * tracePrincipal(spawn(s, t.direction), t.direction, 0.0, 1e30, outside.with(b), done, count,
-                                      events, opt, stats, nullptr);
-      return beer(outside.top(), h.t, opt) * L;
+      L += (1.0 - F) * tracePrincipal(spawn(s, t.direction), t.direction, 0.0, 1e30, c.refracted, done, count, events,
+                                      opt, stats, nullptr);
+      return beer(c.before, h.t, opt) * L;
     }
-    const Media in = media.contains(b) ? media : media.with(b);
-    const Media after = media.without(b);
     const bool last = n >= events;
-    const ExactRefraction t = refractExact(d, s.normal, iorOf(in.top()) / iorOf(after.top()),
-                                           last ? TirPolicy::Critical : TirPolicy::Reflect);
+    const ExactRefraction t = refractExact(d, s.normal, c.eta, last ? TirPolicy::Critical : TirPolicy::Reflect);
     if (t.tir) ++stats.tirEvents;
     const bool out = last || !t.tir;
-    return beer(in.top(), h.t, opt) * tracePrincipal(spawn(s, t.direction), t.direction, 0.0, 1e30, out ? after : in,
-                                                     out ? done | (1u << b) : done, count, events, opt, stats, nullptr);
+    return beer(c.before, h.t, opt) * tracePrincipal(spawn(s, t.direction), t.direction, 0.0, 1e30,
+                                                     out ? c.refracted : c.reflected, out ? done | (1u << b) : done,
+                                                     count, events, opt, stats, nullptr);
   }
 
   // The frame so far as a picture (renderComposited): what an object drawn later sees of the ones before it.
@@ -441,11 +439,10 @@ struct ReferenceTracer::Impl {
   // them where it meets them (off screen: as if they were not there, as a guard band holding the opaque
   // scene only); `skip`: objects it passes through. Else the environment.
   glm::dvec3 layerLookup(const glm::dvec3& o, const glm::dvec3& d, std::uint32_t layers, std::uint32_t skip,
-                         const FrameView& view, TraceStats& stats, double* distance = nullptr) const {
+                         const FrameView& view, TraceStats& stats) const {
     skip |= allObjects & ~layers;
     for (;;) {
       const Hit h = intersectSkipping(skip, o, d, 0.0, 1e30, stats);
-      if (distance) *distance = h.t;
       if (h.kind == HitKind::None) return env(d);
       if (h.kind == HitKind::Painting) return paintingColor(h);
       glm::dvec3 c;
@@ -617,7 +614,7 @@ TraceResult ReferenceTracer::renderComposited(const Camera& camera, const std::v
         const Ray ray = primaryRay(camera, x, y);
         glm::dvec3 c;
         if (b < 0) {
-          c = impl_->layerLookup(ray.origin, ray.direction, 0u, 0u, view, local, nullptr);
+          c = impl_->layerLookup(ray.origin, ray.direction, 0u, 0u, view, local);
           const Hit h = impl_->intersect(impl_->full, true, ray.origin, ray.direction, ray.tNear, ray.tFar, local);
           result.mask.set(x, y, h.kind == HitKind::Object);
           next.at(x, y) = vec4(vec3(c), 1.0f);
