@@ -36,6 +36,9 @@ layout(binding = 9) uniform sampler2D frontLayerNormal;
 // The frame's constants, the host's LabParams bytes as they are (std140).
 layout(std140, binding = 0) uniform LabUniforms { LabParams params; };
 uniform float labEngineParameter;
+// 1: the mesh's back faces are drawn (an engine order that shades them, three.js's WebGPU one): the normal is
+// turned to the camera, as three.js does for a back side.
+uniform int labBackSide;
 
 layout(location = 0) out vec4 color;
 layout(location = 1) out vec4 stats;     // x fell back, y texel fetches, z back hit, w exit hit
@@ -43,12 +46,13 @@ layout(location = 2) out vec4 position;  // xyz view-space front position, w d_N
 layout(location = 3) out vec4 normal;    // xyz interpolated front normal, w 1 (coverage)
 
 void main() {
+  vec3 n = labBackSide != 0 ? -vsNormal : vsNormal;
   SnellTwoInterfaceResult r = labShadeRow(LAB_TECHNIQUE, LAB_ENGINE_MODEL, labEngineParameter, LAB_REFERENCE, vsPosition,
-                                          vsNormal, vsDn, backDepth, backNormal, backPyramid, frontLayerDepth,
+                                          n, vsDn, backDepth, backNormal, backPyramid, frontLayerDepth,
                                           frontLayerNormal, sceneDepth, sceneNormal, scenePyramid, sceneColor, environment,
                                           params);
   color = vec4(r.color, 1.0f);
   stats = vec4(r.fellBack ? 1.0f : 0.0f, float(r.fetches), r.backHit ? 1.0f : 0.0f, r.exitHit.valid ? 1.0f : 0.0f);
   position = vec4(vsPosition, vsDn);
-  normal = vec4(vsNormal, 1.0f);
+  normal = vec4(n, 1.0f);
 }

@@ -93,20 +93,25 @@ CpuGpuTally& CpuGpuTally::operator+=(const CpuGpuTally& o) {
 }
 
 void CpuGpuTally::into(TechniqueRow& row) const {
+  agreementInto(row);
+  const double n = pixels ? static_cast<double>(pixels) : 1.0;
+  row.invalidShare = static_cast<double>(invalid) / n;
+  row.backMissShare = static_cast<double>(backMiss) / n;
+  row.exitMissShare = static_cast<double>(exitMiss) / n;
+  row.fetchesPerPixel = fetches / n;
+  row.fetchMismatch = static_cast<double>(fetchDiff) / n;
+  row.leakPixels = static_cast<int>(leaks);
+}
+
+void CpuGpuTally::agreementInto(TechniqueRow& row) const {
   row.cpuGpuMaxAbs = maxAbs;
   row.worstX = worstX;
   row.worstY = worstY;
   row.cpuGpuBeyond4Pixels = static_cast<int>(beyond4);
   row.cpuGpuBeyond4Ties = static_cast<int>(ties);
   const double n = pixels ? static_cast<double>(pixels) : 1.0;
-  row.invalidShare = static_cast<double>(invalid) / n;
-  row.backMissShare = static_cast<double>(backMiss) / n;
-  row.exitMissShare = static_cast<double>(exitMiss) / n;
-  row.fetchesPerPixel = fetches / n;
   row.cpuGpuBeyond1 = static_cast<double>(pixels - within1) / n;
   row.cpuGpuBeyond4 = static_cast<double>(beyond4) / n;
-  row.fetchMismatch = static_cast<double>(fetchDiff) / n;
-  row.leakPixels = static_cast<int>(leaks);
 }
 
 void debugWorstPixel(const CpuShader& shade, const TechniqueBuffers& tb, const Image& cpuColor, const Image& cpuStats,

@@ -129,6 +129,7 @@ struct CpuGpuTally {
   int worstX = -1, worstY = -1;  // the pixel of maxAbs
   CpuGpuTally& operator+=(const CpuGpuTally& o);  // another object's pass
   void into(TechniqueRow& row) const;
+  void agreementInto(TechniqueRow& row) const;  // the CPU-GPU fields only (pixels of every pass, back sides too)
 };
 
 // Stage 4b: the tally of one object's front pass (its covered pixels).

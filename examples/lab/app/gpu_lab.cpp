@@ -458,7 +458,7 @@ struct GpuLab::Impl {
     gpu::checkGl(gl, "depth copy before the refraction pass");
   }
 
-  void drawTechnique(std::size_t index, std::size_t object) {
+  void drawTechnique(std::size_t index, std::size_t object, bool backSide) {
     const ObjectPasses& o = *objects.at(object);
     passFb.bind();
     const vec4 zero(0.0f);
@@ -466,7 +466,7 @@ struct GpuLab::Impl {
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthFunc(GL_LESS);
     gl.Enable(GL_CULL_FACE);
-    gl.CullFace(GL_BACK);
+    gl.CullFace(backSide ? GL_FRONT : GL_BACK);
     const gpu::Framebuffer& sceneRead = shaders.at(index).readsFullScene() ? fullFb : sceneFb;
     const gpu::DepthPyramid& pyramidRead = shaders.at(index).readsFullScene() ? fullPyramid : scenePyramid;
     const GLuint color =
@@ -484,7 +484,9 @@ struct GpuLab::Impl {
     o.bindMesh();
     o.uniforms.bindBase(kLabUniformsBinding);
     refract.at(index).use();
+    refract.at(index).set("labBackSide", backSide ? 1 : 0);
     gl.DrawArrays(GL_TRIANGLES, 0, o.vertexCount);
+    gl.CullFace(GL_BACK);
   }
 };
 
@@ -543,9 +545,11 @@ std::size_t GpuLab::sharedBytes() const {
          pass * (4u * 16u + 4u);
 }
 
-double GpuLab::renderTechnique(std::size_t index, std::size_t object) {
+double GpuLab::renderTechnique(std::size_t index, std::size_t object, bool backSide) {
+  if (backSide && impl_->shaders.at(index).engineModel < 0)
+    throw gpu::Error("snell-lab: program " + std::to_string(index) + " is a technique; only an engine model shades back faces");
   impl_->prepareTechnique();
-  const double ms = impl_->timed([&] { impl_->drawTechnique(index, object); });
+  const double ms = impl_->timed([&] { impl_->drawTechnique(index, object, backSide); });
   gpu::checkGl(impl_->gl, "refraction pass");
   return ms;
 }

@@ -162,8 +162,9 @@ class GpuLab {
   std::size_t sharedBytes() const;
 
   // Pass 4 of `object` with shaders[index]: glFinish, steady clock, draw, glFinish.
-  // Returns the pass's wall time in ms.
-  double renderTechnique(std::size_t index, std::size_t object);
+  // Returns the pass's wall time in ms. `backSide`: the object's back faces instead, their normal turned to
+  // the camera (an engine model only: three.js's WebGPU order shades them).
+  double renderTechnique(std::size_t index, std::size_t object, bool backSide = false);
   // The free value of shaders[index]'s engine model (0 until set).
   void setEngineParameter(std::size_t index, float value);
   // The colour copy the engine rows read (buffer-sized; Bevy's steps copy the frame so far before each group

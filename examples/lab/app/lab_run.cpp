@@ -18,6 +18,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -58,9 +59,9 @@ std::vector<LabRowSpec> selectTechniques(const LabOptions& options) {
   // The engines' models after the techniques: snell's cheapest tier, compared on the same buffers.
   for (const SnellEngineModelInfo& m : snellEngineModelTable())
     if (asked(m.name)) rows.push_back(LabRowSpec{nullptr, &m});
-  // Bevy's steps: named, or with every row when the scene has several objects (runLab drops them
-  // otherwise: with one object they are the three.js / Bevy row).
-  for (const LabRowSpec& r : bevyStepRows())
+  // The engines' multi-object strategies: named, or with every row when the scene has several objects (runLab
+  // drops them otherwise).
+  for (const LabRowSpec& r : multiObjectRows())
     if (asked(r.name())) rows.push_back(r);
   return rows;
 }
@@ -93,6 +94,7 @@ struct ObjectPass {
   std::size_t object = 0;
   CpuBuffers cb;
   TechniqueBuffers tb;
+  bool backSide = false;  // its back faces (three.js's WebGPU order), not the object's pixels in the picture
 };
 
 // Bevy's steps over n objects in draw order (its split_range): whether a group, and its colour copy, starts at
@@ -122,6 +124,38 @@ void drawOver(Image& frame, const Image& color, const Image& coverage, int margi
       if (coverage.at(x, y).w > 0.0f) frame.at(x + margin, y + margin) = vec4(vec3(color.at(x, y)), 1.0f);
 }
 
+// drawOver with a depth test, as three.js's WebGPU order writes depth between its transmissive draws:
+// `nearest` (buffer-sized, view distances) holds what the frame shows of the passes so far.
+void drawOverNearer(Image& frame, std::vector<float>& nearest, const TechniqueBuffers& tb, int margin) {
+  for (int y = 0; y < tb.color.height; ++y)
+    for (int x = 0; x < tb.color.width; ++x) {
+      if (!(tb.normal.at(x, y).w > 0.0f)) continue;
+      float& near = nearest[static_cast<std::size_t>(y + margin) * static_cast<std::size_t>(frame.width) +
+                            static_cast<std::size_t>(x + margin)];
+      const float distance = -tb.position.at(x, y).z;
+      if (!(distance < near)) continue;
+      near = distance;
+      frame.at(x + margin, y + margin) = vec4(vec3(tb.color.at(x, y)), 1.0f);
+    }
+}
+
+// Three.js's WebGPU order over `passes` (every object's back side, then every front side, each in draw
+// order): `shade(pass, copy)` gives the pass's colour from the colour copy it reads (the opaque scene for
+// the back sides, the frame holding them for the front sides); returns the composite.
+template <class Shade>
+Image compositeBackSidesFirst(std::vector<ObjectPass>& passes, const FrameSetup& setup, Shade&& shade) {
+  Image frame = setup.fullColor;
+  std::vector<float> nearest(frame.texels.size(), std::numeric_limits<float>::infinity());
+  const Image* copy = &setup.fullColor;
+  Image backSides;
+  for (bool back : {true, false}) {
+    if (!back) copy = &(backSides = frame);
+    for (ObjectPass& pass : passes)
+      if (pass.backSide == back) drawOverNearer(frame, nearest, shade(pass, *copy), setup.margin);
+  }
+  return frame;
+}
+
 // The viewport's part of a buffer-sized frame.
 Image viewportOf(const Image& frame, int margin, int width, int height) {
   Image out(width, height);
@@ -135,8 +169,24 @@ Image viewportOf(const Image& frame, int margin, int width, int height) {
 // colour goes over `frame`, which starts as the whole opaque scene. `keep`: the buffers each object read.
 std::vector<ObjectPass> renderObjects(GpuLab& gpu, std::size_t index, const LabRowSpec& row, const FrameSetup& setup,
                                       const SceneFrame& sceneFrame, Image& frame, std::vector<StaticBuffers>* keep) {
-  frame = setup.fullColor;
   std::vector<ObjectPass> passes;
+  if (row.backSidesFirst) {
+    for (bool back : {true, false})
+      for (std::size_t o : setup.order) passes.push_back(ObjectPass{o, {}, {}, back});
+    frame = compositeBackSidesFirst(passes, setup, [&](ObjectPass& pass, const Image& copy) -> const TechniqueBuffers& {
+      StaticBuffers sb = gpu.readStatic(pass.object);
+      sb.fullColor = copy;  // what the C++ side shades from, as the GPU reads it
+      gpu.setColorCopy(&copy);
+      gpu.renderTechnique(index, pass.object, pass.backSide);
+      pass.cb = cpuBuffers(sb, setup.k[pass.object], sceneFrame);
+      pass.tb = gpu.readTechnique();
+      if (keep && !pass.backSide) keep->push_back(std::move(sb));
+      return pass.tb;
+    });
+    gpu.setColorCopy(nullptr);
+    return passes;
+  }
+  frame = setup.fullColor;
   const bool stepped = setup.stepped(row);
   const std::vector<bool> copies = stepStarts(setup.order.size(), row.steps);
   Image copy;
@@ -170,7 +220,7 @@ TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const LabRowSpec& spec
   row.label = spec.label();
   row.engine = spec.engine;
   row.steps = spec.steps;
-  CpuGpuTally tally;
+  CpuGpuTally tally, agreement;  // the object's pixels (front passes); CPU-GPU agreement over every pass
   const int W = sceneFrame.camera.width, H = sceneFrame.camera.height;
   Mask coveredAny(W, H);
   for (const ObjectPass& pass : passes) {
@@ -179,12 +229,15 @@ TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const LabRowSpec& spec
     shadeOnCpu(shade, pass.tb, threads, cpuColor, cpuStats);
     const CpuGpuTally own = compareCpuGpu(shade, pass.tb, cpuColor, cpuStats);
     debugWorstPixel(shade, pass.tb, cpuColor, cpuStats, own);
+    agreement += own;
+    if (pass.backSide) continue;
     tally += own;
     for (int y = 0; y < H; ++y)
       for (int x = 0; x < W; ++x)
         if (pass.tb.normal.at(x, y).w > 0.0f) coveredAny.set(x, y, true);
   }
   tally.into(row);
+  agreement.agreementInto(row);
   // Coverage: the ray tracer's object pixels that no front pass shaded (near-plane clipping, silhouette
   // rasterization) hold the scene colour in the composite; say how many, and refuse to score a technique
   // that shaded none of them.
@@ -226,6 +279,19 @@ EngineSweep sweepEngineRow(GpuLab& gpu, std::size_t index, const LabRowSpec& spe
   for (const ShadeConstants& k : setup.k) range = std::max(range, k.params.backRange);
   const int W = sceneFrame.camera.width, H = sceneFrame.camera.height;
   return sweepEngineParameter(spec, range, refs, [&](float value) {
+    if (spec.backSidesFirst) {
+      Image color(W, H), stats(W, H);
+      TechniqueBuffers shaded;
+      const Image f = compositeBackSidesFirst(passes, setup, [&](ObjectPass& pass, const Image& copy) -> const TechniqueBuffers& {
+        pass.cb.fullColor = Texture2D(copy, Filter::Linear);
+        shadeOnCpu(CpuShader{spec, value, pass.cb, setup.k[pass.object].params, setup.margin}, pass.tb, threads, color,
+                   stats);
+        shaded = pass.tb;
+        shaded.color = color;
+        return shaded;
+      });
+      return viewportOf(f, setup.margin, W, H);
+    }
     Image f = setup.fullColor;
     Texture2D copy;
     for (std::size_t position = 0; position < passes.size(); ++position) {
@@ -259,12 +325,18 @@ void timeTechniques(GpuLab& gpu, const std::vector<LabRowSpec>& techniques, cons
       if (f > 0 && techniques[i].reference()) continue;
       const bool layers = setup.several() && techniques[i].engine == nullptr;
       const std::vector<bool> copies = stepStarts(n, techniques[i].steps);
+      // Three.js's WebGPU order: the back sides (timed with their objects), then the front sides' copy.
+      const bool backSides = techniques[i].backSidesFirst;
+      std::vector<double> backMs(n, 0.0);
+      for (std::size_t position = 0; backSides && position < n; ++position)
+        backMs[position] = gpu.renderTechnique(i, setup.order[position], true);
+      if (backSides) gpu.setColorCopy(&finalFrames[i]);
       double total = 0.0;
       for (std::size_t position = 0; position < n; ++position) {
         const std::size_t o = setup.order[position];
         if (layers) layerMs[position].push_back(gpu.renderLayer(o, drawnBefore(setup, position), &finalFrames[i]));
         if (setup.stepped(techniques[i]) && copies[position]) gpu.setColorCopy(&finalFrames[i]);
-        const double ms = gpu.renderTechnique(i, o);
+        const double ms = backMs[position] + gpu.renderTechnique(i, o);
         perObject[i][position].push_back(ms);
         total += ms;
       }
@@ -274,7 +346,8 @@ void timeTechniques(GpuLab& gpu, const std::vector<LabRowSpec>& techniques, cons
       for (std::size_t position = 0; position < n; ++position) {
         const std::size_t o = setup.order[position];
         if (layers) gpu.renderLayer(o, {}, nullptr);
-        alone[i][position].push_back(gpu.renderTechnique(i, o));
+        const double back = backSides ? gpu.renderTechnique(i, o, true) : 0.0;
+        alone[i][position].push_back(back + gpu.renderTechnique(i, o));
       }
     }
   double unit = 0.0;
@@ -335,7 +408,7 @@ LabResult runLab(const LabOptions& options) {
                                        (scene.name.empty() ? fs::path(options.scenePath).stem().string() : scene.name) +
                                        " has " + std::to_string(scene.objects.size()));
   if (scene.objects.size() < 2 && options.techniques.empty())
-    techniques.erase(std::remove_if(techniques.begin(), techniques.end(), [](const LabRowSpec& t) { return t.steps > 1; }),
+    techniques.erase(std::remove_if(techniques.begin(), techniques.end(), [](const LabRowSpec& t) { return t.multiObject(); }),
                      techniques.end());
   if (options.width > 0) scene.camera.width = options.width;
   if (options.height > 0) scene.camera.height = options.height;

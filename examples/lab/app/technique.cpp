@@ -6,11 +6,11 @@ std::string techniqueNames() {
   std::string s;
   for (const SnellTechniqueInfo& t : snellTechniqueTable()) s += std::string(s.empty() ? "" : ", ") + t.name;
   for (const SnellEngineModelInfo& m : snellEngineModelTable()) s += std::string(", ") + m.name;
-  for (const LabRowSpec& r : bevyStepRows()) s += ", " + r.name();
+  for (const LabRowSpec& r : multiObjectRows()) s += ", " + r.name();
   return s;
 }
 
-std::vector<LabRowSpec> bevyStepRows() {
+std::vector<LabRowSpec> multiObjectRows() {
   std::vector<LabRowSpec> rows;
   for (int steps : kBevySteps) {
     LabRowSpec r;
@@ -18,6 +18,10 @@ std::vector<LabRowSpec> bevyStepRows() {
     r.steps = steps;
     rows.push_back(r);
   }
+  LabRowSpec webgpu;
+  webgpu.engine = &snellEngineModelTable()[SNELL_ENGINE_THREEJS];
+  webgpu.backSidesFirst = true;
+  rows.push_back(webgpu);
   return rows;
 }
 
@@ -26,8 +30,8 @@ LabRowSpec findRow(const std::string& name) {
   r.technique = snellFindTechnique(name);
   if (!r.technique) r.engine = snellFindEngineModel(name);
   if (!r.technique && !r.engine)
-    for (const LabRowSpec& steps : bevyStepRows())
-      if (steps.name() == name) return steps;
+    for (const LabRowSpec& row : multiObjectRows())
+      if (row.name() == name) return row;
   return r;
 }
 

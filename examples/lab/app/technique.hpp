@@ -29,13 +29,25 @@ struct LabRowSpec {
   const SnellTechniqueInfo* technique = nullptr;
   const SnellEngineModelInfo* engine = nullptr;
   int steps = 1;  // an engine row: Bevy's steps (the colour copies, kBevySteps); 1: the opaque copy only
+  // An engine row in three.js's WebGPU order (Renderer._renderTransparents for double-sided transmissive
+  // materials): every object's back faces first, back to front, shaded with the model (normal turned to the
+  // camera) from the opaque copy and depth-tested; then the front faces, from a copy of the frame that holds
+  // those back faces (PhysicalLightingModel's viewportOpaqueMipTexture, copied at its first use).
+  bool backSidesFirst = false;
 
   std::string name() const {
-    return technique ? technique->name : steps > 1 ? "engine-bevy-steps-" + std::to_string(steps) : engine->name;
+    if (technique) return technique->name;
+    if (backSidesFirst) return "engine-threejs-webgpu";
+    return steps > 1 ? "engine-bevy-steps-" + std::to_string(steps) : engine->name;
   }
   std::string label() const {
-    return technique ? technique->label : steps > 1 ? "Bevy, " + std::to_string(steps) + " steps" : engine->label;
+    if (technique) return technique->label;
+    if (backSidesFirst) return "three.js WebGPU order";
+    return steps > 1 ? "Bevy, " + std::to_string(steps) + " steps" : engine->label;
   }
+  // A row whose colour copy depends on the objects drawn (Bevy's steps, three.js's WebGPU order): with one
+  // object the lab runs it only when named.
+  bool multiObject() const { return steps > 1 || backSidesFirst; }
   // A Reference row (the image-space bounds) is measured against, not a contender.
   bool reference() const { return technique && technique->kind == SnellTechniqueKind::Reference; }
   bool costUnit() const { return technique && technique->costUnit; }
@@ -48,10 +60,12 @@ struct LabRowSpec {
 // "single, plane-normal-0, ..., engine-godot" for messages.
 std::string techniqueNames();
 
-// The row of that command-line name (a technique, an engine model, engine-bevy-steps-N), or a spec with neither.
+// The row of that command-line name (a technique, an engine model, engine-bevy-steps-N, engine-threejs-webgpu),
+// or a spec with neither.
 LabRowSpec findRow(const std::string& name);
 
-// The rows of Bevy's steps (kBevySteps), with the three.js / Bevy model.
-std::vector<LabRowSpec> bevyStepRows();
+// The engines' multi-object strategies, with the three.js / Bevy model: Bevy's steps (kBevySteps) and
+// three.js's WebGPU order.
+std::vector<LabRowSpec> multiObjectRows();
 
 }  // namespace snell::lab
