@@ -113,6 +113,50 @@ TEST_P(DepthPyramidGpu, GlPassEqualsCppBuilderOnEveryLevel) {
   }
 }
 
+// A region build (an object's screen rectangle) after a whole build: the depth changes only inside the
+// rectangle (the scene there, empty elsewhere), the region build rewrites only what the rectangle reduces
+// into, and every level must then equal snellBuildDepthPyramid of the whole new depth texture, bit for bit.
+// The rectangles touch odd edges (203 x 117: every level has an odd size somewhere), and the object moves:
+// the second rectangle is rebuilt over the union of both.
+TEST_P(DepthPyramidGpu, RegionBuildEqualsTheWholeBuild) {
+  Context ctx(GetParam());
+  const GlApi& gl = ctx.gl();
+  const DepthPyramidPass pass(gl, kRoot / "glsl");
+  const DepthScene sc = snell_test::sphereBack(203, 117, SNELL_DEPTH_GL);
+  const auto inside = [&](glm::ivec4 r) {
+    snell::Image d = sc.depth.level(0);
+    for (int y = 0; y < d.height; ++y)
+      for (int x = 0; x < d.width; ++x)
+        if (x < r.x || x >= r.z || y < r.y || y >= r.w) d.at(x, y) = glm::vec4(sc.emptyDepth);
+    return d;
+  };
+  const DepthPyramid pyramid(gl, sc.width, sc.height);
+  const Texture empty(gl, snell::Texture2D(inside(glm::ivec4(0))));
+  pass.build(pyramid, empty.id(), sc.zNear, sc.zFar, sc.convention, sc.emptyDepth);
+  int checked = 0;
+  glm::ivec4 before(0);
+  for (const glm::ivec4 rect : {glm::ivec4(37, 11, 120, 90), glm::ivec4(150, 60, 203, 117), glm::ivec4(1, 0, 202, 3),
+                                glm::ivec4(90, 40, 91, 41)}) {
+    SCOPED_TRACE(::testing::Message() << "rect " << rect.x << " " << rect.y << " " << rect.z << " " << rect.w);
+    const snell::Image depthNow = inside(rect);
+    const Texture depth(gl, snell::Texture2D(depthNow));
+    const glm::ivec4 region(glm::min(glm::ivec2(rect), glm::ivec2(before)), glm::max(glm::ivec2(rect.z, rect.w), glm::ivec2(before.z, before.w)));
+    pass.build(pyramid, depth.id(), sc.zNear, sc.zFar, sc.convention, sc.emptyDepth,
+               before == glm::ivec4(0) ? rect : region);
+    const snell::Texture2D cpu = snell::snellBuildDepthPyramid(snell::Texture2D(depthNow), sc.surface());
+    int mismatches = 0;
+    for (int lod = 0; lod < cpu.levelCount(); ++lod) {
+      const snell::Image got = pyramid.readLevel(lod);
+      for (std::size_t i = 0; i < got.texels.size(); ++i)
+        mismatches += std::memcmp(&got.texels[i], &cpu.level(lod).texels[i], sizeof(glm::vec4)) != 0;
+    }
+    EXPECT_EQ(mismatches, 0);
+    ++checked;
+    before = rect;
+  }
+  EXPECT_EQ(checked, 4);
+}
+
 // The library's pass from a folder without its shaders: an error naming the
 // file it looked for, before anything reaches GL.
 TEST(DepthPyramidPass, MissingShaderFolderNamesTheFile) {

@@ -170,9 +170,33 @@ gpu::FlatSource flatten(const fs::path& file, const ShaderDirs& dirs, const std:
 
 }  // namespace
 
+// The buffer texels an object's faces can cover: the rectangle around its vertices' projections through
+// clipFromView (x0, y0, x1, y1, exclusive ends), one texel wider on every side for rasterization at its
+// edges, clamped to the buffer; the whole buffer when a vertex lies on or behind the camera plane.
+ivec4 screenRectangle(const Mesh& m, const mat4& viewFromWorld, const mat4& clipFromView, int width, int height) {
+  const ivec4 whole(0, 0, width, height);
+  if (m.positions.empty()) return ivec4(0);
+  vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+  for (const vec3& p : m.positions) {
+    const vec4 c = clipFromView * (viewFromWorld * vec4(p, 1.0f));
+    if (!(c.w > 1e-6f)) return whole;
+    const vec2 ndc = vec2(c) / c.w;
+    lo = glm::min(lo, ndc);
+    hi = glm::max(hi, ndc);
+  }
+  const vec2 size(static_cast<float>(width), static_cast<float>(height));
+  const vec2 a = glm::floor((lo * 0.5f + 0.5f) * size) - 1.0f, b = glm::ceil((hi * 0.5f + 0.5f) * size) + 1.0f;
+  const ivec2 x0 = glm::clamp(ivec2(glm::max(a, vec2(-1.0f))), ivec2(0), ivec2(width, height));
+  const ivec2 x1 = glm::clamp(ivec2(glm::min(b, size + 1.0f)), ivec2(0), ivec2(width, height));
+  return ivec4(x0, x1);
+}
+
 // One refractive object's own GPU state: its mesh, constants, back and front faces.
 struct ObjectPasses {
   ShadeConstants k;
+  // Where its back- and front-face passes and back-face pyramid run (screenRectangle): outside it, its
+  // buffers stay as cleared when they were made.
+  ivec4 rect;
   gpu::StorageBuffer positions, normals, indices;
   GLsizei vertexCount = 0;
   gpu::Framebuffer backFb, frontFb;
@@ -183,6 +207,7 @@ struct ObjectPasses {
   ObjectPasses(const gpu::GlApi& gl, const Mesh& m, const std::vector<float>& dN, const ShadeConstants& constants,
                int bufferWidth, int bufferHeight)
       : k(constants),
+        rect(screenRectangle(m, constants.viewFromWorld, constants.params.clipFromView, bufferWidth, bufferHeight)),
         positions(gl),
         normals(gl),
         indices(gl),
@@ -266,9 +291,18 @@ struct GpuLab::Impl {
     if (constants.size() != frame.objects.size())
       throw gpu::Error("snell-lab: " + std::to_string(constants.size()) + " sets of constants for " +
                        std::to_string(frame.objects.size()) + " objects");
-    for (std::size_t i = 0; i < frame.objects.size(); ++i)
+    for (std::size_t i = 0; i < frame.objects.size(); ++i) {
       objects.push_back(std::make_unique<ObjectPasses>(gl, frame.objects[i].mesh, i < dN.size() ? dN[i] : std::vector<float>{},
                                                        constants[i], bufferWidth, bufferHeight));
+      // Empty once, whole: each frame's passes then rewrite only the object's rectangle (an object that
+      // moves would rewrite the union with its last rectangle).
+      ObjectPasses& o = *objects.back();
+      o.backFb.clearColor(0, vec4(0.0f));
+      o.backFb.clearDepth(0.0f);
+      o.frontFb.clearColor(0, vec4(0.0f));
+      o.frontFb.clearDepth(1.0f);
+      pyramidPass.build(o.backPyramid, o.backFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 0.0f);
+    }
     for (const Painting& painting : frame.paintings) {
       paintingTextures.emplace_back(gl, painting.texture);
       paintingCorners.push_back(painting.corners());
@@ -385,6 +419,9 @@ struct GpuLab::Impl {
     // (1) The whole opaque scene (the layer snell's rows read after the back faces: Peeled reads them).
     drawScene(fullFb, 0.0f);
     for (const auto& o : objects) {
+      // Within the object's screen rectangle only: outside it its buffers hold what they were made with.
+      gl.Enable(GL_SCISSOR_TEST);
+      gl.Scissor(o->rect.x, o->rect.y, o->rect.z - o->rect.x, o->rect.w - o->rect.y);
       // (2) The object's back faces: nearest-to-camera test reversed.
       o->backFb.clearColor(0, vec4(0.0f));
       o->backFb.clearDepth(0.0f);
@@ -406,8 +443,10 @@ struct GpuLab::Impl {
       o->frontFb.bind();
       gl.DrawArrays(GL_TRIANGLES, 0, o->vertexCount);
       gpu::checkGl(gl, "front-face pass");
-      // (3) Its depth pyramid.
-      pyramidPass.build(o->backPyramid, o->backFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 0.0f);
+      gl.Disable(GL_SCISSOR_TEST);
+      // (3) Its depth pyramid, over what the rectangle reduces into.
+      pyramidPass.build(o->backPyramid, o->backFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 0.0f,
+                        o->rect);
     }
     pyramidPass.build(fullPyramid, fullFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 1.0f);
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -104,7 +104,21 @@ class DepthPyramidPass {
   // `convention` with emptyDepth meaning "no surface". Leaves texture unit 0 unbound, depth test off.
   void build(const DepthPyramid& target, GLuint depthTexture, float zNear, float zFar, int convention,
              float emptyDepth) const {
+    build(target, depthTexture, zNear, zFar, convention, emptyDepth, ivec4(0, 0, target.size(0)));
+  }
+
+  // The same, rewriting only what `region` (level-0 texels x in [region.x, region.z), y in [region.y,
+  // region.w), clamped to the buffer) reduces into on every level: the texels of level L+1 whose children
+  // (snellDepthMinMaxReduce's 2x2, 3 at an odd edge) include one rewritten on level L. The rest of every
+  // level keeps what the last build left there, so the result is the whole build's when the depth texture
+  // changed only inside `region` since then: an object's own buffers, drawn with a scissor around its
+  // screen rectangle (and the rectangle it had in the previous frame). An empty region rewrites nothing.
+  void build(const DepthPyramid& target, GLuint depthTexture, float zNear, float zFar, int convention,
+             float emptyDepth, ivec4 region) const {
     const GlApi& gl = *gl_;
+    region = ivec4(glm::max(ivec2(region.x, region.y), ivec2(0)), glm::min(ivec2(region.z, region.w), target.size(0)));
+    if (region.z <= region.x || region.w <= region.y) return;
+    gl.Enable(GL_SCISSOR_TEST);
     gl.Disable(GL_DEPTH_TEST);
     gl.Disable(GL_CULL_FACE);
     program_.use();
@@ -119,6 +133,8 @@ class DepthPyramidPass {
     for (int lod = 0; lod < target.levels(); ++lod) {
       gl.BindFramebuffer(GL_FRAMEBUFFER, target.framebuffer(lod));
       gl.Viewport(0, 0, target.size(lod).x, target.size(lod).y);
+      if (lod > 0) region = parentRegion(region, target.size(lod));
+      gl.Scissor(region.x, region.y, region.z - region.x, region.w - region.y);
       if (lod == 0) {
         gl.BindTexture(GL_TEXTURE_2D, depthTexture);
         program_.set("baseLevel", 1);
@@ -136,7 +152,16 @@ class DepthPyramidPass {
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, target.levels() - 1);
     gl.BindTexture(GL_TEXTURE_2D, 0);
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl.Disable(GL_SCISSOR_TEST);
     checkGl(gl, "depth pyramid pass");
+  }
+
+  // The texels of a level of `size` whose children include one of `child` (the level below's rewritten
+  // texels): columns floor(x / 2) .. ceil(x1 / 2) - 1, the last column also for the odd edge's third child.
+  static ivec4 parentRegion(ivec4 child, ivec2 size) {
+    const ivec2 lo = glm::min(ivec2(child.x, child.y) / 2, size - 1);
+    const ivec2 hi = glm::clamp((ivec2(child.z, child.w) + 1) / 2, lo + 1, size);
+    return ivec4(lo, hi);
   }
 
  private:

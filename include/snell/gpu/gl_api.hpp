@@ -43,6 +43,7 @@ namespace snell::gpu {
   X(PFNGLCOLORMASKIPROC, ColorMaski)                             \
   X(PFNGLCULLFACEPROC, CullFace)                                \
   X(PFNGLVIEWPORTPROC, Viewport)                                \
+  X(PFNGLSCISSORPROC, Scissor)                                  \
   X(PFNGLPIXELSTOREIPROC, PixelStorei)                          \
   X(PFNGLMEMORYBARRIERPROC, MemoryBarrier)                      \
   /* clears and draws */                                        \
