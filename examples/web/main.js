@@ -1,32 +1,30 @@
 // snell in three.js: one of snell-lab's frames (a bundle written by `snell-lab --web-bundle DIR`) rendered
-// with snell's two-interface refraction in WebGL 2. Every pass a technique needs, in three.js render targets:
-//   1. the opaque scene (environment, then the paintings): colour, view-space normal, depth;
-//   2. the object's back faces (depth test GREATER after clearing depth to 0) and front faces: normal, depth;
-//   3. the min/max depth pyramid of the back faces and of the scene, one target per level, each copied into
-//      its level of a mip-chained target (WebGL 2 will not render one level of a texture while sampling
-//      another level of it);
-//   4. on the canvas: the scene's colour, then the object's front faces through the technique's program
-//      (shaders/refract.frag, snell's single-file GLSL as the ShaderChunk "snell").
-// Colour: every buffer holds linear RGB in float targets; only the canvas passes encode to sRGB (8 bits).
-// The scene and object buffers extend `margin` texels beyond the canvas on every side (the lab's guard
-// band), rendered through the bundle's bufferClipFromView, so exits just off screen are found.
+// with snell's two-interface refraction in WebGL 2, every refractive object of it as the lab draws them. In
+// three.js render targets, `margin` texels wider than the canvas on every side (the lab's guard band, rendered
+// through the bundle's bufferClipFromView, so exits just off screen are found):
+//   1. the whole opaque scene (environment, then the paintings): colour, view-space normal, depth;
+//   2. per object, its back faces (depth test GREATER after clearing depth to 0) and front faces: normal,
+//      depth; and the min/max depth pyramid of its back faces (targets.js: WebGL 2 builds it level by level);
+//   3. the frame: the opaque scene's colour, then the objects back to front (the bundle's drawOrder, by their
+//      nearest points), each
+//      a. over its scene layer: the opaque scene behind its nearest point (the paintings clipped there) and
+//         the front faces of the objects drawn before it, coloured from the frame so far; and its pyramid;
+//      b. its front faces through the technique's program (shaders/refract.frag, snell's single-file GLSL as
+//         the ShaderChunk "snell"), depth-tested against the whole opaque scene, over the frame;
+//   4. the canvas: the frame's viewport, encoded to sRGB (8 bits).
+// Colour: every buffer and the frame hold linear RGB in float targets; only the canvas pass encodes.
 // ?technique=<name> picks the technique; ?buffers=lab runs it on the lab's own buffers and front-face inputs
-// (in the bundle) instead of the page's, which sets snell's code apart from the two rasterizers; ?test=1
-// renders once and posts the canvas to serve.mjs.
+// (in the bundle: per object, its scene layer as the lab drew it) instead of the page's, which sets snell's
+// code apart from the two rasterizers; ?test=1 renders once and posts the canvas to serve.mjs.
 import * as THREE from "three";
+
+import { floatTexture, labObjectBuffers, loadBundle, matrix, objectGeometry, text, vector } from "./bundle.js";
+import { layerTarget, Pyramids, rawMaterial, setFilter } from "./targets.js";
 
 const query = new URLSearchParams(location.search);
 const testMode = query.has("test");
 const labBuffers = query.get("buffers") === "lab";
 const statusLine = document.getElementById("status");
-
-async function fetchOk(url) {
-  const r = await fetch(url);
-  if (!r.ok) throw new Error(`cannot load ${url} (HTTP ${r.status})`);
-  return r;
-}
-const text = async (url) => (await fetchOk(url)).text();
-const bytes = async (url) => (await fetchOk(url)).arrayBuffer();
 
 async function report(what, body) {
   if (testMode) await fetch(`/report/${what}`, { method: "POST", body });
@@ -40,59 +38,13 @@ function fail(error) {
 window.addEventListener("error", (e) => fail(e.error ?? e.message));
 window.addEventListener("unhandledrejection", (e) => fail(e.reason));
 
-const matrix = (a) => new THREE.Matrix4().fromArray(a);  // column-major, as the bundle writes it
-const vector = (a) => new THREE.Vector3(a[0], a[1], a[2]);
-
-// A float RGBA image of the bundle as a texture (clamped to the edge, no mips); linear filtering is how the
-// lab samples its paintings and its environment.
-async function floatTexture(image, filter = THREE.LinearFilter) {
-  const data = new Float32Array(await bytes(`bundle/${image.texels}`));
-  if (data.length !== image.width * image.height * 4) throw new Error(`bundle/${image.texels}: wrong size`);
-  const t = new THREE.DataTexture(data, image.width, image.height, THREE.RGBAFormat, THREE.FloatType);
-  t.minFilter = filter;
-  t.magFilter = filter;
-  t.generateMipmaps = false;
-  t.needsUpdate = true;
-  return t;
-}
-
-function floatTarget(width, height, options = {}) {
-  return new THREE.WebGLRenderTarget(width, height, {
-    type: THREE.FloatType,
-    format: THREE.RGBAFormat,
-    minFilter: THREE.NearestFilter,
-    magFilter: THREE.NearestFilter,
-    generateMipmaps: false,
-    depthBuffer: false,
-    ...options,
-  });
-}
-
-// A target with `count` float colour attachments and a float depth texture, as the lab's framebuffers.
-function layerTarget(width, height, count) {
-  return floatTarget(width, height, {
-    count,
-    depthBuffer: true,
-    depthTexture: new THREE.DepthTexture(width, height, THREE.FloatType),
-  });
-}
-
-function setFilter(texture, filter) {
-  texture.minFilter = filter;
-  texture.magFilter = filter;
-}
-
-function rawMaterial(vertexShader, fragmentShader, uniforms, options = {}) {
-  return new THREE.RawShaderMaterial({ glslVersion: THREE.GLSL3, vertexShader, fragmentShader, uniforms, ...options });
-}
-
 async function main() {
-  const bundle = await (await fetchOk("bundle/bundle.json")).json();
+  const bundle = await loadBundle();
   THREE.ShaderChunk.snell = await text("snell/snell.glsl");
   THREE.ShaderChunk.srgb_encode = await text("shaders/srgb_encode.glsl");
   const src = {};
   for (const name of ["fullscreen.vert", "background.frag", "painting.vert", "painting.frag", "mesh.vert",
-    "layer.frag", "pyramid.frag", "copy.frag", "present.frag", "refract.frag"])
+    "layer.frag", "drawn.frag", "pyramid.frag", "copy.frag", "present.frag", "refract.frag"])
     src[name] = await text(`shaders/${name}`);
 
   const W = bundle.width, H = bundle.height, margin = bundle.margin;
@@ -115,42 +67,30 @@ async function main() {
     renderer.setRenderTarget(target, 0, level);
     renderer.render(object, camera);
   };
-  const clear = (target, depth) => {
+  const clear = (target, depth, color = true) => {
     renderer.setRenderTarget(target);
+    if (color) renderer.state.buffers.color.setMask(true);  // a colorWrite: false draw leaves the mask off
     renderer.state.buffers.depth.setClear(depth);
-    renderer.clear(true, true, false);
+    renderer.clear(color, true, false);
   };
   const fullscreen = new THREE.BufferGeometry();
   fullscreen.setAttribute("position", new THREE.Float32BufferAttribute([-1, -1, 0, 3, -1, 0, -1, 3, 0], 3));
-  const quad = (material) => {
-    const m = new THREE.Mesh(fullscreen, material);
+  const unculled = (geometry, material) => {
+    const m = new THREE.Mesh(geometry, material);
     m.frustumCulled = false;
     return m;
   };
-
-  // The object, as the lab's GL pass pulls it: positions with Wyman's d_N in w, normals, indices.
-  const positions = new THREE.InterleavedBuffer(new Float32Array(await bytes(`bundle/${bundle.mesh.positions}`)), 4);
-  const normals = new THREE.InterleavedBuffer(new Float32Array(await bytes(`bundle/${bundle.mesh.normals}`)), 4);
-  const indices = new Uint32Array(await bytes(`bundle/${bundle.mesh.triangles}`));
-  if (positions.count !== bundle.mesh.vertices || normals.count !== bundle.mesh.vertices ||
-      indices.length !== bundle.mesh.indices)
-    throw new Error("bundle: the mesh's files do not match bundle.json");
-  const object = new THREE.BufferGeometry();
-  object.setAttribute("position", new THREE.InterleavedBufferAttribute(positions, 3, 0));
-  object.setAttribute("dn", new THREE.InterleavedBufferAttribute(positions, 1, 3));
-  object.setAttribute("normal", new THREE.InterleavedBufferAttribute(normals, 3, 0));
-  object.setIndex(new THREE.BufferAttribute(indices, 1));
-  const objectMesh = (material) => {
-    const m = new THREE.Mesh(object, material);
-    m.frustumCulled = false;
-    return m;
-  };
-
-  // (1) The opaque scene.
-  const scene = layerTarget(BW, BH, 2);
-  setFilter(scene.textures[0], THREE.LinearFilter);  // colour: bilinear, no mips
+  const quad = (material) => unculled(fullscreen, material);
   const normalFilter = bundle.normalFilter === "linear" ? THREE.LinearFilter : THREE.NearestFilter;
-  setFilter(scene.textures[1], normalFilter);
+  const sceneTarget = () => {
+    const t = layerTarget(BW, BH, 2);
+    setFilter(t.textures[0], THREE.LinearFilter);  // colour: bilinear, no mips
+    setFilter(t.textures[1], normalFilter);
+    return t;
+  };
+  const pyramids = new Pyramids(BW, BH, src, bundle, draw, quad);
+
+  // The opaque scene: the environment, then the paintings (clipped nearer than clipNearerThan in a layer).
   const environment = await floatTexture(bundle.environment);
   const background = quad(rawMaterial(src["fullscreen.vert"], src["background.frag"], {
     environment: { value: environment },
@@ -160,6 +100,7 @@ async function main() {
     envZ: { value: vector(bundle.envZ) },
     viewport: { value: new THREE.Vector2(BW, BH) },
   }, { depthTest: false, depthWrite: false }));
+  const paintingClip = { value: 0 };
   const paintings = new THREE.Group();
   for (const p of bundle.paintings) {
     const c = p.corners.map(vector);
@@ -168,145 +109,176 @@ async function main() {
     g.setAttribute("uv", new THREE.Float32BufferAttribute([0, 0, 1, 0, 1, 1, 0, 1], 2));
     g.setIndex([0, 1, 2, 0, 2, 3]);
     const faceNormal = new THREE.Vector3().crossVectors(c[1].clone().sub(c[0]), c[3].clone().sub(c[0]));
-    const m = new THREE.Mesh(g, rawMaterial(src["painting.vert"], src["painting.frag"], {
+    paintings.add(unculled(g, rawMaterial(src["painting.vert"], src["painting.frag"], {
       painting: { value: await floatTexture(p) },
       viewFromWorld: { value: viewFromWorld },
       clipFromView: { value: bufferClipFromView },
       faceNormal: { value: faceNormal },
-    }, { side: THREE.DoubleSide, depthFunc: THREE.LessDepth }));
-    m.frustumCulled = false;
-    paintings.add(m);
+      clipNearerThan: paintingClip,
+    }, { side: THREE.DoubleSide, depthFunc: THREE.LessDepth })));
   }
+  const drawOpaque = (target, clipNearerThan) => {
+    paintingClip.value = clipNearerThan;
+    clear(target, 1);
+    draw(background, target);
+    draw(paintings, target);
+  };
+  // The opaque scene's depth alone (the paintings, colour untouched), as the lab copies it before each
+  // object's refraction pass.
+  const drawOpaqueDepth = (target) => {
+    paintingClip.value = 0;
+    for (const m of paintings.children) m.material.colorWrite = false;
+    clear(target, 1, false);
+    draw(paintings, target);
+    for (const m of paintings.children) m.material.colorWrite = true;
+  };
 
-  // (2) The object's back faces and front faces.
-  const back = layerTarget(BW, BH, 1);
-  const front = layerTarget(BW, BH, 1);
-  setFilter(back.textures[0], normalFilter);
-  setFilter(front.textures[0], normalFilter);
+  // The objects: each its mesh, constants, back and front faces and back-face pyramid; on the lab's buffers,
+  // the lab's instead of the page's (the pyramids the page's own, from the lab's depth).
   const layerUniforms = { viewFromWorld: { value: viewFromWorld }, clipFromView: { value: bufferClipFromView } };
-  const backFaces = objectMesh(rawMaterial(src["mesh.vert"], src["layer.frag"], layerUniforms,
-    { side: THREE.BackSide, depthFunc: THREE.GreaterDepth }));
-  const frontFaces = objectMesh(rawMaterial(src["mesh.vert"], src["layer.frag"], layerUniforms,
-    { side: THREE.FrontSide, depthFunc: THREE.LessDepth }));
-
-  // (3) The pyramids: levels halve (floor, at least 1) down to 1x1, as snell::gpu::DepthPyramid's.
-  const sizes = [[BW, BH]];
-  while (sizes.at(-1)[0] > 1 || sizes.at(-1)[1] > 1)
-    sizes.push([Math.max(1, sizes.at(-1)[0] >> 1), Math.max(1, sizes.at(-1)[1] >> 1)]);
-  const levelTargets = sizes.map(([w, h]) => floatTarget(w, h));
-  const pyramidTarget = () => {
-    const t = floatTarget(BW, BH, { minFilter: THREE.NearestMipmapNearestFilter });
-    t.texture.mipmaps = sizes.map(([width, height]) => ({ width, height }));  // three.js: a level per entry
-    return t;
-  };
-  const backPyramid = pyramidTarget(), scenePyramid = pyramidTarget();
-  const pyramidPass = quad(rawMaterial(src["fullscreen.vert"], src["pyramid.frag"], {
-    source: { value: null },
-    fromDepth: { value: 1 },
-    zNear: { value: bundle.zNear },
-    zFar: { value: bundle.zFar },
-    emptyDepth: { value: 0 },
-  }, { depthTest: false, depthWrite: false }));
-  const copyPass = quad(rawMaterial(src["fullscreen.vert"], src["copy.frag"], { source: { value: null } },
-    { depthTest: false, depthWrite: false }));
-  const buildPyramid = (depthTexture, emptyDepth, pyramid) => {
-    const u = pyramidPass.material.uniforms;
-    u.emptyDepth.value = emptyDepth;
-    for (let lod = 0; lod < sizes.length; ++lod) {
-      u.source.value = lod === 0 ? depthTexture : levelTargets[lod - 1].texture;
-      u.fromDepth.value = lod === 0 ? 1 : 0;
-      draw(pyramidPass, levelTargets[lod]);
-      copyPass.material.uniforms.source.value = levelTargets[lod].texture;
-      pyramid.viewport.set(0, 0, sizes[lod][0], sizes[lod][1]);
-      draw(copyPass, pyramid, lod);
+  const backMaterial = rawMaterial(src["mesh.vert"], src["layer.frag"], layerUniforms,
+    { side: THREE.BackSide, depthFunc: THREE.GreaterDepth });
+  const frontMaterial = rawMaterial(src["mesh.vert"], src["layer.frag"], layerUniforms,
+    { side: THREE.FrontSide, depthFunc: THREE.LessDepth });
+  const drawnUniforms = { ...layerUniforms, frame: { value: null }, clipNearerThan: { value: 0 } };
+  const drawnMaterial = rawMaterial(src["mesh.vert"], src["drawn.frag"], drawnUniforms,
+    { side: THREE.FrontSide, depthFunc: THREE.LessDepth });
+  const objects = [];
+  for (const [i, o] of bundle.objects.entries()) {
+    const geometry = await objectGeometry(o.mesh);
+    const object = {
+      constants: o,
+      geometry,
+      drawn: unculled(geometry, drawnMaterial),
+      clip: bundle.sceneLayer === "behind" ? o.objectNearDistance : 0,
+      backPyramid: pyramids.target(),
+    };
+    if (labBuffers) {
+      if (!o.labBuffers) throw new Error(`this bundle has no lab buffers of object ${i}: write it again with snell-lab --web-bundle`);
+      object.lab = await labObjectBuffers(o.labBuffers, normalFilter);
+      object.scenePyramid = pyramids.target();
+    } else {
+      object.back = layerTarget(BW, BH, 1);
+      object.front = layerTarget(BW, BH, 1);
+      setFilter(object.back.textures[0], normalFilter);
+      setFilter(object.front.textures[0], normalFilter);
     }
+    objects.push(object);
+  }
+  const order = bundle.drawOrder.map((o) => objects[o]);
+
+  // The frame so far (linear colour, the whole opaque scene's depth), and the scene layer an object reads.
+  const full = sceneTarget();
+  const frame = layerTarget(BW, BH, 1);
+  const layer = sceneTarget();
+  const scenePyramid = pyramids.target();
+  // On the lab's buffers the frame starts from the lab's opaque colour: the object pixels no pass shades
+  // (silhouettes) then show the lab's texels, not the other rasterizer's.
+  if (labBuffers && !bundle.labOpaqueColor) throw new Error("this bundle has no lab buffers: write it again with snell-lab --web-bundle");
+  const opaqueColor = labBuffers ? await floatTexture(bundle.labOpaqueColor, THREE.NearestFilter) : full.texture;
+  const copyToFrame = quad(rawMaterial(src["fullscreen.vert"], src["copy.frag"], { source: { value: opaqueColor } },
+    { depthTest: false, depthWrite: false }));
+  drawnUniforms.frame.value = frame.texture;
+  // An object's scene layer (page's own buffers): the opaque scene behind its nearest point, then the front
+  // faces of the objects drawn before it with the frame's colour, under the same clip plane; its pyramid.
+  const drawLayer = (object, drawnBefore) => {
+    drawOpaque(layer, object.clip);
+    drawnUniforms.clipNearerThan.value = object.clip;
+    for (const d of drawnBefore) draw(d.drawn, layer);
+    pyramids.build(layer.depthTexture, 1, scenePyramid);
   };
+  // What an object's pass reads.
+  const buffersOf = (object) => object.lab ? { ...object.lab, scenePyramid: object.scenePyramid } : {
+    sceneColor: layer.textures[0], sceneNormal: layer.textures[1], sceneDepth: layer.depthTexture, scenePyramid,
+    backNormal: object.back.textures[0], backDepth: object.back.depthTexture,
+    frontLayerNormal: object.front.textures[0], frontLayerDepth: object.front.depthTexture,
+  };
+  // The first object's layer holds no other object: it does not change from frame to frame.
+  const layersChange = order.length > 1;
 
   const t0 = performance.now();
-  clear(scene, 1);
-  draw(background, scene);
-  draw(paintings, scene);
-  clear(back, 0);
-  draw(backFaces, back);
-  clear(front, 1);
-  draw(frontFaces, front);
-  // The buffers the technique reads: the page's own, or the lab's (their depth in x of a float texture).
-  let buffers = {
-    sceneColor: scene.textures[0], sceneNormal: scene.textures[1], sceneDepth: scene.depthTexture,
-    backNormal: back.textures[0], backDepth: back.depthTexture,
-    frontLayerNormal: front.textures[0], frontLayerDepth: front.depthTexture,
-  };
-  if (labBuffers) {
-    const lab = bundle.labBuffers;
-    if (!lab) throw new Error("this bundle has no lab buffers: write it again with snell-lab --web-bundle");
-    buffers = {
-      sceneColor: await floatTexture(lab.sceneColor),
-      sceneNormal: await floatTexture(lab.sceneNormal, normalFilter),
-      sceneDepth: await floatTexture(lab.sceneDepth, THREE.NearestFilter),
-      backNormal: await floatTexture(lab.backNormal, normalFilter),
-      backDepth: await floatTexture(lab.backDepth, THREE.NearestFilter),
-      frontLayerNormal: await floatTexture(lab.frontLayerNormal, normalFilter),
-      frontLayerDepth: await floatTexture(lab.frontLayerDepth, THREE.NearestFilter),
-      frontPositions: await floatTexture(lab.frontPosition, THREE.NearestFilter),
-      frontNormals: await floatTexture(lab.frontNormal, THREE.NearestFilter),
-    };
+  drawOpaque(full, 0);
+  for (const object of objects) {
+    if (object.lab) {
+      pyramids.build(object.lab.backDepth, 0, object.backPyramid);
+      pyramids.build(object.lab.sceneDepth, 1, object.scenePyramid);
+      continue;
+    }
+    clear(object.back, 0);
+    draw(unculled(object.geometry, backMaterial), object.back);
+    clear(object.front, 1);
+    draw(unculled(object.geometry, frontMaterial), object.front);
+    pyramids.build(object.back.depthTexture, 0, object.backPyramid);
   }
-  buildPyramid(buffers.backDepth, 0, backPyramid);
-  buildPyramid(buffers.sceneDepth, 1, scenePyramid);
+  if (!labBuffers && !layersChange) drawLayer(order[0], []);
   finish(renderer);
   const staticMs = performance.now() - t0;
 
-  // (4) The frame: the scene's colour, then the object through the technique's program.
   const present = quad(rawMaterial(src["fullscreen.vert"], src["present.frag"], {
-    sceneColor: { value: buffers.sceneColor },
+    frame: { value: frame.texture },
     margin: { value: margin },
   }, { depthTest: false, depthWrite: false }));
+  const u = (value) => ({ value });
   const techniqueUniforms = {
-    viewFromWorld: { value: viewFromWorld },
-    clipFromView: { value: matrix(bundle.clipFromView) },
-    backDepth: { value: buffers.backDepth },
-    backNormal: { value: buffers.backNormal },
-    backPyramid: { value: backPyramid.texture },
-    frontLayerDepth: { value: buffers.frontLayerDepth },
-    frontLayerNormal: { value: buffers.frontLayerNormal },
-    sceneDepth: { value: buffers.sceneDepth },
-    sceneNormal: { value: buffers.sceneNormal },
-    scenePyramid: { value: scenePyramid.texture },
-    sceneColor: { value: buffers.sceneColor },
-    frontPositions: { value: buffers.frontPositions ?? null },
-    frontNormals: { value: buffers.frontNormals ?? null },
-    environment: { value: environment },
-    bufferClipFromView: { value: bufferClipFromView },
-    zNear: { value: bundle.zNear },
-    zFar: { value: bundle.zFar },
-    ior: { value: bundle.ior },
-    absorption: { value: vector(bundle.absorption) },
-    envX: { value: vector(bundle.envX) },
-    envY: { value: vector(bundle.envY) },
-    envZ: { value: vector(bundle.envZ) },
-    backRange: { value: bundle.backRange },
-    depthFilter: { value: bundle.depthFilter },
-    reflectSource: { value: bundle.reflectSource },
+    viewFromWorld: u(viewFromWorld), clipFromView: u(matrix(bundle.clipFromView)),
+    backDepth: u(null), backNormal: u(null), backPyramid: u(null),
+    frontLayerDepth: u(null), frontLayerNormal: u(null),
+    sceneDepth: u(null), sceneNormal: u(null), scenePyramid: u(null), sceneColor: u(null),
+    frontPositions: u(null), frontNormals: u(null), margin: u(margin),
+    environment: u(environment), bufferClipFromView: u(bufferClipFromView),
+    zNear: u(bundle.zNear), zFar: u(bundle.zFar),
+    envX: u(vector(bundle.envX)), envY: u(vector(bundle.envY)), envZ: u(vector(bundle.envZ)),
+    depthFilter: u(bundle.depthFilter), reflectSource: u(bundle.reflectSource),
+    ior: u(0), absorption: u(new THREE.Vector3()), backRange: u(0), insideScene: u(0),
   };
-  // One program per technique, with only the strategies its slots call (the bundle lists them as the lab
-  // computes them with snellStrategiesUsed) and the perspective-only depth path (the lab's camera is one).
-  // On the lab's buffers: a full-screen pass over the lab's front-face inputs instead of the mesh.
+  const setObjectUniforms = (object) => {
+    const b = buffersOf(object);
+    for (const name of ["backDepth", "backNormal", "frontLayerDepth", "frontLayerNormal", "sceneDepth", "sceneNormal",
+      "scenePyramid", "sceneColor"]) techniqueUniforms[name].value = b[name];
+    techniqueUniforms.backPyramid.value = object.backPyramid.texture;
+    techniqueUniforms.frontPositions.value = b.frontPositions ?? null;
+    techniqueUniforms.frontNormals.value = b.frontNormals ?? null;
+    const c = object.constants;
+    techniqueUniforms.ior.value = c.ior;
+    techniqueUniforms.absorption.value = vector(c.absorption);
+    techniqueUniforms.backRange.value = c.backRange;
+    techniqueUniforms.insideScene.value = c.insideScene;
+  };
+  // One program per technique, with only the strategies its slots call on any object (the bundle lists them
+  // as the lab computes them with snellStrategiesUsed) and the perspective-only depth path (the lab's camera
+  // is one); per object a mesh of it. On the lab's buffers: a full-screen pass over the lab's front-face
+  // inputs instead of the mesh.
   const programs = new Map();
-  const techniqueMesh = (t) => {
+  const techniquePasses = (t) => {
     if (!programs.has(t.name)) {
       const defines = { PAGE_TECHNIQUE: t.id, SNELL_INTERSECT_STRATEGIES: t.strategies, SNELL_PERSPECTIVE_ONLY: 1 };
-      programs.set(t.name, labBuffers
-        ? quad(rawMaterial(src["fullscreen.vert"], src["refract.frag"], techniqueUniforms,
-          { depthTest: false, depthWrite: false, defines: { ...defines, PAGE_FRONT_FROM_TEXTURES: 1 } }))
-        : objectMesh(rawMaterial(src["mesh.vert"], src["refract.frag"], techniqueUniforms,
-          { side: THREE.FrontSide, depthFunc: THREE.LessDepth, defines })));
+      const material = labBuffers
+        ? rawMaterial(src["fullscreen.vert"], src["refract.frag"], techniqueUniforms,
+          { depthTest: false, depthWrite: false, defines: { ...defines, PAGE_FRONT_FROM_TEXTURES: 1 } })
+        : rawMaterial(src["mesh.vert"], src["refract.frag"], techniqueUniforms,
+          { side: THREE.FrontSide, depthFunc: THREE.LessDepth, defines });
+      programs.set(t.name, new Map(objects.map((o) => [o, labBuffers ? quad(material) : unculled(o.geometry, material)])));
     }
     return programs.get(t.name);
   };
+  // The lab's refraction pass draws the viewport (clipFromView) into a target of its own; here it is the
+  // frame's viewport part, so a pixel lands where the lab composites it.
+  const drawTechnique = (pass) => {
+    frame.viewport.set(margin, margin, W, H);
+    pass.material.uniformsNeedUpdate = true;
+    draw(pass, frame);
+    frame.viewport.set(0, 0, BW, BH);
+  };
   const renderFrame = (t) => {
-    clear(null, 1);
+    const passes = techniquePasses(t);
+    draw(copyToFrame, frame);
+    for (const [position, object] of order.entries()) {
+      if (!labBuffers && layersChange) drawLayer(object, order.slice(0, position));
+      if (!labBuffers) drawOpaqueDepth(frame);
+      setObjectUniforms(object);
+      drawTechnique(passes.get(object));
+    }
     draw(present, null);
-    draw(techniqueMesh(t), null);
     finish(renderer);
   };
 
@@ -319,8 +291,10 @@ async function main() {
     return t;
   };
   picker.value = technique(wanted).name;
-  document.getElementById("scene").textContent =
-    `${bundle.scene}, ${W}x${H}, ${labBuffers ? "on the lab's buffers" : "the page's own buffers"}`;
+  // With several objects the lab's scene layers hold the frame as one row drew it.
+  const labRowNote = labBuffers && objects.length > 1 ? ` (their scene layers as ${bundle.labBuffersRow} drew them)` : "";
+  document.getElementById("scene").textContent = `${bundle.scene}, ${W}x${H}, ${objects.length} ` +
+    `object${objects.length > 1 ? "s" : ""}, ${labBuffers ? "on the lab's buffers" + labRowNote : "the page's own buffers"}`;
 
   let current = technique(wanted);
   // The first draw compiles the program; the browser shows the status line first (two frames).
@@ -345,7 +319,8 @@ async function main() {
     await report("pixels", pixels);
     return;
   }
-  // The frame time: one frame (the scene's colour, the technique's pass), waited for, the median of the
+  // The frame time: one frame (the opaque scene's colour, per object its scene layer when there are several,
+  // and its refraction pass; the canvas pass), waited for, the median of the
   // last 31 frames of the technique picked.
   const times = [];
   let compiling = false;

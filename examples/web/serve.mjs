@@ -69,6 +69,8 @@ if (!Number.isInteger(port) || port < 0 || port > 65535) usage(`--port: not a po
 const files = new Map([
   ["/", [path.join(here, "index.html"), "text/html"]],
   ["/main.js", [path.join(here, "main.js"), "text/javascript"]],
+  ["/bundle.js", [path.join(here, "bundle.js"), "text/javascript"]],
+  ["/targets.js", [path.join(here, "targets.js"), "text/javascript"]],
   ["/three/three.module.js", [path.join(three, "three.module.js"), "text/javascript"]],
   ["/three/three.core.js", [path.join(three, "three.core.js"), "text/javascript"]],
   ["/snell/snell.glsl", [path.join(root, "single_file", "snell.glsl"), "text/plain"]],
@@ -176,6 +178,12 @@ server.listen(port, "127.0.0.1", () => {
     console.log(`serve.mjs: the page for ${bundleDir} at ${base}${q.size ? `?${q}` : ""} (Ctrl-C stops)`);
     return;
   }
+  // With several objects each scene layer in the bundle holds the frame as one row of the lab drew it: the
+  // page matches the lab's picture on those buffers with that row's technique only.
+  const bundle = JSON.parse(fs.readFileSync(path.join(bundleDir, "bundle.json"), "utf8"));
+  if (buffers === "lab" && (bundle.objects?.length ?? 0) > 1 && bundle.labBuffersRow !== technique)
+    return finish(1, `serve.mjs: the bundle's lab buffers hold the scene layers ${bundle.labBuffersRow} drew, not ` +
+      `${technique}'s: test ${bundle.labBuffersRow} on them, or write the bundle with -t ${technique}`);
   browser = launchChromium(`${base}?test=1&buffers=${buffers}&technique=${encodeURIComponent(technique)}`,
     { chromium, onFailure: (message) => finish(1, `serve.mjs: ${message}`) });
   setTimeout(() => finish(1, `serve.mjs: no picture from the page after ${timeoutMs / 1000} s (SNELL_BROWSER_TIMEOUT_MS)`),

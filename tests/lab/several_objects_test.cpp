@@ -16,6 +16,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -218,10 +221,10 @@ TEST(LabSeveralObjects, TheLayerHoldsTheObjectsDrawnBeforeAsTheFrameShowsThem) {
   EXPECT_GT(checked, 20);
 }
 
-// The three.js page renders one object: asked for a bundle of a scene with several, the lab says so
-// before any work instead of writing a bundle that drops objects.
-TEST(LabSeveralObjects, TheWebBundleRefusesSeveralObjects) {
-  labtest::TempDir dir;
+// The three.js page's bundle of a scene with several objects: every object's mesh and the lab's buffers it
+// read (from the row named in labBuffersRow: its scene layer holds the objects drawn before as that row drew
+// them), and the draw order (examples/web/README.md).
+LabOptions webBundleOptions(const std::string& dir) {
   LabOptions o;
   o.scenePath = labtest::scenesDir() + "/two_spheres.json";
   o.width = o.height = 64;
@@ -229,9 +232,31 @@ TEST(LabSeveralObjects, TheWebBundleRefusesSeveralObjects) {
   o.outDir = "";
   o.quiet = true;
   o.techniques = {"single"};
-  o.webBundleDir = dir.file("bundle");
+  o.webBundleDir = dir;
   o.dirs.labGlsl = SNELL_LAB_GLSL_DIR;
   o.dirs.snellGlsl = SNELL_GLSL_DIR;
+  return o;
+}
+
+TEST(LabSeveralObjects, TheWebBundleCarriesEveryObject) {
+  labtest::TempDir dir;
+  snell::lab::runLab(webBundleOptions(dir.file("bundle")));
+  for (const std::string object : {"object0_", "object1_"})
+    for (const std::string file : {"mesh_positions.f32", "lab_scene_color.f32", "lab_front_position.f32"})
+      EXPECT_TRUE(std::filesystem::exists(dir.file("bundle/" + object + file))) << object << file;
+  std::ifstream in(dir.file("bundle/bundle.json"));
+  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(json.find("\"drawOrder\""), std::string::npos);
+  EXPECT_NE(json.find("\"labBuffersRow\": \"single\""), std::string::npos);
+  EXPECT_EQ(json.find("object2_"), std::string::npos);
+}
+
+// The page draws the behind and full scene layers: asked for a bundle with the peeled one, the lab says so
+// before any work instead of writing a bundle the page draws differently.
+TEST(LabSeveralObjects, TheWebBundleRefusesThePeeledLayer) {
+  labtest::TempDir dir;
+  LabOptions o = webBundleOptions(dir.file("bundle"));
+  o.sceneLayer = snell::lab::SceneLayer::Peeled;
   const std::string message = labtest::errorOf([&] { snell::lab::runLab(o); }, snell::lab::ErrorKind::Render);
-  EXPECT_NE(message.find("renders one refractive object; two_spheres has 2"), std::string::npos) << message;
+  EXPECT_NE(message.find("not the peeled one"), std::string::npos) << message;
 }

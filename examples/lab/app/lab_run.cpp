@@ -210,11 +210,15 @@ std::vector<ObjectPass> renderObjects(GpuLab& gpu, std::size_t index, const LabR
 }
 
 // Stage 4: one row on the GPU, the same in C++, compared; its image (the objects composited over the scene)
-// for the pictures.
+// for the pictures. `keepFront`: each object's front pass (draw order), as `keep` its buffers.
 TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const LabRowSpec& spec, float engineParameter,
                           const FrameSetup& setup, const SceneFrame& sceneFrame, const References& refs, int threads,
-                          Image& image, Image& finalFrame, std::vector<StaticBuffers>* keep) {
+                          Image& image, Image& finalFrame, std::vector<StaticBuffers>* keep,
+                          std::vector<TechniqueBuffers>* keepFront = nullptr) {
   const std::vector<ObjectPass> passes = renderObjects(gpu, index, spec, setup, sceneFrame, finalFrame, keep);
+  if (keepFront)
+    for (const ObjectPass& pass : passes)
+      if (!pass.backSide) keepFront->push_back(pass.tb);
   TechniqueRow row;
   row.name = spec.name();
   row.label = spec.label();
@@ -403,10 +407,10 @@ LabResult runLab(const LabOptions& options) {
   std::vector<LabRowSpec> techniques = selectTechniques(options);
 
   Scene scene = loadScene(options.scenePath);
-  if (!options.webBundleDir.empty() && scene.objects.size() > 1)
-    throw Error(ErrorKind::Render, "--web-bundle: the three.js page renders one refractive object; " +
-                                       (scene.name.empty() ? fs::path(options.scenePath).stem().string() : scene.name) +
-                                       " has " + std::to_string(scene.objects.size()));
+  // Before the ray trace: what the page cannot draw should not cost one.
+  if (!options.webBundleDir.empty() && options.sceneLayer == SceneLayer::Peeled)
+    throw Error(ErrorKind::Render, "--web-bundle: the three.js page draws the behind and full scene layers, not "
+                                   "the peeled one (--scene-layer peeled)");
   if (scene.objects.size() < 2 && options.techniques.empty())
     techniques.erase(std::remove_if(techniques.begin(), techniques.end(), [](const LabRowSpec& t) { return t.multiObject(); }),
                      techniques.end());
@@ -470,6 +474,18 @@ LabResult runLab(const LabOptions& options) {
   std::size_t boundIndex = techniques.size();
   for (std::size_t i = 0; i < techniques.size(); ++i)
     if (techniques[i].reference() && techniques[i].bounces() == 0) boundIndex = i;
+  // The web page's lab buffers: with several objects each scene layer holds the frame as one row drew it, so
+  // they come from one row: the page's default technique, else the first of the table's that ran, else the bound.
+  WebBundleLabBuffers webBuffers;
+  std::size_t webIndex = techniques.size();
+  if (!options.webBundleDir.empty()) {
+    for (std::size_t i = 0; i < techniques.size() && webIndex == techniques.size(); ++i)
+      if (techniques[i].name() == "plane-normal-2") webIndex = i;
+    for (std::size_t i = 0; i < techniques.size() && webIndex == techniques.size(); ++i)
+      if (techniques[i].technique && !techniques[i].reference()) webIndex = i;
+    if (webIndex == techniques.size()) webIndex = boundIndex;
+    if (webIndex < techniques.size()) webBuffers.row = techniques[webIndex].name();
+  }
   for (std::size_t i = 0; i < techniques.size(); ++i) {
     EngineSweep sweep;
     if (techniques[i].engine) {
@@ -477,7 +493,11 @@ LabResult runLab(const LabOptions& options) {
       gpu.setEngineParameter(i, sweep.best);
     }
     TechniqueRow row = runTechnique(gpu, i, techniques[i], sweep.best, setup, frame, refs, options.threads, images[i],
-                                    finalFrames[i], i == boundIndex ? &boundBuffers : nullptr);
+                                    finalFrames[i], i == boundIndex ? &boundBuffers
+                                                    : i == webIndex ? &webBuffers.objects
+                                                                    : nullptr,
+                                    i == webIndex ? &webBuffers.fronts : nullptr);
+    if (i == webIndex && i == boundIndex) webBuffers.objects = boundBuffers;
     row.engineSweep = sweep.tried;
     row.engineParameter = sweep.best;
     result.rows.push_back(std::move(row));
@@ -494,10 +514,8 @@ LabResult runLab(const LabOptions& options) {
   if (!options.webBundleDir.empty()) {
     std::vector<WebBundleImage> ran;
     for (std::size_t i = 0; i < techniques.size(); ++i) ran.push_back({techniques[i], &images[i]});
-    // The front pass's fragment inputs are the same for every row: the last timed draw left them in pass 4's
-    // buffers, so no draw is needed.
-    writeWebBundle(options.webBundleDir, result.scene, frame, dN.front(), setup.k.front(), ran, refs.full.mask,
-                   gpu.readStatic(0), gpu.readTechnique());
+    writeWebBundle(options.webBundleDir, result.scene, frame, dN, setup.k, setup.order, ran, refs.full.mask,
+                   webBuffers);
   }
   result.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

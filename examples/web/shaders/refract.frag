@@ -1,15 +1,16 @@
-// snell's two-interface refraction on the object's front faces, one technique of the table per program:
+// snell's two-interface refraction on one object's front faces, one technique of the table per program:
 // PAGE_TECHNIQUE (a SNELL_TECHNIQUE_* id) and SNELL_INTERSECT_STRATEGIES (only the strategies its slots
-// call: most of the compile time) are defined by the page before this text. Configured as snell-lab
-// configures its rows (examples/glsl/lab_technique.glsl: labTechnique, labMaterial, labView), so the page
-// and the lab render the same pixels; the page's test compares them. With PAGE_FRONT_FROM_TEXTURES the
-// front faces' inputs come from textures (the lab's own front pass, drawn as a full-screen pass) instead
-// of the rasterized mesh.
+// call on any object: most of the compile time) are defined by the page before this text; the object's
+// buffers and constants are uniforms, set before each object's draw. Configured as snell-lab configures
+// its rows (examples/glsl/lab_technique.glsl: labTechnique, labMaterial, labView), so the page and the lab
+// render the same pixels; the page's test compares them. With PAGE_FRONT_FROM_TEXTURES the front faces'
+// inputs come from textures (the lab's own front pass, drawn as a full-screen pass) instead of the
+// rasterized mesh. The colour is linear: the frame holds it until the canvas pass encodes it, because the
+// next object's scene layer reads it.
 precision highp float;
 precision highp int;
 precision highp sampler2D;
 #include <snell>
-#include <srgb_encode>
 
 // The object's back faces (depth, normal, min/max pyramid) and front layer, then the opaque scene (depth,
 // normal, pyramid, colour) and the environment: the names SNELL_OBJECT_BUFFER_ARGS and
@@ -36,10 +37,12 @@ uniform vec3 envZ;
 uniform float backRange;  // the marches' range in the back-face and inside slots: the object's diagonal
 uniform int depthFilter;  // SNELL_DEPTH_FILTER_*: how every slot reads both depth buffers
 uniform int reflectSource;  // SNELL_SOURCE_*: what the first surface reflects
+uniform int insideScene;    // 1: the scene reaches inside the object (a painting or another object)
 
 #ifdef PAGE_FRONT_FROM_TEXTURES
 uniform sampler2D frontPositions;  // xyz view-space position, w Wyman's d_N
 uniform sampler2D frontNormals;    // xyz interpolated normal, w 1 where the object covers the pixel
+uniform int margin;  // the pass draws the frame's viewport, `margin` texels into the guard-banded target
 #else
 in vec3 vsPosition;
 in vec3 vsNormal;
@@ -49,7 +52,7 @@ out vec4 color;
 
 void main() {
 #ifdef PAGE_FRONT_FROM_TEXTURES
-  ivec2 px = ivec2(gl_FragCoord.xy);
+  ivec2 px = ivec2(gl_FragCoord.xy) - ivec2(margin, margin);
   vec4 frontNormal = texelFetch(frontNormals, px, 0);
   if (frontNormal.w <= 0.0) discard;
   vec4 frontPosition = texelFetch(frontPositions, px, 0);
@@ -80,6 +83,7 @@ void main() {
   t.exit.fallback = SNELL_FALLBACK_ENVIRONMENT;  // ... and takes the environment where it finds none
   t.reflect = t.exit;
   t.reflect.source = reflectSource;
+  t.insideScene = insideScene != 0;
 
   SnellMaterial m = snellMaterial();
   m.tirPolicy = SNELL_TIR_CRITICAL;
@@ -96,5 +100,5 @@ void main() {
 
   SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(position, normal, dN, SNELL_OBJECT_BUFFER_ARGS,
                                                           SNELL_SCENE_BUFFER_ARGS, t, m, v);
-  color = vec4(pageEncodeSrgb(r.color), 1.0);
+  color = vec4(r.color, 1.0);
 }
