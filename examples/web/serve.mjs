@@ -90,12 +90,29 @@ function finish(status, message) {
   browser.close().then(() => process.exit(status));
 }
 
+// Only a test's reports keep a request body, and none longer than the largest one the page posts (its
+// canvas's pixels, RGBA8; an error message is shorter): any web page open in the same browser can post to
+// a loopback port, and a body kept whole would hold its memory until the server exits.
+const bundleSize = JSON.parse(fs.readFileSync(path.join(bundleDir, "bundle.json"), "utf8"));
+const maxReportBytes = Math.max(1 << 20, 4 * (bundleSize.width | 0) * (bundleSize.height | 0));
 const reports = {};
 const server = http.createServer((req, res) => {
+  const url = req.url.split("?")[0];
+  const reporting = test && req.method === "POST" && url.startsWith("/report/");
   const body = [];
-  req.on("data", (d) => body.push(d));
+  let bodyBytes = 0;
+  req.on("data", (d) => {
+    if (!reporting) return;  // read and dropped
+    bodyBytes += d.length;
+    if (bodyBytes > maxReportBytes) {
+      res.writeHead(413, { connection: "close" }).end();
+      req.destroy();
+      body.length = 0;
+      return;
+    }
+    body.push(d);
+  });
   req.on("end", () => {
-    const url = req.url.split("?")[0];
     if (req.method === "GET" && files.has(url)) {
       const [file, type] = files.get(url);
       let data;
@@ -107,7 +124,7 @@ const server = http.createServer((req, res) => {
         return;
       }
       res.writeHead(200, { "content-type": type }).end(data);
-    } else if (test && req.method === "POST" && url.startsWith("/report/")) {
+    } else if (reporting) {
       const what = url.slice("/report/".length);
       res.end();
       reports[what] = Buffer.concat(body);
