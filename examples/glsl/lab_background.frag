@@ -12,6 +12,7 @@ layout(location = 3) uniform vec3 envZ;
 layout(location = 4) uniform vec2 viewport;
 layout(location = 0) out vec4 color;
 layout(location = 1) out vec4 normal;
+layout(location = 2) out vec4 surface;  // 0: the environment (the lab's leak count)
 
 void main() {
   vec2 ndc = 2.0f * gl_FragCoord.xy / viewport - 1.0f;
@@ -20,4 +21,5 @@ void main() {
   vec3 w = d.x * envX + d.y * envY + d.z * envZ;
   color = vec4(snellSampleEquirect(environment, w, 0.0f).xyz, 1.0f);
   normal = vec4(0.0f);
+  surface = vec4(0.0f);
 }

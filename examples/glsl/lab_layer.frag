@@ -10,8 +10,11 @@ layout(location = 2) in float vsDn;
 layout(binding = 0) uniform sampler2D composite;
 layout(binding = 1) uniform sampler2D backDepth;
 layout(location = 7) uniform int peel;
+// Which surface this is, for the lab's leak count only (no technique reads it): -(o + 1) for object o.
+layout(location = 8) uniform float surfaceId;
 layout(location = 0) out vec4 color;
 layout(location = 1) out vec4 normal;
+layout(location = 2) out vec4 surface;
 
 void main() {
   if (peel != 0) {
@@ -20,4 +23,5 @@ void main() {
   }
   color = vec4(texelFetch(composite, ivec2(gl_FragCoord.xy), 0).xyz, 1.0f);
   normal = vec4(normalize(vsNormal), 1.0f);
+  surface = vec4(surfaceId, 0.0f, 0.0f, 0.0f);
 }

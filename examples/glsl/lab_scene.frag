@@ -8,8 +8,11 @@ layout(location = 1) in vec3 vsNormal;
 layout(binding = 0) uniform sampler2D painting;
 layout(binding = 1) uniform sampler2D backDepth;
 layout(location = 7) uniform int peel;
+// Which surface this is, for the lab's leak count only (no technique reads it): k + 1 for painting k.
+layout(location = 8) uniform float surfaceId;
 layout(location = 0) out vec4 color;
 layout(location = 1) out vec4 normal;
+layout(location = 2) out vec4 surface;
 
 void main() {
   if (peel != 0) {
@@ -18,4 +21,5 @@ void main() {
   }
   color = vec4(textureLod(painting, uv, 0.0f).xyz, 1.0f);
   normal = vec4(normalize(vsNormal), 1.0f);
+  surface = vec4(surfaceId, 0.0f, 0.0f, 0.0f);
 }

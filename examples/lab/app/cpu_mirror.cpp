@@ -21,6 +21,8 @@ CpuBuffers cpuBuffers(const StaticBuffers& b, const ShadeConstants& k, const Sce
   c.fullDepth = Texture2D(b.fullDepth);
   c.fullNormal = Texture2D(b.fullNormal, normalFilter);
   c.fullColor = Texture2D(b.fullColor, Filter::Linear);
+  c.sceneSurface = b.sceneSurface;
+  c.fullSurface = b.fullSurface;
   c.fullPyramid =
       snellBuildDepthPyramid(c.fullDepth, snellDepthSurface(k.params.clipFromView, k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 1.0f));
   c.backPyramid =
@@ -39,8 +41,9 @@ void shadeOnCpu(const CpuShader& shade, const TechniqueBuffers& tb, int threads,
       const vec4 p = tb.position.at(x, y);
       const SnellTwoInterfaceResult r = shade(vec3(p), vec3(n), p.w);
       color.at(x, y) = vec4(r.color, 1.0f);
-      stats.at(x, y) = vec4(r.fellBack ? 1.0f : 0.0f, static_cast<float>(r.fetches),
-                            shade.leaks(vec3(p), r) ? 1.0f : 0.0f, 0.0f);
+      float surface = 0.0f;
+      const bool leaked = shade.leaks(vec3(p), r, &surface);
+      stats.at(x, y) = vec4(r.fellBack ? 1.0f : 0.0f, static_cast<float>(r.fetches), leaked ? 1.0f : 0.0f, surface);
     }
   });
 }
@@ -68,7 +71,10 @@ CpuGpuTally compareCpuGpu(const CpuShader& shade, const TechniqueBuffers& tb, co
       tally.exitMiss += s.w < 0.5f;
       tally.fetches += static_cast<double>(s.y);
       tally.fetchDiff += s.y != cpuStats.at(x, y).y;
-      tally.leaks += cpuStats.at(x, y).z > 0.5f;
+      if (cpuStats.at(x, y).z > 0.5f) {
+        ++tally.leaks;
+        ++tally.leakSurfaces[static_cast<int>(cpuStats.at(x, y).w)];
+      }
     }
   return tally;
 }
@@ -88,6 +94,7 @@ CpuGpuTally& CpuGpuTally::operator+=(const CpuGpuTally& o) {
   exitMiss += o.exitMiss;
   fetchDiff += o.fetchDiff;
   leaks += o.leaks;
+  for (const auto& [surface, count] : o.leakSurfaces) leakSurfaces[surface] += count;
   fetches += o.fetches;
   return *this;
 }
@@ -101,6 +108,8 @@ void CpuGpuTally::into(TechniqueRow& row) const {
   row.fetchesPerPixel = fetches / n;
   row.fetchMismatch = static_cast<double>(fetchDiff) / n;
   row.leakPixels = static_cast<int>(leaks);
+  row.leakSurfaces.clear();
+  for (const auto& [surface, count] : leakSurfaces) row.leakSurfaces.emplace_back(surface, static_cast<int>(count));
 }
 
 void CpuGpuTally::agreementInto(TechniqueRow& row) const {

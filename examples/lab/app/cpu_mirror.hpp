@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <map>
 #include <thread>
 #include <vector>
 
@@ -28,6 +29,7 @@ struct CpuBuffers {
   Texture2D frontDepth, frontNormal;
   Texture2D sceneDepth, sceneNormal, scenePyramid, sceneColor;  // the layer snell's rows read
   Texture2D fullDepth, fullNormal, fullPyramid, fullColor;      // the whole opaque scene (engine rows)
+  Image sceneSurface, fullSurface;  // which surface each texel shows (StaticBuffers), for the leak count
   Texture2D environment;
 };
 
@@ -68,10 +70,12 @@ struct CpuShader {
   // A foreground leak: the transmitted colour of the pixel whose front face is at p1 comes from an opaque
   // surface nearer the camera than that front face (the surface at the exit hit's texel of the depth
   // buffer the row read). Counted where the exit ray heads away from the camera: a path that leaves
-  // through the front faces after bouncing inside may rightly see what stands in front.
-  bool leaks(vec3 p1, const SnellTwoInterfaceResult& r) const {
+  // through the front faces after bouncing inside may rightly see what stands in front. `surface`: which
+  // surface leaked (StaticBuffers::sceneSurface's ids: k + 1 painting k, -(o + 1) object o).
+  bool leaks(vec3 p1, const SnellTwoInterfaceResult& r, float* surface = nullptr) const {
     if (!r.exitHit.valid || !(r.exitDirection.z <= 0.0f)) return false;
     const Image& depth = (readsFullScene() ? cb.fullDepth : cb.sceneDepth).level(0);
+    const Image& ids = readsFullScene() ? cb.fullSurface : cb.sceneSurface;
     const vec2 uv = glm::clamp(r.exitHit.uv, vec2(0.0f), vec2(1.0f));
     const int x = std::min(depth.width - 1, static_cast<int>(uv.x * static_cast<float>(depth.width)));
     const int y = std::min(depth.height - 1, static_cast<int>(uv.y * static_cast<float>(depth.height)));
@@ -80,7 +84,9 @@ struct CpuShader {
     // Window depth to view distance in double (GL convention: d = (f (z - n)) / (z (f - n)) for distance z).
     const double n = static_cast<double>(params.zNear), f = static_cast<double>(params.zFar);
     const double distance = n * f / (f - d * (f - n));
-    return distance < -static_cast<double>(p1.z);
+    if (!(distance < -static_cast<double>(p1.z))) return false;
+    if (surface && ids.width == depth.width && ids.height == depth.height) *surface = ids.at(x, y).x;
+    return true;
   }
 
   // Is a CPU/GPU difference at (x, y) a rounding tie (a texel or TIR boundary that the two builds'
@@ -124,6 +130,7 @@ void shadeOnCpu(const CpuShader& shade, const TechniqueBuffers& tb, int threads,
 struct CpuGpuTally {
   std::size_t pixels = 0, within1 = 0, beyond4 = 0, ties = 0;
   std::size_t invalid = 0, backMiss = 0, exitMiss = 0, fetchDiff = 0, leaks = 0;
+  std::map<int, std::size_t> leakSurfaces;  // leaked pixels per surface id (StaticBuffers::sceneSurface)
   double fetches = 0.0;
   double maxAbs = 0.0;
   int worstX = -1, worstY = -1;  // the pixel of maxAbs

@@ -282,8 +282,8 @@ struct GpuLab::Impl {
         layer(gpu::Program::graphics(gl, flatten(dirs.labGlsl / "lab_mesh.vert", dirs),
                                      flatten(dirs.labGlsl / "lab_layer.frag", dirs))),
         pyramidPass(gl, dirs.snellGlsl),
-        sceneFb(gl, bufferWidth, bufferHeight, 2, true),
-        fullFb(gl, bufferWidth, bufferHeight, 2, true),
+        sceneFb(gl, bufferWidth, bufferHeight, 3, true),
+        fullFb(gl, bufferWidth, bufferHeight, 3, true),
         passFb(gl, width, height, 4, true),
         scenePyramid(gl, bufferWidth, bufferHeight),
         fullPyramid(gl, bufferWidth, bufferHeight),
@@ -408,6 +408,7 @@ struct GpuLab::Impl {
     for (std::size_t i = 0; i < paintingTextures.size(); ++i) {
       paintingTextures[i].bind(0);
       for (int c = 0; c < 4; ++c) scene.set("corners[" + std::to_string(c) + "]", paintingCorners[i][static_cast<std::size_t>(c)]);
+      scene.set("surfaceId", static_cast<float>(i + 1));
       gl.DrawArrays(GL_TRIANGLES, 0, 6);
     }
     gl.Disable(GL_CLIP_DISTANCE0);
@@ -477,6 +478,7 @@ struct GpuLab::Impl {
       for (std::size_t d : drawn) {
         if (d == object) throw gpu::Error("snell-lab: object " + std::to_string(object) + " cannot lie behind itself");
         objects.at(d)->bindMesh();
+        layer.set("surfaceId", -static_cast<float>(d + 1));
         gl.DrawArrays(GL_TRIANGLES, 0, objects.at(d)->vertexCount);
       }
       gl.Disable(GL_CLIP_DISTANCE0);
@@ -559,9 +561,11 @@ StaticBuffers GpuLab::readStatic(std::size_t object) const {
   b.sceneColor = impl_->sceneFb.readColor(0);
   b.sceneNormal = impl_->sceneFb.readColor(1);
   b.sceneDepth = impl_->sceneFb.readDepth();
+  b.sceneSurface = impl_->sceneFb.readColor(2);
   b.fullColor = impl_->fullFb.readColor(0);
   b.fullNormal = impl_->fullFb.readColor(1);
   b.fullDepth = impl_->fullFb.readDepth();
+  b.fullSurface = impl_->fullFb.readColor(2);
   b.backNormal = o.backFb.readColor(0);
   b.backDepth = o.backFb.readDepth();
   b.frontNormal = o.frontFb.readColor(0);

@@ -44,6 +44,10 @@ struct StaticBuffers {
   // The whole opaque scene: what the picture shows around the object, what the object is depth-tested
   // against, and what the engine rows read (their opaque colour copy).
   Image fullColor, fullDepth, fullNormal;
+  // Which surface each texel of the scene layer and of the whole opaque scene shows, in .x: 0 the environment,
+  // k + 1 painting k, -(o + 1) object o (drawn before). The lab's leak count names what leaked with it; no
+  // technique reads it, and the memory report leaves it out.
+  Image sceneSurface, fullSurface;
   Image backDepth, backNormal;                // depth in .x (0 = empty)
   Image frontDepth, frontNormal;              // the object's front faces: depth in .x (1 = empty)
 };

@@ -66,6 +66,8 @@ struct TechniqueRow {
   // Covered pixels whose transmitted colour comes from an opaque surface nearer the camera than the pixel's
   // front face (a foreground leaked into the refraction; CpuShader::leaks in cpu_mirror.hpp).
   int leakPixels = 0;
+  // ... by the surface they come from (StaticBuffers::sceneSurface's ids: k + 1 painting k, -(o + 1) object o).
+  std::vector<std::pair<int, int>> leakSurfaces;
   // Covered pixels where the ray tracer sees something else first (an opaque object in front of the glass),
   // as a share of the object pixels: the glass drawn over what hides it (silhouette rasterization adds a few).
   double overdrawnShare = 0.0;

@@ -16,6 +16,26 @@ namespace snell::lab {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// A surface of the lab's surface ids (StaticBuffers::sceneSurface): k + 1 painting k, -(o + 1) object o.
+std::string surfaceName(int id) {
+  return id > 0 ? "painting " + std::to_string(id - 1) : id < 0 ? "object " + std::to_string(-id - 1) : "environment";
+}
+
+// The leaks column: the count and, where there are any, the surfaces they come from.
+std::string leaksText(const TechniqueRow& t) {
+  std::string s = std::to_string(t.leakPixels);
+  if (t.leakSurfaces.empty()) return s;
+  std::string from;
+  for (const auto& [surface, pixels] : t.leakSurfaces)
+    from += (from.empty() ? "" : ", ") + surfaceName(surface) +
+            (t.leakSurfaces.size() > 1 ? ": " + std::to_string(pixels) : std::string());
+  return s + " (" + from + ")";
+}
+
+}  // namespace
+
 // Several objects: each as the lab drew it (back to front), and what each row's passes cost per object.
 std::string objectsTable(const LabResult& r) {
   if (r.objects.size() < 2) return "";
@@ -52,7 +72,7 @@ std::string markdownTable(const LabResult& r) {
     s += "| " + t.label + " | " + fmt("%.3g", t.mseFull) + " | " + fmt("%.3g", t.mseFullTir) + " | " +
          fmt("%.3g", t.mseTwo) + " | " +
          fmt("%.2fx", t.boundRatio) + " | " + fmt("%.3g", t.mseBound) + " | " + fmt("%.2f %%", 100.0 * t.unshadedShare) +
-         " | " + fmt("%.2f %%", 100.0 * t.invalidShare) + " | " + std::to_string(t.leakPixels) + " | " +
+         " | " + fmt("%.2f %%", 100.0 * t.invalidShare) + " | " + leaksText(t) + " | " +
          fmt("%.1f", t.fetchesPerPixel) + " | " +
          fmt("%.2fx", t.costRatio) + " | " + fmt("%.2f", t.medianMs) + " | " + fmt("%.1f/255", 255.0 * t.cpuGpuMaxAbs) +
          " | " + fmt("%.3f %%", 100.0 * t.cpuGpuBeyond1) + " | " + std::to_string(t.cpuGpuBeyond4Pixels) + " (" +
@@ -132,7 +152,8 @@ std::string markdownTable(const LabResult& r) {
        std::string(r.sceneLayer == SceneLayer::Behind   ? "the scene layer behind the object's nearest point"
                    : r.sceneLayer == SceneLayer::Peeled ? "the scene layer behind the object's back faces"
                                                         : "the whole opaque scene") +
-       ", the engines' the whole scene, as their colour copy holds it)." +
+       ", the engines' the whole scene, as their colour copy holds it; in brackets, the surfaces they come from: a "
+       "painting or an object drawn before, numbered in the scene file's order)." +
        std::string(r.insideScene ? " An opaque surface reaches inside the object: snell's rows also search the scene "
                                    "along the refracted ray and stop on it where it is nearer than the back faces "
                                    "(SnellTechnique.insideScene)."
@@ -286,6 +307,11 @@ void writeJson(const fs::path& path, const LabResult& r) {
                     {"leak_pixels", t.leakPixels},
                     {"overdrawn_share", t.overdrawnShare},
                     {"cpu_gpu_worst_pixel", {t.worstX, t.worstY}}});
+    if (!t.leakSurfaces.empty()) {
+      nlohmann::json surfaces = nlohmann::json::object();
+      for (const auto& [surface, pixels] : t.leakSurfaces) surfaces[surfaceName(surface)] = pixels;
+      rows.back()["leak_surfaces"] = surfaces;
+    }
     if (t.mseComposited >= 0.0) rows.back()["mse_vs_composited"] = t.mseComposited;
     if (!t.objectMs.empty()) {
       rows.back()["time_ms_per_object"] = t.objectMs;
