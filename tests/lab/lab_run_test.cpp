@@ -50,10 +50,10 @@ TEST(LabRun, SphereSceneEndToEnd) {
                 t.name.c_str(), t.mseFull, t.mseTwo, t.invalidShare, t.fetchesPerPixel, t.costRatio,
                 255.0 * t.cpuGpuMaxAbs, 100.0 * t.cpuGpuBeyond1);
     EXPECT_TRUE(std::isfinite(t.mseFull));
-    EXPECT_GE(t.mseFull, 0.0);
-    EXPECT_LE(t.mseFull, 0.25);
-    EXPECT_GE(t.invalidShare, 0.0);
-    EXPECT_LE(t.invalidShare, 1.0);
+    // Against the full and the two-interface references over the same pixels, a row's RMS errors differ by at
+    // most the references' own RMS difference (the triangle inequality): a row scored on another image, mask or
+    // reference breaks it.
+    EXPECT_LE(std::abs(std::sqrt(t.mseFull) - std::sqrt(t.mseTwo)), std::sqrt(r.mseTwoVsFull) + 1e-9);
     EXPECT_GE(t.fetchesPerPixel, 1.0);
     EXPECT_GT(t.medianMs, 0.0);
     EXPECT_GT(t.costRatio, 0.0);

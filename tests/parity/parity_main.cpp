@@ -166,10 +166,16 @@ TEST(ParityWebGpuChromium, SampleLodMipmaps) { runWebGpuInChromium("SNELL_SAMPLE
 TEST(ParityWebGpuChromium, IntersectPlaneNormal) { runWebGpuInChromium("snellIntersectPlaneNormal"); }
 TEST(ParityWebGpuChromium, TwoInterfaceTrace) { runWebGpuInChromium("snellTwoInterfaceTrace"); }
 
-// The functions main() registered a run of, per runtime suite.
-std::map<std::string, std::set<std::string>>& registeredRuns() {
-  static std::map<std::string, std::set<std::string>> runs;
-  return runs;
+// The tests gtest holds, per suite, read back from gtest itself (filtered-out ones included): what it can run,
+// whatever main()'s loop meant to register.
+std::map<std::string, std::multiset<std::string>> gtestRegistry() {
+  std::map<std::string, std::multiset<std::string>> tests;
+  const ::testing::UnitTest& unit = *::testing::UnitTest::GetInstance();
+  for (int i = 0; i < unit.total_test_suite_count(); ++i) {
+    const ::testing::TestSuite* suite = unit.GetTestSuite(i);
+    for (int j = 0; j < suite->total_test_count(); ++j) tests[suite->name()].insert(suite->GetTestInfo(j)->name());
+  }
+  return tests;
 }
 
 // Cases of the prelude's texture hook macros (SNELL_SAMPLE_LOD, ...) rather than
@@ -247,13 +253,22 @@ TEST(ParityManifest, EveryPublicGlslFunctionHasAnHlslEntryAndRun) {
   }
 }
 
-// Every case runs on every runtime.
+// Every case runs on every runtime, once: each runtime's suite in gtest's registry holds exactly one test per
+// case, named after it.
 TEST(ParityManifest, EveryCaseRunsOnEveryRuntime) {
   ASSERT_GE(parityRuntimes().size(), 3u);
-  for (const auto& runtime : parityRuntimes())
-    for (const CaseSpec& c : registry())
-      EXPECT_TRUE(registeredRuns()[runtime->suite()].count(c.function))
-          << "parity case " << c.function << " has no run on " << runtime->suite();
+  std::multiset<std::string> cases;
+  for (const CaseSpec& c : registry()) cases.insert(c.function);
+  const std::map<std::string, std::multiset<std::string>> tests = gtestRegistry();
+  for (const auto& runtime : parityRuntimes()) {
+    const auto suite = tests.find(runtime->suite());
+    ASSERT_NE(suite, tests.end()) << "gtest has no suite " << runtime->suite();
+    for (const std::string& name : cases)
+      EXPECT_EQ(suite->second.count(name), 1u) << "parity case " << name << " runs "
+                                               << suite->second.count(name) << " times on " << runtime->suite();
+    for (const std::string& name : suite->second)
+      EXPECT_TRUE(cases.count(name)) << runtime->suite() << "." << name << " is no parity case";
+  }
 }
 
 // The layout check itself: each wrong description is reported (and nothing is
@@ -311,7 +326,6 @@ int main(int argc, char** argv) {
       const snell_parity::ParityRuntime* r = runtime.get();
       ::testing::RegisterTest(r->suite().c_str(), spec.function.c_str(), nullptr, nullptr, __FILE__, __LINE__,
                               [&spec, r]() -> ::testing::Test* { return new snell_parity::ParityTest(&spec, r); });
-      snell_parity::registeredRuns()[r->suite()].insert(spec.function);
     }
   const int result = RUN_ALL_TESTS();
   snell_parity::releaseParityRuntimes();

@@ -147,12 +147,16 @@ struct Tally {
   // chunks' order does not matter): equal digests before and after a change
   // that must not change any result is the proof that it did not.
   std::uint64_t digest = 0;
+  // The indices checked, summed: with the count, shows each of #0 .. #n - 1 was checked once (a chunk skipped,
+  // run twice or overlapping its neighbour changes one or the other).
+  std::uint64_t indexSum = 0;
   std::map<int, std::uint64_t> byOutput;  // output float index -> violations
   std::string first;
 
   // Checks input #index against the contract; returns its violating outputs.
   std::uint16_t add(const CaseSpec& spec, std::uint64_t index, const ParityIO& in, const ParityIO& out) {
     ++inputs;
+    indexSum += index;
     digest += outputDigest(index, out);
     bool ex = false;
     const std::uint16_t bad = contractViolations(spec, in, out, &ex);
@@ -167,6 +171,7 @@ struct Tally {
   }
   void merge(const Tally& o) {
     inputs += o.inputs;
+    indexSum += o.indexSum;
     digest += o.digest;
     violations += o.violations;
     exempt += o.exempt;
