@@ -382,6 +382,18 @@ struct GpuLab::Impl {
   // (1) The opaque scene: environment background (depth untouched), then the paintings, those nearer than
   // `clipNearerThan` (a view distance; 0: none) clipped away; with `peelBy`, what is not behind that
   // object's back faces is discarded.
+  // A scene-layer draw's clip plane (only what lies beyond `clipNearerThan`, a view distance; 0: all) and peel
+  // (only what lies behind `peelBy`'s back faces), for `program`: lab_scene.frag and lab_layer.frag take the
+  // same uniforms and read the back-face depth on unit 1. The caller disables GL_CLIP_DISTANCE0 after its draws.
+  void clipAndPeel(const gpu::Program& program, float clipNearerThan, const ObjectPasses* peelBy) {
+    program.set("clipNearerThan", clipNearerThan);
+    program.set("peel", peelBy ? 1 : 0);
+    gl.ActiveTexture(GL_TEXTURE1);
+    gl.BindTexture(GL_TEXTURE_2D, peelBy ? peelBy->backFb.depthTexture() : 0);
+    gl.ActiveTexture(GL_TEXTURE0);
+    if (clipNearerThan > 0.0f) gl.Enable(GL_CLIP_DISTANCE0);
+  }
+
   void drawScene(const gpu::Framebuffer& fb, float clipNearerThan, const ObjectPasses* peelBy = nullptr) {
     fb.clearColor(0, vec4(0.0f));
     fb.clearColor(1, vec4(0.0f));
@@ -397,14 +409,7 @@ struct GpuLab::Impl {
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthFunc(GL_LESS);
     scene.use();
-    scene.set("clipNearerThan", clipNearerThan);
-    scene.set("peel", peelBy ? 1 : 0);
-    if (peelBy) {
-      gl.ActiveTexture(GL_TEXTURE1);
-      gl.BindTexture(GL_TEXTURE_2D, peelBy->backFb.depthTexture());
-      gl.ActiveTexture(GL_TEXTURE0);
-    }
-    if (clipNearerThan > 0.0f) gl.Enable(GL_CLIP_DISTANCE0);
+    clipAndPeel(scene, clipNearerThan, peelBy);
     for (std::size_t i = 0; i < paintingTextures.size(); ++i) {
       paintingTextures[i].bind(0);
       for (int c = 0; c < 4; ++c) scene.set("corners[" + std::to_string(c) + "]", paintingCorners[i][static_cast<std::size_t>(c)]);
@@ -468,13 +473,8 @@ struct GpuLab::Impl {
       gl.Enable(GL_CULL_FACE);
       gl.CullFace(GL_BACK);
       layer.use();
-      layer.set("clipNearerThan", clip);
-      layer.set("peel", peel ? 1 : 0);
       composite->bind(0);
-      gl.ActiveTexture(GL_TEXTURE1);
-      gl.BindTexture(GL_TEXTURE_2D, peel ? peel->backFb.depthTexture() : 0);
-      gl.ActiveTexture(GL_TEXTURE0);
-      if (clip > 0.0f) gl.Enable(GL_CLIP_DISTANCE0);
+      clipAndPeel(layer, clip, peel);
       for (std::size_t d : drawn) {
         if (d == object) throw gpu::Error("snell-lab: object " + std::to_string(object) + " cannot lie behind itself");
         objects.at(d)->bindMesh();
