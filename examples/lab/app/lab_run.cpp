@@ -140,18 +140,19 @@ void drawOverNearer(Image& frame, std::vector<float>& nearest, const TechniqueBu
 }
 
 // Three.js's WebGPU order over `passes` (every object's back side, then every front side, each in draw
-// order): `shade(pass, copy)` gives the pass's colour from the colour copy it reads (the opaque scene for
-// the back sides, the frame holding them for the front sides); returns the composite.
-template <class Shade>
-Image compositeBackSidesFirst(std::vector<ObjectPass>& passes, const FrameSetup& setup, Shade&& shade) {
+// order): `readCopy(copy)` before each half sets the colour copy its passes read (nullptr: the opaque scene,
+// for the back sides; then the frame holding them, for the front sides), and `shade(pass)` gives a pass's
+// colour from it; returns the composite.
+template <class ReadCopy, class Shade>
+Image compositeBackSidesFirst(std::vector<ObjectPass>& passes, const FrameSetup& setup, ReadCopy&& readCopy,
+                              Shade&& shade) {
   Image frame = setup.fullColor;
   std::vector<float> nearest(frame.texels.size(), std::numeric_limits<float>::infinity());
-  const Image* copy = &setup.fullColor;
   Image backSides;
   for (bool back : {true, false}) {
-    if (!back) copy = &(backSides = frame);
+    readCopy(back ? nullptr : &(backSides = frame));
     for (ObjectPass& pass : passes)
-      if (pass.backSide == back) drawOverNearer(frame, nearest, shade(pass, *copy), setup.margin);
+      if (pass.backSide == back) drawOverNearer(frame, nearest, shade(pass), setup.margin);
   }
   return frame;
 }
@@ -173,10 +174,14 @@ std::vector<ObjectPass> renderObjects(GpuLab& gpu, std::size_t index, const LabR
   if (row.backSidesFirst) {
     for (bool back : {true, false})
       for (std::size_t o : setup.order) passes.push_back(ObjectPass{o, {}, {}, back});
-    frame = compositeBackSidesFirst(passes, setup, [&](ObjectPass& pass, const Image& copy) -> const TechniqueBuffers& {
+    const Image* copy = nullptr;
+    const auto readCopy = [&](const Image* c) {
+      copy = c;
+      gpu.setColorCopy(c);
+    };
+    frame = compositeBackSidesFirst(passes, setup, readCopy, [&](ObjectPass& pass) -> const TechniqueBuffers& {
       StaticBuffers sb = gpu.readStatic(pass.object);
-      sb.fullColor = copy;  // what the C++ side shades from, as the GPU reads it
-      gpu.setColorCopy(&copy);
+      if (copy) sb.fullColor = *copy;  // what the C++ side shades from, as the GPU reads it
       gpu.renderTechnique(index, pass.object, pass.backSide);
       pass.cb = cpuBuffers(sb, setup.k[pass.object], sceneFrame);
       pass.tb = gpu.readTechnique();
@@ -286,8 +291,10 @@ EngineSweep sweepEngineRow(GpuLab& gpu, std::size_t index, const LabRowSpec& spe
     if (spec.backSidesFirst) {
       Image color(W, H), stats(W, H);
       TechniqueBuffers shaded;
-      const Image f = compositeBackSidesFirst(passes, setup, [&](ObjectPass& pass, const Image& copy) -> const TechniqueBuffers& {
-        pass.cb.fullColor = Texture2D(copy, Filter::Linear);
+      Texture2D copy;
+      const auto readCopy = [&](const Image* c) { copy = Texture2D(c ? *c : setup.fullColor, Filter::Linear); };
+      const Image f = compositeBackSidesFirst(passes, setup, readCopy, [&](ObjectPass& pass) -> const TechniqueBuffers& {
+        pass.cb.fullColor = copy;
         shadeOnCpu(CpuShader{spec, value, pass.cb, setup.k[pass.object].params, setup.margin}, pass.tb, threads, color,
                    stats);
         shaded = pass.tb;
