@@ -4,7 +4,7 @@
 #include "lab_run.hpp"
 #include "technique.hpp"
 
-#include "lab_test_util.hpp"
+#include "lab_run_util.hpp"
 
 #include <gtest/gtest.h>
 
@@ -26,15 +26,9 @@ using snell::lab::LabResult;
 using snell::lab::TechniqueRow;
 
 LabOptions options64(const std::string& out) {
-  LabOptions o;
-  o.scenePath = labtest::scenesDir() + "/sphere_painting.json";
-  o.width = 64;
-  o.height = 64;
+  LabOptions o = labtest::labRunOptions("sphere_painting", 64);
   o.frames = 3;
   o.outDir = out;
-  o.quiet = true;
-  o.dirs.labGlsl = SNELL_LAB_GLSL_DIR;
-  o.dirs.snellGlsl = SNELL_GLSL_DIR;
   return o;
 }
 

@@ -6,7 +6,7 @@
 // (examples/scenes/paperweight.json: the refracted rays stop on it).
 #include "lab_run.hpp"
 
-#include "lab_test_util.hpp"
+#include "lab_run_util.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,18 +22,10 @@ using snell::lab::SceneLayer;
 using snell::lab::TechniqueRow;
 
 LabResult runScene(const std::string& scene, SceneLayer layer, int insideScene = -1) {
-  LabOptions o;
-  o.scenePath = labtest::scenesDir() + "/" + scene + ".json";
+  LabOptions o = labtest::labRunOptions(scene, 128);
   o.insideScene = insideScene;
-  o.width = 128;
-  o.height = 128;
-  o.frames = 1;
-  o.outDir = "";
-  o.quiet = true;
   o.sceneLayer = layer;
   o.techniques = {"single", "plane-normal-2", "dir", "linear-march", "plane-normal-2-bounces", "engine-threejs"};
-  o.dirs.labGlsl = SNELL_LAB_GLSL_DIR;
-  o.dirs.snellGlsl = SNELL_GLSL_DIR;
   return snell::lab::runLab(o);
 }
 

@@ -8,7 +8,7 @@
 
 #include "lab/scene.hpp"
 
-#include "lab_test_util.hpp"
+#include "lab_run_util.hpp"
 
 #include <snell/snell.hpp>
 
@@ -31,16 +31,8 @@ using snell::lab::ObjectReport;
 using snell::lab::TechniqueRow;
 
 LabResult runScene(const std::string& scene, const std::vector<std::string>& techniques) {
-  LabOptions o;
-  o.scenePath = labtest::scenesDir() + "/" + scene + ".json";
-  o.width = 128;
-  o.height = 128;
-  o.frames = 1;
-  o.outDir = "";
-  o.quiet = true;
+  LabOptions o = labtest::labRunOptions(scene, 128);
   o.techniques = techniques;
-  o.dirs.labGlsl = SNELL_LAB_GLSL_DIR;
-  o.dirs.snellGlsl = SNELL_GLSL_DIR;
   return snell::lab::runLab(o);
 }
 
@@ -225,16 +217,9 @@ TEST(LabSeveralObjects, TheLayerHoldsTheObjectsDrawnBeforeAsTheFrameShowsThem) {
 // read (from the row named in labBuffersRow: its scene layer holds the objects drawn before as that row drew
 // them), and the draw order (examples/web/README.md).
 LabOptions webBundleOptions(const std::string& dir) {
-  LabOptions o;
-  o.scenePath = labtest::scenesDir() + "/two_spheres.json";
-  o.width = o.height = 64;
-  o.frames = 1;
-  o.outDir = "";
-  o.quiet = true;
+  LabOptions o = labtest::labRunOptions("two_spheres", 64);
   o.techniques = {"single"};
   o.webBundleDir = dir;
-  o.dirs.labGlsl = SNELL_LAB_GLSL_DIR;
-  o.dirs.snellGlsl = SNELL_GLSL_DIR;
   return o;
 }
 
