@@ -2,7 +2,8 @@
 # Installs what snell's build, tests and examples need on Debian 12, if missing.
 # Run as root (or with sudo). Debian packages with apt-get, the WebGPU
 # runtime's npm packages (Deno, naga, dawn.node) from tools/webgpu's committed
-# lockfile and three.js from examples/web's; nothing is downloaded otherwise.
+# lockfile, three.js from examples/web's and the glTF tools from tools/gltf's;
+# nothing is downloaded otherwise.
 set -euo pipefail
 packages=(
   cmake g++ make pkg-config
@@ -11,7 +12,7 @@ packages=(
   glslang-tools spirv-tools spirv-cross  # offline GLSL/HLSL compilation checks
   libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev  # Mesa llvmpipe, no GPU needed
   libvulkan-dev mesa-vulkan-drivers  # the Vulkan loader and lavapipe (Vulkan on the CPU): the Vulkan parity runs
-  libembree-dev nlohmann-json3-dev libtinyobjloader-dev libstb-dev libcli11-dev  # the lab
+  libembree-dev nlohmann-json3-dev libtinyobjloader-dev libtinygltf-dev libstb-dev libcli11-dev  # the lab
   libspng-dev libjpeg62-turbo-dev libopenexr-dev  # the lab's image decoders (PNG, JPEG, OpenEXR)
   clang-14 libclang-rt-14-dev valgrind  # libFuzzer targets (tests/fuzz), the GPU leak check
   apngasm                         # the gallery's animated PNGs (scripts/gallery.sh)
@@ -50,4 +51,11 @@ web="$(cd "$(dirname "$0")/.." && pwd)/examples/web"
 if [ ! -f "$web/node_modules/.package-lock.json" ] || [ "$web/package-lock.json" -nt "$web/node_modules/.package-lock.json" ]; then
   echo "snell: installing the web example's npm packages (examples/web: three.js)"
   npm ci --prefix "$web" --no-audit --no-fund --loglevel=error
+fi
+# The glTF tools (tools/gltf: the Khronos validator run on the bundled assets in the tests, and
+# glTF-Transform, which wrote them), pinned by tools/gltf/package-lock.json, the same way.
+gltf="$(cd "$(dirname "$0")/.." && pwd)/tools/gltf"
+if [ ! -f "$gltf/node_modules/.package-lock.json" ] || [ "$gltf/package-lock.json" -nt "$gltf/node_modules/.package-lock.json" ]; then
+  echo "snell: installing the glTF tools' npm packages (tools/gltf: gltf-validator, glTF-Transform)"
+  npm ci --prefix "$gltf" --no-audit --no-fund --loglevel=error
 fi

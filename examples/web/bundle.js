@@ -24,6 +24,9 @@ export async function loadBundle() {
   if (!Array.isArray(order) || order.length !== n || new Set(order).size !== n ||
       !order.every((o) => Number.isInteger(o) && o >= 0 && o < n))
     throw new Error(`bundle.json: drawOrder ${JSON.stringify(order)} is not an order of its ${n} objects`);
+  if (!Array.isArray(bundle.paintings) || !bundle.paintings.every((p) => p.mesh))
+    throw new Error("bundle.json's paintings have no meshes (a bundle of an older snell-lab?): write it again " +
+      "with snell-lab SCENE --web-bundle DIR");
   if (!["behind", "full"].includes(bundle.sceneLayer))
     throw new Error(`bundle.json: the page draws the behind and full scene layers, not ${bundle.sceneLayer}`);
   return bundle;
@@ -61,6 +64,23 @@ export async function objectGeometry(mesh) {
   g.setAttribute("position", new THREE.InterleavedBufferAttribute(positions, 3, 0));
   g.setAttribute("dn", new THREE.InterleavedBufferAttribute(positions, 1, 3));
   g.setAttribute("normal", new THREE.InterleavedBufferAttribute(normals, 3, 0));
+  g.setIndex(new THREE.BufferAttribute(indices, 1));
+  return g;
+}
+
+// A painting's mesh as the lab draws it: positions, normals (the side the normal buffer reports), uvs.
+export async function paintingGeometry(mesh) {
+  const positions = new THREE.InterleavedBuffer(new Float32Array(await bytes(`bundle/${mesh.positions}`)), 4);
+  const normals = new THREE.InterleavedBuffer(new Float32Array(await bytes(`bundle/${mesh.normals}`)), 4);
+  const uvs = new Float32Array(await bytes(`bundle/${mesh.uvs}`));
+  const indices = new Uint32Array(await bytes(`bundle/${mesh.triangles}`));
+  if (positions.count !== mesh.vertices || normals.count !== mesh.vertices || uvs.length !== 2 * mesh.vertices ||
+      indices.length !== mesh.indices)
+    throw new Error(`bundle: the files of painting mesh ${mesh.positions} do not match bundle.json`);
+  const g = new THREE.BufferGeometry();
+  g.setAttribute("position", new THREE.InterleavedBufferAttribute(positions, 3, 0));
+  g.setAttribute("normal", new THREE.InterleavedBufferAttribute(normals, 3, 0));
+  g.setAttribute("uv", new THREE.BufferAttribute(uvs, 2));
   g.setIndex(new THREE.BufferAttribute(indices, 1));
   return g;
 }

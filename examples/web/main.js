@@ -18,7 +18,7 @@
 // code apart from the two rasterizers; ?test=1 renders once and posts the canvas to serve.mjs.
 import * as THREE from "three";
 
-import { floatTexture, labObjectBuffers, loadBundle, matrix, objectGeometry, text, vector } from "./bundle.js";
+import { floatTexture, labObjectBuffers, loadBundle, matrix, objectGeometry, paintingGeometry, text, vector } from "./bundle.js";
 import { layerTarget, Pyramids, rawMaterial, setFilter } from "./targets.js";
 
 const query = new URLSearchParams(location.search);
@@ -103,17 +103,10 @@ async function main() {
   const paintingClip = { value: 0 };
   const paintings = new THREE.Group();
   for (const p of bundle.paintings) {
-    const c = p.corners.map(vector);
-    const g = new THREE.BufferGeometry();
-    g.setAttribute("position", new THREE.Float32BufferAttribute(p.corners.flat(), 3));
-    g.setAttribute("uv", new THREE.Float32BufferAttribute([0, 0, 1, 0, 1, 1, 0, 1], 2));
-    g.setIndex([0, 1, 2, 0, 2, 3]);
-    const faceNormal = new THREE.Vector3().crossVectors(c[1].clone().sub(c[0]), c[3].clone().sub(c[0]));
-    paintings.add(unculled(g, rawMaterial(src["painting.vert"], src["painting.frag"], {
+    paintings.add(unculled(await paintingGeometry(p.mesh), rawMaterial(src["painting.vert"], src["painting.frag"], {
       painting: { value: await floatTexture(p) },
       viewFromWorld: { value: viewFromWorld },
       clipFromView: { value: bufferClipFromView },
-      faceNormal: { value: faceNormal },
       clipNearerThan: paintingClip,
     }, { side: THREE.DoubleSide, depthFunc: THREE.LessDepth })));
   }

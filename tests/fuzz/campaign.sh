@@ -4,7 +4,7 @@
 #     bash tests/fuzz/campaign.sh                 # every target, the default times
 #     bash tests/fuzz/campaign.sh obj:90 image_png:5  # chosen targets, minutes each
 #
-# Default: include_flattener 30, scene 60, scene_render 30, obj 60, and 30 for
+# Default: include_flattener 30, scene 60, scene_render 30, obj 60, gltf 30, and 30 for
 # each image format (image_png, image_jpeg, image_exr, image_hdr)
 # (SNELL_CAMPAIGN_MINUTES=N sets every default time to N). Targets run one
 # after another, each on its own core in libFuzzer's fork mode, which goes on
@@ -29,7 +29,7 @@ default=${SNELL_CAMPAIGN_MINUTES:-}
 # shellcheck source=tests/fuzz/targets.sh
 source "$root/tests/fuzz/targets.sh"
 plan=("$@")
-[ ${#plan[@]} -gt 0 ] || plan=("include_flattener:${default:-30}" "scene:${default:-60}" "scene_render:${default:-30}" "obj:${default:-60}" "image_png:${default:-30}"
+[ ${#plan[@]} -gt 0 ] || plan=("include_flattener:${default:-30}" "scene:${default:-60}" "scene_render:${default:-30}" "obj:${default:-60}" "gltf:${default:-30}" "image_png:${default:-30}"
                              "image_jpeg:${default:-30}" "image_exr:${default:-30}" "image_hdr:${default:-30}")
 
 targets=()

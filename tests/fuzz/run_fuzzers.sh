@@ -32,7 +32,7 @@ common=(-std=c++17 -g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined -
         -I"$root/include" -I"$root/glsl" -I"$root/examples/lab/include" -I"$root/examples/lab/src")
 lab_sources=(camera environment file_util image_io image_decoders/exr_decoder image_decoders/jpeg_decoder
              image_decoders/png_decoder image_decoders/radiance_decoder json_lines json_reader mesh mesh_generators
-             obj_loader painting scene)
+             obj_loader painting scene gltf_loader)
 # shellcheck disable=SC2207
 image_libs=($(pkg-config --libs spng libjpeg) -lOpenEXRCore-3_1)
 common+=($(pkg-config --cflags-only-I OpenEXR | sed 's/-I/-isystem /g'))

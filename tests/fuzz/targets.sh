@@ -2,7 +2,7 @@
 # is built from (tests/fuzz/fuzz_<source>.cpp) and the seed corpus each starts
 # from (tests/fuzz/corpus/<corpus>/).
 # shellcheck shell=bash
-snell_fuzz_targets="include_flattener scene scene_render obj image_png image_jpeg image_exr image_hdr"
+snell_fuzz_targets="include_flattener scene scene_render obj gltf image_png image_jpeg image_exr image_hdr"
 # scene_render renders what the scene corpus loads; every other target has its own.
 corpus_of() { case $1 in scene_render) echo scene ;; *) echo "$1" ;; esac; }
 # The image_<format> targets are one source, fuzz_image.cpp, each fuzzed from its own format's corpus.

@@ -23,18 +23,26 @@ namespace snell::lab {
 namespace fs = std::filesystem;
 
 namespace {
-// Whether any painting reaches inside the object: a 9 x 9 grid of points over each (the techniques then
-// search the scene from the entry point too, SnellTechnique.insideScene).
+// Whether any painting reaches inside the object (the techniques then search the scene from the entry
+// point too, SnellTechnique.insideScene): on a quad, or any painting of two triangles, a grid of 1/8 steps
+// over each triangle (over a parallelogram, the 9 x 9 grid of its corners' bilinear blend); on a larger
+// mesh, up to 256 of its vertices spread over the list.
 bool paintingInsideMesh(const std::vector<Painting>& paintings, const Mesh& object) {
   for (const Painting& painting : paintings) {
-    const std::array<vec3, 4> c = painting.corners();
-    for (int i = 0; i <= 8; ++i)
-      for (int j = 0; j <= 8; ++j) {
-        const double u = i / 8.0, v = j / 8.0;
-        const glm::dvec3 bottom = glm::mix(glm::dvec3(c[0]), glm::dvec3(c[1]), u);
-        const glm::dvec3 top = glm::mix(glm::dvec3(c[3]), glm::dvec3(c[2]), u);
-        if (pointInsideMesh(object, glm::mix(bottom, top, v))) return true;
+    if (painting.triangleCount() <= 2) {
+      for (std::size_t t = 0; t < painting.triangleCount(); ++t) {
+        const glm::dvec3 a(painting.positions[painting.indices[3 * t]]);
+        const glm::dvec3 b(painting.positions[painting.indices[3 * t + 1]]);
+        const glm::dvec3 c(painting.positions[painting.indices[3 * t + 2]]);
+        for (int i = 0; i <= 8; ++i)
+          for (int j = 0; i + j <= 8; ++j)
+            if (pointInsideMesh(object, a + (i / 8.0) * (b - a) + (j / 8.0) * (c - a))) return true;
       }
+      continue;
+    }
+    const std::size_t n = painting.positions.size(), step = std::max<std::size_t>(1, n / 256);
+    for (std::size_t i = 0; i < n; i += step)
+      if (pointInsideMesh(object, glm::dvec3(painting.positions[i]))) return true;
   }
   return false;
 }
@@ -118,7 +126,7 @@ ShadeConstants shadeConstants(const SceneFrame& frame, std::size_t object, int m
     hi = glm::max(hi, b.hi);
   }
   for (const Painting& painting : frame.paintings)
-    for (const vec3& c : painting.corners()) {
+    for (const vec3& c : painting.positions) {
       lo = glm::min(lo, c);
       hi = glm::max(hi, c);
     }
@@ -235,6 +243,33 @@ struct ObjectPasses {
   }
 };
 
+// One painting on the GPU: its vertices pulled by gl_VertexID as the objects' are (lab_scene.vert).
+struct PaintingBuffers {
+  gpu::Texture texture;
+  gpu::StorageBuffer positions, normals, indices;  // positions' w holds the uv's u, normals' w its v
+  GLsizei vertexCount = 0;
+
+  PaintingBuffers(const gpu::GlApi& gl, const Painting& painting)
+      : texture(gl, painting.texture), positions(gl), normals(gl), indices(gl) {
+    std::vector<glm::vec4> p(painting.positions.size()), n(painting.positions.size());
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      p[i] = glm::vec4(painting.positions[i], painting.uvs[i].x);
+      n[i] = glm::vec4(painting.normals[i], painting.uvs[i].y);
+    }
+    positions.upload(p);
+    normals.upload(n);
+    indices.upload(painting.indices.data(), painting.indices.size() * sizeof(std::uint32_t));
+    vertexCount = static_cast<GLsizei>(painting.indices.size());
+  }
+
+  void bind() const {
+    texture.bind(0);
+    positions.bindBase(0);
+    normals.bindBase(1);
+    indices.bindBase(2);
+  }
+};
+
 // Bytes of a depth pyramid's RGBA32F levels.
 std::size_t pyramidBytes(const gpu::DepthPyramid& pyramid) {
   std::size_t bytes = 0;
@@ -251,8 +286,7 @@ struct GpuLab::Impl {
   int bufferWidth, bufferHeight;
   std::vector<LabShader> shaders;
   gpu::Texture environment;
-  std::vector<gpu::Texture> paintingTextures;
-  std::vector<std::array<vec3, 4>> paintingCorners;
+  std::vector<std::unique_ptr<PaintingBuffers>> paintings;
   gpu::Program background, scene, back, layer;
   gpu::DepthPyramidPass pyramidPass;
   std::vector<gpu::Program> refract;
@@ -303,10 +337,7 @@ struct GpuLab::Impl {
       o.frontFb.clearDepth(1.0f);
       pyramidPass.build(o.backPyramid, o.backFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 0.0f);
     }
-    for (const Painting& painting : frame.paintings) {
-      paintingTextures.emplace_back(gl, painting.texture);
-      paintingCorners.push_back(painting.corners());
-    }
+    for (const Painting& painting : frame.paintings) paintings.push_back(std::make_unique<PaintingBuffers>(gl, painting));
     // The scene colour is read with bilinear filtering (no mips) on both sides.
     for (GLuint colorTexture : {sceneFb.colorTexture(0), fullFb.colorTexture(0)}) {
       gl.BindTexture(GL_TEXTURE_2D, colorTexture);
@@ -410,11 +441,10 @@ struct GpuLab::Impl {
     gl.DepthFunc(GL_LESS);
     scene.use();
     clipAndPeel(scene, clipNearerThan, peelBy);
-    for (std::size_t i = 0; i < paintingTextures.size(); ++i) {
-      paintingTextures[i].bind(0);
-      for (int c = 0; c < 4; ++c) scene.set("corners[" + std::to_string(c) + "]", paintingCorners[i][static_cast<std::size_t>(c)]);
+    for (std::size_t i = 0; i < paintings.size(); ++i) {
+      paintings[i]->bind();
       scene.set("surfaceId", static_cast<float>(i + 1));
-      gl.DrawArrays(GL_TRIANGLES, 0, 6);
+      gl.DrawArrays(GL_TRIANGLES, 0, paintings[i]->vertexCount);
     }
     gl.Disable(GL_CLIP_DISTANCE0);
     gpu::checkGl(gl, "scene pass");

@@ -15,6 +15,7 @@
 #include <snell/wyman_dn.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -414,6 +415,7 @@ LabResult runLab(const LabOptions& options) {
   std::vector<LabRowSpec> techniques = selectTechniques(options);
 
   Scene scene = loadScene(options.scenePath);
+  for (const std::string& w : scene.warnings) std::fprintf(stderr, "snell-lab: warning: %s\n", w.c_str());
   // Before the ray trace: what the page cannot draw should not cost one.
   if (!options.webBundleDir.empty() && options.sceneLayer == SceneLayer::Peeled)
     throw Error(ErrorKind::Render, "--web-bundle: the three.js page draws the behind and full scene layers, not "

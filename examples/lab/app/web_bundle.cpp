@@ -73,6 +73,25 @@ nlohmann::json writeMesh(const fs::path& dir, const std::string& prefix, const M
           {"hasDn", !dN.empty()}};
 }
 
+// A painting's mesh: positions and normals (w 0), uvs, indices.
+nlohmann::json writePaintingMesh(const fs::path& dir, const std::string& prefix, const Painting& p) {
+  std::vector<glm::vec4> positions(p.positions.size()), normals(p.positions.size());
+  for (std::size_t i = 0; i < p.positions.size(); ++i) {
+    positions[i] = glm::vec4(p.positions[i], 0.0f);
+    normals[i] = glm::vec4(p.normals[i], 0.0f);
+  }
+  writeBytes(dir / (prefix + "positions.f32"), positions.data(), positions.size() * sizeof(glm::vec4));
+  writeBytes(dir / (prefix + "normals.f32"), normals.data(), normals.size() * sizeof(glm::vec4));
+  writeBytes(dir / (prefix + "uvs.f32"), p.uvs.data(), p.uvs.size() * sizeof(glm::vec2));
+  writeBytes(dir / (prefix + "indices.u32"), p.indices.data(), p.indices.size() * sizeof(std::uint32_t));
+  return {{"vertices", p.positions.size()},
+          {"indices", p.indices.size()},
+          {"positions", prefix + "positions.f32"},
+          {"normals", prefix + "normals.f32"},
+          {"uvs", prefix + "uvs.f32"},
+          {"triangles", prefix + "indices.u32"}};
+}
+
 // What one object read in the lab's row: its scene layer, back and front faces (depth as one channel), and its
 // front pass's fragment inputs.
 nlohmann::json writeLabBuffers(const fs::path& dir, const std::string& prefix, const StaticBuffers& b,
@@ -151,9 +170,9 @@ void writeWebBundle(const fs::path& dir, const std::string& sceneName, const Sce
   nlohmann::json paintings = nlohmann::json::array();
   for (std::size_t i = 0; i < frame.paintings.size(); ++i) {
     const Painting& painting = frame.paintings[i];
-    nlohmann::json pj = writeImage(dir, "painting_" + std::to_string(i) + ".f32", painting.texture.level(0));
-    pj["corners"] = nlohmann::json::array();
-    for (const vec3& c : painting.corners()) pj["corners"].push_back(vec(c));
+    const std::string prefix = "painting_" + std::to_string(i) + "_";
+    nlohmann::json pj = writeImage(dir, prefix + "texture.f32", painting.texture.level(0));
+    pj["mesh"] = writePaintingMesh(dir, prefix, painting);
     paintings.push_back(pj);
   }
   j["paintings"] = paintings;

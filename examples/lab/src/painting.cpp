@@ -59,18 +59,23 @@ Image makePatternTexture(int width, int height) {
   return img;
 }
 
-std::array<vec3, 4> Painting::corners() const {
-  return {center - halfU - halfV, center + halfU - halfV, center + halfU + halfV, center - halfU + halfV};
+glm::dvec2 Painting::uvAt(std::size_t t, double u, double v) const {
+  const glm::dvec2 a(uvs[indices[3 * t]]), b(uvs[indices[3 * t + 1]]), c(uvs[indices[3 * t + 2]]);
+  return (1.0 - u - v) * a + u * b + v * c;
 }
 
 Painting makePainting(vec3 center, vec2 size, vec3 rotateDegrees, Image texture) {
   Transform t;
   t.rotateDegrees = rotateDegrees;
   const mat3 r(t.matrix());
+  const vec3 halfU = r * vec3(0.5f * size.x, 0.0f, 0.0f);
+  const vec3 halfV = r * vec3(0.0f, 0.5f * size.y, 0.0f);
   Painting p;
-  p.center = center;
-  p.halfU = r * vec3(0.5f * size.x, 0.0f, 0.0f);
-  p.halfV = r * vec3(0.0f, 0.5f * size.y, 0.0f);
+  p.positions = {center - halfU - halfV, center + halfU - halfV, center + halfU + halfV, center - halfU + halfV};
+  const vec3 n = cross(p.positions[1] - p.positions[0], p.positions[3] - p.positions[0]);
+  p.normals = {n, n, n, n};
+  p.uvs = {vec2(0.0f, 0.0f), vec2(1.0f, 0.0f), vec2(1.0f, 1.0f), vec2(0.0f, 1.0f)};
+  p.indices = {0, 1, 2, 0, 2, 3};
   p.texture = Texture2D(std::move(texture), Filter::Linear, MipFilter::None);
   return p;
 }

@@ -4,6 +4,7 @@
 #include "json_reader.hpp"
 #include "lab/error.hpp"
 #include "lab/file_util.hpp"
+#include "lab/gltf_loader.hpp"
 #include "lab/image_io.hpp"
 #include "lab/obj_loader.hpp"
 
@@ -200,7 +201,7 @@ PaintingSpec readPainting(ObjectReader r, const std::string& sceneFile) {
   p.rotateDegrees = r.vector3("rotate", p.rotateDegrees);
   // The corners, center +- the rotated half size, are what the tracer and the
   // GL passes draw: each a finite float.
-  for (const vec3& corner : makePainting(p.center, p.size, p.rotateDegrees, Image(1, 1)).corners())
+  for (const vec3& corner : makePainting(p.center, p.size, p.rotateDegrees, Image(1, 1)).positions)
     if (!std::isfinite(corner.x) || !std::isfinite(corner.y) || !std::isfinite(corner.z))
       r.fail("size", "center +- size / 2 overflows a float (a corner of the painting is not finite)");
   if (r.has("texture")) p.texture = readTexture(r.object("texture"), sceneFile);
@@ -260,6 +261,34 @@ AnimationSpec readAnimation(ObjectReader r) {
 // How messages name a scene file ("" when the scene was parsed from text).
 std::string sceneWhere(const std::string& file) { return file.empty() ? std::string("<scene>") : file; }
 
+std::vector<Mesh> loadedMeshes(const Scene& s) {
+  std::vector<Mesh> meshes;
+  for (const RefractiveObject& o : s.objects)
+    if (o.mesh.loaded) meshes.push_back(*o.mesh.loaded);
+  return meshes;
+}
+
+std::vector<Painting> loadedPaintings(const Scene& s) {
+  std::vector<Painting> paintings;
+  for (const PaintingSpec& p : s.paintings)
+    if (p.loaded) paintings.push_back(*p.loaded);
+  return paintings;
+}
+
+Camera gltfFramingCamera(const Scene& s) { return framingCamera(loadedMeshes(s), loadedPaintings(s)); }
+
+// A glTF camera without zfar (infinite): twice the distance to the farthest vertex of the asset, kept within
+// the far / near ratio the depth buffer resolves.
+void completeFar(Camera& c, const Scene& s) {
+  if (c.zFar > 0.0f) return;
+  double farthest = 1.0;
+  for (const Mesh& m : loadedMeshes(s))
+    for (const vec3& v : m.positions) farthest = std::max(farthest, glm::length(glm::dvec3(v) - glm::dvec3(c.position)));
+  for (const Painting& p : loadedPaintings(s))
+    for (const vec3& v : p.positions) farthest = std::max(farthest, glm::length(glm::dvec3(v) - glm::dvec3(c.position)));
+  c.zFar = static_cast<float>(std::min(2.0 * farthest, 0.5 * kMaxFarOverNear * static_cast<double>(c.zNear)));
+}
+
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::string& file) {
@@ -289,6 +318,34 @@ Scene parseScene(const std::string& text, const std::string& file) {
   const std::string stem = file.empty() ? std::string("scene") : std::filesystem::path(file).stem().string();
   s.name = r.string("name", readableUtf8(stem));
   s.description = r.string("description", "");
+  if (r.has("gltf")) {
+    // A glTF asset brings the objects, its opaque meshes and (when it has one) the camera; the file adds an
+    // environment, paintings and a camera of its own.
+    if (r.has("object") || r.has("objects"))
+      throw Error(ErrorKind::Schema, where + ": a scene with \"gltf\" takes its objects from the asset; remove "
+                                             "\"object\"/\"objects\"");
+    const std::string asset = resolvePath(r.string("gltf", ""), file);
+    GltfScene g = loadGltf(asset);
+    s.gltf = asset;
+    s.objects = std::move(g.objects);
+    s.paintings = std::move(g.paintings);
+    s.warnings = std::move(g.warnings);
+    if (r.has("camera")) {
+      s.camera = readCamera(r.object("camera"));
+    } else if (g.hasCamera) {
+      s.camera = g.camera;
+    } else {
+      s.camera = gltfFramingCamera(s);
+    }
+    if (r.has("environment")) s.environment = readEnvironment(r.object("environment"), file);
+    for (ObjectReader& p : r.objectArray("opaque", kMaxPaintings)) s.paintings.push_back(readPainting(p, file));
+    if (s.paintings.size() > kMaxPaintings)
+      throw Error(ErrorKind::Schema, where + ": the asset and the file hold " + std::to_string(s.paintings.size()) +
+                                             " opaque surfaces; at most " + std::to_string(kMaxPaintings));
+    r.finish();
+    completeFar(s.camera, s);
+    return s;
+  }
   s.camera = readCamera(r.object("camera"));
   // One object or a list, not both: two ways of saying the same thing would let a file say both.
   if (r.has("object") && r.has("objects"))
@@ -313,7 +370,25 @@ Scene parseScene(const std::string& text, const std::string& file) {
   return s;
 }
 
-Scene loadScene(const std::string& path) { return parseScene(readTextFile(path, "scene"), path); }
+Scene loadScene(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".gltf" || ext == ".glb") {
+    GltfScene g = loadGltf(path);
+    Scene s;
+    s.file = path;
+    s.gltf = path;
+    s.name = readableUtf8(std::filesystem::path(path).stem().string());
+    s.description = "glTF asset " + readableUtf8(std::filesystem::path(path).filename().string());
+    s.objects = std::move(g.objects);
+    s.paintings = std::move(g.paintings);
+    s.warnings = std::move(g.warnings);
+    s.camera = g.hasCamera ? g.camera : gltfFramingCamera(s);
+    completeFar(s.camera, s);
+    return s;
+  }
+  return parseScene(readTextFile(path, "scene"), path);
+}
 
 namespace {
 
@@ -375,8 +450,9 @@ Mesh buildObjectMesh(const Scene& scene, std::size_t index, float time) {
     case MeshKind::Torus: mesh = makeTorus(m.majorRadius, m.minorRadius, m.majorSegments, m.minorSegments); break;
     case MeshKind::Blob: mesh = makeBlob(m.blob, time); break;
     case MeshKind::Box: mesh = makeBox(m.size); break;
+    case MeshKind::Loaded: mesh = *m.loaded; break;
   }
-  const std::string what = m.kind == MeshKind::Obj ? m.path : std::string("built-in mesh");
+  const std::string what = m.kind == MeshKind::Obj || m.kind == MeshKind::Loaded ? m.path : std::string("built-in mesh");
   // The untransformed mesh first, so that a transform that overflows is named
   // as such rather than as a bad mesh.
   const long badBefore = firstNonFiniteVertex(mesh);
@@ -411,6 +487,10 @@ Environment buildEnvironment(const Scene& scene) {
 std::vector<Painting> buildPaintings(const Scene& scene) {
   std::vector<Painting> out;
   for (const PaintingSpec& p : scene.paintings) {
+    if (p.loaded) {
+      out.push_back(*p.loaded);
+      continue;
+    }
     const TextureSpec& t = p.texture;
     Image tex;
     switch (t.kind) {

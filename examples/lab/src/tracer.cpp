@@ -127,6 +127,7 @@ struct ReferenceTracer::Impl {
   std::vector<int> objectOfGeom;  // full's geomID -> object index, -1 for the paintings
   std::uint32_t allObjects = 0;   // a bit per object
   std::vector<Painting> paintings;
+  std::vector<std::size_t> paintingFirstTriangle;
   Environment environment;
   double eps = 1e-5;
 
@@ -159,12 +160,14 @@ struct ReferenceTracer::Impl {
     return id;
   }
 
-  void paintingTriangles(std::vector<vec3>& positions, std::vector<std::uint32_t>& indices) const {
+  // Every painting's triangles in one mesh; paintingFirstTriangle[k] is painting k's first.
+  void paintingTriangles(std::vector<vec3>& positions, std::vector<std::uint32_t>& indices) {
+    paintingFirstTriangle.clear();
     for (const Painting& p : paintings) {
-      const auto c = p.corners();
+      paintingFirstTriangle.push_back(indices.size() / 3);
       const auto base = static_cast<std::uint32_t>(positions.size());
-      positions.insert(positions.end(), c.begin(), c.end());
-      indices.insert(indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+      positions.insert(positions.end(), p.positions.begin(), p.positions.end());
+      for (std::uint32_t i : p.indices) indices.push_back(base + i);
     }
   }
 
@@ -313,13 +316,11 @@ struct ReferenceTracer::Impl {
   }
 
   glm::dvec3 paintingColor(const Hit& h) const {
-    const Painting& p = paintings[h.prim / 2];
-    const auto uvs = Painting::cornerUvs();
-    const bool second = (h.prim % 2) == 1;
-    const vec2 a = uvs[0], b = second ? uvs[2] : uvs[1], c = second ? uvs[3] : uvs[2];
-    const double w = 1.0 - h.u - h.v;
-    const glm::dvec2 uv = w * glm::dvec2(a) + h.u * glm::dvec2(b) + h.v * glm::dvec2(c);
-    return toD(p.colorAt(vec2(uv)));
+    const std::size_t k = static_cast<std::size_t>(
+        std::upper_bound(paintingFirstTriangle.begin(), paintingFirstTriangle.end(), std::size_t{h.prim}) -
+        paintingFirstTriangle.begin() - 1);
+    const Painting& p = paintings[k];
+    return toD(p.colorAt(vec2(p.uvAt(h.prim - paintingFirstTriangle[k], h.u, h.v))));
   }
 
   glm::dvec3 env(const glm::dvec3& d) const { return toD(environment.lookup(vec3(d))); }

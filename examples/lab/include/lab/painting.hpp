@@ -1,13 +1,12 @@
-// Opaque "paintings": textured rectangles behind (or around) the refractive
-// object. Unlit: a painting shows its texture's linear colour. Both sides show
-// the texture. The tracer and the GL renderer sample the same texels
+// Opaque "paintings": textured surfaces behind, around or inside the refractive
+// objects. Unlit: a painting shows its texture's linear colour. The tracer and the GL renderer sample the same texels
 // (snell::Texture2D, GL_LINEAR, clamp-to-edge, no mipmaps).
 #pragma once
 #include "lab/mesh.hpp"
 
 #include <snell/bridge.hpp>
 
-#include <array>
+#include <cstdint>
 #include <vector>
 
 namespace snell::lab {
@@ -22,21 +21,27 @@ Image makeGradientTexture(int width, int height, const std::vector<vec3>& colors
 // errors show.
 Image makePatternTexture(int width, int height);
 
+// An opaque, unlit surface: indexed triangles with a uv and a normal per vertex
+// and a texture. A scene file's painting is a quad (makePainting); a glTF
+// asset's opaque mesh is any triangle mesh with its base colour baked into
+// the texture. Both sides show the texture.
 struct Painting {
-  vec3 center{0.0f};
-  vec3 halfU{1.0f, 0.0f, 0.0f};  // from the centre to the right edge (uv u = 1)
-  vec3 halfV{0.0f, 1.0f, 0.0f};  // from the centre to the top edge (uv v = 1)
+  std::vector<vec3> positions;         // world space
+  std::vector<vec3> normals;           // per vertex, the side the GL normal buffer reports (not unit for a quad)
+  std::vector<vec2> uvs;               // per vertex; v = 0 is the texture's bottom row
+  std::vector<std::uint32_t> indices;  // 3 per triangle
   Texture2D texture;
 
-  vec3 normal() const { return normalize(cross(halfU, halfV)); }  // the front side
-  // Corners in uv order (0,0), (1,0), (1,1), (0,1); two triangles (0,1,2), (0,2,3).
-  std::array<vec3, 4> corners() const;
-  static std::array<vec2, 4> cornerUvs() { return {vec2(0.0f, 0.0f), vec2(1.0f, 0.0f), vec2(1.0f, 1.0f), vec2(0.0f, 1.0f)}; }
+  std::size_t triangleCount() const { return indices.size() / 3; }
+  // The uv at barycentric (u, v) of triangle t (Embree's convention: (1 - u - v) a + u b + v c).
+  glm::dvec2 uvAt(std::size_t t, double u, double v) const;
   vec3 colorAt(vec2 uv) const { return vec3(texture.sampleLod(uv, 0.0f)); }
 };
 
-// A painting of size (width, height) centred at `center`, facing +Z before the
-// rotation (Euler degrees about X, then Y, then Z).
+// A quad painting of size (width, height) centred at `center`, facing +Z before
+// the rotation (Euler degrees about X, then Y, then Z): corners in uv order
+// (0,0), (1,0), (1,1), (0,1), triangles (0,1,2) and (0,2,3), each vertex's
+// normal the face's cross(c1 - c0, c3 - c0).
 Painting makePainting(vec3 center, vec2 size, vec3 rotateDegrees, Image texture);
 
 }  // namespace snell::lab

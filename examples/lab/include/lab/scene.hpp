@@ -12,16 +12,18 @@
 
 #include <snell/bridge.hpp>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace snell::lab {
 
-enum class MeshKind { Obj, Sphere, Icosphere, Torus, Blob, Box };
+enum class MeshKind { Obj, Sphere, Icosphere, Torus, Blob, Box, Loaded };
 
 struct MeshSpec {
   MeshKind kind = MeshKind::Icosphere;
-  std::string path;  // Obj: resolved against the scene file
+  std::string path;  // Obj: resolved against the scene file; Loaded: where it came from, for messages
+  std::shared_ptr<const Mesh> loaded;  // Loaded: the mesh, in world space (a glTF asset's primitive)
   float radius = 1.0f;
   int segments = 64, rings = 32;  // Sphere
   int subdivisions = 5;           // Icosphere, Blob
@@ -68,6 +70,7 @@ struct TextureSpec {
 };
 
 struct PaintingSpec {
+  std::shared_ptr<const Painting> loaded;  // a glTF asset's opaque primitive (the fields below unused)
   vec3 center{0.0f, 0.0f, -2.0f};
   vec2 size{4.0f, 3.0f};
   vec3 rotateDegrees{0.0f};
@@ -82,6 +85,7 @@ struct AnimationSpec {
 
 struct Scene {
   std::string file;  // the scene file ("" when parsed from text)
+  std::string gltf;  // the glTF asset it comes from (the file itself, or its "gltf"), else ""
   std::string name;
   std::string description;
   Camera camera;
@@ -90,12 +94,17 @@ struct Scene {
   EnvironmentSpec environment;
   std::vector<PaintingSpec> paintings;
   AnimationSpec animation;
+  // What the lab reads differently from the file (a glTF asset's extensions it does not render, say),
+  // each a sentence; the lab prints them.
+  std::vector<std::string> warnings;
 
   float frameTime(int frame) const { return animation.timeStart + static_cast<float>(frame) * animation.timeStep; }
 };
 
 // Reads and checks a scene file. Error(Io) when it is missing, Error(Parse) for
-// malformed JSON (with line and column), Error(Schema) for a bad field.
+// malformed JSON (with line and column), Error(Schema) for a bad field. A
+// .gltf or .glb file is a scene too (gltf_loader.hpp): its objects, opaque
+// meshes and camera (else a framing camera) under the default sky.
 Scene loadScene(const std::string& path);
 
 // The same from text; `file` is used in messages and to resolve relative paths.
