@@ -16,14 +16,20 @@
 // ?technique=<name> picks the technique; ?buffers=lab runs it on the lab's own buffers and front-face inputs
 // (in the bundle: per object, its scene layer as the lab drew it) instead of the page's, which sets snell's
 // code apart from the two rasterizers; ?test=1 renders once and posts the canvas to serve.mjs.
+// A bundle of a glTF scene (bundle.asset: the asset, as snell-lab read it) can also be drawn with three.js's
+// OWN renderer: ?renderer=threejs (or the page's renderer picker) loads bundle/asset.glb with GLTFLoader and
+// renders it with MeshPhysicalMaterial transmission, set up as the lab's row "three.js (its renderer)"
+// (gltf_scene.js, which that row uses too), into a float target that the canvas pass encodes;
+// ?renderer=snell (the default) is snell's technique as above.
 import * as THREE from "three";
 
-import { floatTexture, labObjectBuffers, loadBundle, matrix, objectGeometry, paintingGeometry, text, vector } from "./bundle.js";
+import { bytes, floatTexture, labObjectBuffers, loadBundle, matrix, objectGeometry, paintingGeometry, text, vector } from "./bundle.js";
 import { layerTarget, Pyramids, rawMaterial, setFilter } from "./targets.js";
 
 const query = new URLSearchParams(location.search);
 const testMode = query.has("test");
 const labBuffers = query.get("buffers") === "lab";
+const drawWith = query.get("renderer") ?? "snell";
 const statusLine = document.getElementById("status");
 
 async function report(what, body) {
@@ -38,8 +44,30 @@ function fail(error) {
 window.addEventListener("error", (e) => fail(e.error ?? e.message));
 window.addEventListener("unhandledrejection", (e) => fail(e.reason));
 
+// The renderer picker, when the bundle carries a glTF asset: picking reloads the page with ?renderer=.
+function rendererPicker(bundle) {
+  if (!["snell", "threejs"].includes(drawWith))
+    throw new Error(`?renderer=${drawWith}: snell (snell's technique) or threejs (three.js's own renderer)`);
+  if (!bundle.asset) {
+    if (drawWith === "threejs")
+      throw new Error("?renderer=threejs: this bundle has no glTF asset (snell-lab writes one for a glTF scene)");
+    return;
+  }
+  const picker = document.getElementById("draw-with");
+  picker.add(new Option("snell's technique", "snell"));
+  picker.add(new Option("three.js's own renderer (MeshPhysicalMaterial transmission)", "threejs"));
+  picker.value = drawWith;
+  picker.addEventListener("change", () => {
+    query.set("renderer", picker.value);
+    location.search = query.toString();
+  });
+  document.getElementById("draw-with-choice").hidden = false;
+}
+
 async function main() {
   const bundle = await loadBundle();
+  rendererPicker(bundle);
+  if (drawWith === "threejs") return threejsMain(bundle);
   THREE.ShaderChunk.snell = await text("snell/snell.glsl");
   THREE.ShaderChunk.srgb_encode = await text("shaders/srgb_encode.glsl");
   const src = {};
@@ -301,17 +329,7 @@ async function main() {
   let firstDrawMs = await compile();
   statusLine.textContent = `${current.label}: first draw (compile) ${(firstDrawMs / 1000).toFixed(1)} s; ` +
     `static passes ${staticMs.toFixed(0)} ms`;
-  if (testMode) {
-    const pixels = new Uint8Array(W * H * 4);
-    renderer.setRenderTarget(null);
-    gl.readPixels(0, 0, W, H, gl.RGBA, gl.UNSIGNED_BYTE, pixels);  // row 0 at the bottom, as the bundle's
-    const png = await new Promise((resolve) => canvas.toBlob(resolve, "image/png"));
-    await report("screenshot", png);
-    await report("log", JSON.stringify({ renderer: rendererName(gl), subpixelBits: gl.getParameter(gl.SUBPIXEL_BITS),
-      firstDrawMs, staticMs }));
-    await report("pixels", pixels);
-    return;
-  }
+  if (testMode) return reportCanvas(renderer, canvas, W, H, { firstDrawMs, staticMs });
   // The frame time: one frame (the opaque scene's colour, per object its scene layer when there are several,
   // and its refraction pass; the canvas pass), waited for, the median of the
   // last 31 frames of the technique picked.
@@ -336,6 +354,88 @@ async function main() {
     const median = [...times].sort((a, b) => a - b)[times.length >> 1];
     statusLine.textContent = `${current.label}: ${median.toFixed(1)} ms per frame (median of ${times.length}); ` +
       `first draw (compile) ${(firstDrawMs / 1000).toFixed(1)} s; static passes ${staticMs.toFixed(0)} ms`;
+    requestAnimationFrame(loop);
+  };
+  requestAnimationFrame(loop);
+}
+
+// Test mode: the canvas (its screenshot and its pixels, row 0 at the bottom as the bundle's) and a log line,
+// posted to serve.mjs.
+async function reportCanvas(renderer, canvas, W, H, log) {
+  const gl = renderer.getContext();
+  const pixels = new Uint8Array(W * H * 4);
+  renderer.setRenderTarget(null);
+  gl.readPixels(0, 0, W, H, gl.RGBA, gl.UNSIGNED_BYTE, pixels);  // row 0 at the bottom, as the bundle's
+  const png = await new Promise((resolve) => canvas.toBlob(resolve, "image/png"));
+  await report("screenshot", png);
+  await report("log", JSON.stringify({ renderer: rendererName(gl), subpixelBits: gl.getParameter(gl.SUBPIXEL_BITS), ...log }));
+  await report("pixels", pixels);
+}
+
+// The bundle's glTF asset with three.js's own renderer (?renderer=threejs): the scene as the lab's row
+// "three.js (its renderer)" sets it up (gltf_scene.js: the opaque materials unlit, the lab's environment
+// turned by the lab's rotation, the lab's camera, from the bundle's matrices), rendered into a float target
+// of the frame's size, which the canvas pass encodes to sRGB as it does snell's frame.
+async function threejsMain(bundle) {
+  // Imported here: a page of snell's technique alone loads no GLTFLoader.
+  const { cameraFromBundle } = await import("./bundle_camera.js");
+  const { configureRenderer, gltfScene } = await import("./gltf_scene.js");
+  THREE.ShaderChunk.srgb_encode = await text("shaders/srgb_encode.glsl");
+  const vert = await text("shaders/fullscreen.vert"), frag = await text("shaders/present.frag");
+  const W = bundle.width, H = bundle.height;
+  const canvas = document.getElementById("frame");
+  const renderer = new THREE.WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
+  configureRenderer(renderer, W, H);
+  const gl = renderer.getContext();
+  document.getElementById("renderer").textContent = rendererName(gl);
+  document.getElementById("technique-choice").hidden = true;
+  document.getElementById("title").textContent = "three.js's own transmission, for comparison";
+
+  const env = bundle.environment;
+  if ((env.channels ?? 4) !== 4) throw new Error("bundle.json: the environment is not RGBA");
+  // The camera as the lab passes it to three.js (position, target, up, field of view, clip distances; the
+  // environment turned by its rotation about +Y), from the bundle's matrices.
+  const { envX, envY, envZ, ...camera } = cameraFromBundle(bundle);
+  camera.environmentRotationDegrees = bundle.asset.environmentRotationDegrees ?? 0;
+  const t0 = performance.now();
+  const s = await gltfScene({ glb: await bytes(`bundle/${bundle.asset.file}`),
+    environment: { texels: await bytes(`bundle/${env.texels}`), width: env.width, height: env.height },
+    camera, width: W, height: H, where: "bundle.json" });
+  const staticMs = performance.now() - t0;
+  const glass = s.glass.map((m) => `${m.name || "glass"} (ior ${m.ior}, thickness ${m.thickness})`).join(", ");
+  document.getElementById("scene").textContent = `${bundle.scene}, ${W}x${H}, three.js's own renderer ` +
+    `(GLTFLoader, MeshPhysicalMaterial transmission): ${glass}`;
+
+  const fullscreen = new THREE.BufferGeometry();
+  fullscreen.setAttribute("position", new THREE.Float32BufferAttribute([-1, -1, 0, 3, -1, 0, -1, 3, 0], 3));
+  const present = new THREE.Mesh(fullscreen, rawMaterial(vert, frag, { frame: { value: s.target.texture },
+    margin: { value: 0 } }, { depthTest: false, depthWrite: false }));
+  present.frustumCulled = false;
+  const renderFrame = () => {
+    renderer.setRenderTarget(s.target);
+    renderer.render(s.scene, s.camera);
+    renderer.setRenderTarget(null);
+    renderer.render(present, s.camera);
+    finish(renderer);
+  };
+  statusLine.textContent = "three.js's own renderer: compiling ...";
+  for (let i = 0; i < 2; ++i) await new Promise((resolve) => requestAnimationFrame(resolve));
+  const c0 = performance.now();
+  renderFrame();
+  const firstDrawMs = performance.now() - c0;
+  const timings = `first draw (compile, cube map, PMREM) ${(firstDrawMs / 1000).toFixed(1)} s; loading ${staticMs.toFixed(0)} ms`;
+  statusLine.textContent = `three.js's own renderer: ${timings}`;
+  if (testMode) return reportCanvas(renderer, canvas, W, H, { firstDrawMs, staticMs });
+  // The frame time, as for snell's technique: one frame (three.js's render, the canvas pass), waited for,
+  // the median of the last 31.
+  const times = [];
+  const loop = () => {
+    const f0 = performance.now();
+    renderFrame();
+    times.push(performance.now() - f0);
+    if (times.length > 31) times.shift();
+    const median = [...times].sort((a, b) => a - b)[times.length >> 1];
+    statusLine.textContent = `three.js's own renderer: ${median.toFixed(1)} ms per frame (median of ${times.length}); ${timings}`;
     requestAnimationFrame(loop);
   };
   requestAnimationFrame(loop);

@@ -5,7 +5,7 @@
 //   node examples/web/serve.mjs BUNDLE_DIR [--port=8080]
 //       then open the printed address in a browser with WebGL 2
 //   node examples/web/serve.mjs BUNDLE_DIR --test [--technique=plane-normal-2] [--buffers=page|lab]
-//       [--min-share=0.99] [--screenshot=FILE] [--report=FILE] [--chromium=PATH]
+//       [--renderer=snell|threejs] [--min-share=0.99] [--screenshot=FILE] [--report=FILE] [--chromium=PATH]
 //
 // --test opens the page in headless Chromium (SwiftShader), which renders the technique once and posts the
 // canvas; the canvas is compared with the lab's picture of the same technique in the bundle, over the ray
@@ -13,7 +13,10 @@
 // default) are within 2/255 in every channel. --buffers=lab runs the technique on the lab's own buffers
 // and front-face inputs (in the bundle) instead of the page's: what is left is snell's code in three.js
 // against the lab's llvmpipe render, without the two rasterizers' differences (SwiftShader snaps vertices to
-// 1/16 pixel, llvmpipe to 1/256). Exit status: 0 pass, 1 failure (a page error, no Chromium, no lab
+// 1/16 pixel, llvmpipe to 1/256). --renderer=threejs (a bundle of a glTF scene, with bundle.asset) draws the
+// asset with three.js's own renderer instead (the page's ?renderer=threejs) and compares the canvas with the
+// lab's render of it with three.js's own renderer (bundle.asset.labThreejsImage: the same three.js on the same
+// SwiftShader), over the same object pixels. Exit status: 0 pass, 1 failure (a page error, no Chromium, no lab
 // picture in the bundle, a timeout, or the agreement below --min-share), 2 usage.
 import fs from "node:fs";
 import http from "node:http";
@@ -31,12 +34,13 @@ const option = (name, fallback) => {
   return a ? a.slice(name.length + 3) : fallback;
 };
 const positional = args.filter((a) => !a.startsWith("--"));
-const known = ["test", "technique", "buffers", "min-share", "screenshot", "report", "chromium", "port"];
+const known = ["test", "technique", "buffers", "renderer", "min-share", "screenshot", "report", "chromium", "port"];
 for (const a of args.filter((x) => x.startsWith("--")))
   if (!known.includes(a.slice(2).split("=")[0])) usageLater = `unknown option ${a}`;
 const test = args.includes("--test");
 const technique = option("technique", "plane-normal-2");
 const buffers = option("buffers", "page");
+const drawWith = option("renderer", "snell");
 const chromium = option("chromium", "chromium");
 const screenshot = option("screenshot", "");
 const reportFile = option("report", "");
@@ -48,7 +52,8 @@ const timeoutMs = Number(process.env.SNELL_BROWSER_TIMEOUT_MS ?? 600000);
 
 function usage(message) {
   console.error(`serve.mjs: ${message}\nusage: node examples/web/serve.mjs BUNDLE_DIR [--port=N] | ` +
-    "BUNDLE_DIR --test [--technique=NAME] [--buffers=page|lab] [--min-share=F] [--screenshot=FILE] [--report=FILE] " +
+    "BUNDLE_DIR --test [--technique=NAME] [--buffers=page|lab] [--renderer=snell|threejs] [--min-share=F] " +
+    "[--screenshot=FILE] [--report=FILE] " +
     "[--chromium=PATH]");
   process.exit(2);
 }
@@ -58,10 +63,14 @@ const bundleDir = path.resolve(positional[0]);
 if (!fs.existsSync(path.join(bundleDir, "bundle.json")))
   usage(`no bundle.json in ${bundleDir} (write one with snell-lab SCENE --web-bundle ${positional[0]})`);
 const three = path.join(here, "node_modules", "three", "build");
-if (!fs.existsSync(path.join(three, "three.module.js")))
+const addons = path.join(here, "node_modules", "three", "examples", "jsm");
+if (!fs.existsSync(path.join(three, "three.module.js")) || !fs.existsSync(path.join(addons, "loaders", "GLTFLoader.js")))
   usage(`three.js is not installed in ${path.join(here, "node_modules")}: run npm ci --prefix examples/web ` +
     "(or scripts/install-deps.sh)");
 if (!["page", "lab"].includes(buffers)) usage(`--buffers: page or lab, not ${buffers}`);
+if (!["snell", "threejs"].includes(drawWith)) usage(`--renderer: snell or threejs, not ${drawWith}`);
+if (drawWith === "threejs" && (option("buffers") || option("technique")))
+  usage("--renderer=threejs draws with three.js's own renderer: --buffers and --technique are snell's");
 if (!(targetShare >= 0 && targetShare <= 1)) usage(`--min-share: a share in [0, 1], not ${option("min-share")}`);
 if (!Number.isInteger(port) || port < 0 || port > 65535) usage(`--port: not a port number: ${option("port")}`);
 
@@ -71,8 +80,14 @@ const files = new Map([
   ["/main.js", [path.join(here, "main.js"), "text/javascript"]],
   ["/bundle.js", [path.join(here, "bundle.js"), "text/javascript"]],
   ["/targets.js", [path.join(here, "targets.js"), "text/javascript"]],
+  ["/bundle_camera.js", [path.join(here, "bundle_camera.js"), "text/javascript"]],
+  ["/gltf_scene.js", [path.join(here, "gltf_scene.js"), "text/javascript"]],
   ["/three/three.module.js", [path.join(three, "three.module.js"), "text/javascript"]],
   ["/three/three.core.js", [path.join(three, "three.core.js"), "text/javascript"]],
+  // GLTFLoader and what it imports, for ?renderer=threejs (the import map's "three/addons/").
+  ["/three/addons/loaders/GLTFLoader.js", [path.join(addons, "loaders", "GLTFLoader.js"), "text/javascript"]],
+  ["/three/addons/utils/BufferGeometryUtils.js", [path.join(addons, "utils", "BufferGeometryUtils.js"), "text/javascript"]],
+  ["/three/addons/utils/SkeletonUtils.js", [path.join(addons, "utils", "SkeletonUtils.js"), "text/javascript"]],
   ["/snell/snell.glsl", [path.join(root, "single_file", "snell.glsl"), "text/plain"]],
 ]);
 for (const f of fs.readdirSync(path.join(here, "shaders")))
@@ -143,13 +158,29 @@ function srgb8(v) {
   return Math.round(255 * e);
 }
 
+// The lab's picture the canvas is compared with: of the technique (snell's), or the lab's render with three.js's
+// own renderer (--renderer=threejs); a message when the bundle lacks it.
+function labPicture(bundle) {
+  if (drawWith === "threejs") {
+    if (!bundle.asset) return { missing: "the bundle has no glTF asset (snell-lab writes one for a glTF scene)" };
+    if (!bundle.asset.labThreejsImage)
+      return { missing: "the bundle has no lab render with three.js's own renderer (snell-lab skipped that row: " +
+        "run it without --no-threejs, with Node.js, three.js and Chromium installed)" };
+    return { image: bundle.asset.labThreejsImage };
+  }
+  const t = bundle.techniques.find((x) => x.name === technique);
+  if (!t || !t.labImage) return { missing: `the bundle has no lab picture of ${technique} (run snell-lab with -t ${technique})` };
+  return { image: t.labImage };
+}
+
 function compare() {
   const bundle = JSON.parse(fs.readFileSync(path.join(bundleDir, "bundle.json"), "utf8"));
-  const t = bundle.techniques.find((x) => x.name === technique);
-  if (!t || !t.labImage)
-    return finish(1, `serve.mjs: the bundle has no lab picture of ${technique} (run snell-lab with -t ${technique})`);
+  const picture = labPicture(bundle);
+  if (picture.missing) return finish(1, `serve.mjs: ${picture.missing}`);
   const W = bundle.width, H = bundle.height;
-  const lab = new Float32Array(fs.readFileSync(path.join(bundleDir, t.labImage.texels)).buffer.slice(0));
+  if (picture.image.width !== W || picture.image.height !== H || (picture.image.channels ?? 4) !== 4)
+    return finish(1, `serve.mjs: the lab's picture ${picture.image.texels} is not ${W}x${H} RGBA`);
+  const lab = new Float32Array(fs.readFileSync(path.join(bundleDir, picture.image.texels)).buffer.slice(0));
   const mask = fs.readFileSync(path.join(bundleDir, bundle.objectMask.bits));
   const page = reports.pixels;
   if (page.length !== W * H * 4 || lab.length !== W * H * 4 || mask.length !== W * H)
@@ -169,14 +200,17 @@ function compare() {
   const share = object ? within / object : 0;
   const log = reports.log ? JSON.parse(reports.log.toString()) : {};
   const result = {
-    scene: bundle.scene, technique, buffers, objectPixels: object, tolerance, withinShare: share, target: targetShare,
+    scene: bundle.scene, drawnWith: drawWith, ...(drawWith === "snell" ? { technique, buffers } : {}),
+    objectPixels: object, tolerance, withinShare: share, target: targetShare,
     maxDiff, meanMaxChannelDiff: object ? sumDiff / object : 0,
     diffHistogram: Object.fromEntries(histogram.map((n, d) => [d, n]).filter(([, n]) => n > 0)),
     renderer: log.renderer, subpixelBits: log.subpixelBits, firstDrawMs: log.firstDrawMs, staticPassesMs: log.staticMs,
   };
   if (reportFile) fs.writeFileSync(reportFile, JSON.stringify(result, null, 1) + "\n");
   if (screenshot && reports.screenshot) fs.writeFileSync(screenshot, reports.screenshot);
-  const line = `serve.mjs: ${bundle.scene}, ${technique}, ${buffers === "lab" ? "the lab's buffers" : "the page's buffers"}: ${(100 * share).toFixed(2)} % of ${object} object pixels ` +
+  const what = drawWith === "threejs" ? "three.js's own renderer"
+    : `${technique}, ${buffers === "lab" ? "the lab's buffers" : "the page's buffers"}`;
+  const line = `serve.mjs: ${bundle.scene}, ${what}: ${(100 * share).toFixed(2)} % of ${object} object pixels ` +
     `within ${tolerance}/255 of the lab's (at least ${100 * targetShare} % asked), largest difference ${maxDiff}/255; ` +
     `first draw ${(log.firstDrawMs / 1000).toFixed(1)} s on ${log.renderer}`;
   if (object === 0) finish(1, "serve.mjs: the bundle's object mask is empty: nothing to compare");
@@ -192,6 +226,7 @@ server.listen(port, "127.0.0.1", () => {
     const q = new URLSearchParams();
     if (option("technique")) q.set("technique", technique);
     if (option("buffers")) q.set("buffers", buffers);
+    if (option("renderer")) q.set("renderer", drawWith);
     console.log(`serve.mjs: the page for ${bundleDir} at ${base}${q.size ? `?${q}` : ""} (Ctrl-C stops)`);
     return;
   }
@@ -201,7 +236,11 @@ server.listen(port, "127.0.0.1", () => {
   if (buffers === "lab" && (bundle.objects?.length ?? 0) > 1 && bundle.labBuffersRow !== technique)
     return finish(1, `serve.mjs: the bundle's lab buffers hold the scene layers ${bundle.labBuffersRow} drew, not ` +
       `${technique}'s: test ${bundle.labBuffersRow} on them, or write the bundle with -t ${technique}`);
-  browser = launchChromium(`${base}?test=1&buffers=${buffers}&technique=${encodeURIComponent(technique)}`,
+  const picture = labPicture(bundle);
+  if (picture.missing) return finish(1, `serve.mjs: ${picture.missing}`);
+  const page = drawWith === "threejs" ? `${base}?test=1&renderer=threejs`
+    : `${base}?test=1&buffers=${buffers}&technique=${encodeURIComponent(technique)}`;
+  browser = launchChromium(page,
     { chromium, onFailure: (message) => finish(1, `serve.mjs: ${message}`) });
   setTimeout(() => finish(1, `serve.mjs: no picture from the page after ${timeoutMs / 1000} s (SNELL_BROWSER_TIMEOUT_MS)`),
     timeoutMs).unref();

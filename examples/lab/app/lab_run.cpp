@@ -3,6 +3,7 @@
 #include "engine_sweep.hpp"
 #include "pictures.hpp"
 #include "references.hpp"
+#include "threejs_renderer.hpp"
 #include "report.hpp"
 #include "web_bundle.hpp"
 
@@ -517,14 +518,31 @@ LabResult runLab(const LabOptions& options) {
                          result);
 
   timeTechniques(gpu, techniques, setup, finalFrames, options.frames, result);
+  // A glTF asset: three.js's own renderer on the same file, camera and environment, scored as the rows.
+  std::vector<Image> rendererImages;
+  if (!scene.gltf.empty() && options.threejs) {
+    const fs::path work = options.outDir.empty() ? fs::temp_directory_path() / ("snell-lab-threejs-" + result.scene)
+                                                 : fs::path(options.outDir) / "threejs";
+    ThreeJsRender three = renderWithThreeJs(scene.gltf, scene, frame, work);
+    RendererRow row;
+    row.name = "threejs-renderer";
+    row.label = "three.js (its renderer)";
+    row.renderer = three.renderer;
+    row.msPerFrame = three.msPerFrame;
+    row.mseFull = compareImages(refs.full.color, three.image, refs.full.mask).mse;
+    row.mseTwo = compareImages(refs.two.color, three.image, refs.full.mask).mse;
+    result.renderers.push_back(row);
+    rendererImages.push_back(std::move(three.image));
+  }
   result.markdown = markdownTable(result);
   result.targets = targetsText(result) + whichToPick(result);
-  if (!options.outDir.empty()) writeOutputs(options.outDir, refs, images, gpu.description(), result, start);
+  if (!options.outDir.empty())
+    writeOutputs(options.outDir, refs, images, rendererImages, gpu.description(), result, start);
   if (!options.webBundleDir.empty()) {
     std::vector<WebBundleImage> ran;
     for (std::size_t i = 0; i < techniques.size(); ++i) ran.push_back({techniques[i], &images[i]});
     writeWebBundle(options.webBundleDir, result.scene, frame, dN, setup.k, setup.order, ran, refs.full.mask,
-                   webBuffers);
+                   webBuffers, {scene.gltf, rendererImages.empty() ? nullptr : &rendererImages.front()});
   }
   result.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -33,8 +33,19 @@ struct LabOptions {
   // SnellTechnique.insideScene for snell's rows: -1 auto (on when a painting reaches inside the object), 0 off, 1 on.
   int insideScene = -1;
   std::string webBundleDir;  // "": none; else the three.js page's bundle (web_bundle.hpp) is written there
+  bool threejs = true;  // a glTF scene: also render it with three.js's own renderer (threejs_renderer.hpp)
   double guardBand = 0.1;  // scene and back-face buffers wider than the viewport by this share of its size per side
   ShaderDirs dirs;
+};
+
+// A real renderer's own image of the scene (three.js's, on a glTF asset), scored against the same truth as
+// the rows; the rows' other columns (CPU-GPU, fetches, the bound) do not apply to it.
+struct RendererRow {
+  std::string name, label;
+  std::string renderer;     // its version and what it ran on
+  double mseFull = 0.0;     // vs the full ray tracer, object pixels
+  double mseTwo = 0.0;      // vs the two-interface reference
+  double msPerFrame = 0.0;  // its own second frame (a software rasterizer's, not a GPU's)
 };
 
 struct TechniqueRow {
@@ -132,6 +143,7 @@ struct LabResult {
   double traceSeconds = 0.0, staticPassMs = 0.0, totalSeconds = 0.0;
   int frames = 0;
   std::string gpu;
+  std::vector<RendererRow> renderers;  // a glTF scene's real renderers (three.js), after the rows
   std::vector<TechniqueRow> rows;
   std::string markdown;  // the table (and notes) as printed
   std::string targets;   // the Mayer-Assarsson comparison and which row to pick, as printed

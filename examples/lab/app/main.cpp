@@ -158,9 +158,14 @@ int main(int argc, char** argv) {
   app.add_option("--web-bundle", o.webBundleDir,
                  "also write the frame for the three.js page (examples/web) to this directory: the scene, the "
                  "buffers' parameters, the lab's own buffers and its picture of each technique it ran");
+  bool noThreejs = false;
+  app.add_flag("--no-threejs", noThreejs,
+               "a glTF scene: skip the row of three.js's own renderer (which needs Node.js, three.js and Chromium: "
+               "scripts/install-deps.sh)");
   app.add_flag("-q,--quiet", o.quiet, "no progress bars and no table on stdout");
   if (const int code = parseCommandLine(app, argc, argv, [&] { suggestOptions(app, argc, argv); }); code >= 0)
     return code;
+  o.threejs = !noThreejs;
   for (const std::string& t : techniqueArgs) {
     if (t == "all") continue;
     const LabRowSpec row = findRow(t);

@@ -30,6 +30,7 @@ Image downscale(const Image& img, int factor) {
 }  // namespace
 
 void writeOutputs(const fs::path& out, const References& refs, const std::vector<Image>& images,
+                  const std::vector<Image>& rendererImages,
                   const std::string& gpuDescription, LabResult& result,
                   std::chrono::steady_clock::time_point start) {
   const Image& full = refs.full.color;
@@ -71,6 +72,16 @@ void writeOutputs(const fs::path& out, const References& refs, const std::vector
              composePanel({{&full, "ray traced"}, {&images[i], r.label}, {&heat, "error (RMS, white 0.25)"}}, caption));
     tiles.push_back(downscale(images[i], factor));
     labels.push_back(r.label + " " + fmt("%.2g", r.mseFull) + " " + fmt("%.2fx", r.costRatio));
+  }
+  for (std::size_t i = 0; i < result.renderers.size(); ++i) {
+    const RendererRow& r = result.renderers[i];
+    const Image heat = errorHeatMap(full, rendererImages[i], refs.full.mask);
+    writePng((out / (r.name + ".png")).string(),
+             composePanel({{&full, "ray traced"}, {&rendererImages[i], r.label}, {&heat, "error (RMS, white 0.25)"}},
+                          result.scene + ", " + r.label + ": MSE " + fmt("%.3g", r.mseFull) + " (two-interface ref. " +
+                              fmt("%.3g", r.mseTwo) + "), " + r.renderer));
+    tiles.push_back(downscale(rendererImages[i], factor));
+    labels.push_back(r.label + " " + fmt("%.2g", r.mseFull));
   }
   // Overview: rows of four tiles.
   const int perRow = 4, scale = 1;

@@ -14,6 +14,7 @@ namespace snell::lab {
 
 // Stage 6: the pictures (ground truth, model error, a panel per technique, the overview) and the tables.
 void writeOutputs(const std::filesystem::path& out, const References& refs, const std::vector<Image>& images,
+                  const std::vector<Image>& rendererImages,
                   const std::string& gpuDescription, LabResult& result,
                   std::chrono::steady_clock::time_point start);
 

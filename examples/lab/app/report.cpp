@@ -63,6 +63,32 @@ std::string objectsTable(const LabResult& r) {
   return s;
 }
 
+// snell's best constant-time row against the full ray tracer (nullptr when none ran).
+const TechniqueRow* bestConstantTime(const LabResult& r) {
+  const TechniqueRow* best = nullptr;
+  for (const TechniqueRow& t : r.rows) {
+    const SnellTechniqueInfo* info = snellFindTechnique(t.name);
+    if (info && info->kind == SnellTechniqueKind::ConstantTime && (!best || t.mseFull < best->mseFull)) best = &t;
+  }
+  return best;
+}
+
+// The real renderers (a glTF scene: three.js's own), beside snell's best constant-time row.
+std::string renderersTable(const LabResult& r) {
+  if (r.renderers.empty()) return "";
+  const TechniqueRow* best = bestConstantTime(r);
+  std::string s = "\nReal renderers on the same file, camera and environment (their own images, scored as the rows; "
+                  "the other columns do not apply):\n\n| renderer | MSE vs ray traced | MSE vs two-interface ref. | "
+                  "snell's best constant-time row | its MSE, x the renderer's | frame (ms) | ran on |\n"
+                  "|---|---:|---:|---|---:|---:|---|\n";
+  for (const RendererRow& x : r.renderers)
+    s += "| " + x.label + " | " + fmt("%.3g", x.mseFull) + " | " + fmt("%.3g", x.mseTwo) + " | " +
+         (best ? best->label : std::string("none ran")) + " | " +
+         (best && x.mseFull > 0.0 ? fmt("%.2fx", best->mseFull / x.mseFull) : std::string("-")) + " | " +
+         fmt("%.1f", x.msPerFrame) + " | " + x.renderer + " |\n";
+  return s;
+}
+
 std::string markdownTable(const LabResult& r) {
   std::string s;
   s += "| technique | MSE vs ray traced | on TIR | MSE vs two-interface ref. | x bound | own error (MSE vs bound) | unshaded | "
@@ -78,6 +104,7 @@ std::string markdownTable(const LabResult& r) {
          " | " + fmt("%.3f %%", 100.0 * t.cpuGpuBeyond1) + " | " + std::to_string(t.cpuGpuBeyond4Pixels) + " (" +
          std::to_string(t.cpuGpuBeyond4Ties) + ") |\n";
   }
+  s += renderersTable(r);
   const TechniqueRow* bound = r.boundRow();
   const TechniqueRow* unit = r.costUnitRow();
   s += objectsTable(r);
@@ -326,6 +353,11 @@ void writeJson(const fs::path& path, const LabResult& r) {
     }
   }
   j["techniques"] = rows;
+  nlohmann::json renderers = nlohmann::json::array();
+  for (const RendererRow& x : r.renderers)
+    renderers.push_back({{"renderer", x.name}, {"label", x.label}, {"ran_on", x.renderer}, {"mse_vs_ray_traced", x.mseFull},
+                         {"mse_vs_two_interface", x.mseTwo}, {"frame_ms", x.msPerFrame}});
+  if (!r.renderers.empty()) j["renderers"] = renderers;
   // Scene names come from file names, which need not be UTF-8: replace what JSON cannot hold, don't throw.
   writeText(path, j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }

@@ -112,7 +112,7 @@ nlohmann::json writeLabBuffers(const fs::path& dir, const std::string& prefix, c
 void writeWebBundle(const fs::path& dir, const std::string& sceneName, const SceneFrame& frame,
                     const std::vector<std::vector<float>>& dN, const std::vector<ShadeConstants>& k,
                     const std::vector<std::size_t>& order, const std::vector<WebBundleImage>& images,
-                    const Mask& objectMask, const WebBundleLabBuffers& lab) {
+                    const Mask& objectMask, const WebBundleLabBuffers& lab, const WebBundleAsset& asset) {
   const std::size_t n = frame.objects.size();
   if (n == 0 || k.size() != n || dN.size() != n || order.size() != n)
     throw Error(ErrorKind::Render, "web bundle: " + std::to_string(n) + " objects but " + std::to_string(k.size()) +
@@ -198,6 +198,13 @@ void writeWebBundle(const fs::path& dir, const std::string& sceneName, const Sce
     j["labBuffersRow"] = lab.row;
     // The lab's frame before any object: what its picture shows where no pass shaded an object pixel.
     j["labOpaqueColor"] = writeImage(dir, "lab_opaque_color.f32", lab.objects.front().fullColor);
+  }
+  if (!asset.path.empty()) {
+    const std::string name = "asset" + fs::path(asset.path).extension().string();
+    fs::copy_file(asset.path, dir / name, fs::copy_options::overwrite_existing, ec);
+    if (ec) throw Error(ErrorKind::Io, "cannot copy " + asset.path + " into the web bundle: " + ec.message());
+    j["asset"] = {{"file", name}, {"environmentRotationDegrees", frame.environment.rotationDegrees()}};
+    if (asset.threejsImage) j["asset"]["labThreejsImage"] = writeImage(dir, "lab_threejs.f32", *asset.threejsImage);
   }
   writeBytes(dir / "object_mask.u8", objectMask.bits.data(), objectMask.bits.size());
   j["objectMask"] = {{"width", objectMask.width}, {"height", objectMask.height}, {"bits", "object_mask.u8"}};

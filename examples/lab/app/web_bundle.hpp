@@ -37,9 +37,15 @@ struct WebBundleLabBuffers {
 // row order); DIR is created. dN[i] and k[i]: frame.objects[i]'s d_N (empty: none) and constants; `order`:
 // the draw order (back to front). `objectMask`: the ray tracer's object pixels (the lab's measure). Throws
 // lab::Error (Io) when a file cannot be written, (Render) when the inputs do not match the frame's objects.
+// A glTF scene: `asset` (the .glb or .gltf) is copied in as the page's "asset" (three.js's own renderer
+// loads it), with `threejsImage`, the lab's render of it with three.js (nullptr: none ran).
+struct WebBundleAsset {
+  std::string path;                      // "": the scene is not a glTF asset
+  const Image* threejsImage = nullptr;
+};
 void writeWebBundle(const std::filesystem::path& dir, const std::string& sceneName, const SceneFrame& frame,
                     const std::vector<std::vector<float>>& dN, const std::vector<ShadeConstants>& k,
                     const std::vector<std::size_t>& order, const std::vector<WebBundleImage>& images,
-                    const Mask& objectMask, const WebBundleLabBuffers& lab);
+                    const Mask& objectMask, const WebBundleLabBuffers& lab, const WebBundleAsset& asset = {});
 
 }  // namespace snell::lab
