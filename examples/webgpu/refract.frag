@@ -3,40 +3,37 @@
 // snell's two-interface refraction (normal plane, 2 iterations) in a WebGPU
 // fragment shader: Vulkan GLSL that tools/webgpu/snell-wgsl turns into WGSL
 // (tests: compile.wgsl_example). What WebGPU needs beyond the Vulkan recipe:
-// the WebGPU prelude (isnan/isinf as bit tests), and textures as slots.
+// the WebGPU prelude (isnan/isinf as bit tests, snell's textures as texture2D)
+// and one sampler.
+
+// WGSL has no combined image samplers and naga refuses a sampler2D passed to a
+// function: each texture is a texture2D, bound where it is declared below, and
+// snell's functions take it as it is. With SNELL_WEBGPU_SAMPLER defined before
+// the prelude, texel fetches and sizes (every depth read) use no sampler, and
+// the filtered reads (normals, colour, environment) use this one: linear,
+// clamp to edge. Depth textures (r32float, rgba32float) may therefore be
+// unfilterable; filtered rgba32float needs the float32-filterable feature.
+layout(set = 1, binding = 0) uniform sampler linearClamp;
+#define SNELL_WEBGPU_SAMPLER linearClamp
 #include "snell_webgpu_prelude.glsl"
 
-// WGSL has no combined image samplers and naga rejects a sampler2D passed to a
-// function: a snell texture is a slot number, and the hooks pick slot k's
-// texture2D and its own sampler (bindings 2k and 2k + 1 of group 1). Depth
-// textures are r32float/rgba32float: unfilterable unless the device has
-// float32-filterable, so give them non-filtering samplers (snell reads depth
-// with texel fetches and NEAREST lookups); normals and colours may filter.
-#define SLOT(k) \
-  layout(set = 1, binding = 2 * k) uniform texture2D slotTexture##k; \
-  layout(set = 1, binding = 2 * k + 1) uniform sampler slotSampler##k;
-#define EACH_SLOT(M) M(0) M(1) M(2) M(3) M(4) M(5) M(6) M(7) M(8) M(9)
-EACH_SLOT(SLOT)
-#define SAMPLE(k) if (t == k) return textureLod(sampler2D(slotTexture##k, slotSampler##k), uv, lod);
-#define FETCH(k) if (t == k) return texelFetch(sampler2D(slotTexture##k, slotSampler##k), px, lod);
-#define SIZE(k) if (t == k) return textureSize(sampler2D(slotTexture##k, slotSampler##k), 0);
-vec4 slotSampleLod(int t, vec2 uv, float lod) { EACH_SLOT(SAMPLE) return vec4(0.0f); }
-vec4 slotTexelFetch(int t, ivec2 px, int lod) { EACH_SLOT(FETCH) return vec4(0.0f); }
-ivec2 slotSize(int t) { EACH_SLOT(SIZE) return ivec2(0, 0); }
-#define SNELL_TEX2D int
-#define SNELL_SAMPLE_LOD(tex, uv, lod) slotSampleLod(tex, uv, lod)
-#define SNELL_TEXEL_FETCH(tex, px, lod) slotTexelFetch(tex, px, lod)
-#define SNELL_TEXTURE_SIZE(tex, lod) max(slotSize(tex) >> (lod), ivec2(1, 1))
-
 // Only the strategy this technique's slots call (snellStrategiesUsed in C++): the dispatcher's other
-// branches become constant-false (glslang and naga keep their code in the WGSL; the WebGPU compiler
-// drops it).
+// branches become constant-false, and snell-wgsl leaves them, and the searches only they call, out.
 #define SNELL_INTERSECT_STRATEGIES (1 << SNELL_STRATEGY_PLANE_NORMAL)
 #include "snell/snell.glsl"
 
-// The slots, in the order of SNELL_OBJECT_BUFFERS and SNELL_SCENE_BUFFERS.
-const int backDepth = 0, backNormal = 1, backPyramid = 2, frontLayerDepth = 3, frontLayerNormal = 4;
-const int sceneDepth = 5, sceneNormal = 6, scenePyramid = 7, sceneColor = 8, environment = 9;
+// The textures, under the names and in the order of SNELL_OBJECT_BUFFERS and SNELL_SCENE_BUFFERS
+// (shade/technique_buffers.glsl).
+layout(set = 1, binding = 1) uniform texture2D backDepth;
+layout(set = 1, binding = 2) uniform texture2D backNormal;
+layout(set = 1, binding = 3) uniform texture2D backPyramid;
+layout(set = 1, binding = 4) uniform texture2D frontLayerDepth;
+layout(set = 1, binding = 5) uniform texture2D frontLayerNormal;
+layout(set = 1, binding = 6) uniform texture2D sceneDepth;
+layout(set = 1, binding = 7) uniform texture2D sceneNormal;
+layout(set = 1, binding = 8) uniform texture2D scenePyramid;
+layout(set = 1, binding = 9) uniform texture2D sceneColor;
+layout(set = 1, binding = 10) uniform texture2D environment;
 
 layout(set = 0, binding = 0) uniform Frame {
   mat4 clipFromView;  // the buffers' projection

@@ -1,4 +1,4 @@
-// SPIR-V to WGSL with naga (npm naga-wasm), for run_parity.ts and snell_wgsl.ts.
+// SPIR-V to WGSL with naga (npm naga-wasm), for readable_wgsl.ts (run_parity.ts and snell_wgsl.ts).
 import { parseSpirv, validate, writeWgsl, NagaError } from "naga-wasm";
 
 // The WGSL of a SPIR-V module; throws an Error with naga's message when it cannot translate it.
