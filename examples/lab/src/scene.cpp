@@ -282,10 +282,14 @@ Camera gltfFramingCamera(const Scene& s) { return framingCamera(loadedMeshes(s),
 void completeFar(Camera& c, const Scene& s) {
   if (c.zFar > 0.0f) return;
   double farthest = 1.0;
-  for (const Mesh& m : loadedMeshes(s))
-    for (const vec3& v : m.positions) farthest = std::max(farthest, glm::length(glm::dvec3(v) - glm::dvec3(c.position)));
-  for (const Painting& p : loadedPaintings(s))
-    for (const vec3& v : p.positions) farthest = std::max(farthest, glm::length(glm::dvec3(v) - glm::dvec3(c.position)));
+  const auto reach = [&](const std::vector<vec3>& positions) {
+    for (const vec3& v : positions) farthest = std::max(farthest, glm::length(glm::dvec3(v) - glm::dvec3(c.position)));
+  };
+  // Read in place: the meshes and the paintings' textures are large, and only positions are needed.
+  for (const RefractiveObject& o : s.objects)
+    if (o.mesh.loaded) reach(o.mesh.loaded->positions);
+  for (const PaintingSpec& p : s.paintings)
+    if (p.loaded) reach(p.loaded->positions);
   c.zFar = static_cast<float>(std::min(2.0 * farthest, 0.5 * kMaxFarOverNear * static_cast<double>(c.zNear)));
 }
 
