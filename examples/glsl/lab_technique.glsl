@@ -30,8 +30,9 @@ use: LabParams p;  // the host fills every field (C++), or the uniform block Lab
               environment's rotation folded in)
 contract: every technique's exit slot reads the scene's buffers
   (SNELL_SOURCE_BUFFERS) with SNELL_FALLBACK_ENVIRONMENT; the material has the
-  critical-angle TIR policy, Fresnel reflection at the first interface and
-  Beer-Lambert absorption along the found chord; the reflect slot is the exit
+  critical-angle TIR policy, Fresnel reflection at the first interface,
+  Beer-Lambert absorption along the found chord and, for a dispersive object,
+  one path per colour channel (the engine rows: one, with p.ior); the reflect slot is the exit
   slot's intersector with p.reflectSource as its source (SNELL_SOURCE_BUFFERS
   resolves R against the opaque scene, as the ray-traced reference does;
   SNELL_SOURCE_ENVIRONMENT the environment only) and the environment as its
@@ -74,6 +75,8 @@ struct LabParams {
   int depthFilter;    // SNELL_DEPTH_FILTER_*: how every slot reads both depth buffers
   int reflectSource;  // SNELL_SOURCE_*: the reflect slot's source
   int insideScene;    // 1: the opaque scene has surfaces inside the object (SnellTechnique.insideScene)
+  vec3 iors;          // the IOR per colour channel (green is ior) where dispersion is 1
+  int dispersion;     // 1: one path per colour channel with iors (SnellMaterial.dispersion 3); 0: one with ior
 };
 
 SNELL_FN SnellTechnique labTechnique(int technique, bool reference, LabParams p) {
@@ -101,7 +104,8 @@ SNELL_FN SnellMaterial labMaterial(LabParams p) {
   m.tirPolicy = SNELL_TIR_CRITICAL;
   m.ior = p.ior;
   m.iorOutside = 1.0f;
-  m.iors = vec3(p.ior, p.ior, p.ior);
+  m.iors = p.iors;
+  m.dispersion = p.dispersion != 0 ? 3 : 1;
   m.absorption = p.absorption;
   m.reflection = true;
   return m;

@@ -250,7 +250,8 @@ async function main() {
     zNear: u(bundle.zNear), zFar: u(bundle.zFar),
     envX: u(vector(bundle.envX)), envY: u(vector(bundle.envY)), envZ: u(vector(bundle.envZ)),
     depthFilter: u(bundle.depthFilter), reflectSource: u(bundle.reflectSource),
-    ior: u(0), absorption: u(new THREE.Vector3()), backRange: u(0), insideScene: u(0),
+    ior: u(0), iors: u(new THREE.Vector3()), dispersion: u(0), absorption: u(new THREE.Vector3()), backRange: u(0),
+    insideScene: u(0),
   };
   const setObjectUniforms = (object) => {
     const b = buffersOf(object);
@@ -261,6 +262,8 @@ async function main() {
     techniqueUniforms.frontNormals.value = b.frontNormals ?? null;
     const c = object.constants;
     techniqueUniforms.ior.value = c.ior;
+    techniqueUniforms.iors.value = vector(c.iors);
+    techniqueUniforms.dispersion.value = c.dispersion;
     techniqueUniforms.absorption.value = vector(c.absorption);
     techniqueUniforms.backRange.value = c.backRange;
     techniqueUniforms.insideScene.value = c.insideScene;

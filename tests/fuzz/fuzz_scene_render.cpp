@@ -57,10 +57,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       (void)tracer.render(f.camera, options);
       if (f.objects.size() > 1) {
         std::vector<std::size_t> order;
-        std::vector<double> index;
+        std::vector<glm::dvec3> index;
         for (std::size_t i = 0; i < f.objects.size(); ++i) {
           order.push_back(i);
-          index.push_back(static_cast<double>(f.objects[i].ior));
+          index.push_back(glm::dvec3(snell::lab::channelIors(f.objects[i])));
         }
         (void)tracer.renderComposited(f.camera, order, index, options);
       }

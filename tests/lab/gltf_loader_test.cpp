@@ -185,33 +185,64 @@ TEST(GltfLoader, GlassWithoutVolumeIsRefusedNamingTheMaterial) {
 TEST(GltfLoader, WhatTheLabDoesNotRenderIsAWarning) {
   Json j = tetra();
   j["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = 0.3;
-  j["materials"][0]["extensions"]["KHR_materials_dispersion"] = {{"dispersion", 0.5}};
   j["materials"][0]["extensions"]["KHR_materials_transmission"]["transmissionFactor"] = 0.5;
   const GltfScene g = load(j);
-  ASSERT_EQ(g.warnings.size(), 3u);
+  ASSERT_EQ(g.warnings.size(), 2u);
   for (const std::string& w : g.warnings) EXPECT_NE(w.find("materials[0] 'Glass'"), std::string::npos) << w;
 }
 
+// KHR_materials_dispersion: V_d = 20 / dispersion, and the IORs per channel its text gives,
+// n(lambda) = n_d + (n_d - 1) / V_d * (523655 / lambda^2 - 1.5168) at the C, d and F lines (nm).
+TEST(GltfLoader, DispersionBecomesAnIorPerChannel) {
+  Json j = tetra();
+  j["materials"][0]["extensions"]["KHR_materials_dispersion"] = {{"dispersion", 0.5}};
+  const GltfScene g = load(j);
+  EXPECT_TRUE(g.warnings.empty());
+  ASSERT_EQ(g.objects.size(), 1u);
+  EXPECT_FLOAT_EQ(g.objects[0].abbe, 40.0f);
+  snell::lab::FrameObject o;
+  o.ior = g.objects[0].ior;
+  o.abbe = g.objects[0].abbe;
+  const snell::vec3 iors = snell::lab::channelIors(o);
+  const double lambda[3] = {656.27, 587.56, 486.13};
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(iors[c], 1.7 + 0.7 / 40.0 * (523655.0 / (lambda[c] * lambda[c]) - 1.5168), 2e-6) << "channel " << c;
+  j["materials"][0]["extensions"]["KHR_materials_dispersion"]["dispersion"] = 0.0;
+  EXPECT_EQ(load(j).objects[0].abbe, 0.0f);  // the extension's default: none
+  j["materials"][0]["extensions"]["KHR_materials_dispersion"]["dispersion"] = 25.0;
+  EXPECT_NE(gltfError(j, ErrorKind::Schema).find("materials[0] 'Glass': KHR_materials_dispersion.dispersion 25"),
+            std::string::npos);
+  j["materials"][0]["extensions"]["KHR_materials_dispersion"]["dispersion"] = -1.0;
+  EXPECT_NE(gltfError(j, ErrorKind::Schema).find("KHR_materials_dispersion.dispersion -1"), std::string::npos);
+}
+
 TEST(GltfLoader, BundledAssetsMatchTheirOwnJson) {
-  for (const char* name : {"glass_bunny", "suzanne_paperweight", "ior_grid"}) {
+  for (const char* name : {"glass_bunny", "suzanne_paperweight", "ior_grid", "flint_ball"}) {
     SCOPED_TRACE(name);
     const std::string path = labtest::scenesDir() + "/gltf/" + name + ".glb";
     const GltfScene g = snell::lab::loadGltf(path);
     EXPECT_TRUE(g.warnings.empty());
     EXPECT_TRUE(g.hasCamera);
-    // Independently: the glass materials' IORs, one object per node whose mesh uses one.
+    // Independently: the glass materials' IORs and Abbe numbers (20 / dispersion), one object per node whose
+    // mesh uses one.
     const Json j = glbJson(fileBytes(path));
-    std::vector<double> want;
+    std::vector<double> want, wantAbbe;
     for (const Json& node : j["nodes"]) {
       if (!node.contains("mesh")) continue;
       for (const Json& p : j["meshes"][node["mesh"].get<std::size_t>()]["primitives"]) {
         const Json& m = j["materials"][p["material"].get<std::size_t>()];
-        if (m.contains("extensions") && m["extensions"].contains("KHR_materials_transmission"))
+        if (m.contains("extensions") && m["extensions"].contains("KHR_materials_transmission")) {
           want.push_back(m["extensions"].value("KHR_materials_ior", Json::object()).value("ior", 1.5));
+          const double dispersion = m["extensions"].value("KHR_materials_dispersion", Json::object()).value("dispersion", 0.0);
+          wantAbbe.push_back(dispersion > 0.0 ? 20.0 / dispersion : 0.0);
+        }
       }
     }
     ASSERT_EQ(g.objects.size(), want.size());
-    for (std::size_t i = 0; i < want.size(); ++i) EXPECT_FLOAT_EQ(g.objects[i].ior, static_cast<float>(want[i]));
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      EXPECT_FLOAT_EQ(g.objects[i].ior, static_cast<float>(want[i]));
+      EXPECT_FLOAT_EQ(g.objects[i].abbe, static_cast<float>(wantAbbe[i]));
+    }
     EXPECT_FALSE(g.paintings.empty());  // the backdrop (and Suzanne)
   }
 }

@@ -64,6 +64,7 @@ TEST(LabScene, DefaultsForOptionalFields) {
   EXPECT_EQ(s.camera.up, snell::vec3(0.0f, 1.0f, 0.0f));
   EXPECT_FLOAT_EQ(s.objects.front().ior, 1.5f);
   EXPECT_EQ(s.objects.front().absorption, snell::vec3(0.0f));
+  EXPECT_EQ(s.objects.front().abbe, 0.0f);  // no dispersion
   EXPECT_EQ(s.objects.front().mesh.kind, snell::lab::MeshKind::Icosphere);
   EXPECT_EQ(s.objects.front().mesh.subdivisions, 2);
   EXPECT_FLOAT_EQ(s.objects.front().mesh.radius, 1.0f);
@@ -80,7 +81,7 @@ TEST(LabScene, CommentsAndAllFieldKinds) {
                 "resolution": [320, 200], "near": 0.5, "far": 20 },
     "object": { "mesh": { "type": "torus", "major_radius": 2, "minor_radius": 0.5, "major_segments": 8, "minor_segments": 6 },
                 "transform": { "translate": [1, 0, 0], "rotate": [0, 90, 0], "scale": [1, 2, 1] },
-                "ior": 1.33, "absorption": [0.1, 0.2, 0.3] },
+                "ior": 1.33, "absorption": [0.1, 0.2, 0.3], "abbe": 55.5 },
     "environment": { "type": "color", "color": [0.2, 0.3, 0.4], "intensity": 2 },
     "opaque": [ { "type": "painting", "center": [0, 0, -3], "size": [2, 1], "rotate": [0, 0, 10],
                   "texture": { "type": "gradient", "colors": [[1, 0, 0], [0, 0, 1]], "direction": "vertical" } },
@@ -92,12 +93,14 @@ TEST(LabScene, CommentsAndAllFieldKinds) {
   EXPECT_EQ(s.camera.height, 200);
   EXPECT_EQ(s.objects.front().mesh.kind, snell::lab::MeshKind::Torus);
   EXPECT_FLOAT_EQ(s.objects.front().transform.scale.y, 2.0f);
+  EXPECT_FLOAT_EQ(s.objects.front().abbe, 55.5f);
   EXPECT_EQ(s.environment.kind, snell::lab::EnvironmentKind::Color);
   ASSERT_EQ(s.paintings.size(), 2u);
   EXPECT_EQ(s.paintings[0].texture.direction, 1);
   EXPECT_FLOAT_EQ(s.frameTime(4), 3.0f);
   const snell::lab::SceneFrame f = snell::lab::buildFrame(s, 0.0f);
   EXPECT_EQ(f.objects.front().mesh.triangleCount(), 8u * 6u * 2u);
+  EXPECT_FLOAT_EQ(f.objects.front().abbe, 55.5f);
   EXPECT_NEAR(f.environment.lookup(snell::vec3(0, 1, 0)).z, 0.8f, 1e-6f);
 }
 
@@ -185,6 +188,8 @@ TEST(LabScene, EachBadFieldIsNamed) {
        "object.mesh.amplitude: expected a number in [0, 1), got 1"},
       {R"({ "camera": { "position": [0, 0, 5] }, "object": { "mesh": { "type": "icosphere" }, "ior": "glass" } })",
        "object.ior: expected a number in (0, 10], got \"glass\""},
+      {R"({ "camera": { "position": [0, 0, 5] }, "object": { "mesh": { "type": "icosphere" }, "abbe": 0.5 } })",
+       "object.abbe: expected a number in [1, 10000], got 0.5"},
       {R"({ "camera": { "position": [0, 0, 5] }, "object": { "mesh": { "type": "icosphere" }, "absorption": [0, -1, 0] } })",
        "object.absorption[1]: expected an array of 3 numbers each >= 0, got [0,-1,0]"},
       {R"({ "camera": { "position": [0, 0, 5] }, "object": { "mesh": { "type": "icosphere" }, "transform": { "scale": 0 } } })",

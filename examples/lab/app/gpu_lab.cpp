@@ -101,6 +101,8 @@ ShadeConstants shadeConstants(const SceneFrame& frame, std::size_t object, int m
   // nested scenes (the composited floor vs the full ray trace): snow_globe 0.098 with the index against
   // air, 0.171 with the ratio; cube_sphere 0.145 and 0.148.
   k.params.ior = o.ior;
+  k.params.iors = channelIors(o);
+  k.params.dispersion = dispersive(o) ? 1 : 0;
   k.params.absorption = o.absorption;
   // Environment lookups take world directions: world-from-view, then the
   // environment's rotation about +Y (environment.hpp: phi = atan2(x, -z) - rotation,
@@ -169,7 +171,8 @@ static_assert(offsetof(LabParams, clipFromView) == 0 && offsetof(LabParams, prox
                   offsetof(LabParams, envZ) == 176 && offsetof(LabParams, backRange) == 188 &&
                   offsetof(LabParams, exitRange) == 192 && offsetof(LabParams, depthFilter) == 196 &&
                   offsetof(LabParams, reflectSource) == 200 && offsetof(LabParams, insideScene) == 204 &&
-                  sizeof(LabParams) == 208,
+                  offsetof(LabParams, iors) == 208 && offsetof(LabParams, dispersion) == 220 &&
+                  sizeof(LabParams) == 224,
               "LabParams must keep the std140 layout of the uniform block LabUniforms");
 
 gpu::FlatSource flatten(const fs::path& file, const ShaderDirs& dirs, const std::vector<std::string>& defines = {}) {

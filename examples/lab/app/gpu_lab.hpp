@@ -103,6 +103,8 @@ struct ShadeConstants {
     p.zNear = 0.1f;
     p.zFar = 100.0f;
     p.ior = 1.5f;
+    p.iors = vec3(1.5f);
+    p.dispersion = 0;
     p.absorption = vec3(0.0f);
     p.envX = vec3(1, 0, 0);
     p.envY = vec3(0, 1, 0);

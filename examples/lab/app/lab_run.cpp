@@ -471,6 +471,7 @@ LabResult runLab(const LabOptions& options) {
     ObjectReport report;
     report.index = o;
     report.ior = frame.objects[o].ior;
+    report.abbe = frame.objects[o].abbe;
     report.enclosing = setup.k[o].enclosing;
     report.insideScene = setup.k[o].params.insideScene != 0;
     report.pixels = pixels[o];

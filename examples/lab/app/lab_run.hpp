@@ -104,7 +104,8 @@ struct ModelFloor {
 // A refractive object of the scene, as the lab drew it.
 struct ObjectReport {
   std::size_t index = 0;      // in the scene file's order
-  float ior = 1.5f;           // its material's
+  float ior = 1.5f;           // its material's (at the d line)
+  float abbe = 0.0f;          // its dispersion's Abbe number (0: none)
   int enclosing = -1;         // the object it lies in (-1: none)
   bool insideScene = false;   // its rows also search the scene along the refracted ray
   std::size_t pixels = 0;     // pixels where the ray tracer's primary ray meets it first

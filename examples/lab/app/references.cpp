@@ -69,8 +69,8 @@ void traceComposited(References& refs, const SceneFrame& frame, const std::vecto
   TraceOptions to;
   to.threads = options.threads;
   to.progress = !options.quiet;
-  std::vector<double> index;  // what the passes use (shadeConstants)
-  for (const ShadeConstants& c : k) index.push_back(static_cast<double>(c.params.ior));
+  std::vector<glm::dvec3> index;  // what the passes use (shadeConstants)
+  for (const ShadeConstants& c : k) index.push_back(glm::dvec3(c.params.iors));
   refs.composited = refs.tracer->renderComposited(frame.camera, order, index, to);
   result.traceSeconds += refs.composited.stats.seconds;
   result.mseCompositedVsFull = compareImages(refs.full.color, refs.composited.color, refs.full.mask).mse;

@@ -45,6 +45,7 @@ std::string objectsTable(const LabResult& r) {
                   "|---|---:|---|---:|---:|---:|\n";
   for (const ObjectReport& o : r.objects)
     s += "| " + std::to_string(o.index) + " | " + fmt("%.3g", static_cast<double>(o.ior)) +
+         (o.abbe > 0.0f ? ", V_d " + fmt("%.3g", static_cast<double>(o.abbe)) : std::string()) +
          (o.enclosing >= 0 ? " (inside object " + std::to_string(o.enclosing) + ")" : std::string()) + " | " +
          (o.insideScene ? "yes" : "-") + " | " + std::to_string(o.pixels) + " | " + fmt("%.2f", o.layerMs) +
          " | " + fmt("%.1f", static_cast<double>(o.bytes) / 1048576.0) + " |\n";
@@ -296,14 +297,17 @@ void writeJson(const fs::path& path, const LabResult& r) {
   j["static_passes_ms"] = r.staticPassMs;
   j["object_diagonal"] = r.objectDiagonal;
   nlohmann::json objects = nlohmann::json::array();
-  for (const ObjectReport& o : r.objects)
-    objects.push_back({{"index", o.index},
-                       {"ior", o.ior},
-                       {"enclosing", o.enclosing},
-                       {"inside_scene", o.insideScene},
-                       {"pixels", o.pixels},
-                       {"scene_layer_ms", o.layerMs},
-                       {"own_buffer_bytes", o.bytes}});
+  for (const ObjectReport& o : r.objects) {
+    nlohmann::json oj = {{"index", o.index},
+                         {"ior", o.ior},
+                         {"enclosing", o.enclosing},
+                         {"inside_scene", o.insideScene},
+                         {"pixels", o.pixels},
+                         {"scene_layer_ms", o.layerMs},
+                         {"own_buffer_bytes", o.bytes}};
+    if (o.abbe > 0.0f) oj["abbe"] = o.abbe;  // dispersive only: other scenes' tables keep their keys
+    objects.push_back(oj);
+  }
   j["objects_back_to_front"] = objects;
   j["shared_buffer_bytes"] = r.sharedBytes;
   nlohmann::json rows = nlohmann::json::array();

@@ -152,6 +152,8 @@ void writeWebBundle(const fs::path& dir, const std::string& sceneName, const Sce
     const LabParams& q = k[i].params;
     const std::string prefix = "object" + std::to_string(i) + "_";
     nlohmann::json oj = {{"ior", q.ior},
+                         {"iors", vec(q.iors)},
+                         {"dispersion", q.dispersion},
                          {"absorption", vec(q.absorption)},
                          {"backRange", q.backRange},
                          {"exitRange", q.exitRange},

@@ -8,6 +8,8 @@
 #include "lab/image_io.hpp"
 #include "lab/obj_loader.hpp"
 
+#include <snell/shade.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -131,6 +133,7 @@ RefractiveObject readObject(ObjectReader r, std::string field, const std::string
   if (r.has("transform")) o.transform = readTransform(r.object("transform"));
   o.ior = static_cast<float>(r.number("ior", o.ior, Range{0.0, 10.0, true, false}));
   o.absorption = r.vector3("absorption", o.absorption, kColor);
+  o.abbe = static_cast<float>(r.number("abbe", o.abbe, Range{1.0, 1e4, false, false}));
   r.finish();
   return o;
 }
@@ -516,11 +519,18 @@ std::vector<Painting> buildPaintings(const Scene& scene) {
   return out;
 }
 
+bool dispersive(const FrameObject& o) { return o.abbe > 0.0f; }
+
+vec3 channelIors(const FrameObject& o) {
+  return dispersive(o) ? snellDispersionIors(o.ior, o.abbe) : vec3(o.ior);
+}
+
 SceneFrame buildFrame(const Scene& scene, float time) {
   SceneFrame f;
   f.camera = scene.camera;
   for (std::size_t i = 0; i < scene.objects.size(); ++i)
-    f.objects.push_back(FrameObject{buildObjectMesh(scene, i, time), scene.objects[i].ior, scene.objects[i].absorption});
+    f.objects.push_back(FrameObject{buildObjectMesh(scene, i, time), scene.objects[i].ior, scene.objects[i].absorption,
+                                       scene.objects[i].abbe});
   f.environment = buildEnvironment(scene);
   f.paintings = buildPaintings(scene);
   return f;

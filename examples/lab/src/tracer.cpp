@@ -120,12 +120,13 @@ struct ReferenceTracer::Impl {
 
   struct Object {
     Mesh mesh;
-    double ior = 1.5;
+    glm::dvec3 iors{1.5};  // per colour channel (channelIors); green is the d line's
     glm::dvec3 sigma{0.0};
   };
   std::vector<Object> objects;
   std::vector<int> objectOfGeom;  // full's geomID -> object index, -1 for the paintings
   std::uint32_t allObjects = 0;   // a bit per object
+  bool dispersive = false;        // an object's IOR differs between channels
   std::vector<Painting> paintings;
   std::vector<std::size_t> paintingFirstTriangle;
   Environment environment;
@@ -265,7 +266,10 @@ struct ReferenceTracer::Impl {
     }
   }
 
-  double iorOf(int object) const { return object < 0 ? 1.0 : objects[static_cast<std::size_t>(object)].ior; }
+  // `channel`: 0, 1, 2 (TraceOptions::channel once resolved).
+  double iorOf(int object, int channel) const {
+    return object < 0 ? 1.0 : objects[static_cast<std::size_t>(object)].iors[channel];
+  }
 
   // Beer-Lambert over a segment in `medium` (-1: air, exactly 1).
   glm::dvec3 beer(int medium, double distance, const TraceOptions& o) const {
@@ -281,20 +285,20 @@ struct ReferenceTracer::Impl {
     Media refracted, reflected;
     int before = -1;  // the medium of the segment that led to the surface
   };
-  Crossing crossing(const Media& m, int b, bool exiting) const {
+  Crossing crossing(const Media& m, int b, bool exiting, int channel) const {
     Crossing c;
     if (exiting) {
       const Media in = m.contains(b) ? m : m.with(b);
       c.reflected = in;
       c.refracted = m.without(b);
       c.before = in.top();
-      c.eta = iorOf(in.top()) / iorOf(c.refracted.top());
+      c.eta = iorOf(in.top(), channel) / iorOf(c.refracted.top(), channel);
     } else {
       const Media out = m.without(b);
       c.reflected = out;
       c.refracted = out.with(b);
       c.before = out.top();
-      c.eta = iorOf(out.top()) / iorOf(b);
+      c.eta = iorOf(out.top(), channel) / iorOf(b, channel);
     }
     return c;
   }
@@ -341,7 +345,7 @@ struct ReferenceTracer::Impl {
     if (h.kind == HitKind::Painting) return paintingColor(h) * beer(media.top(), h.t, opt);
     const Surface s = objectSurface(h);
     const bool exiting = glm::dot(d, s.geometricNormal) > 0.0;
-    const Crossing c = crossing(media, h.object, exiting);
+    const Crossing c = crossing(media, h.object, exiting, opt.channel);
     const glm::dvec3 atten = beer(c.before, h.t, opt);
     if (depth >= opt.maxDepth) {
       ++stats.truncated;
@@ -390,7 +394,7 @@ struct ReferenceTracer::Impl {
     const Surface s = objectSurface(h);
     const int n = ++count[static_cast<std::size_t>(b)];
     // The first surface met is the entry, every later one an exit, whatever the normal says.
-    const Crossing c = crossing(media, b, n > 1);
+    const Crossing c = crossing(media, b, n > 1, opt.channel);
     if (n == 1) {
       const ExactRefraction t = refractExact(d, s.normal, c.eta, TirPolicy::Critical);
       if (t.tir) ++stats.tirEvents;
@@ -522,8 +526,9 @@ ReferenceTracer::ReferenceTracer(const std::vector<FrameObject>& objects, std::v
                                        std::to_string(kMaxObjects) + " are supported)");
   for (std::size_t i = 0; i < objects.size(); ++i) {
     validateMesh(objects[i].mesh, "reference tracer mesh " + std::to_string(i));
-    impl_->objects.push_back(
-        Impl::Object{objects[i].mesh, static_cast<double>(objects[i].ior), glm::dvec3(objects[i].absorption)});
+    impl_->objects.push_back(Impl::Object{objects[i].mesh, glm::dvec3(channelIors(objects[i])),
+                                          glm::dvec3(objects[i].absorption)});
+    impl_->dispersive = impl_->dispersive || dispersive(objects[i]);
   }
   impl_->paintings = std::move(paintings);
   impl_->environment = std::move(environment);
@@ -532,13 +537,27 @@ ReferenceTracer::ReferenceTracer(const std::vector<FrameObject>& objects, std::v
 
 ReferenceTracer::~ReferenceTracer() = default;
 
-double ReferenceTracer::ior() const { return impl_->objects.front().ior; }
+double ReferenceTracer::ior() const { return impl_->objects.front().iors.y; }
 double ReferenceTracer::offsetEpsilon() const { return impl_->eps; }
 
 glm::dvec3 ReferenceTracer::radiance(const Ray& ray, const TraceOptions& options, TraceStats* stats,
                                      bool* hitObject) const {
   TraceStats local;
   TraceStats& s = stats ? *stats : local;
+  if (options.channel < -1 || options.channel > 2)
+    throw Error(ErrorKind::Render, "ray tracer: channel " + std::to_string(options.channel) + " (-1, 0, 1 or 2)");
+  if (options.channel < 0) {
+    TraceOptions one = options;
+    one.channel = 1;
+    if (!impl_->dispersive) return radiance(ray, one, &s, hitObject);
+    // Each channel along its own path: red's and blue's first hit is green's (the primary ray bends nowhere).
+    glm::dvec3 c;
+    for (int k = 0; k < 3; ++k) {
+      one.channel = k;
+      c[k] = radiance(ray, one, &s, k == 1 ? hitObject : nullptr)[k];
+    }
+    return c;
+  }
   if (options.mode != TraceMode::Full) {
     const int events = options.mode == TraceMode::TwoInterfaces ? 2 : options.events;
     if (events < 2 || events > 255)
@@ -582,7 +601,7 @@ TraceResult ReferenceTracer::render(const Camera& camera, const TraceOptions& op
 }
 
 TraceResult ReferenceTracer::renderComposited(const Camera& camera, const std::vector<std::size_t>& order,
-                                              const std::vector<double>& index, const TraceOptions& options) const {
+                                              const std::vector<glm::dvec3>& index, const TraceOptions& options) const {
   const auto start = std::chrono::steady_clock::now();
   const std::string problem = cameraProblem(camera);
   if (!problem.empty()) throw Error(ErrorKind::Render, "ray tracer: camera: " + problem);
@@ -590,6 +609,8 @@ TraceResult ReferenceTracer::renderComposited(const Camera& camera, const std::v
   if (order.size() != n || index.size() != n)
     throw Error(ErrorKind::Render, "ray tracer: the composited model needs an order and an index for each of the " +
                                        std::to_string(n) + " objects");
+  bool dispersive = false;
+  for (const glm::dvec3& i : index) dispersive = dispersive || i.x != i.y || i.z != i.y;
   std::vector<bool> seen(n, false);
   for (std::size_t o : order) {
     if (o >= n || seen[o]) throw Error(ErrorKind::Render, "ray tracer: the composited model's order must name each object once");
@@ -622,7 +643,14 @@ TraceResult ReferenceTracer::renderComposited(const Camera& camera, const std::v
           continue;
         }
         const std::uint64_t tirBefore = local.tirEvents;
-        if (impl_->compositedPixel(ray, b, index[static_cast<std::size_t>(b)], layers, view, options, local, &c)) {
+        const glm::dvec3& eta = index[static_cast<std::size_t>(b)];
+        bool drawn = impl_->compositedPixel(ray, b, eta.y, layers, view, options, local, &c);
+        if (drawn && dispersive) {  // red and blue along their own paths (the same front face as green's)
+          glm::dvec3 other;
+          for (int k = 0; k < 3; k += 2)
+            if (impl_->compositedPixel(ray, b, eta[k], layers, view, options, local, &other)) c[k] = other[k];
+        }
+        if (drawn) {
           next.at(x, y) = vec4(vec3(c), 1.0f);
           if (local.tirEvents != tirBefore) result.tir.set(x, y, true);
         }
@@ -663,7 +691,7 @@ std::vector<PathEvent> ReferenceTracer::principalPath(const Ray& ray, int maxEve
     }
     const Impl::Surface s = impl_->objectSurface(h);
     const bool exiting = glm::dot(d, s.geometricNormal) > 0.0;
-    const Impl::Crossing c = impl_->crossing(media, h.object, exiting);
+    const Impl::Crossing c = impl_->crossing(media, h.object, exiting, 1);
     const ExactRefraction r = refractExact(d, s.normal, c.eta, policy);
     media = r.tir ? c.reflected : c.refracted;
     e.object = h.object;

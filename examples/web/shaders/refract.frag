@@ -30,6 +30,8 @@ uniform mat4 bufferClipFromView;  // how the buffers were rendered (the guard ba
 uniform float zNear;
 uniform float zFar;
 uniform float ior;
+uniform vec3 iors;        // the IOR per colour channel where dispersion is 1 (green is ior)
+uniform int dispersion;   // 1: one path per colour channel
 uniform vec3 absorption;  // Beer-Lambert, per unit length
 uniform vec3 envX;        // world directions of the view axes, the environment's rotation folded in
 uniform vec3 envY;
@@ -89,7 +91,8 @@ void main() {
   m.tirPolicy = SNELL_TIR_CRITICAL;
   m.ior = ior;
   m.iorOutside = 1.0;
-  m.iors = vec3(ior, ior, ior);
+  m.iors = iors;
+  m.dispersion = dispersion != 0 ? 3 : 1;
   m.absorption = absorption;
   m.reflection = true;
 

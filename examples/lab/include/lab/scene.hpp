@@ -40,8 +40,9 @@ struct RefractiveObject {
   std::string field;  // where it stands in the file ("object", "objects[1]"), for messages
   MeshSpec mesh;
   Transform transform;
-  float ior = 1.5f;
+  float ior = 1.5f;       // at the helium d line (587.56 nm): the green channel's
   vec3 absorption{0.0f};  // Beer-Lambert sigma_a per world unit, linear RGB
+  float abbe = 0.0f;      // Abbe number V_d of its dispersion; 0: none (one IOR for every channel)
 };
 
 enum class EnvironmentKind { Sky, Image, Color };
@@ -123,7 +124,13 @@ struct FrameObject {
   Mesh mesh;  // world space
   float ior = 1.5f;
   vec3 absorption{0.0f};
+  float abbe = 0.0f;  // RefractiveObject::abbe
 };
+// The IOR per colour channel (red, green, blue) of an object: snellDispersionIors (shade/dispersion.glsl:
+// red at the C line, green at the d line, so green is `ior`, blue at the F line) with an Abbe number,
+// (ior, ior, ior) without one. Every renderer of the lab (ray tracer, GL rows, the page) takes them from here.
+vec3 channelIors(const FrameObject& o);
+bool dispersive(const FrameObject& o);
 
 // Everything a renderer needs for one frame.
 struct SceneFrame {

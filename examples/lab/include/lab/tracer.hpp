@@ -61,6 +61,10 @@ struct TraceOptions {
   bool absorption = true;    // Beer-Lambert inside the object
   int threads = 0;           // 0: std::thread::hardware_concurrency()
   bool progress = true;      // progress bar on stderr (only when it is a terminal)
+  // The IOR the objects refract with: -1, each colour channel traced with its own (channelIors: three paths
+  // per pixel where an object disperses, one where none does); 0, 1, 2: every channel with the red, green
+  // (the d line: `ior`) or blue one.
+  int channel = -1;
 };
 
 struct TraceStats {
@@ -119,7 +123,7 @@ class ReferenceTracer {
   TraceResult render(const Camera& camera, const TraceOptions& options) const;
 
   // The composited two-interface model: what drawing the objects one after the other in `order`, each
-  // with its exact two-interface path (refract in with index[object], TIR clamped to the critical
+  // with its exact two-interface path (refract in with index[object], per colour channel, TIR clamped to the critical
   // angle at the exit, Fresnel reflection at the entry), reading what is drawn behind it as a picture, can
   // reach. Each object's pass covers the pixels where its front face is nearer than the paintings and
   // shades them over the frame so far; its rays see the paintings, and the objects drawn before it as
@@ -127,7 +131,7 @@ class ReferenceTracer {
   // were not there). The floor of any image-space method that composites objects (mask: pixels whose
   // primary ray meets an object first; tir: clamped exits).
   TraceResult renderComposited(const Camera& camera, const std::vector<std::size_t>& order,
-                               const std::vector<double>& index, const TraceOptions& options) const;
+                               const std::vector<glm::dvec3>& index, const TraceOptions& options) const;
 
   // Radiance along one ray (linear RGB). hitObject: whether the ray's first
   // hit is the refractive object.
@@ -136,12 +140,12 @@ class ReferenceTracer {
 
   // The principal specular path of a ray: refraction wherever Snell allows it,
   // TIR handled by `policy` (Reflect: mirror; Critical: tangent clamp), no
-  // Fresnel branching; stops at an escape, a painting, or after maxEvents
+  // Fresnel branching, with the objects' IOR at the d line (green); stops at an escape, a painting, or after maxEvents
   // object interfaces. Whether each hit enters or exits is decided by the
   // geometric normal (outward winding), so rays may start inside the object.
   std::vector<PathEvent> principalPath(const Ray& ray, int maxEvents, TirPolicy policy) const;
 
-  double ior() const;  // the first object's
+  double ior() const;  // the first object's (at the d line)
   double offsetEpsilon() const;  // the self-intersection offset along the normal
 
  private:
