@@ -10,6 +10,17 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh >&2
 build=${SNELL_BUILD_DIR:-build}
+# A build folder copied with the tree (or made by another checkout) names that tree's sources in its cache:
+# CMake then stops with a cache-directory error that does not say what to do.
+if [ -f "$build/CMakeCache.txt" ]; then
+  home=$(sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' "$build/CMakeCache.txt")
+  if [ -n "$home" ] && [ "$(cd "$home" 2>/dev/null && pwd -P)" != "$(pwd -P)" ]; then
+    dir=$(cd "$build" && pwd)
+    echo "build-target.sh: $dir was configured for the sources in $home, not this tree ($(pwd))." >&2
+    echo "build-target.sh: remove it (rm -rf '$dir') or set SNELL_BUILD_DIR to another folder, then run again." >&2
+    exit 2
+  fi
+fi
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j "$(nproc)" --target "$1" >&2
 cd "$build" && pwd

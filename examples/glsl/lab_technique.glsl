@@ -131,19 +131,23 @@ SNELL_FN SnellTwoInterfaceResult labShade(int technique, bool reference, vec3 fr
                                      labTechnique(technique, reference, p), labMaterial(p), labView(p));
 }
 
+/* The preset whose reflect slot the engine rows reflect with (the one the techniques' rows are most often
+   compared with), so that an engine row differs from them only in the transmitted light. */
+#define LAB_ENGINE_REFLECTION_TECHNIQUE SNELL_TECHNIQUE_PLANE_NORMAL_2
+
 /* An engine's refraction model in place of the two-interface trace (the lab's engine rows): the scene colour
    where the model reads it (clamped to the edge, as the engines' samplers), mixed with the environment along the
    model's direction by its scene weight, absorbed over the model's distance; the same Fresnel reflection at the
-   first surface as labShade's rows, through the normal plane (2 it.) preset's reflect slot, so a row differs from
-   the techniques only in the transmitted light. fetches: the colour read, the environment read where the weight
-   is below 1, one depth read for the models that test depth (HDRP, Godot) and the reflect slot's. */
+   first surface as labShade's rows, through LAB_ENGINE_REFLECTION_TECHNIQUE's reflect slot. fetches: the
+   colour read, the environment read where the weight is below 1, one depth read for the models that test
+   depth (HDRP, Godot) and the reflect slot's. */
 SNELL_FN SnellTwoInterfaceResult labEngineShade(int model, float parameter, vec3 frontPosition, vec3 frontNormal,
                                                 SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal,
                                                 SNELL_TEX2D scenePyramid, SNELL_TEX2D sceneColor,
                                                 SNELL_ENVIRONMENT_TEX environment, LabParams p) {
   SnellDepthSurface scene = snellDepthSurface(p.clipFromView, p.zNear, p.zFar, SNELL_DEPTH_GL, 1.0f);
   scene.closed = false;
-  SnellTechnique t = labTechnique(SNELL_TECHNIQUE_PLANE_NORMAL_2, false, p);
+  SnellTechnique t = labTechnique(LAB_ENGINE_REFLECTION_TECHNIQUE, false, p);
   SnellMaterial m = labMaterial(p);
   SnellView v = labView(p);
   float eta = snellIorToEta(m.iorOutside, m.ior);

@@ -2,6 +2,7 @@
 // mirror, the table) on the sphere-in-front-of-a-painting scene at 64x64, and
 // the command line's errors and exit codes.
 #include "lab_run.hpp"
+#include "references.hpp"
 #include "technique.hpp"
 
 #include "lab/metrics.hpp"
@@ -13,6 +14,7 @@
 
 #include <sys/wait.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -195,6 +197,43 @@ TEST(LabRun, ADispersiveObjectIsDrawnWithAPathPerChannel) {
   }
 }
 
+// A glass ball under the sky alone: every exit ray rightly finds no scene and shows the environment, which
+// is not a fallback to count (it was 100 % invalid); the exact paths that the rule trusts are the ray
+// tracer's: before a painting that fills every exit ray's view none escapes.
+TEST(LabRun, AFallbackToTheEnvironmentWhereTheExactPathEscapesIsNotInvalid) {
+  labtest::TempDir dir;
+  LabOptions o = labtest::labRunOptions("sphere_painting", 64);
+  o.scenePath = dir.write("sky_ball.json", R"({ "camera": { "position": [0, 0, 5], "fov": 40 },
+    "object": { "mesh": { "type": "icosphere", "radius": 1, "subdivisions": 4 } }, "environment": { "type": "sky" } })");
+  o.techniques = {"plane-normal-2", "engine-threejs"};
+  const LabResult r = snell::lab::runLab(o);
+  ASSERT_EQ(r.rows.size(), 3u);
+  for (const TechniqueRow& t : r.rows) {
+    SCOPED_TRACE(t.name);
+    EXPECT_EQ(t.invalidShare, 0.0);
+    if (t.engine == nullptr) {
+      EXPECT_GT(t.exitMissShare, 0.99);  // the exit rays did find nothing
+    }
+  }
+  const std::string wall = dir.write("wall_ball.json", R"({ "camera": { "position": [0, 0, 5], "fov": 40 },
+    "object": { "mesh": { "type": "icosphere", "radius": 1, "subdivisions": 4 } }, "environment": { "type": "sky" },
+    "opaque": [ { "type": "painting", "center": [0, 0, -3.5], "size": [60, 60], "texture": { "type": "pattern" } } ] })");
+  for (const std::string& scene : {dir.file("sky_ball.json"), wall}) {
+    snell::lab::Scene s = snell::lab::loadScene(scene);
+    s.camera.width = s.camera.height = 64;
+    const snell::lab::SceneFrame frame = snell::lab::buildFrame(s);
+    LabOptions quiet = o;
+    snell::lab::LabResult result;
+    const snell::lab::References refs = snell::lab::traceReferences(frame, {}, quiet, result);
+    const std::size_t escapes = refs.escapes.count(), object = refs.full.mask.count();
+    if (scene == dir.file("sky_ball.json")) {
+      EXPECT_GT(escapes, object * 99 / 100) << "the ball's exact paths under the sky";
+    } else {
+      EXPECT_EQ(escapes, 0u) << "the painting fills the view behind the ball";
+    }
+  }
+}
+
 // The near plane cuts the whole front of the sphere: the ray tracer still sees the object (its rays start
 // on the near plane, inside the sphere), the front-face pass shades nothing. That is an error naming the
 // cause, not a table of equal MSEs with 0 fetches.
@@ -351,6 +390,44 @@ TEST(LabCli, UsageMessagesSayWhatIsWrongAndWhatWouldBeRight) {
   EXPECT_EQ(scene.code, 4) << scene.err;
   EXPECT_NE(scene.err.find("camera.resolution"), std::string::npos) << scene.err;
   EXPECT_NE(scene.err.find("[8, 8192]"), std::string::npos) << scene.err;
+  // CLI11's own messages carry the program's name too, as every other error does.
+  const ExeRun backend = runLabExe("--backend vulkan -q", dir);
+  EXPECT_EQ(backend.code, 2);
+  EXPECT_EQ(backend.err.rfind("snell-lab: --backend: vulkan not in {auto,osmesa,egl}", 0), 0u) << backend.err;
+  // An empty name in the list is a typo, not a shorter list.
+  const ExeRun empty = runLabExe("-t 'single,,' -q", dir);
+  EXPECT_EQ(empty.code, 2);
+  EXPECT_NE(empty.err.find("snell-lab: --technique 'single,,': an empty name in the list"), std::string::npos)
+      << empty.err;
+}
+
+// A window modelled as one quad: the lab renders it (every ray through it falls back) and says why.
+TEST(LabCli, AnOpenMeshIsAWarningNamingIt) {
+  labtest::TempDir dir;
+  dir.write("window.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
+  const std::string scene = dir.write("window.json", R"({ "camera": { "position": [0, 0, 5] },
+    "object": { "mesh": { "type": "obj", "path": "window.obj" } } })");
+  const ExeRun run = runLabExe("'" + scene + "' --size 32x32 -t single -q --out ''", dir);
+  EXPECT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.err.find("snell-lab: warning: object (" + dir.file("window.obj") +
+                         "): the mesh is open (4 edges with one triangle)"),
+            std::string::npos)
+      << run.err;
+  const ExeRun ball = runLabExe("'" + labtest::scenesDir() + "/sphere_painting.json' --size 32x32 -t single -q --out ''", dir);
+  EXPECT_EQ(ball.err.find("open"), std::string::npos) << ball.err;
+}
+
+// A frame larger than the memory budget is refused at once with the estimate and a size that fits, before
+// the ray trace or a buffer (8192x8192: about 140 GB with every row).
+TEST(LabCli, AFrameOverTheMemoryBudgetIsRefusedWithTheEstimate) {
+  labtest::TempDir dir;
+  const auto start = std::chrono::steady_clock::now();
+  const ExeRun big = runLabExe("--size 8192x8192 -q --out ''", dir);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 20.0);
+  EXPECT_EQ(big.code, 2) << big.err;
+  EXPECT_NE(big.err.find("snell-lab: 8192x8192 with 1 object and "), std::string::npos) << big.err;
+  EXPECT_NE(big.err.find("of memory, over the lab's budget of"), std::string::npos) << big.err;
+  EXPECT_NE(big.err.find("choose a smaller --size ("), std::string::npos) << big.err;
 }
 
 }  // namespace

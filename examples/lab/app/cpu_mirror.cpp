@@ -49,7 +49,8 @@ void shadeOnCpu(const CpuShader& shade, const TechniqueBuffers& tb, int threads,
 }
 
 CpuGpuTally compareCpuGpu(const CpuShader& shade, const TechniqueBuffers& tb, const Image& cpuColor,
-                          const Image& cpuStats) {
+                          const Image& cpuStats, const Mask& escapes) {
+  const bool backSlot = shade.info.engine == nullptr;
   CpuGpuTally tally;
   auto covered = [&](int x, int y) { return tb.normal.at(x, y).w > 0.0f; };
   const gpu::FrameComparison c =
@@ -66,7 +67,8 @@ CpuGpuTally compareCpuGpu(const CpuShader& shade, const TechniqueBuffers& tb, co
     for (int x = 0; x < tb.normal.width; ++x) {
       if (!covered(x, y)) continue;
       const vec4 s = tb.stats.at(x, y);
-      tally.invalid += s.x > 0.5f;
+      const bool rightlyEscaped = escapes.at(x, y) && s.w < 0.5f && (s.z > 0.5f || !backSlot);
+      tally.invalid += s.x > 0.5f && !rightlyEscaped;
       tally.backMiss += s.z < 0.5f;
       tally.exitMiss += s.w < 0.5f;
       tally.fetches += static_cast<double>(s.y);

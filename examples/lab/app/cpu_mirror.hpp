@@ -5,6 +5,7 @@
 #include "lab_run.hpp"
 #include "technique.hpp"
 
+#include "lab/mask.hpp"
 #include "lab/scene.hpp"
 
 #include <algorithm>
@@ -139,9 +140,11 @@ struct CpuGpuTally {
   void agreementInto(TechniqueRow& row) const;  // the CPU-GPU fields only (pixels of every pass, back sides too)
 };
 
-// Stage 4b: the tally of one object's front pass (its covered pixels).
+// Stage 4b: the tally of one object's front pass (its covered pixels). `escapes` (References::escapes):
+// where a fallback to the environment is right (not counted invalid) when the row found the back face, or
+// has no back-face slot (an engine row).
 CpuGpuTally compareCpuGpu(const CpuShader& shade, const TechniqueBuffers& tb, const Image& cpuColor,
-                          const Image& cpuStats);
+                          const Image& cpuStats, const Mask& escapes);
 
 // SNELL_LAB_DEBUG_PARITY: the worst pixel of one object's pass (`tally` of that pass alone): its inputs and both
 // builds' results, on stderr.

@@ -377,9 +377,8 @@ struct GpuLab::Impl {
         snellDepthSurface(k.params.clipFromView, k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 0.0f).perspective;
     for (const LabShader& shader : shaders) {
       // Only the strategies the row's slots call (on any object): the same code paths, compiled in a fraction
-      // of the time. An engine row's only slot is the reflection's: the normal plane (2 it.) preset's
-      // (lab_technique.glsl).
-      const int id = shader.engineModel >= 0 ? SNELL_TECHNIQUE_PLANE_NORMAL_2 : shader.technique;
+      // of the time. An engine row's only slot is the reflection's, LAB_ENGINE_REFLECTION_TECHNIQUE's.
+      const int id = shader.engineModel >= 0 ? LAB_ENGINE_REFLECTION_TECHNIQUE : shader.technique;
       if (snellFindTechnique(id) == nullptr) throw gpu::Error("snell-lab: no technique has id " + std::to_string(id));
       if (shader.engineModel >= SNELL_ENGINE_MODEL_COUNT)
         throw gpu::Error("snell-lab: no engine model has id " + std::to_string(shader.engineModel));

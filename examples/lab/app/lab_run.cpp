@@ -24,6 +24,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace snell::lab {
 
 namespace fs = std::filesystem;
@@ -238,7 +240,7 @@ TechniqueRow runTechnique(GpuLab& gpu, std::size_t index, const LabRowSpec& spec
     const CpuShader shade{spec, engineParameter, pass.cb, setup.k[pass.object].params, setup.margin};
     Image cpuColor(W, H), cpuStats(W, H);
     shadeOnCpu(shade, pass.tb, threads, cpuColor, cpuStats);
-    const CpuGpuTally own = compareCpuGpu(shade, pass.tb, cpuColor, cpuStats);
+    const CpuGpuTally own = compareCpuGpu(shade, pass.tb, cpuColor, cpuStats, refs.escapes);
     debugWorstPixel(shade, pass.tb, cpuColor, cpuStats, own);
     agreement += own;
     if (pass.backSide) continue;
@@ -402,6 +404,12 @@ std::vector<std::size_t> pixelsPerObject(const References& refs, const SceneFram
 // of 32 where that is possible: the depth pyramid's levels then halve exactly for five levels (odd sizes
 // drop a texel row per level, which shifts the coarse levels the depth-based plane reads).
 namespace {
+std::string fmtGb(double bytes) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f GB", bytes / 1e9);
+  return b;
+}
+
 int guardBandMargin(double fraction, int width, int height) {
   int margin = static_cast<int>(std::lround(fraction * std::max(width, height)));
   if (margin > 0)
@@ -409,6 +417,35 @@ int guardBandMargin(double fraction, int width, int height) {
       if ((width + 2 * m) % 32 == 0 && (height + 2 * m) % 32 == 0) return m;
   return margin;
 }
+
+// What a run holds at its peak, about: from the largest resident set measured at 256, 512 and 1024 pixels
+// square (sphere_painting with 2 rows and with every row, panes with 3 objects): 1.3 KB per pixel for one
+// object (its GPU and read-back buffers with the guard band, the references, the pictures), 0.85 KB more per
+// further object (its own buffers), 40 bytes per row (its image on both sides), over about 300 MB (the
+// driver, the tracer, the meshes).
+double estimatedBytes(double pixels, std::size_t objects, std::size_t rows) {
+  return 300e6 + pixels * (1300.0 + 850.0 * static_cast<double>(objects - 1) + 40.0 * static_cast<double>(rows));
+}
+
+// A frame the machine cannot hold is refused before anything is allocated, with the estimate, rather than
+// left to swap or to the OOM killer: the budget is three quarters of the physical memory.
+void checkMemoryBudget(int width, int height, std::size_t objects, std::size_t rows) {
+  const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || pageSize <= 0) return;  // unknown: nothing to compare with
+  const double memory = static_cast<double>(pages) * static_cast<double>(pageSize), budget = 0.75 * memory;
+  const double need = estimatedBytes(static_cast<double>(width) * height, objects, rows);
+  if (need <= budget) return;
+  const double perPixel = (estimatedBytes(1.0, objects, rows) - estimatedBytes(0.0, objects, rows));
+  const int side = std::max(0, static_cast<int>(std::sqrt(std::max(0.0, budget - estimatedBytes(0.0, objects, rows)) /
+                                                          perPixel)) / 64 * 64);
+  throw Error(ErrorKind::Usage,
+              std::to_string(width) + "x" + std::to_string(height) + " with " + std::to_string(objects) +
+                  (objects == 1 ? " object" : " objects") + " and " + std::to_string(rows) + " rows needs about " +
+                  fmtGb(need) + " of memory, over the lab's budget of " + fmtGb(budget) + " (3/4 of this machine's " +
+                  fmtGb(memory) + "); choose a smaller --size (" + std::to_string(side) + "x" + std::to_string(side) +
+                  " fits) or fewer techniques (-t)");
+}
+
 }  // namespace
 
 LabResult runLab(const LabOptions& options) {
@@ -426,7 +463,18 @@ LabResult runLab(const LabOptions& options) {
                      techniques.end());
   if (options.width > 0) scene.camera.width = options.width;
   if (options.height > 0) scene.camera.height = options.height;
+  checkMemoryBudget(scene.camera.width, scene.camera.height, scene.objects.size(), techniques.size());
   const SceneFrame frame = buildFrame(scene, scene.frameTime(0));
+  // A glTF asset's open glass was named when it was read; a scene file's meshes are built here.
+  for (std::size_t i = 0; i < frame.objects.size(); ++i) {
+    const MeshSpec& m = scene.objects[i].mesh;
+    if (m.kind == MeshKind::Loaded) continue;
+    if (const std::size_t open = openEdges(frame.objects[i].mesh))
+      std::fprintf(stderr,
+                   "snell-lab: warning: %s%s: the mesh is open (%zu edges with one triangle): rays through its holes "
+                   "find no back face and fall back\n",
+                   scene.objects[i].field.c_str(), m.kind == MeshKind::Obj ? (" (" + m.path + ")").c_str() : "", open);
+  }
 
   LabResult result;
   result.scene = scene.name.empty() ? fs::path(options.scenePath).stem().string() : scene.name;

@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
   app.add_option("scene", o.scenePath,
                  "scene file (JSON, see examples/scenes/README.md); default: the bundled bunny, " + o.scenePath +
                      " (the source tree's examples/scenes, compiled in)");
-  app.add_option("-t,--technique", techniqueArgs, techniqueHelp)->delimiter(',');
+  app.add_option("-t,--technique", techniqueArgs, techniqueHelp);
   app.add_option("--size", size, "render size WxH (default: the scene's, 512x512 for the bundled scenes)");
   app.add_option("--frames", o.frames, "timed frames per technique (median; all techniques interleaved)")
       ->check(CLI::Range(1, 10000))
@@ -166,7 +166,24 @@ int main(int argc, char** argv) {
   if (const int code = parseCommandLine(app, argc, argv, [&] { suggestOptions(app, argc, argv); }); code >= 0)
     return code;
   o.threejs = !noThreejs;
-  for (const std::string& t : techniqueArgs) {
+  // Comma-separated here rather than by CLI11, which drops empty names: "single,," is a typo, not "single".
+  std::vector<std::string> names;
+  for (const std::string& arg : techniqueArgs) {
+    std::size_t from = 0;
+    for (;;) {
+      const std::size_t comma = arg.find(',', from);
+      const std::string name = arg.substr(from, comma == std::string::npos ? std::string::npos : comma - from);
+      if (name.empty()) {
+        std::fprintf(stderr, "snell-lab: --technique '%s': an empty name in the list; valid: %s, all\n", arg.c_str(),
+                     techniqueNames().c_str());
+        return 2;
+      }
+      names.push_back(name);
+      if (comma == std::string::npos) break;
+      from = comma + 1;
+    }
+  }
+  for (const std::string& t : names) {
     if (t == "all") continue;
     const LabRowSpec row = findRow(t);
     if (!row.technique && !row.engine) {
@@ -175,7 +192,7 @@ int main(int argc, char** argv) {
     }
     o.techniques.push_back(t);
   }
-  if (std::find(techniqueArgs.begin(), techniqueArgs.end(), "all") != techniqueArgs.end()) o.techniques.clear();
+  if (std::find(names.begin(), names.end(), "all") != names.end()) o.techniques.clear();
   if (!size.empty()) {
     int w = 0, h = 0;
     char x = 0, extra = 0;

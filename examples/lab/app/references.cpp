@@ -46,6 +46,15 @@ References traceReferences(const SceneFrame& frame, const std::vector<LabRowSpec
   refs.tir = both(refs.two.tir, refs.full.mask);
   result.tirShare = static_cast<double>(refs.tir.count()) / static_cast<double>(result.objectPixels);
   result.mseTwoVsFullTir = compareImages(refs.full.color, refs.two.color, refs.tir).mse;
+  refs.escapes = Mask(refs.full.mask.width, refs.full.mask.height);
+  for (int y = 0; y < refs.escapes.height; ++y)
+    for (int x = 0; x < refs.escapes.width; ++x) {
+      if (!refs.full.mask.at(x, y)) continue;
+      const std::vector<PathEvent> path = refs.tracer->principalPath(primaryRay(frame.camera, x, y), 3, TirPolicy::Critical);
+      refs.escapes.set(x, y, path.size() == 3 && path[0].type == PathEventType::Enter &&
+                                 (path[1].type == PathEventType::Exit || path[1].type == PathEventType::CriticalClamp) &&
+                                 path[1].object == path[0].object && path[2].type == PathEventType::Escape);
+    }
   to.mode = TraceMode::Principal;
   std::set<int> kept;  // the events of the rows' models
   for (const LabRowSpec& t : techniques)

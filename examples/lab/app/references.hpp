@@ -20,6 +20,9 @@ struct References {
   std::unique_ptr<ReferenceTracer> tracer;
   TraceResult full, two;
   Mask tir;  // object pixels with TIR on the principal path (LabResult::tirShare)
+  // Object pixels whose exact two-interface path leaves the object and meets nothing: the environment is the
+  // right answer there, so a row that falls back to it after a found back face is not invalid.
+  Mask escapes;
   // The principal path of 2 + B events for each bounce count B > 0 a row follows: the model reference
   // of those rows, as `two` is of the two-interface ones.
   std::map<int, TraceResult> principal;

@@ -174,7 +174,9 @@ std::string markdownTable(const LabResult& r) {
   }
   if (engineRows) s += ".\n";
   s += "\nunshaded: object pixels the technique's front-face pass did not cover (they show the scene behind). "
-       "invalid: pixels that fell back (no back-face or exit hit: environment along the ray). leaks: pixels whose "
+       "invalid: pixels that fell back (no back-face or exit hit: environment along the ray), but not those whose "
+       "exit ray found no scene where the ray tracer's exact path also meets nothing after the object (the "
+       "environment is right there). leaks: pixels whose "
        "refracted colour comes from an opaque surface nearer the camera than the object's own front face there (a "
        "foreground shown inside the glass; snell's rows read " +
        std::string(r.sceneLayer == SceneLayer::Behind   ? "the scene layer behind the object's nearest point"

@@ -502,7 +502,7 @@ class Reader {
     }
     validateMesh(mesh, asset_ + ": " + where);
     orientOutward(mesh);
-    const std::size_t open = boundaryEdges(mesh);
+    const std::size_t open = openEdges(mesh);
     if (open > 0)
       warn(where + ": the glass mesh is open (" + std::to_string(open) +
            " edges with one triangle): rays through its holes find no back face");
@@ -515,25 +515,6 @@ class Reader {
     o.absorption = vec3(sigma);
     o.abbe = static_cast<float>(abbe);
     out_.objects.push_back(std::move(o));
-  }
-
-  // Edges (vertices welded by position) that only one triangle uses.
-  static std::size_t boundaryEdges(const Mesh& mesh) {
-    std::map<std::tuple<float, float, float>, std::uint32_t> weld;
-    std::vector<std::uint32_t> id(mesh.positions.size());
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-      const vec3& p = mesh.positions[i];
-      id[i] = weld.emplace(std::make_tuple(p.x, p.y, p.z), static_cast<std::uint32_t>(weld.size())).first->second;
-    }
-    std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
-      for (int e = 0; e < 3; ++e) {
-        std::uint32_t a = id[mesh.indices[t + static_cast<std::size_t>(e)]];
-        std::uint32_t b = id[mesh.indices[t + static_cast<std::size_t>((e + 1) % 3)]];
-        if (a == b) continue;
-        ++uses[std::minmax(a, b)];
-      }
-    return static_cast<std::size_t>(std::count_if(uses.begin(), uses.end(), [](const auto& u) { return u.second == 1; }));
   }
 
   void readOpaque(const std::string& where, const std::string& materialAt, const tinygltf::Material* material,

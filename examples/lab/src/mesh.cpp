@@ -4,8 +4,13 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <map>
+#include <tuple>
 #include <utility>
+#include <vector>
 
 namespace snell::lab {
 
@@ -20,6 +25,22 @@ Bounds meshBounds(const Mesh& mesh) {
     b.hi = glm::max(b.hi, p);
   }
   return b;
+}
+
+std::size_t openEdges(const Mesh& mesh) {
+  std::map<std::tuple<float, float, float>, std::uint32_t> weld;
+  std::vector<std::uint32_t> id(mesh.positions.size());
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    const vec3& p = mesh.positions[i];
+    id[i] = weld.emplace(std::make_tuple(p.x, p.y, p.z), static_cast<std::uint32_t>(weld.size())).first->second;
+  }
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+    for (std::size_t e = 0; e < 3; ++e) {
+      const std::uint32_t a = id[mesh.indices[t + e]], b = id[mesh.indices[t + (e + 1) % 3]];
+      if (a != b) ++uses[std::minmax(a, b)];
+    }
+  return static_cast<std::size_t>(std::count_if(uses.begin(), uses.end(), [](const auto& u) { return u.second == 1; }));
 }
 
 double signedVolume(const Mesh& mesh) {

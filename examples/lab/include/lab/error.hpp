@@ -14,6 +14,7 @@ enum class ErrorKind {
   Schema,  // a scene file is well-formed but a field is wrong (exit code 4)
   Mesh,    // a mesh is empty or degenerate (exit code 4)
   Render,  // the tracer failed (Embree error) (exit code 5)
+  Usage,   // what was asked cannot be done as asked (a frame larger than the memory budget) (exit code 2)
 };
 
 class Error : public std::runtime_error {
@@ -33,6 +34,7 @@ inline int exitCode(ErrorKind kind) {
     case ErrorKind::Schema:
     case ErrorKind::Mesh: return 4;
     case ErrorKind::Render: return 5;
+    case ErrorKind::Usage: return 2;
   }
   return 1;
 }

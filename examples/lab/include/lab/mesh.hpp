@@ -34,6 +34,10 @@ Bounds meshBounds(const Mesh& mesh);
 // Signed volume (positive for a closed mesh with outward winding).
 double signedVolume(const Mesh& mesh);
 
+// The edges only one triangle uses, with vertices welded by position (a closed mesh has none): a window
+// modelled as one quad has four, and rays through such holes find no back face.
+std::size_t openEdges(const Mesh& mesh);
+
 // Whether p lies inside a closed mesh: the parity of the triangles a ray from p crosses (double precision,
 // along a direction no axis-aligned edge lies on). Outside the mesh's bounds: false without a test.
 bool pointInsideMesh(const Mesh& closed, const glm::dvec3& p);
