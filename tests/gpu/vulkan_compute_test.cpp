@@ -2,7 +2,7 @@
 // glslang writes what an independent C++ loop computes, a sampled image reads
 // back its texels, and a machine without a Vulkan driver gets an error that
 // says what to install (never a skip, never an abort).
-#include <snell/gpu/hlsl.hpp>
+#include <snell/gpu/process.hpp>
 #include <snell/gpu/vulkan_compute.hpp>
 
 #include "support/temp_dir.hpp"

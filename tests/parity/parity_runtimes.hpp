@@ -40,8 +40,8 @@ inline const fs::path kRoot = SNELL_SOURCE_DIR;
 #ifndef SNELL_SPIRV_CROSS
 #define SNELL_SPIRV_CROSS "spirv-cross"
 #endif
-inline snell::gpu::HlslTools hlslTools() {
-  snell::gpu::HlslTools t;
+inline snell::gpu::ShaderTools hlslTools() {
+  snell::gpu::ShaderTools t;
   t.glslangValidator = SNELL_GLSLANG_VALIDATOR;
   t.spirvVal = SNELL_SPIRV_VAL;
   t.spirvCross = SNELL_SPIRV_CROSS;

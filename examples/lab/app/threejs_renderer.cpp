@@ -4,7 +4,7 @@
 
 #include <lab/error.hpp>
 #include <nlohmann/json.hpp>
-#include <snell/gpu/hlsl.hpp>
+#include <snell/gpu/process.hpp>
 
 #include <fstream>
 #include <iterator>

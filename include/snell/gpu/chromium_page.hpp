@@ -2,10 +2,12 @@
 // (parity_webgl.hpp) and the WebGPU run in Chromium (parity_webgpu.hpp):
 // tools/browser/run_page.mjs, beside the page's own folder of tools/, serves
 // the page and the job folder on 127.0.0.1 to one Chromium it starts and
-// writes what the page posts back (the results, renderer.txt).
+// writes what the page posts back (the results, renderer.txt). Source tree
+// only, like the runtimes that use it (not installed).
 #pragma once
 
-#include "hlsl.hpp"  // runTool, readParityResults, file helpers
+#include "parity_job.hpp"
+#include "process.hpp"
 #include "include_flattener.hpp"
 
 #include <filesystem>

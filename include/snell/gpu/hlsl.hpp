@@ -6,11 +6,11 @@
 // of a GLSL one, so the HLSL bridge (hlsl_like/snell/bridge.hlsl) is executed
 // and compared with the C++ build, not just compiled.
 //
-//   snell::gpu::HlslTools tools;  // names on PATH, or absolute paths
+//   snell::gpu::ShaderTools tools;  // names on PATH, or absolute paths (shader_tools.hpp)
 //   auto gpu = runParityHlsl(ctx, {"hlsl_like/snell", "glsl", "tests/parity/cases"},
 //                            "optics.glsl", "caseSnellRefract", inputs, {}, "build/hlsl_parity", tools);
 //
-// The tools run as child processes (posix_spawnp, no shell); a missing tool is
+// The tools run as child processes (runTool, process.hpp: posix_spawnp, no shell); a missing tool is
 // an Error naming the Debian package that provides it. Every intermediate
 // (.hlsl wrapper, .spv, cross-compiled .glsl) is written to a work directory
 // you choose (a build directory: the cross-compiled text is a test artifact,
@@ -30,101 +30,26 @@
 #include "error.hpp"
 #include "include_flattener.hpp"
 #include "parity.hpp"
+#include "parity_job.hpp"
+#include "process.hpp"
 #include "program.hpp"
 #include "resources.hpp"
-
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
+#include "shader_tools.hpp"
 
 #include <cctype>
-#include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <regex>
 #include <set>
-#include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
 
-extern char** environ;
-
 namespace snell::gpu {
 
-// The external tools; names are looked up on PATH, or give absolute paths.
-struct HlslTools {
-  std::string glslangValidator = "glslangValidator";  // Debian: glslang-tools
-  std::string spirvVal = "spirv-val";                 // Debian: spirv-tools
-  std::string spirvCross = "spirv-cross";             // Debian: spirv-cross
-};
-
-struct ToolResult {
-  int exitCode = 0;
-  std::string output;  // stdout and stderr, interleaved
-};
-
-// Runs `program args...` (no shell) and collects its output. Throws an Error
-// naming `package` when the program cannot be started (not installed).
-inline ToolResult runTool(const std::string& program, const std::vector<std::string>& args,
-                          const std::string& package) {
-  int fds[2];
-  if (pipe(fds) != 0) throw Error("runTool: pipe() failed: " + std::string(std::strerror(errno)));
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addclose(&actions, fds[0]);
-  posix_spawn_file_actions_adddup2(&actions, fds[1], 1);
-  posix_spawn_file_actions_adddup2(&actions, fds[1], 2);
-  posix_spawn_file_actions_addclose(&actions, fds[1]);
-  std::vector<std::string> argvStrings;
-  argvStrings.push_back(program);
-  argvStrings.insert(argvStrings.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (std::string& a : argvStrings) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  const int rc = posix_spawnp(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  close(fds[1]);
-  if (rc != 0) {
-    close(fds[0]);
-    if (rc == ENOENT || rc == EACCES)
-      throw Error("'" + program + "' not found or not executable: install the Debian package " + package +
-                  " (apt-get install " + package + "), or pass its path in snell::gpu::HlslTools");
-    throw Error("cannot start '" + program + "': " + std::strerror(rc));
-  }
-  ToolResult r;
-  char buf[4096];
-  for (;;) {
-    const ssize_t n = read(fds[0], buf, sizeof buf);
-    if (n > 0) {
-      r.output.append(buf, static_cast<std::size_t>(n));
-    } else if (n < 0 && errno == EINTR) {
-      continue;
-    } else {
-      break;
-    }
-  }
-  close(fds[0]);
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) throw Error("waitpid for '" + program + "' failed: " + std::strerror(errno));
-  }
-  if (WIFEXITED(status)) {
-    r.exitCode = WEXITSTATUS(status);
-    // posix_spawnp may report a failed exec as exit status 127 instead.
-    if (r.exitCode == 127 && r.output.empty())
-      throw Error("'" + program + "' could not be run (exit 127): install the Debian package " + package +
-                  " (apt-get install " + package + "), or pass its path in snell::gpu::HlslTools");
-  } else {
-    r.exitCode = 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-  }
-  return r;
-}
 
 // The result of crossCompileHlslCompute.
 struct HlslCrossCompiled {
@@ -138,43 +63,6 @@ struct HlslCrossCompiled {
 
 namespace detail {
 
-inline std::uint64_t fnv1a(const std::string& s, std::uint64_t h = 1469598103934665603ull) {
-  for (unsigned char c : s) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-
-inline std::string readTextFile(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) return {};
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-inline void writeTextFile(const std::filesystem::path& p, const std::string& text) {
-  std::ofstream out(p, std::ios::binary | std::ios::trunc);
-  out << text;
-  if (!out) throw Error("cannot write " + p.string());
-}
-
-inline void writeFloats(const std::filesystem::path& p, const float* data, std::size_t count) {
-  std::ofstream out(p, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(count * sizeof(float)));
-  if (!out.flush()) throw Error("cannot write " + p.string());
-}
-
-inline std::string indent(const std::string& text) {
-  std::string out = "    ";
-  for (char c : text) {
-    out += c;
-    if (c == '\n') out += "    ";
-  }
-  return out;
-}
-
 inline std::vector<std::string> combinedSamplerUniforms(const std::string& glsl) {
   static const std::regex decl(R"(uniform\s+sampler2D\s+(\w+)\s*;)");
   std::vector<std::string> names;
@@ -183,46 +71,6 @@ inline std::vector<std::string> combinedSamplerUniforms(const std::string& glsl)
   return names;
 }
 
-
-// The results a parity job's device side wrote to `file`: 16 floats per case, `count` cases; `who` names
-// the runtime in the error when the file holds another amount.
-inline std::vector<ParityIO> readParityResults(const std::filesystem::path& file, std::size_t count,
-                                               const std::string& who) {
-  const std::string bytes = readTextFile(file);
-  if (bytes.size() != count * sizeof(ParityIO))
-    throw Error(who + " wrote " + std::to_string(bytes.size()) + " bytes of results for " + std::to_string(count) +
-                " cases: " + file.string());
-  std::vector<ParityIO> out(count);
-  if (!bytes.empty()) std::memcpy(out.data(), bytes.data(), bytes.size());
-  return out;
-}
-
-// The text of the parity case file `caseFile`, from the first of `includeDirs` that has it; `who` names
-// the caller in the error when none does.
-inline std::string readCaseFile(const std::vector<std::filesystem::path>& includeDirs, const std::string& caseFile,
-                                const std::string& who) {
-  for (const std::filesystem::path& d : includeDirs)
-    if (std::filesystem::exists(d / caseFile)) return readTextFile(d / caseFile);
-  throw Error(who + ": case file " + caseFile + " not found in the include directories");
-}
-
-// glslang -V (Vulkan 1.1 SPIR-V) with `options` and the include directories, then spirv-val: the
-// Vulkan and WebGPU parity runtimes compile their compute shaders this way. Throws with the tool's
-// output on failure.
-inline void compileVulkanSpirv(const HlslTools& tools, const std::filesystem::path& source,
-                               const std::filesystem::path& spv, std::vector<std::string> options,
-                               const std::vector<std::filesystem::path>& includeDirs) {
-  std::vector<std::string> args = {"-V", "--target-env", "vulkan1.1", "-o", spv.string()};
-  args.insert(args.end(), options.begin(), options.end());
-  for (const std::filesystem::path& d : includeDirs) args.push_back("-I" + d.string());
-  args.push_back(source.string());
-  ToolResult t = runTool(tools.glslangValidator, args, "glslang-tools");
-  if (t.exitCode != 0)
-    throw Error("glslangValidator -V failed on " + source.string() + " (exit " + std::to_string(t.exitCode) + "):\n" +
-                indent(t.output));
-  t = runTool(tools.spirvVal, {"--target-env", "vulkan1.1", spv.string()}, "spirv-tools");
-  if (t.exitCode != 0) throw Error("spirv-val rejected " + spv.string() + ":\n" + indent(t.output));
-}
 
 }  // namespace detail
 
@@ -234,7 +82,7 @@ inline void compileVulkanSpirv(const HlslTools& tools, const std::filesystem::pa
 inline HlslCrossCompiled crossCompileHlslCompute(const std::string& hlslSource, const std::string& name,
                                                  const std::vector<std::filesystem::path>& includeDirs,
                                                  const std::filesystem::path& workDir,
-                                                 const HlslTools& tools = {}, const std::string& entryPoint = "main") {
+                                                 const ShaderTools& tools = {}, const std::string& entryPoint = "main") {
   namespace fs = std::filesystem;
   std::error_code ec;
   fs::create_directories(workDir, ec);
@@ -356,7 +204,7 @@ inline std::vector<ParityIO> runParityHlsl(const Context& ctx, const std::vector
                                            const std::string& caseFile, const std::string& entry,
                                            const std::vector<ParityIO>& inputs,
                                            const std::vector<ParityTexture>& textures,
-                                           const std::filesystem::path& workDir, const HlslTools& tools = {},
+                                           const std::filesystem::path& workDir, const ShaderTools& tools = {},
                                            const std::vector<std::string>& defines = {},
                                            const std::string& entrySource = {}) {
   namespace fs = std::filesystem;

@@ -9,7 +9,9 @@
 // shifted past the two storage buffers).
 #pragma once
 
-#include "hlsl.hpp"  // runTool, the tools' names, file helpers
+#include "parity_job.hpp"
+#include "process.hpp"
+#include "shader_tools.hpp"
 #include "parity.hpp"
 #include "vulkan_compute.hpp"
 
@@ -59,7 +61,7 @@ inline std::vector<ParityIO> runParityVulkan(const VulkanCompute& vk, const std:
                                              const std::string& caseFile, const std::string& entry,
                                              const std::vector<ParityIO>& inputs,
                                              const std::vector<ParityTexture>& textures,
-                                             const std::filesystem::path& workDir, const HlslTools& tools = {},
+                                             const std::filesystem::path& workDir, const ShaderTools& tools = {},
                                              const std::string& entrySource = {}) {
   namespace fs = std::filesystem;
   std::error_code ec;

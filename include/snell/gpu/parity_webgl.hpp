@@ -12,11 +12,12 @@
 // names, levels and filters (a texture without mips is clamped to level 0,
 // as on GL). The browser side is tools/webgl/parity_page.js, run by
 // detail::runChromiumPage (chromium_page.hpp); the renderer string it reports
-// is kept in the job folder.
+// is kept in the job folder. Source tree only: `cmake --install` leaves this
+// header out, as it leaves out tools/ and its npm packages.
 #pragma once
 
 #include "chromium_page.hpp"
-#include "hlsl.hpp"  // file helpers
+#include "process.hpp"
 #include "include_flattener.hpp"
 #include "parity.hpp"
 

@@ -17,11 +17,14 @@
 // The device side is tools/webgpu/run_parity.ts (naga and the dispatch), and
 // every WGSL also goes through Tint (tools/webgpu/tint_check.mjs, dawn.node's
 // null backend): the npm packages deno, naga-wasm and webgpu, installed from
-// tools/webgpu's lockfile.
+// tools/webgpu's lockfile. Source tree only: `cmake --install` leaves this
+// header out, as it leaves out tools/.
 #pragma once
 
 #include "chromium_page.hpp"
-#include "hlsl.hpp"  // runTool, the tools' names, file helpers
+#include "parity_job.hpp"
+#include "process.hpp"
+#include "shader_tools.hpp"
 #include "parity.hpp"
 
 #include <filesystem>
@@ -87,7 +90,7 @@ inline std::vector<ParityIO> runParityWebGpu(const WebGpuTools& webgpu,
                                              const std::string& caseFile, const std::string& entry,
                                              const std::vector<ParityIO>& inputs,
                                              const std::vector<ParityTexture>& textures,
-                                             const std::filesystem::path& workDir, const HlslTools& tools = {},
+                                             const std::filesystem::path& workDir, const ShaderTools& tools = {},
                                              const std::string& entrySource = {}) {
   namespace fs = std::filesystem;
   const fs::path job = workDir / (fs::path(caseFile).stem().string() + "." + entry);
