@@ -28,6 +28,9 @@ import { layerTarget, Pyramids, rawMaterial, setFilter } from "./targets.js";
 
 const query = new URLSearchParams(location.search);
 const testMode = query.has("test");
+// A deliberately wrong page for the tests that show the checks can fail (serve.mjs --fault=ior): every IOR
+// 0.2 % higher.
+const iorScale = testMode && query.get("fault") === "ior" ? 1.002 : 1;
 const labBuffers = query.get("buffers") === "lab";
 const drawWith = query.get("renderer") ?? "snell";
 const statusLine = document.getElementById("status");
@@ -261,8 +264,8 @@ async function main() {
     techniqueUniforms.frontPositions.value = b.frontPositions ?? null;
     techniqueUniforms.frontNormals.value = b.frontNormals ?? null;
     const c = object.constants;
-    techniqueUniforms.ior.value = c.ior;
-    techniqueUniforms.iors.value = vector(c.iors);
+    techniqueUniforms.ior.value = c.ior * iorScale;
+    techniqueUniforms.iors.value = vector(c.iors).multiplyScalar(iorScale);
     techniqueUniforms.dispersion.value = c.dispersion;
     techniqueUniforms.absorption.value = vector(c.absorption);
     techniqueUniforms.backRange.value = c.backRange;

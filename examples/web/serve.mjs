@@ -5,12 +5,15 @@
 //   node examples/web/serve.mjs BUNDLE_DIR [--port=8080]
 //       then open the printed address in a browser with WebGL 2
 //   node examples/web/serve.mjs BUNDLE_DIR --test [--technique=plane-normal-2] [--buffers=page|lab]
-//       [--renderer=snell|threejs] [--min-share=0.99] [--screenshot=FILE] [--report=FILE] [--chromium=PATH]
+//       [--renderer=snell|threejs] [--min-share=0.99] [--max-diff=255] [--fault=ior] [--screenshot=FILE]
+//       [--report=FILE] [--chromium=PATH]
 //
 // --test opens the page in headless Chromium (SwiftShader), which renders the technique once and posts the
 // canvas; the canvas is compared with the lab's picture of the same technique in the bundle, over the ray
 // tracer's object pixels, both as 8-bit sRGB. It passes when at least --min-share of those pixels (99 % by
-// default) are within 2/255 in every channel. --buffers=lab runs the technique on the lab's own buffers
+// default) are within 2/255 in every channel, and no pixel differs by more than --max-diff levels (255 by
+// default: no bound). --fault=ior draws a deliberately wrong page (every IOR 0.2 % higher), for a test that
+// shows the check can fail. --buffers=lab runs the technique on the lab's own buffers
 // and front-face inputs (in the bundle) instead of the page's: what is left is snell's code in three.js
 // against the lab's llvmpipe render, without the two rasterizers' differences (SwiftShader snaps vertices to
 // 1/16 pixel, llvmpipe to 1/256). --renderer=threejs (a bundle of a glTF scene, with bundle.asset) draws the
@@ -34,7 +37,8 @@ const option = (name, fallback) => {
   return a ? a.slice(name.length + 3) : fallback;
 };
 const positional = args.filter((a) => !a.startsWith("--"));
-const known = ["test", "technique", "buffers", "renderer", "min-share", "screenshot", "report", "chromium", "port"];
+const known = ["test", "technique", "buffers", "renderer", "min-share", "max-diff", "fault", "screenshot", "report",
+  "chromium", "port"];
 for (const a of args.filter((x) => x.startsWith("--")))
   if (!known.includes(a.slice(2).split("=")[0])) usageLater = `unknown option ${a}`;
 const test = args.includes("--test");
@@ -47,13 +51,15 @@ const reportFile = option("report", "");
 const port = Number(option("port", test ? "0" : "8080"));
 const tolerance = 2;      // 8-bit sRGB levels, every channel
 const targetShare = Number(option("min-share", "0.99"));  // of the object pixels
+const maxDiffAllowed = Number(option("max-diff", "255"));  // 8-bit levels, any pixel
+const fault = option("fault", "");
 // SwiftShader compiles and draws a technique in 10-40 s on 2 cores; a page silent this long is stuck.
 const timeoutMs = Number(process.env.SNELL_BROWSER_TIMEOUT_MS ?? 600000);
 
 function usage(message) {
   console.error(`serve.mjs: ${message}\nusage: node examples/web/serve.mjs BUNDLE_DIR [--port=N] | ` +
     "BUNDLE_DIR --test [--technique=NAME] [--buffers=page|lab] [--renderer=snell|threejs] [--min-share=F] " +
-    "[--screenshot=FILE] [--report=FILE] " +
+    "[--max-diff=N] [--fault=ior] [--screenshot=FILE] [--report=FILE] " +
     "[--chromium=PATH]");
   process.exit(2);
 }
@@ -72,6 +78,10 @@ if (!["snell", "threejs"].includes(drawWith)) usage(`--renderer: snell or threej
 if (drawWith === "threejs" && (option("buffers") || option("technique")))
   usage("--renderer=threejs draws with three.js's own renderer: --buffers and --technique are snell's");
 if (!(targetShare >= 0 && targetShare <= 1)) usage(`--min-share: a share in [0, 1], not ${option("min-share")}`);
+if (!(Number.isInteger(maxDiffAllowed) && maxDiffAllowed >= 0 && maxDiffAllowed <= 255))
+  usage(`--max-diff: a whole number of 8-bit levels in [0, 255], not ${option("max-diff")}`);
+if (!["", "ior"].includes(fault)) usage(`--fault: ior, not ${fault}`);
+if (fault && drawWith === "threejs") usage("--fault=ior is a fault of snell's technique, not of three.js's renderer");
 if (!Number.isInteger(port) || port < 0 || port > 65535) usage(`--port: not a port number: ${option("port")}`);
 
 // Served files: a fixed map of names, so nothing outside these folders can be read.
@@ -202,7 +212,7 @@ function compare() {
   const result = {
     scene: bundle.scene, drawnWith: drawWith, ...(drawWith === "snell" ? { technique, buffers } : {}),
     objectPixels: object, tolerance, withinShare: share, target: targetShare,
-    maxDiff, meanMaxChannelDiff: object ? sumDiff / object : 0,
+    maxDiff, maxDiffAllowed, ...(fault ? { fault } : {}), meanMaxChannelDiff: object ? sumDiff / object : 0,
     diffHistogram: Object.fromEntries(histogram.map((n, d) => [d, n]).filter(([, n]) => n > 0)),
     renderer: log.renderer, subpixelBits: log.subpixelBits, firstDrawMs: log.firstDrawMs, staticPassesMs: log.staticMs,
   };
@@ -211,10 +221,11 @@ function compare() {
   const what = drawWith === "threejs" ? "three.js's own renderer"
     : `${technique}, ${buffers === "lab" ? "the lab's buffers" : "the page's buffers"}`;
   const line = `serve.mjs: ${bundle.scene}, ${what}: ${(100 * share).toFixed(2)} % of ${object} object pixels ` +
-    `within ${tolerance}/255 of the lab's (at least ${100 * targetShare} % asked), largest difference ${maxDiff}/255; ` +
+    `within ${tolerance}/255 of the lab's (at least ${100 * targetShare} % asked), largest difference ${maxDiff}/255 ` +
+    `(at most ${maxDiffAllowed} asked)${fault ? `, with the fault ${fault}` : ""}; ` +
     `first draw ${(log.firstDrawMs / 1000).toFixed(1)} s on ${log.renderer}`;
   if (object === 0) finish(1, "serve.mjs: the bundle's object mask is empty: nothing to compare");
-  else finish(share >= targetShare ? 0 : 1, line);
+  else finish(share >= targetShare && maxDiff <= maxDiffAllowed ? 0 : 1, line);
 }
 
 server.on("error", (e) =>
@@ -239,7 +250,7 @@ server.listen(port, "127.0.0.1", () => {
   const picture = labPicture(bundle);
   if (picture.missing) return finish(1, `serve.mjs: ${picture.missing}`);
   const page = drawWith === "threejs" ? `${base}?test=1&renderer=threejs`
-    : `${base}?test=1&buffers=${buffers}&technique=${encodeURIComponent(technique)}`;
+    : `${base}?test=1&buffers=${buffers}&technique=${encodeURIComponent(technique)}${fault ? `&fault=${fault}` : ""}`;
   browser = launchChromium(page,
     { chromium, onFailure: (message) => finish(1, `serve.mjs: ${message}`) });
   setTimeout(() => finish(1, `serve.mjs: no picture from the page after ${timeoutMs / 1000} s (SNELL_BROWSER_TIMEOUT_MS)`),

@@ -1,21 +1,51 @@
 #!/usr/bin/env bash
 # One scene of the three.js page's test (tests/web/CMakeLists.txt):
-#   three_page_test.sh SNELL_LAB NODE SCENE OUT_DIR PAGE_FLOOR [THREEJS_FLOOR]
-# SCENE: a scene file (.json) or a glTF asset (.glb). OUT_DIR/bundle: the frame; OUT_DIR/{lab,page}_buffers.json:
-# the agreement; OUT_DIR/page.png: the page's screenshot. With THREEJS_FLOOR (a glTF scene, whose bundle
-# carries the asset and the lab's render of it with three.js's own renderer): the page also draws the asset
-# with three.js's own renderer (serve.mjs --renderer=threejs), compared with that render over the same object
-# pixels (OUT_DIR/threejs.json, OUT_DIR/threejs.png); a bundle without that render fails.
+#   three_page_test.sh SNELL_LAB NODE SCENE OUT_DIR --technique=NAME --page-floor=F [--lab-max-diff=N]
+#                      [--threejs-floor=F] [--fault]
+# SCENE: a scene file (.json) or a glTF asset (.glb). OUT_DIR/bundle: the frame with the technique;
+# OUT_DIR/{lab,page}_buffers.json: the agreement; OUT_DIR/page.png: the page's screenshot.
+# - On the lab's buffers: every object pixel but one in a thousand within 2/255 of the lab's picture, and none
+#   beyond --lab-max-diff levels (default 4).
+# - On the page's own buffers: at least --page-floor of the object pixels within 2/255.
+# - --threejs-floor (a glTF scene, whose bundle carries the asset and the lab's render of it with three.js's
+#   own renderer): the page also draws the asset with three.js's own renderer (serve.mjs --renderer=threejs),
+#   compared with that render over the same object pixels (OUT_DIR/threejs.json, OUT_DIR/threejs.png); a
+#   bundle without that render fails.
+# - --fault: the page on the lab's buffers with every IOR 0.2 % higher (serve.mjs --fault=ior) must fail the
+#   lab-buffer check (OUT_DIR/fault.json).
 set -euo pipefail
-lab=$1 node=$2 scene=$3 out=$4 floor=$5 threejs_floor=${6:-}
+lab=$1 node=$2 scene=$3 out=$4
+shift 4
+technique="" floor="" max_diff=4 threejs_floor="" fault=""
+for a in "$@"; do
+  case $a in
+    --technique=*) technique=${a#*=} ;;
+    --page-floor=*) floor=${a#*=} ;;
+    --lab-max-diff=*) max_diff=${a#*=} ;;
+    --threejs-floor=*) threejs_floor=${a#*=} ;;
+    --fault) fault=1 ;;
+    *) echo "three_page_test.sh: unknown argument $a" >&2; exit 2 ;;
+  esac
+done
+[ -n "$technique" ] && [ -n "$floor" ] || { echo "three_page_test.sh: --technique and --page-floor are required" >&2; exit 2; }
 serve="$(cd "$(dirname "$0")/../.." && pwd)/examples/web/serve.mjs"
 rm -rf "$out"
-"$lab" "$scene" --technique plane-normal-2 --frames 1 --quiet --out "" --web-bundle "$out/bundle"
-"$node" "$serve" "$out/bundle" --test --technique=plane-normal-2 --buffers=lab --min-share=0.99 \
-  --report="$out/lab_buffers.json"
-"$node" "$serve" "$out/bundle" --test --technique=plane-normal-2 --buffers=page --min-share="$floor" \
+"$lab" "$scene" --technique "$technique" --frames 1 --quiet --out "" --web-bundle "$out/bundle"
+lab_check=(--test "--technique=$technique" --buffers=lab --min-share=0.999 "--max-diff=$max_diff")
+"$node" "$serve" "$out/bundle" "${lab_check[@]}" --report="$out/lab_buffers.json"
+"$node" "$serve" "$out/bundle" --test "--technique=$technique" --buffers=page --min-share="$floor" \
   --report="$out/page_buffers.json" --screenshot="$out/page.png"
 if [ -n "$threejs_floor" ]; then
   "$node" "$serve" "$out/bundle" --test --renderer=threejs --min-share="$threejs_floor" \
     --report="$out/threejs.json" --screenshot="$out/threejs.png"
+fi
+if [ -n "$fault" ]; then
+  status=0
+  "$node" "$serve" "$out/bundle" "${lab_check[@]}" --fault=ior --report="$out/fault.json" || status=$?
+  if [ "$status" -ne 1 ]; then
+    echo "three_page_test.sh: the page with every IOR 0.2 % higher passed the lab-buffer check (status $status):" \
+         "the check cannot fail" >&2
+    exit 1
+  fi
+  echo "three_page_test.sh: the page with every IOR 0.2 % higher fails the lab-buffer check, as it must"
 fi
