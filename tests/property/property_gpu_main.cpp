@@ -1,5 +1,5 @@
-// Property test, GPU side: every public function, through the GLSL
-// build of its parity case entry on llvmpipe (OSMesa), on 10,000 hostile inputs:
+// Property test, GPU side: every public function, through its parity case entry on the runtimes of
+// snell::gpu::runtimeList() that ask for hostile inputs (suite PropertyGpu_<runtime>), on 10,000 of them:
 // inputs #n .. #n + 9,999 of the CPU property stream (property_contract.hpp),
 // n being the size of the case's generator output, i.e. one hostile mutation of
 // each generator input. The generator's own inputs are left out: the parity
@@ -54,23 +54,9 @@ std::size_t gpuInputs() {
   }
   return static_cast<std::size_t>(n);
 }
-// The runtimes the hostile inputs run on: GLSL on OSMesa, Vulkan GLSL on the
-// Vulkan device, WGSL on the WebGPU device and ES 3.00 in Chromium's WebGL 2
-// (the parity suite's, parity_runtimes.hpp).
-const std::vector<const ParityRuntime*>& propertyRuntimes() {
-  static const std::vector<const ParityRuntime*> all = [] {
-    static const GlslRuntime gl(snell::gpu::Backend::OSMesa);
-    static const VulkanRuntime vulkan;
-    static const WebGpuRuntime webgpu;
-    static const WebGlRuntime webgl;
-    return std::vector<const ParityRuntime*>{&gl, &vulkan, &webgpu, &webgl};
-  }();
-  return all;
-}
-
 class PropertyGpuTest : public ::testing::Test {
  public:
-  PropertyGpuTest(const CaseSpec* spec, const ParityRuntime* runtime) : spec_(spec), runtime_(runtime) {}
+  PropertyGpuTest(const CaseSpec* spec, snell::gpu::Runtime* runtime) : spec_(spec), runtime_(runtime) {}
   void TestBody() override {
     if (spec_->setup) spec_->setup();
     const std::vector<ParityIO> base = spec_->inputs();
@@ -81,7 +67,7 @@ class PropertyGpuTest : public ::testing::Test {
     for (std::uint64_t i = base.size(); i < base.size() + count; ++i)
       inputs.push_back(property::propertyInput(base, i));
 
-    const std::vector<ParityIO> gpu = runtime_->run(*spec_, inputs);
+    const std::vector<ParityIO> gpu = runtime_->run(runtimeCase(*spec_), inputs);
     ASSERT_EQ(gpu.size(), inputs.size());
 
     Tally onGpu, onCpu;
@@ -97,7 +83,7 @@ class PropertyGpuTest : public ::testing::Test {
                        "\n  gpu output: " + property::formatIO(gpu[j]) + "\n  cpu output: " + property::formatIO(cpu);
       if (c && !g) ++cpuOnly;
     }
-    std::cout << "[property-gpu] " << spec_->function << " backend=" << runtime_->where()
+    std::cout << "[property-gpu] " << spec_->function << " backend=" << runtime_->name()
               << " inputs=" << onGpu.inputs << " violations=" << onGpu.violations << " gpuOnly=" << gpuOnly
               << " cpuOnly=" << cpuOnly << " exempt=" << onGpu.exempt << onGpu.byOutputText() << "\n";
     if (gpuOnly) std::cout << "[property-gpu] " << spec_->function << " first GPU-only " << firstGpuOnly << "\n";
@@ -114,7 +100,7 @@ class PropertyGpuTest : public ::testing::Test {
 
  private:
   const CaseSpec* spec_;
-  const ParityRuntime* runtime_;
+  snell::gpu::Runtime* runtime_;
 };
 
 }  // namespace
@@ -122,8 +108,11 @@ class PropertyGpuTest : public ::testing::Test {
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
-  for (const snell_parity::ParityRuntime* runtime : snell_parity::propertyRuntimes()) {
-    const std::string suite = "PropertyGpu_" + runtime->where();
+  // The runtimes of the one list whose entry asks for the hostile inputs (runtime_list.hpp says which not).
+  for (std::size_t i = 0; i < snell::gpu::runtimeList().size(); ++i) {
+    if (!snell::gpu::runtimeList()[i].hostileInputs) continue;
+    snell::gpu::Runtime* runtime = snell_parity::parityRuntimes()[i].get();
+    const std::string suite = "PropertyGpu_" + runtime->name();
     for (const snell_parity::CaseSpec& spec : snell_parity::registry())
       ::testing::RegisterTest(suite.c_str(), spec.function.c_str(), nullptr, nullptr, __FILE__, __LINE__,
                               [&spec, runtime]() -> ::testing::Test* {

@@ -1,6 +1,6 @@
 // The README's "tested on" tables from a parity run's report lines
-// ("[parity*] <function> file=... backend=... cases=N mismatches=M flushed=F
-// maxAbs=A maxRel=R digests in=... cpu=C gpu=G", in ctest's LastTest.log):
+// ("[parity] <function> file=... backend=... cases=N mismatches=M flushed=F
+// maxAbs=A maxRel=R digests in=... cpu=C gpu=G runtime="..." renderer="...", in ctest's LastTest.log):
 // per runtime the functions, cases, mismatches, flushed-denormal matches and
 // bit-identical functions; then runtime x function family (the folder of
 // glsl/snell a function is defined in; the texture hooks apart) with the cases
@@ -33,26 +33,21 @@ const walk = (dir) => {
 };
 walk(path.join(root, "glsl", "snell"));
 
-// The report line's tag and backend= field -> the runtime as the README names it.
-const names = {
-  "parity osmesa": "GLSL 450, OSMesa",
-  "parity egl": "GLSL 450, EGL",
-  "parity-hlsl osmesa": "HLSL, OSMesa",
-  "parity-vulkan vulkan": "Vulkan GLSL, lavapipe",
-  "parity-webgpu webgpu": "WGSL, Deno WebGPU",
-  "parity-webgl webgl2": "ES 3.00, WebGL 2 (Chromium)",
-};
+// Each report line names its runtime (backend= its name, runtime="..." the language and device, as the
+// runtime describes itself: snell::gpu::Runtime); the tables list them by that description.
 const runs = new Map();  // runtime -> function -> record (the last one wins)
-for (const name of Object.values(names)) runs.set(name, new Map());  // the README's order
-const line = /^\[(parity[\w-]*)\] (\w+) file=\S+ backend=(\S+) cases=(\d+) mismatches=(\d+) flushed=(\d+) maxAbs=(\S+) maxRel=(\S+) digests in=\w+ cpu=(\w+) gpu=(\w+)/;
+const line = /^\[parity\] (\w+) file=\S+ backend=(\S+) cases=(\d+) mismatches=(\d+) flushed=(\d+) maxAbs=(\S+) maxRel=(\S+) digests in=\w+ cpu=(\w+) gpu=(\w+) runtime="([^"]*)"/;
 for (const text of logs.flatMap((log) => fs.readFileSync(log, "utf8").split("\n"))) {
   const m = line.exec(text);
   if (!m) continue;
-  const runtime = names[`${m[1]} ${m[3]}`] ?? `${m[1]} ${m[3]}`;
+  const runtime = `${m[10]} (${m[2]})`;
   if (!runs.has(runtime)) runs.set(runtime, new Map());
-  runs.get(runtime).set(m[2], { cases: +m[4], mismatches: +m[5], flushed: +m[6], maxRel: +m[8], identical: m[9] === m[10] });
+  runs.get(runtime).set(m[1], { cases: +m[3], mismatches: +m[4], flushed: +m[5], maxRel: +m[7], identical: m[8] === m[9] });
 }
 for (const [runtime, fns] of runs) if (fns.size === 0) runs.delete(runtime);
+const sorted = [...runs.entries()].sort(([a], [b]) => a.localeCompare(b));
+runs.clear();
+for (const [runtime, fns] of sorted) runs.set(runtime, fns);
 if (runs.size === 0) {
   console.error(`no parity report lines in ${logs.join(", ")}`);
   process.exit(1);
