@@ -1,8 +1,9 @@
 // A convex glass prism for the bounce tests (tests/unit/technique_bounce_test.cpp,
-// tests/lab/bounce_buffers_test.cpp): a convex polygon in the x-z plane
-// extruded over y, its planes, a flat-shaded OBJ of it, and the analytic
-// entry and exit of rays in double precision (ray-plane intersections,
-// independent of snell).
+// tests/lab/bounce_buffers_test.cpp, and through bounce_shapes.hpp the tests of
+// paths with several reflections): a convex polygon in the x-z plane extruded
+// over y, its planes, a flat-shaded OBJ of it, and the analytic entry and exit
+// of rays and the whole path inside in double precision (ray-plane
+// intersections, glm::refract / glm::reflect, independent of snell).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -45,25 +46,36 @@ struct Prism {
     return out;
   }
 
-  // Flat-shaded OBJ: each face its own normal (the loader makes the winding outward).
+  // Flat-shaded OBJ: each face its own normal, its vertices counter-clockwise seen from outside (a
+  // loader that orients a mesh outward flips all faces or none: each must agree with the others).
   std::string obj() const {
     std::ostringstream s;
     s.precision(17);
     const std::size_t n = polygon.size();
+    std::vector<dvec3> v;
     for (double y : {-h, h})
-      for (const dvec2& p : polygon) s << "v " << p.x << " " << y << " " << p.y << "\n";
+      for (const dvec2& p : polygon) v.push_back(dvec3(p.x, y, p.y));
+    for (const dvec3& p : v) s << "v " << p.x << " " << p.y << " " << p.z << "\n";
     const std::vector<Plane> pl = planes();
     for (const Plane& p : pl) s << "vn " << p.n.x << " " << p.n.y << " " << p.n.z << "\n";
+    // Faces as 0-based vertex lists, in planes()' order: the sides, then the caps y = h and y = -h.
+    std::vector<std::vector<std::size_t>> faces;
+    for (std::size_t i = 0; i < n; ++i) faces.push_back({i, (i + 1) % n, n + (i + 1) % n, n + i});
+    std::vector<std::size_t> top, bottom;
     for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t j = (i + 1) % n, vn = i + 1;
-      s << "f " << i + 1 << "//" << vn << " " << j + 1 << "//" << vn << " " << n + j + 1 << "//" << vn << " "
-        << n + i + 1 << "//" << vn << "\n";
+      top.push_back(n + i);
+      bottom.push_back(i);
     }
-    s << "f";
-    for (std::size_t i = 0; i < n; ++i) s << " " << n + i + 1 << "//" << n + 1;
-    s << "\nf";
-    for (std::size_t i = 0; i < n; ++i) s << " " << i + 1 << "//" << n + 2;
-    s << "\n";
+    faces.push_back(top);
+    faces.push_back(bottom);
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      std::vector<std::size_t> face = faces[f];
+      const dvec3 winding = glm::cross(v[face[1]] - v[face[0]], v[face[2]] - v[face[0]]);
+      if (glm::dot(winding, pl[f].n) < 0.0) std::reverse(face.begin(), face.end());
+      s << "f";
+      for (std::size_t i : face) s << " " << i + 1 << "//" << f + 1;
+      s << "\n";
+    }
     return s.str();
   }
 
@@ -106,6 +118,38 @@ struct Prism {
     }
     if (best >= 1e30) return std::nullopt;
     return std::make_pair(o + best * d, n);
+  }
+
+  // The textbook path of a ray inside, from p along d (eta = n_outside / n_glass): each face it meets, in
+  // order, with total internal reflection (glm::reflect) where glm::refract finds none, until it refracts
+  // out or has met `maxFaces` faces. leaves: it refracted out at the last face, along `out`.
+  struct Face {
+    dvec3 point, normal;  // outward normal
+    bool tir;
+  };
+  struct Path {
+    std::vector<Face> faces;
+    dvec3 out{0.0};
+    bool leaves = false;
+    int reflections() const { return int(faces.size()) - (leaves ? 1 : 0); }
+  };
+  Path inside(dvec3 p, dvec3 d, double eta, int maxFaces) const {
+    Path path;
+    for (int k = 0; k < maxFaces; ++k) {
+      const auto hit = exit(p, d);
+      if (!hit) break;
+      const dvec3 t = glm::refract(d, -hit->second, 1.0 / eta);
+      const bool tir = glm::dot(t, t) == 0.0;
+      path.faces.push_back({hit->first, hit->second, tir});
+      if (!tir) {
+        path.out = t;
+        path.leaves = true;
+        break;
+      }
+      p = hit->first;
+      d = glm::reflect(d, hit->second);
+    }
+    return path;
   }
 };
 
