@@ -1,0 +1,159 @@
+// Paths with two, three and four total internal reflections, followed with the bounce count the
+// shipped bounce presets use (SNELL_PRESET_BOUNCES, 4), in analytic buffers of a Porro prism (the
+// path leaves through the front layer) and a light guide (through the back layer):
+// snellTwoInterfaceTrace of the image-space bound with bounces (the inside march, snellInsideMarch,
+// at its limits) and with the normal plane inside (snellInsidePlane) against the textbook path in
+// double precision (tests/support/bounce_shapes.hpp). Each path is also followed with fewer bounces
+// allowed, b = 0 .. k - 1: it must stop at its (b + 1)-th face, totally reflected there, so every
+// interface of the path is checked, not only the last.
+#include <snell/snell.hpp>
+
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <optional>
+
+#include "support/bounce_shapes.hpp"
+#include "support/depth_scenes.hpp"
+
+namespace {
+
+using namespace snell;
+using glm::dvec2;
+using glm::dvec3;
+using snell_test::BounceShape;
+using snell_test::PixelPath;
+
+struct ShapeBuffers {
+  snell_test::DepthScene front, back;
+  Texture2D backPyramid;
+};
+
+// The shape's front and back layers: depth and outward normals at every texel centre, in double.
+ShapeBuffers shapeBuffers(const BounceShape& shape, int size) {
+  const auto layer = [&shape](bool back) {
+    return [&shape, back](dvec3 q) {
+      snell_test::AnalyticSample r;
+      const auto hit = shape.prism.entry(q, back);
+      if (!hit) return r;
+      r.s = hit->first;
+      r.normal = hit->second;
+      r.valid = true;
+      return r;
+    };
+  };
+  ShapeBuffers b;
+  b.front = snell_test::detail::makeScene("front", size, size, SNELL_DEPTH_GL, false, snell_test::kScenePlane, layer(false));
+  b.back = snell_test::detail::makeScene("back", size, size, SNELL_DEPTH_GL, true, snell_test::kScenePlane, layer(true));
+  b.backPyramid = snellBuildDepthPyramid(b.back.depth, b.back.surface());
+  return b;
+}
+
+// A technique to follow the paths with, and the shortest chord inside (face to face) it is asked to
+// find: a march finds where a ray leaves to within its step, and a chord shorter than a step only
+// down to an eighth of it (inside_march.glsl: the first step's halvings).
+struct Follower {
+  const char* name;
+  SnellTechnique technique;
+  double minChord;
+};
+
+// The measured worst, over both shapes and both followers (every fourth pixel): the exit 0.0002 px from
+// the textbook one, its direction 7e-7 rad off, the path length 1.4e-6 relative; the bounds below
+// leave a margin of 7x or more.
+constexpr double kExitPx = 0.01, kDirectionRad = 1e-5, kLengthRel = 1e-5;
+
+// Follows every fourth pixel's path through the shape with each follower; returns the paths compared
+// with two, three and four reflections (the fewest over the followers).
+std::map<int, int> checkPaths(const BounceShape& shape) {
+  const int size = 256;
+  const ShapeBuffers b = shapeBuffers(shape, size);
+  const double eta = 1.0 / shape.ior, px = 1.0 / size;
+  // Bilinear depth reads: exact on a plane between texel centres, as the textbook path is.
+  SnellDepthSurface back = b.back.surface(), front = b.front.surface();
+  back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  front.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  // The shipped image-space bound with bounces: the linear march at its limits in the back and inside
+  // slots (steps of the extent / 512), 4 bounces.
+  SnellTechnique march = snellPresetImageSpaceBoundBounces();
+  march.back.intersect.marchMaxDistance = float(shape.extent);
+  march.inside.intersect.marchMaxDistance = float(shape.extent);
+  EXPECT_EQ(march.bounces, 4);
+  // The normal plane inside after a march of 32 steps.
+  SnellTechnique plane = march;
+  plane.inside.intersect.strategy = SNELL_STRATEGY_PLANE_NORMAL;
+  plane.inside.intersect.marchSteps = 32;
+  plane.inside.intersect.planeIterations = 2;
+  const Follower followers[] = {{"inside march", march, shape.extent / SNELL_LINEAR_MARCH_MAX_STEPS},
+                                {"inside plane", plane, shape.extent / 32.0}};
+  const auto layerNormalAt = [&](dvec2 uv, bool frontLayer) -> std::optional<dvec3> {
+    const snell_test::AnalyticSample s = (frontLayer ? b.front : b.back).sampleAt(uv);
+    if (!s.valid) return std::nullopt;
+    return s.normal;
+  };
+  const auto uvOf = [&](dvec3 p) { return b.front.project(p); };
+  std::map<int, int> fewest;
+  for (const Follower& with : followers) {
+    SCOPED_TRACE(with.name);
+    std::map<int, int> paths;
+    for (int j = 2; j < size; j += 4)
+      for (int i = 2; i < size; i += 4) {
+        const std::optional<PixelPath> p = snell_test::pixelPath(shape, b.front.pixelRay(dvec2(i + 0.5, j + 0.5) * px));
+        if (!p) continue;
+        const int k = p->inside.reflections();
+        if (k < 2 || k > 4 || !snell_test::buffersHoldPath(*p, uvOf, layerNormalAt, px)) continue;
+        if (snell_test::shortestChord(*p) < with.minChord) continue;
+        SCOPED_TRACE(testing::Message() << shape.name << ", pixel " << i << " " << j << ", " << k << " reflections");
+        const snell_test::Prism::Face& last = p->inside.faces.back();
+        const auto trace = [&](int bounces) {
+          SnellTechnique t = with.technique;
+          t.bounces = bounces;
+          return snellTwoInterfaceTrace(glm::vec3(p->entry), glm::vec3(p->entryNormal), float(eta), 0.0f, b.back.depth,
+                                        b.back.normals, b.backPyramid, back, b.front.depth, b.front.normals, front, t,
+                                        SNELL_TIR_CRITICAL);
+        };
+        const SnellTwoInterfacePath all = trace(with.technique.bounces);
+        EXPECT_TRUE(all.valid);
+        EXPECT_EQ(all.bounces, k);
+        EXPECT_FALSE(all.fellBack);
+        EXPECT_FALSE(all.tir);
+        EXPECT_EQ(all.exitFront, snell_test::onFrontLayer(last));
+        EXPECT_LT(glm::length(uvOf(dvec3(all.exitPoint)) - uvOf(last.point)), kExitPx * px);
+        EXPECT_GT(glm::dot(glm::normalize(dvec3(all.exitDirection)), p->inside.out), std::cos(kDirectionRad));
+        EXPECT_NEAR(all.pathLength, snell_test::insideLength(*p), kLengthRel * snell_test::insideLength(*p));
+        // Fewer bounces allowed: the path stops at its (b + 1)-th face, totally reflected there.
+        for (int bounces = 0; bounces < k; ++bounces) {
+          SCOPED_TRACE(testing::Message() << bounces << " bounces allowed");
+          const SnellTwoInterfacePath part = trace(bounces);
+          const snell_test::Prism::Face& f = p->inside.faces[bounces];
+          EXPECT_TRUE(part.valid);
+          EXPECT_EQ(part.bounces, bounces);
+          EXPECT_TRUE(part.tir);
+          EXPECT_FALSE(part.fellBack);
+          EXPECT_EQ(part.exitFront, bounces > 0 && snell_test::onFrontLayer(f));
+          EXPECT_LT(glm::length(uvOf(dvec3(part.exitPoint)) - uvOf(f.point)), kExitPx * px);
+        }
+        ++paths[k];
+      }
+    std::printf("[bounce paths] %s, %s: %d paths with 2 reflections, %d with 3, %d with 4\n", shape.name.c_str(),
+                with.name, paths[2], paths[3], paths[4]);
+    for (int k : {2, 3, 4}) fewest[k] = fewest.count(k) ? std::min(fewest[k], paths[k]) : paths[k];
+  }
+  return fewest;
+}
+
+TEST(TechniqueBouncePaths, PorroPrismLeavesThroughTheFrontAfterTwoToFourReflections) {
+  const std::map<int, int> n = checkPaths(snell_test::porroPrism());
+  for (int k : {2, 3, 4}) EXPECT_GE(n.at(k), 20) << k << " reflections";
+}
+
+TEST(TechniqueBouncePaths, LightGuideLeavesThroughTheBackAfterTwoToFourReflections) {
+  const std::map<int, int> n = checkPaths(snell_test::lightGuide());
+  for (int k : {2, 3, 4}) EXPECT_GE(n.at(k), 20) << k << " reflections";
+}
+
+}  // namespace
