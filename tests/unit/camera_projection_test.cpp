@@ -143,6 +143,45 @@ TEST(CameraProjection, PerspectiveInvalidParametersGiveZeroMatrix) {
   EXPECT_FALSE(snellViewToUv(z, glm::vec3(0.0f, 0.0f, -1.0f)).valid);
 }
 
+// The contract's "a denormal fovy or aspect counts as 0": the zero matrix, as for 0 (a GPU that
+// flushes denormals sees 0), where arithmetic on the denormal itself would give finite entries: fovy
+// 1.1e-38 has 1 / tan(fovy / 2) = 1.8e38, and aspect 1e-39 beside a fovy just under pi (tan(fovy / 2)
+// = 1.3e7) has 1 / (aspect tan) = 7.7e31. The smallest normal values beside them are positive
+// parameters, and their matrices hold the textbook entries (computed here in double): the rule, not
+// an overflow, is what zeroes the denormal ones.
+TEST(CameraProjection, DenormalFovyAndAspectCountAsZero) {
+  const float denormalFovy = 1.1e-38f, denormalAspect = 1e-39f;
+  const float fovyUnderPi = std::nextafter(SNELL_PI, 0.0f);
+  ASSERT_EQ(std::fpclassify(denormalFovy), FP_SUBNORMAL);
+  ASSERT_EQ(std::fpclassify(denormalAspect), FP_SUBNORMAL);
+  ASSERT_LT(double(fovyUnderPi), 3.14159265358979323846);
+  const float smallestNormal = std::numeric_limits<float>::min();
+  struct Params {
+    float fovy, aspect;
+  };
+  const Params denormal[] = {{denormalFovy, 1.0f}, {-denormalFovy, 1.0f}, {fovyUnderPi, denormalAspect},
+                             {1.0f, denormalAspect}, {std::numeric_limits<float>::denorm_min(), 1.0f}};
+  const Params normal[] = {{2.0f * smallestNormal, 1.0f}, {fovyUnderPi, smallestNormal}};
+  for (int conv : kAll) {
+    for (const Params& p : denormal) {
+      SCOPED_TRACE(testing::Message() << "fovy " << p.fovy << " aspect " << p.aspect << " convention " << conv);
+      EXPECT_TRUE(isZero(snellPerspectiveWithDepth(p.fovy, p.aspect, 0.1f, 10.0f, conv)));
+      EXPECT_TRUE(isZero(snellPerspectiveInverse(p.fovy, p.aspect, 0.1f, 10.0f, conv)));
+    }
+    for (const Params& p : normal) {
+      SCOPED_TRACE(testing::Message() << "fovy " << p.fovy << " aspect " << p.aspect << " convention " << conv);
+      const double t = std::tan(0.5 * double(p.fovy));
+      const glm::mat4 m = snellPerspectiveWithDepth(p.fovy, p.aspect, 0.1f, 10.0f, conv);
+      EXPECT_NEAR(m[0][0], 1.0 / (double(p.aspect) * t), 2e-6 / (double(p.aspect) * t));
+      EXPECT_NEAR(m[1][1], 1.0 / t, 2e-6 / t);
+      EXPECT_EQ(m[2][3], -1.0f);
+      const glm::mat4 inv = snellPerspectiveInverse(p.fovy, p.aspect, 0.1f, 10.0f, conv);
+      EXPECT_NEAR(inv[0][0], double(p.aspect) * t, 2e-6 * double(p.aspect) * t);
+      EXPECT_NEAR(inv[1][1], t, 2e-6 * t);
+    }
+  }
+}
+
 TEST(CameraProjection, ViewToUvMatchesGlmProject) {
   // glm::project with an identity model matrix and the viewport (0, 0, 1, 1)
   // returns exactly (uv, window depth) under GL conventions.
