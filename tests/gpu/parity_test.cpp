@@ -220,6 +220,22 @@ TEST(CompareParity, FlushedDenormalInputs) {
   EXPECT_EQ(compareParity({io(glm::vec4(0.0f))}, cpu, {{0, "q", false, 1e-6f, 1e-6f}}, &inputs).mismatches, 1u);
 }
 
+// A condition-scaled tolerance (abs + rel |cpu| + scaled |cpu condition|) applies to every case, or,
+// with the flags, only to the cases flagged true.
+TEST(CompareParity, ScaledToleranceOnlyOnFlaggedCases) {
+  // Output 0 with its condition in output 1: tolerance 0 + 0 + 1e-3 * 100 = 0.1.
+  const std::vector<snell::gpu::ParityOutput> outputs = {{0, "uv", false, 0.0f, 0.0f, 1e-3f, 1}};
+  const std::vector<ParityIO> cpu = {io({1.0f, 100.0f, 0.0f, 0.0f}), io({1.0f, 100.0f, 0.0f, 0.0f})};
+  const std::vector<ParityIO> gpu = {io({1.05f, 100.0f, 0.0f, 0.0f}), io({1.05f, 100.0f, 0.0f, 0.0f})};
+  EXPECT_EQ(compareParity(gpu, cpu, outputs).mismatches, 0u);
+  const std::vector<bool> second = {false, true};
+  const auto r = compareParity(gpu, cpu, outputs, nullptr, nullptr, &second);
+  EXPECT_EQ(r.mismatches, 1u);
+  EXPECT_EQ(r.firstMismatch, 0u);
+  const std::vector<bool> wrongCount = {true};
+  EXPECT_THROW(compareParity(gpu, cpu, outputs, nullptr, nullptr, &wrongCount), std::invalid_argument);
+}
+
 TEST(CompareParity, DiscreteOutputsMustBeEqual) {
   const std::vector<ParityIO> cpu = {io({0.5f, 1.0f, 0.0f, 0.0f}), io({0.5f, 0.0f, 3.0f, 0.0f})};
   // Output 1 is a flag, output 2 a step count: discrete mask 0b0110.

@@ -36,7 +36,9 @@
 // `within(abs, rel)` (|gpu - cpu| <= abs + rel |cpu|; NaN and inf matched
 // exactly), or `within(abs, rel, scaled, first)`: plus scaled times the C++
 // value of the output floats from `first` (component by component), for an
-// ill-conditioned output whose condition the case also outputs. The body may not contain preprocessor lines (it is one macro
+// ill-conditioned output whose condition the case also outputs; that term is
+// the allowance for a runtime that folds constants (snell::gpu::Runtime::foldsConstants) and applies
+// only there, on the inputs CaseExtras::scaledWhere names. The body may not contain preprocessor lines (it is one macro
 // argument); helpers, textures and macros shared by a family's cases live in
 // its cases/<family>.glsl (a macro defined only in the .cpp compiles in C++
 // and fails on the GPU, which sees the body unexpanded, on one line). Names
@@ -93,6 +95,12 @@ struct CaseExtras {
   // `outputs` are never checked (the contract lets them overflow).
   CaseExtras& unchecked(std::vector<std::string> outs, std::string why) {
     exceptions.push_back({{}, std::move(outs), true, std::move(why)});
+    return *this;
+  }
+  // The outputs' condition-scaled tolerances apply only on the inputs `where` accepts.
+  std::function<bool(const ParityIO&)> scaledInputs;
+  CaseExtras& scaledWhere(std::function<bool(const ParityIO&)> where) {
+    scaledInputs = std::move(where);
     return *this;
   }
 };
@@ -177,6 +185,7 @@ inline CaseSpec describeCase(const char* function, const char* caseFile,
   c.cpu = cpu;
   c.textures = std::move(extras.textures);
   c.setup = std::move(extras.setup);
+  c.scaledWhere = std::move(extras.scaledInputs);
   std::string error;
   auto place = [&](const std::vector<CaseVar>& vars, std::string (&names)[16], const char* what) {
     for (const CaseVar& v : vars) {

@@ -37,6 +37,22 @@ std::vector<ParityIO> cpuOnFlushedInputs(const CaseSpec& spec, const std::vector
   return flushed;
 }
 
+// compareParity with the runtime's declared float rules (runtime_floats_test.cpp holds each runtime to its
+// word): the results on the inputs with denormals flushed count only where its device flushes them, and an
+// output's condition-scaled tolerance applies only where its compiler folds constants, on the inputs the
+// case names (CaseExtras::scaledWhere).
+snell::gpu::ParityReport compareOn(const CaseSpec& spec, const snell::gpu::Runtime& runtime,
+                                   const std::vector<ParityIO>& gpu, const std::vector<ParityIO>& cpu,
+                                   const std::vector<ParityIO>& inputs) {
+  const std::vector<ParityIO> cpuFlushed =
+      runtime.flushesDenormals() ? cpuOnFlushedInputs(spec, inputs, cpu) : std::vector<ParityIO>();
+  std::vector<bool> scaled(inputs.size(), runtime.foldsConstants());
+  if (spec.scaledWhere)
+    for (std::size_t i = 0; i < inputs.size(); ++i) scaled[i] = scaled[i] && spec.scaledWhere(inputs[i]);
+  return snell::gpu::compareParity(gpu, cpu, spec.outputs, &inputs, cpuFlushed.empty() ? nullptr : &cpuFlushed,
+                                   &scaled);
+}
+
 class ParityTest : public ::testing::Test {
  public:
   ParityTest(const CaseSpec* spec, snell::gpu::Runtime* runtime) : spec_(spec), runtime_(runtime) {}
@@ -48,12 +64,8 @@ class ParityTest : public ::testing::Test {
     std::vector<ParityIO> cpu;
     cpu.reserve(inputs.size());
     for (const ParityIO& in : inputs) cpu.push_back(spec_->cpu(in));
-    const std::vector<ParityIO> cpuFlushed = cpuOnFlushedInputs(*spec_, inputs, cpu);
     const std::vector<ParityIO> gpu = runtime_->run(runtimeCase(*spec_), inputs);
-    // A result that matches the C++ build on the inputs with denormals flushed counts only where the runtime
-    // declares that its device flushes them (runtime_floats_test.cpp holds each runtime to its word).
-    const snell::gpu::ParityReport r = snell::gpu::compareParity(gpu, cpu, spec_->outputs, &inputs,
-                                                                 runtime_->flushesDenormals() ? &cpuFlushed : nullptr);
+    const snell::gpu::ParityReport r = compareOn(*spec_, *runtime_, gpu, cpu, inputs);
     // The figures the closing notes quote.
     std::cout << "[parity] " << spec_->function << " file=" << spec_->glslFile << " backend=" << runtime_->name()
               << " cases=" << r.cases << " mismatches=" << r.mismatches << " flushed=" << r.flushedMatches
@@ -124,7 +136,7 @@ void runFlipV(const std::string& function, EdgeNudge nudge) {
   upsideDown.textures = textures;
   const std::vector<ParityIO> gpu = flipV.run(upsideDown, inputs);
   flipV.release();
-  const snell::gpu::ParityReport r = snell::gpu::compareParity(gpu, cpu, spec->outputs, &inputs);
+  const snell::gpu::ParityReport r = compareOn(*spec, flipV, gpu, cpu, inputs);
   std::cout << "[parity-hlsl-flipv] " << spec->function << " cases=" << r.cases << " mismatches=" << r.mismatches
             << " maxAbs=" << r.maxAbs << " maxRel=" << r.maxRel << "\n";
   EXPECT_EQ(r.mismatches, 0u) << r.firstMismatchText;
@@ -148,11 +160,9 @@ void runWebGpuInChromium(const std::string& function) {
   const std::vector<ParityIO> inputs = spec->inputs();
   std::vector<ParityIO> cpu;
   for (const ParityIO& in : inputs) cpu.push_back(spec->cpu(in));
-  const std::vector<ParityIO> cpuFlushed = cpuOnFlushedInputs(*spec, inputs, cpu);
   snell::gpu::WebGpuChromiumRuntime chromium(runtimeSetup());
   const std::vector<ParityIO> gpu = chromium.run(runtimeCase(*spec), inputs);
-  const snell::gpu::ParityReport r =
-      snell::gpu::compareParity(gpu, cpu, spec->outputs, &inputs, chromium.flushesDenormals() ? &cpuFlushed : nullptr);
+  const snell::gpu::ParityReport r = compareOn(*spec, chromium, gpu, cpu, inputs);
   std::cout << "[parity-webgpu-chromium] " << spec->function << " adapter=\"" << chromium.renderer() << "\" cases=" << r.cases
             << " mismatches=" << r.mismatches << " flushed=" << r.flushedMatches << " maxAbs=" << r.maxAbs
             << " maxRel=" << r.maxRel << "\n";

@@ -24,7 +24,9 @@ using snell::gpu::ParityIO;
 // How an output float is compared (snell::gpu::ParityOutput): exactly, or
 // within |gpu - cpu| <= abs + rel * |cpu| (+ scaled * |cpu of the output's
 // float at scaleFirst + its component|, for an output whose conditioning the
-// case reports as another output).
+// case reports as another output; only on a runtime that folds constants,
+// snell::gpu::Runtime::foldsConstants, and on the inputs the case's scaledWhere
+// names).
 struct Check {
   bool exact;
   float abs, rel;
@@ -65,6 +67,8 @@ struct CaseSpec {
   std::vector<snell::gpu::ParityTexture> textures = {};
   std::function<void()> setup = {};
   std::vector<ContractException> exceptions = {};
+  // The inputs on which its outputs' condition-scaled tolerances apply (every input when empty).
+  std::function<bool(const ParityIO&)> scaledWhere = {};
   std::string layoutError;  // non-empty: the description is wrong (the manifest test fails)
 };
 

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstring>
 #include <iostream>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -166,6 +167,70 @@ TEST_P(RuntimeFloats, DenormalsAsDeclared) {
   else
     EXPECT_GT(all.flushed, 0) << runtime.name() << " declares it may flush denormals, but kept all " << all.kept
                               << " (its flushesDenormals() should say false)";
+}
+
+// --- Constants: snellPerspectiveWithDepth reduces tan's argument above pi/4 with pi/2 in two parts,
+// (hi - x) - lo (Cephes), which a compiler that reassociates folds into (hi - lo) - x: hi - lo rounds
+// to hi, so the result loses lo. GLSL lets a compiler do this to any expression not declared
+// precise; the C++ build (no -ffast-math) evaluates it as written.
+constexpr float kHalfPiHi = 1.57079637050628662f, kHalfPiLo = 4.37113900018624283e-8f;
+ParityIO constantsProbeCpu(const ParityIO& in) {
+  ParityIO out{};
+  for (int k = 0; k < 4; ++k) out.v[0][k] = (kHalfPiHi - in.v[0][k]) - kHalfPiLo;
+  return out;
+}
+CaseSpec constantsProbe() {
+  return describeCase("probeConstants", "runtime_probes.glsl", nullptr, &constantsProbeCpu, {{"vec4", "x", 0}},
+                      {{"vec4", "r", 0, exact}},
+                      "r = vec4((1.57079637050628662f - x.x) - 4.37113900018624283e-8f, "
+                      "(1.57079637050628662f - x.y) - 4.37113900018624283e-8f, "
+                      "(1.57079637050628662f - x.z) - 4.37113900018624283e-8f, "
+                      "(1.57079637050628662f - x.w) - 4.37113900018624283e-8f);",
+                      {});
+}
+
+TEST_P(RuntimeFloats, ConstantsAsDeclared) {
+  snell::gpu::Runtime& runtime = runtimeNamed(GetParam());
+  const CaseSpec spec = constantsProbe();
+  ASSERT_TRUE(spec.layoutError.empty()) << spec.layoutError;
+  // x in [pi/4, pi/2): the half field of view of the reduction's branch.
+  std::mt19937 rng(52);
+  std::uniform_real_distribution<float> half(0.78539818525f, 1.5707f);
+  std::vector<ParityIO> inputs(1024);
+  for (ParityIO& in : inputs)
+    for (int k = 0; k < 4; ++k) in.v[0][k] = half(rng);
+  const std::vector<ParityIO> gpu = runtime.run(runtimeCase(spec), inputs);
+  ASSERT_EQ(gpu.size(), inputs.size());
+  // As written: two roundings in order; folded: hi - lo rounded first (to hi), then one subtraction.
+  const float folded = kHalfPiHi - kHalfPiLo;
+  ASSERT_EQ(folded, kHalfPiHi);
+  int asWritten = 0, wasFolded = 0, wrong = 0;
+  std::string first;
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+    for (int k = 0; k < 4; ++k) {
+      const float x = inputs[i].v[0][k], got = gpu[i].v[0][k];
+      const float written = float(double(float(double(kHalfPiHi) - double(x))) - double(kHalfPiLo));
+      const float fold = float(double(folded) - double(x));
+      if (written == fold) continue;  // this x does not tell them apart
+      if (got == written) {
+        ++asWritten;
+      } else if (got == fold) {
+        ++wasFolded;
+      } else if (!wrong++) {
+        first = "x " + std::to_string(x) + ": got " + std::to_string(got);
+      }
+    }
+  std::cout << "[runtime-floats] " << runtime.name() << " constants declared "
+            << (runtime.foldsConstants() ? "folded" : "as written") << ": (hi - x) - lo as written " << asWritten
+            << ", folded to (hi - lo) - x " << wasFolded << ", neither " << wrong << "\n";
+  EXPECT_EQ(wrong, 0) << first;
+  ASSERT_GT(asWritten + wasFolded, 1000);
+  if (!runtime.foldsConstants())
+    EXPECT_EQ(wasFolded, 0) << runtime.name() << " declares it evaluates constants as written, but folded them "
+                            << wasFolded << " times (its foldsConstants() should say true)";
+  else
+    EXPECT_EQ(asWritten, 0) << runtime.name() << " declares it folds constants, but evaluated " << asWritten
+                            << " as written (its foldsConstants() should say false)";
 }
 
 INSTANTIATE_TEST_SUITE_P(ParityRuntimeFloats, RuntimeFloats, ::testing::ValuesIn(probedNames()),

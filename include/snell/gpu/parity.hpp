@@ -265,15 +265,16 @@ struct ParityOutput {
 
 namespace detail {
 // One output of one case: whether it matches, its |diff| (finite continuous outputs, else -1) and,
-// for a mismatch, why.
-inline bool parityOutputMatches(float g, const ParityIO& cpu, const ParityOutput& o, float& diff, std::string& why) {
+// for a mismatch, why. `scaled`: whether the output's condition-scaled tolerance applies to the case.
+inline bool parityOutputMatches(float g, const ParityIO& cpu, const ParityOutput& o, float& diff, std::string& why,
+                                bool scaled = true) {
   const float c = cpu.v[o.index / 4][o.index % 4];
   diff = -1.0f;
   if (std::isnan(g) || std::isnan(c)) return std::isnan(g) && std::isnan(c);
   if (o.exact || std::isinf(g) || std::isinf(c)) return g == c;
   diff = std::fabs(g - c);
   float tol = o.abs + o.rel * std::fabs(c);
-  if (o.scaleIndex >= 0) tol += o.scaled * std::fabs(cpu.v[o.scaleIndex / 4][o.scaleIndex % 4]);
+  if (scaled && o.scaleIndex >= 0) tol += o.scaled * std::fabs(cpu.v[o.scaleIndex / 4][o.scaleIndex % 4]);
   why = " (|diff| " + formatFloat(diff) + " > tol " + formatFloat(tol) + ")";
   return diff <= tol;
 }
@@ -283,11 +284,13 @@ inline bool parityOutputMatches(float g, const ParityIO& cpu, const ParityOutput
 // printed with the first mismatch. `cpuFlushed`, if given, is the C++ result on
 // each input with its denormals flushed (flushDenormals): a case that does not
 // match `cpu` but matches it in every output counts in flushedMatches, not as
-// a mismatch.
+// a mismatch. `scaledCases`, if given, names the cases (true) on which the
+// outputs' condition-scaled tolerances apply; without it they apply to every case.
 inline ParityReport compareParity(const std::vector<ParityIO>& gpu, const std::vector<ParityIO>& cpu,
                                   const std::vector<ParityOutput>& outputs,
                                   const std::vector<ParityIO>* inputs = nullptr,
-                                  const std::vector<ParityIO>* cpuFlushed = nullptr) {
+                                  const std::vector<ParityIO>* cpuFlushed = nullptr,
+                                  const std::vector<bool>* scaledCases = nullptr) {
   if (gpu.size() != cpu.size())
     throw std::invalid_argument("compareParity: " + std::to_string(gpu.size()) + " GPU results but " +
                                 std::to_string(cpu.size()) + " CPU results");
@@ -298,6 +301,9 @@ inline ParityReport compareParity(const std::vector<ParityIO>& gpu, const std::v
     throw std::invalid_argument("compareParity: inputs and results differ in count");
   if (cpuFlushed && cpuFlushed->size() != gpu.size())
     throw std::invalid_argument("compareParity: flushed-input results and results differ in count");
+  if (scaledCases && scaledCases->size() != gpu.size())
+    throw std::invalid_argument("compareParity: scaled-case flags and results differ in count");
+  auto scaledOn = [&](std::size_t i) { return !scaledCases || (*scaledCases)[i]; };
   ParityReport r;
   r.cases = gpu.size();
   // Whether case i matches `ref` in every output; its largest differences go to maxAbs/maxRel.
@@ -308,7 +314,7 @@ inline ParityReport compareParity(const std::vector<ParityIO>& gpu, const std::v
       float diff = 0.0f;
       std::string why;
       const float c = ref.v[k / 4][k % 4];
-      all = detail::parityOutputMatches(gpu[i].v[k / 4][k % 4], ref, o, diff, why) && all;
+      all = detail::parityOutputMatches(gpu[i].v[k / 4][k % 4], ref, o, diff, why, scaledOn(i)) && all;
       if (diff >= 0.0f) {
         maxAbs = std::max(maxAbs, diff);
         if (std::fabs(c) > o.abs) maxRel = std::max(maxRel, diff / std::fabs(c));
@@ -340,7 +346,7 @@ inline ParityReport compareParity(const std::vector<ParityIO>& gpu, const std::v
       const float c = cpu[i].v[k / 4][k % 4];
       float diff = 0.0f;
       std::string why;
-      if (detail::parityOutputMatches(g, cpu[i], o, diff, why)) continue;
+      if (detail::parityOutputMatches(g, cpu[i], o, diff, why, scaledOn(i))) continue;
       r.firstMismatch = i;
       r.firstMismatchText = "case " + std::to_string(i) + ", output " + std::to_string(k) +
                             (o.name.empty() ? std::string() : " '" + o.name + "'") + " (v[" + std::to_string(k / 4) +

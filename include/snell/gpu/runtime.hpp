@@ -59,6 +59,11 @@ class Runtime {
   // Whether its device flushes denormal floats to zero (the suite then also accepts a result that matches
   // the C++ build on the inputs with denormals flushed). Declared, and checked by the parity suite.
   virtual bool flushesDenormals() const { return false; }
+  // Whether its compiler reassociates constants in an expression not declared precise, as GLSL allows
+  // ((hi - x) - lo into (hi - lo) - x, which loses lo when hi - lo rounds to hi): an output whose case
+  // allows for that (a condition-scaled tolerance) gets the allowance only there. Every compiler measured
+  // does (the parity suite checks each declaration).
+  virtual bool foldsConstants() const { return true; }
   // Compiles the case for its language and runs it on every input: one result per input.
   virtual std::vector<ParityIO> run(const RuntimeCase& c, const std::vector<ParityIO>& inputs) = 0;
   // What it runs on, from the device itself: the GL and Vulkan runtimes start their device to ask it; the
