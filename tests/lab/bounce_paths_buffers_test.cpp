@@ -10,6 +10,7 @@
 #include "lab/scene.hpp"
 
 #include "lab_test_util.hpp"
+#include "support/bounce_path_checks.hpp"
 #include "support/bounce_shapes.hpp"
 
 #include <snell/snell.hpp>
@@ -37,7 +38,7 @@ using snell_test::PixelPath;
 // the exit 0.0003 px from the textbook one, its direction 7e-7 rad off, the path length 2.2e-6
 // relative (the faces are planes, which bilinear depth reads hold exactly). The bounds leave a margin
 // of 9x or more; a wrong bounce (a segment lost, a reflection not taken) is off by far more.
-constexpr double kExitPx = 0.01, kDirectionRad = 1e-5, kLengthRel = 2e-5;
+constexpr double kLengthRel = 2e-5;  // kBounceExitPx, kBounceDirectionRad: bounce_path_checks.hpp
 
 // Renders the shape's back- and front-face passes with the lab's GL pipeline at 256x256, then follows
 // every third pixel's path through both layers; returns the paths compared by reflection count (the
@@ -111,39 +112,22 @@ std::map<int, int> checkPaths(const BounceShape& shape) {
         if (snell_test::shortestChord(*p) < with.minChord) continue;
         SCOPED_TRACE(testing::Message() << shape.name << ", pixel " << i << " " << j << ", " << n << " reflections");
         const snell_test::Prism::Face& last = p->inside.faces.back();
-        const auto trace = [&](int bounces) {
-          SnellTechnique t = *with.technique;
-          t.bounces = bounces;
-          return snellTwoInterfaceTrace(glm::vec3(p->entry), glm::vec3(p->entryNormal), float(eta), 0.0f, backDepth,
-                                        backNormal, backPyramid, back, frontDepth, frontNormal, front, t,
-                                        SNELL_TIR_CRITICAL);
-        };
-        const SnellTwoInterfacePath all = trace(with.technique->bounces);
+        const SnellTwoInterfacePath all = snell_test::expectTracedPath(
+            *p, with.technique->bounces,
+            [&](int bounces) {
+              SnellTechnique t = *with.technique;
+              t.bounces = bounces;
+              return snellTwoInterfaceTrace(glm::vec3(p->entry), glm::vec3(p->entryNormal), float(eta), 0.0f, backDepth,
+                                            backNormal, backPyramid, back, frontDepth, frontNormal, front, t,
+                                            SNELL_TIR_CRITICAL);
+            },
+            uvOf, px, kLengthRel);
         if (all.valid && all.bounces == n) {
           worstPx = std::max(worstPx, glm::length(uvOf(dvec3(all.exitPoint)) - uvOf(last.point)) / px);
           worstRad = std::max(worstRad, std::acos(std::min(1.0, glm::dot(glm::normalize(dvec3(all.exitDirection)),
                                                                            p->inside.out))));
           worstRel = std::max(worstRel, std::abs(double(all.pathLength) - snell_test::insideLength(*p)) /
                                             snell_test::insideLength(*p));
-        }
-        EXPECT_TRUE(all.valid);
-        EXPECT_EQ(all.bounces, n);
-        EXPECT_FALSE(all.fellBack);
-        EXPECT_FALSE(all.tir);
-        EXPECT_EQ(all.exitFront, snell_test::onFrontLayer(last));
-        EXPECT_LT(glm::length(uvOf(dvec3(all.exitPoint)) - uvOf(last.point)), kExitPx * px);
-        EXPECT_GT(glm::dot(glm::normalize(dvec3(all.exitDirection)), p->inside.out), std::cos(kDirectionRad));
-        EXPECT_NEAR(all.pathLength, snell_test::insideLength(*p), kLengthRel * snell_test::insideLength(*p));
-        for (int bounces = 0; bounces < n; ++bounces) {
-          SCOPED_TRACE(testing::Message() << bounces << " bounces allowed");
-          const SnellTwoInterfacePath part = trace(bounces);
-          const snell_test::Prism::Face& f = p->inside.faces[bounces];
-          EXPECT_TRUE(part.valid);
-          EXPECT_EQ(part.bounces, bounces);
-          EXPECT_TRUE(part.tir);
-          EXPECT_FALSE(part.fellBack);
-          EXPECT_EQ(part.exitFront, bounces > 0 && snell_test::onFrontLayer(f));
-          EXPECT_LT(glm::length(uvOf(dvec3(part.exitPoint)) - uvOf(f.point)), kExitPx * px);
         }
         ++paths[n];
       }

@@ -17,6 +17,7 @@
 #include <map>
 #include <optional>
 
+#include "support/bounce_path_checks.hpp"
 #include "support/bounce_shapes.hpp"
 #include "support/depth_scenes.hpp"
 
@@ -65,7 +66,7 @@ struct Follower {
 // The measured worst, over both shapes and both followers (every fourth pixel): the exit 0.0002 px from
 // the textbook one, its direction 7e-7 rad off, the path length 1.4e-6 relative; the bounds below
 // leave a margin of 7x or more.
-constexpr double kExitPx = 0.01, kDirectionRad = 1e-5, kLengthRel = 1e-5;
+constexpr double kLengthRel = 1e-5;  // kBounceExitPx, kBounceDirectionRad: bounce_path_checks.hpp
 
 // Follows every fourth pixel's path through the shape with each follower; returns the paths compared
 // with two, three and four reflections (the fewest over the followers).
@@ -108,35 +109,16 @@ std::map<int, int> checkPaths(const BounceShape& shape) {
         if (k < 2 || k > 4 || !snell_test::buffersHoldPath(*p, uvOf, layerNormalAt, px)) continue;
         if (snell_test::shortestChord(*p) < with.minChord) continue;
         SCOPED_TRACE(testing::Message() << shape.name << ", pixel " << i << " " << j << ", " << k << " reflections");
-        const snell_test::Prism::Face& last = p->inside.faces.back();
-        const auto trace = [&](int bounces) {
-          SnellTechnique t = with.technique;
-          t.bounces = bounces;
-          return snellTwoInterfaceTrace(glm::vec3(p->entry), glm::vec3(p->entryNormal), float(eta), 0.0f, b.back.depth,
-                                        b.back.normals, b.backPyramid, back, b.front.depth, b.front.normals, front, t,
-                                        SNELL_TIR_CRITICAL);
-        };
-        const SnellTwoInterfacePath all = trace(with.technique.bounces);
-        EXPECT_TRUE(all.valid);
-        EXPECT_EQ(all.bounces, k);
-        EXPECT_FALSE(all.fellBack);
-        EXPECT_FALSE(all.tir);
-        EXPECT_EQ(all.exitFront, snell_test::onFrontLayer(last));
-        EXPECT_LT(glm::length(uvOf(dvec3(all.exitPoint)) - uvOf(last.point)), kExitPx * px);
-        EXPECT_GT(glm::dot(glm::normalize(dvec3(all.exitDirection)), p->inside.out), std::cos(kDirectionRad));
-        EXPECT_NEAR(all.pathLength, snell_test::insideLength(*p), kLengthRel * snell_test::insideLength(*p));
-        // Fewer bounces allowed: the path stops at its (b + 1)-th face, totally reflected there.
-        for (int bounces = 0; bounces < k; ++bounces) {
-          SCOPED_TRACE(testing::Message() << bounces << " bounces allowed");
-          const SnellTwoInterfacePath part = trace(bounces);
-          const snell_test::Prism::Face& f = p->inside.faces[bounces];
-          EXPECT_TRUE(part.valid);
-          EXPECT_EQ(part.bounces, bounces);
-          EXPECT_TRUE(part.tir);
-          EXPECT_FALSE(part.fellBack);
-          EXPECT_EQ(part.exitFront, bounces > 0 && snell_test::onFrontLayer(f));
-          EXPECT_LT(glm::length(uvOf(dvec3(part.exitPoint)) - uvOf(f.point)), kExitPx * px);
-        }
+        snell_test::expectTracedPath(
+            *p, with.technique.bounces,
+            [&](int bounces) {
+              SnellTechnique t = with.technique;
+              t.bounces = bounces;
+              return snellTwoInterfaceTrace(glm::vec3(p->entry), glm::vec3(p->entryNormal), float(eta), 0.0f,
+                                            b.back.depth, b.back.normals, b.backPyramid, back, b.front.depth,
+                                            b.front.normals, front, t, SNELL_TIR_CRITICAL);
+            },
+            uvOf, px, kLengthRel);
         ++paths[k];
       }
     std::printf("[bounce paths] %s, %s: %d paths with 2 reflections, %d with 3, %d with 4\n", shape.name.c_str(),
