@@ -1,6 +1,7 @@
 // Every runtime (runtime.hpp), in the order the suites run them: the one list the parity suite, the GPU
 // property test and your own parity test (makeRuntime) take them from. A new runtime is a class in a file
-// of its own under runtimes/ and one entry here.
+// of its own under runtimes/ and one entry here. Like the Vulkan runtime it includes, it needs the Vulkan
+// headers (Debian libvulkan-dev); the Vulkan loader itself is opened at run time.
 #pragma once
 
 #include "error.hpp"

@@ -1,8 +1,11 @@
 // A user's tool built against snell (tests/install/run_consumer.cmake builds it
 // in every consumption mode): calls a snell function in C++, flattens the
-// shader sources it was pointed at with the GPU layer's flattener, and checks
-// the version macros.
+// shader sources it was pointed at with the GPU layer's flattener, lists the
+// GPU layer's runtimes (an install has the four that need no source tree: its
+// headers compile without the ones it leaves out), and checks the version
+// macros.
 #include <snell/gpu/include_flattener.hpp>
+#include <snell/gpu/runtime_list.hpp>
 #include <snell/snell.hpp>
 
 #include <cmath>
@@ -33,6 +36,12 @@ int main() {
     std::fprintf(stderr, "the flattened optics.glsl has no snellRefract\n");
     return 1;
   }
-  std::printf("snell consumer: ok (snell %d.%d.%d)\n", SNELL_VERSION_MAJOR, SNELL_VERSION_MINOR, SNELL_VERSION_PATCH);
+  if (snell::gpu::runtimeList().size() < 4) {
+    std::fprintf(stderr, "snell::gpu lists %zu runtimes: %s\n", snell::gpu::runtimeList().size(),
+                 snell::gpu::runtimeNames().c_str());
+    return 1;
+  }
+  std::printf("snell consumer: ok (snell %d.%d.%d; runtimes %s)\n", SNELL_VERSION_MAJOR, SNELL_VERSION_MINOR,
+              SNELL_VERSION_PATCH, snell::gpu::runtimeNames().c_str());
   return 0;
 }
