@@ -10,8 +10,8 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DSNELL_WERROR=ON
 cmake --build "$build" -j "$(nproc)"
 # The GL tests must run: a missing context fails them (never a skip).
 ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
-# libFuzzer targets (clang): the committed crash regressions once, then 10 s of
-# fuzzing per target (SNELL_FUZZ_TIME, default 10) on a copy of the seed corpus (tests/fuzz/run_fuzzers.sh).
+# libFuzzer targets (clang): the committed crash regressions once, then 6 s of
+# fuzzing per target (SNELL_FUZZ_TIME, default 6) on a copy of the seed corpus (tests/fuzz/run_fuzzers.sh).
 SNELL_FUZZ_BUILD_DIR="$build/fuzz" bash tests/fuzz/run_fuzzers.sh
 
 # Sanitizers: a second build with AddressSanitizer + UBSan running the

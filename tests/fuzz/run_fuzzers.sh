@@ -8,7 +8,7 @@
 # Exits non-zero on any crash, leak, sanitizer report or escaped exception; the
 # crashing input is left in $out/crashes/<target>/ with the command to commit it.
 #
-# Environment: SNELL_FUZZ_TIME (seconds per target, default 20),
+# Environment: SNELL_FUZZ_TIME (seconds per target, default 6),
 # SNELL_FUZZ_BUILD_DIR (default build/fuzz), CLANGXX (default clang++-14 or clang++),
 # SNELL_FUZZ_TARGETS (default: every target tests/fuzz/targets.sh lists; the
 # image_<format> targets are one source, fuzz_image.cpp, each fuzzed from its
@@ -20,7 +20,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 out=${SNELL_FUZZ_BUILD_DIR:-$root/build/fuzz}
-seconds=${SNELL_FUZZ_TIME:-10}
+seconds=${SNELL_FUZZ_TIME:-6}
 # shellcheck source=tests/fuzz/targets.sh
 source "$root/tests/fuzz/targets.sh"
 targets=${SNELL_FUZZ_TARGETS:-$snell_fuzz_targets}
