@@ -1,5 +1,5 @@
 /* The shared part of the plane-family intersect/ parity cases (described in
-   tests/parity/plane_cases.cpp: hit.glsl, depth_surface.glsl, surface_point.glsl,
+   tests/parity/intersect_plane_cases.cpp: hit.glsl, depth_surface.glsl, surface_point.glsl,
    single_sample.glsl, plane_refine.glsl, plane_far_start.glsl, plane_normal.glsl,
    plane_depth.glsl, depth_pyramid.glsl, foreground.glsl). Two analytic scenes
    (tests/support/depth_scenes.hpp) as textures:
@@ -48,5 +48,5 @@ SNELL_FN SnellDepthSurface planeParityShapedSurface(vec3 b, vec4 c) {
   return snellDepthSurface(m, 0.5f, 40.0f, SNELL_DEPTH_GL, 0.0f);
 }
 
-/* Sets the hit outputs (PLANE_HIT_OUT in plane_cases.cpp) from a SnellHit. */
+/* Sets the hit outputs (PLANE_HIT_OUT in intersect_plane_cases.cpp) from a SnellHit. */
 #define PLANE_PARITY_SET_HIT(hit) CASE_SET_HIT(hit, ivec2(160, 120))

@@ -1,5 +1,5 @@
 /* The shared part of the parity cases for the ray-vs-depth-buffer searches and
-   marches of glsl/snell/intersect/ (described in tests/parity/search_cases.cpp:
+   marches of glsl/snell/intersect/ (described in tests/parity/intersect_search_cases.cpp:
    search_segment, conservative_binary_search, binary_search (and its
    bisection), linear_binary_search, linear_march, dda_march), run on the
    analytic scene buffers of tests/support/depth_scenes.hpp uploaded as
@@ -32,5 +32,5 @@ SNELL_FN SnellDepthSurface searchParitySurface(bool sceneB, vec4 d) {
                            sceneB ? 1.0f : 0.0f);
 }
 
-/* Sets the hit outputs (SEARCH_HIT_OUT in search_cases.cpp) from a SnellHit. */
+/* Sets the hit outputs (SEARCH_HIT_OUT in intersect_search_cases.cpp) from a SnellHit. */
 #define SEARCH_PARITY_SET_HIT(hit) CASE_SET_HIT(hit, ivec2(256, 256))

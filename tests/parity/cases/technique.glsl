@@ -1,6 +1,6 @@
 /* The two-interface refraction parity cases' shared part (glsl/snell/shade/environment*.glsl,
    technique_*.glsl, two_interface*.glsl; the cases themselves are described in
-   tests/parity/technique_cases.cpp): the textures, the ray cases' options, the options cases' packing and
+   tests/parity/technique_inputs.hpp and the *_technique_cases.cpp, shade_engine_cases.cpp): the textures, the ray cases' options, the options cases' packing and
    techImagePixel (tests/gpu/technique_image_test.cpp).
    Textures: the technique test scene (tests/support/technique_scene.hpp) at 96x96:
    back-face depth / normal mips / pyramid of a glass sphere, an opaque painting
@@ -174,12 +174,12 @@ SNELL_FN vec4 techOptionSums(SnellTechnique t, SnellMaterial m, SnellView v) {
                   v.envY.y + v.envZ.z + m.iorOutside + m.iors.y + m.absorption.x + float(t.back.intersect.depthFilter));
 }
 
-/* The options cases' outputs (TECH_OPTIONS_OUTPUTS in technique_cases.cpp) set from a technique `t`, material
+/* The options cases' outputs (TECH_OPTIONS_EXACT in technique_inputs.hpp) set from a technique `t`, material
    `m` and view `v`: the back and exit slots' strategy, counts and flags, the material's settings and the sums. */
 #define TECH_SLOTS_OUT(t) backStrategy = t.back.intersect.strategy; backCounts = techPackCounts(t.back.intersect); backFlags = techBackFlags(t.back); exitStrategy = t.exit.intersect.strategy; exitCounts = techPackCounts(t.exit.intersect); exitFlags = techExitFlags(t.exit);
-/* The bounce presets' outputs (TECH_BOUNCE_EXACT in technique_cases.cpp). */
+/* The bounce presets' outputs (TECH_BOUNCE_EXACT in shade_technique_cases.cpp). */
 #define TECH_BOUNCE_OUT(t) bounces = t.bounces; insideSource = t.inside.source; insideStrategy = t.inside.intersect.strategy; insideCounts = vec2(float(t.inside.intersect.marchSteps), float(t.inside.intersect.marchBisections)); insideMaxDistance = t.inside.intersect.marchMaxDistance; backStrategy = t.back.intersect.strategy; backCounts = techPackCounts(t.back.intersect); exitStrategy = t.exit.intersect.strategy;
-/* The engine model cases' outputs (TECH_ENGINE_OUTPUTS in technique_cases.cpp) from a SnellEngineRefraction. */
+/* The engine model cases' outputs (TECH_ENGINE_OUTPUTS in shade_engine_cases.cpp) from a SnellEngineRefraction. */
 #define TECH_ENGINE_OUT(e) uv = e.uv; weight = e.sceneWeight; valid = e.valid; direction = e.direction; distance = e.distance;
 #define TECH_OPTIONS_OUT(t, m, v) TECH_SLOTS_OUT(t) tirPolicy = m.tirPolicy; ior = m.ior; dispersion = m.dispersion; reflection = m.reflection; sums = techOptionSums(t, m, v);
 
