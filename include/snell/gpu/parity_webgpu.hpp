@@ -84,14 +84,15 @@ inline std::string webGpuTextureHooks(std::size_t slots) {
 
 // Runs `entry` of `caseFile` (found through includeDirs) on every input on
 // WebGPU. The job (shader, SPIR-V, WGSL, inputs, textures, results) is left in
-// workDir/<case file stem>.<entry>/.
+// workDir/<case file stem>.<entry>/. `adapter`, if given, receives the WebGPU
+// adapter's description.
 inline std::vector<ParityIO> runParityWebGpu(const WebGpuTools& webgpu,
                                              const std::vector<std::filesystem::path>& includeDirs,
                                              const std::string& caseFile, const std::string& entry,
                                              const std::vector<ParityIO>& inputs,
                                              const std::vector<ParityTexture>& textures,
                                              const std::filesystem::path& workDir, const ShaderTools& tools = {},
-                                             const std::string& entrySource = {}) {
+                                             const std::string& entrySource = {}, std::string* adapter = nullptr) {
   namespace fs = std::filesystem;
   const fs::path job = workDir / (fs::path(caseFile).stem().string() + "." + entry);
   // The rewritten case file goes into the job's own folder: tests of other functions of the same case
@@ -169,6 +170,10 @@ inline std::vector<ParityIO> runParityWebGpu(const WebGpuTools& webgpu,
   // The same WGSL through Tint (Dawn's compiler, Chrome's): the two WGSL compilers disagree on some input.
   t = runTool(webgpu.node, {(webgpu.toolsDir / "tint_check.mjs").string(), (job / "shader.wgsl").string()}, "nodejs");
   if (t.exitCode != 0) throw Error("Tint rejects the WGSL of " + job.string() + ":\n" + detail::indent(t.output));
+  if (adapter) {
+    *adapter = detail::readTextFile(job / "adapter.txt");
+    while (!adapter->empty() && adapter->back() == '\n') adapter->pop_back();
+  }
   return detail::readParityResults(job / "results.f32", inputs.size(), "the WebGPU runtime");
 }
 

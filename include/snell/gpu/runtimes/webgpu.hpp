@@ -5,7 +5,6 @@
 #pragma once
 
 #include "../parity_webgpu.hpp"
-#include "../process.hpp"
 #include "../runtime.hpp"
 
 #include <filesystem>
@@ -29,12 +28,8 @@ class WebGpuRuntime final : public Runtime {
            "spirv-tools, mesa-vulkan-drivers";
   }
   std::vector<ParityIO> run(const RuntimeCase& c, const std::vector<ParityIO>& inputs) override {
-    std::vector<ParityIO> out = runParityWebGpu(tools_, c.includeDirs, c.caseFile, c.entry, inputs, c.textures,
-                                                setup_.workDir / "webgpu", setup_.shaderTools, c.entrySource);
-    adapter_ = detail::readTextFile(setup_.workDir / "webgpu" /
-                                    (std::filesystem::path(c.caseFile).stem().string() + "." + c.entry) / "adapter.txt");
-    while (!adapter_.empty() && adapter_.back() == '\n') adapter_.pop_back();
-    return out;
+    return runParityWebGpu(tools_, c.includeDirs, c.caseFile, c.entry, inputs, c.textures, setup_.workDir / "webgpu",
+                           setup_.shaderTools, c.entrySource, &adapter_);
   }
   std::string renderer() override { return adapter_.empty() ? "(known after its first run)" : adapter_; }
   const WebGpuTools& tools() const { return tools_; }
