@@ -82,7 +82,7 @@ export async function runParityJob(gpu, job, wgsl, readFile) {
         mipmapFilter: (t.mip === "linear" ? "linear" : "nearest"),
         lodMinClamp: 0, lodMaxClamp: t.mip === "none" ? 0.25 : t.levels.length - 1,
       });
-      made.set(k, { view: tex.createView(), sampler });
+      made.set(k, { tex, view: tex.createView(), sampler });
     }
     return made.get(k);
   }
@@ -111,5 +111,8 @@ export async function runParityJob(gpu, job, wgsl, readFile) {
   const internalError = await device.popErrorScope();
   const validationError = await device.popErrorScope();
   if (validationError || internalError) throw new Error(`WebGPU error: ${(validationError ?? internalError).message}`);
+  // parity_server.ts keeps the device for the next job (a failed job's device it destroys whole).
+  for (const b of [inBuf, outBuf, readBuf, params]) b.destroy();
+  for (const t of made.values()) t.tex.destroy();
   return { results, adapter: adapterName };
 }
