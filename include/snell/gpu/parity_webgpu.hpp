@@ -17,7 +17,10 @@
 // The device side is tools/webgpu/run_parity.ts (naga and the dispatch), and
 // every WGSL also goes through Tint (tools/webgpu/tint_check.mjs, dawn.node's
 // null backend): the npm packages deno, naga-wasm and webgpu, installed from
-// tools/webgpu's lockfile. Source tree only: `cmake --install` leaves this
+// tools/webgpu's lockfile. Each case starts a Deno and a Node process, or,
+// when SNELL_WEBGPU_SERVER names the state folder of
+// tools/webgpu/webgpu_servers.mjs (ctest does), asks the two servers that
+// folder's sockets lead to. Source tree only: `cmake --install` leaves this
 // header out, as it leaves out tools/.
 #pragma once
 
@@ -27,6 +30,7 @@
 #include "shader_tools.hpp"
 #include "parity.hpp"
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -78,6 +82,20 @@ inline std::string webGpuTextureHooks(std::size_t slots) {
   s += "ivec2 snellWebgpuTextureSize0(int t) {\n" +
        chain("textureSize(sampler2D(snellWebgpuTexK, snellWebgpuSmpK), 0)", "ivec2(0, 0)") + "}\n";
   return s;
+}
+
+// A case's wait for a server behind the other ctest jobs' cases: minutes only if it hangs.
+constexpr int kWebGpuServerTimeoutSeconds = 300;
+
+// What run_parity.ts (`name` "parity") or tint_check.mjs ("tint") would exit with and print for
+// `request`, from its server in the state folder `dir` (tools/webgpu/webgpu_servers.mjs). Not reaching
+// it is an error, never a fallback to a process per case: SNELL_WEBGPU_SERVER says the servers are there.
+inline ToolResult askWebGpuServer(const std::string& dir, const std::string& name, const std::string& request) {
+  const std::filesystem::path d(dir);
+  return askServer(d / (name + ".sock"), request, kWebGpuServerTimeoutSeconds,
+                   "the WebGPU runtime's " + name + " server (SNELL_WEBGPU_SERVER=" + dir +
+                       ": ctest starts it in the test webgpu.servers_start; its output is in " +
+                       (d / (name + "_server.log")).string() + ")");
 }
 
 }  // namespace detail
@@ -160,15 +178,20 @@ inline std::vector<ParityIO> runParityWebGpu(const WebGpuTools& webgpu,
     throw Error("the WebGPU runtime needs Deno and naga from npm: no " + webgpu.deno + " or " +
                 (webgpu.toolsDir / "node_modules" / "naga-wasm").string() + " (run `npm ci` in " +
                 webgpu.toolsDir.string() + "; scripts/install-deps.sh does)");
-  ToolResult t = runTool(webgpu.deno,
-              {"run", "--quiet", "--allow-read", "--allow-write", "--allow-env", "--node-modules-dir=manual",
-               (webgpu.toolsDir / "run_parity.ts").string(), job.string()},
-              "deno");
+  const char* server = std::getenv("SNELL_WEBGPU_SERVER");
+  const bool served = server != nullptr && *server != '\0';
+  ToolResult t = served ? detail::askWebGpuServer(server, "parity", fs::absolute(job).string())
+                        : runTool(webgpu.deno,
+                                  {"run", "--quiet", "--allow-read", "--allow-write", "--allow-env",
+                                   "--node-modules-dir=manual", (webgpu.toolsDir / "run_parity.ts").string(), job.string()},
+                                  "deno");
   if (t.exitCode != 0)
     throw Error("the WebGPU runtime failed on " + job.string() + " (deno exit " + std::to_string(t.exitCode) + "):\n" +
                 detail::indent(t.output));
   // The same WGSL through Tint (Dawn's compiler, Chrome's): the two WGSL compilers disagree on some input.
-  t = runTool(webgpu.node, {(webgpu.toolsDir / "tint_check.mjs").string(), (job / "shader.wgsl").string()}, "nodejs");
+  const fs::path wgsl = job / "shader.wgsl";
+  t = served ? detail::askWebGpuServer(server, "tint", fs::absolute(wgsl).string())
+             : runTool(webgpu.node, {(webgpu.toolsDir / "tint_check.mjs").string(), wgsl.string()}, "nodejs");
   if (t.exitCode != 0) throw Error("Tint rejects the WGSL of " + job.string() + ":\n" + detail::indent(t.output));
   if (adapter) {
     *adapter = detail::readTextFile(job / "adapter.txt");

@@ -5,16 +5,21 @@
 //
 // runTool starts the program with posix_spawnp (no shell: arguments are passed as they are, nothing is
 // expanded), collects its stdout and stderr interleaved and waits for it. A program that cannot be
-// started is an Error naming the Debian package that provides it.
+// started is an Error naming the Debian package that provides it. askServer puts the same question to a
+// server that answers like a tool (tools/webgpu/parity_server.ts, tint_server.mjs).
 #pragma once
 
 #include "error.hpp"
 
+#include <poll.h>
 #include <spawn.h>
+#include <sys/socket.h>
+#include <sys/un.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -127,6 +132,65 @@ inline std::string indent(const std::string& text) {
     if (c == '\n') out += "    ";
   }
   return out;
+}
+
+// Asks the server on the Unix socket `socket`: writes `request` and a newline, reads the answer until the
+// server closes the connection: "<exit status>\n<output>", what the tool it stands for would exit with and
+// print. Throws an Error starting with `who` and naming the socket when the server cannot be reached,
+// closes without an answer or gives none within `timeoutSeconds`.
+inline ToolResult askServer(const std::filesystem::path& socket, const std::string& request, int timeoutSeconds,
+                            const std::string& who) {
+  const std::string path = socket.string();
+  const auto fail = [&](const std::string& what) { return Error(who + ": " + what); };
+  if (request.find('\n') != std::string::npos) throw fail("a request is one line: '" + request + "'");
+  sockaddr_un address{};
+  address.sun_family = AF_UNIX;
+  if (path.size() >= sizeof address.sun_path)
+    throw fail("the socket path " + path + " is longer than a Unix socket's " +
+               std::to_string(sizeof address.sun_path - 1) + " bytes");
+  std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
+  const int fd = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) throw fail("socket() failed: " + std::string(std::strerror(errno)));
+  struct Closer {
+    int socket;
+    ~Closer() { close(socket); }
+  } closer{fd};
+  if (connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) != 0)
+    throw fail("cannot connect to " + path + ": " + std::strerror(errno));
+  const std::string line = request + "\n";
+  for (std::size_t sent = 0; sent < line.size();) {
+    const ssize_t n = send(fd, line.data() + sent, line.size() - sent, MSG_NOSIGNAL);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw fail("cannot write to " + path + ": " + std::strerror(errno));
+    sent += static_cast<std::size_t>(n);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeoutSeconds);
+  std::string answer;
+  char buf[4096];
+  for (;;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    pollfd p{fd, POLLIN, 0};
+    const int ready = left.count() > 0 ? poll(&p, 1, static_cast<int>(left.count())) : 0;
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready < 0) throw fail("poll() on " + path + " failed: " + std::strerror(errno));
+    if (ready == 0) throw fail("no answer from " + path + " in " + std::to_string(timeoutSeconds) + " s");
+    const ssize_t n = read(fd, buf, sizeof buf);
+    if (n > 0) {
+      answer.append(buf, static_cast<std::size_t>(n));
+    } else if (n == 0) {
+      break;
+    } else if (errno != EINTR) {
+      throw fail("cannot read from " + path + ": " + std::strerror(errno));
+    }
+  }
+  if (answer.empty()) throw fail(path + " closed the connection without an answer (did its server exit?)");
+  const std::size_t eol = answer.find('\n');
+  if (eol == std::string::npos || eol == 0 || eol > 3 || answer.find_first_not_of("0123456789") != eol)
+    throw fail(path + " gave no exit status:\n" + indent(answer));
+  ToolResult r;
+  r.exitCode = std::stoi(answer.substr(0, eol));
+  r.output = answer.substr(eol + 1);
+  return r;
 }
 
 }  // namespace detail
