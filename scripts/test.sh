@@ -4,15 +4,22 @@
 # EGL, compile checks in every language mode, install/consumer).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# How long each phase took (the fresh-clone budget is 30 minutes on 2 cores).
+started=$SECONDS last=$SECONDS
+phase() { echo "test.sh: $1 took $((SECONDS - last)) s ($((SECONDS - started)) s in all)"; last=$SECONDS; }
 bash scripts/install-deps.sh
+phase "installing"
 build=${SNELL_BUILD_DIR:-build}
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DSNELL_WERROR=ON
 cmake --build "$build" -j "$(nproc)"
+phase "configuring and building"
 # The GL tests must run: a missing context fails them (never a skip).
 ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
+phase "ctest"
 # libFuzzer targets (clang): the committed crash regressions once, then 6 s of
 # fuzzing per target (SNELL_FUZZ_TIME, default 6) on a copy of the seed corpus (tests/fuzz/run_fuzzers.sh).
 SNELL_FUZZ_BUILD_DIR="$build/fuzz" bash tests/fuzz/run_fuzzers.sh
+phase "fuzzing"
 
 # Sanitizers: a second build with AddressSanitizer + UBSan running the
 # unit, property and lab loader tests; any report fails the script (halt_on_error,
@@ -33,3 +40,4 @@ export ASAN_OPTIONS=detect_leaks=1
 "$san/tests/lab/snell_lab_loader_tests"
 # 100,000 hostile inputs per function here; the full 1,000,000 ran in ctest above.
 SNELL_PROPERTY_INPUTS=100000 "$san/tests/property/snell_property_tests"
+phase "the sanitizer build and its tests"
