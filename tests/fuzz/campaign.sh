@@ -20,7 +20,9 @@
 # to $dir/summary.md and stdout. Exits non-zero when anything was found.
 #
 # Environment: SNELL_FUZZ_BUILD_DIR (default build/fuzz; the campaign works in
-# $SNELL_FUZZ_BUILD_DIR/campaign), CLANGXX as for run_fuzzers.sh.
+# $SNELL_FUZZ_BUILD_DIR/campaign), CLANGXX as for run_fuzzers.sh,
+# SNELL_FUZZ_DECODERS (default source: the image decoders built instrumented
+# from Debian's source packages, build_decoders.sh; debian: Debian's builds).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 out=${SNELL_FUZZ_BUILD_DIR:-$root/build/fuzz}
@@ -40,7 +42,8 @@ for p in "${plan[@]}"; do
   [[ "$m" =~ ^[0-9]+$ ]] && [ "$m" -gt 0 ] || { echo "campaign: '$p': minutes must be a positive whole number" >&2; exit 2; }
   targets+=("$t")
 done
-SNELL_FUZZ_BUILD_DIR=$out SNELL_FUZZ_TARGETS="${targets[*]}" SNELL_FUZZ_BUILD_ONLY=1 bash "$root/tests/fuzz/run_fuzzers.sh"
+SNELL_FUZZ_DECODERS=${SNELL_FUZZ_DECODERS:-source} SNELL_FUZZ_BUILD_DIR=$out SNELL_FUZZ_TARGETS="${targets[*]}" SNELL_FUZZ_BUILD_ONLY=1 \
+  bash "$root/tests/fuzz/run_fuzzers.sh"
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
@@ -58,7 +61,8 @@ campaign_target() {
   cp -n "$committed/"* "$work/" 2>/dev/null || true
   local before; before=$(coverage "$t" "$committed")
   echo "campaign: $t: fuzzing for $m min (log: $dir/$t/fuzz.log)"
-  "$out/fuzz_$t" "$work" -fork=1 -ignore_crashes=1 -ignore_ooms=1 -ignore_timeouts=1 \
+  # shellcheck disable=SC2046
+  "$out/fuzz_$t" "$work" $(dict_of "$t") -fork=1 -ignore_crashes=1 -ignore_ooms=1 -ignore_timeouts=1 \
     -max_total_time=$((m * 60)) "${limits[@]}" -artifact_prefix="$findings/" > "$dir/$t/fuzz.log" 2>&1 || true
   local last; last=$(grep -E '^#[0-9]+: cov:' "$dir/$t/fuzz.log" | tail -n 1 || true)
   local execs rate

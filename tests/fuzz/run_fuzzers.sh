@@ -13,10 +13,14 @@
 # SNELL_FUZZ_TARGETS (default: every target tests/fuzz/targets.sh lists; the
 # image_<format> targets are one source, fuzz_image.cpp, each fuzzed from its
 # own format's corpus), targets fuzzed $(nproc) at a time,
-# SNELL_FUZZ_BUILD_ONLY=1 (build the targets and stop: tests/fuzz/campaign.sh).
-# Needs clang-14 and libclang-rt-14-dev (scripts/install-deps.sh). The image
-# libraries (libspng, libjpeg-turbo, OpenEXR) are Debian's, not instrumented:
-# coverage and sanitizers see snell's side of each call (OSS-Fuzz fuzzes theirs).
+# SNELL_FUZZ_BUILD_ONLY=1 (build the targets and stop: tests/fuzz/campaign.sh),
+# SNELL_FUZZ_DECODERS=debian|source (default debian): the image libraries
+# (libspng, libjpeg-turbo, OpenEXRCore) the targets link. debian: Debian's
+# builds, not instrumented (coverage and sanitizers see snell's side of each
+# call), enough for the smoke run; source: Debian's source packages built with
+# the targets' instrumentation by build_decoders.sh (in $out/decoders), so a
+# campaign's coverage reaches inside the decoder (campaign.sh's default).
+# Needs clang-14 and libclang-rt-14-dev (scripts/install-deps.sh).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 out=${SNELL_FUZZ_BUILD_DIR:-$root/build/fuzz}
@@ -33,8 +37,18 @@ common=(-std=c++17 -g -O1 -fno-omit-frame-pointer -fsanitize=address,undefined -
 lab_sources=(camera environment file_util image_io image_decoders/exr_decoder image_decoders/jpeg_decoder
              image_decoders/png_decoder image_decoders/radiance_decoder json_lines json_reader mesh mesh_generators
              obj_loader painting scene gltf_loader)
-# shellcheck disable=SC2207
-image_libs=($(pkg-config --libs spng libjpeg) -lOpenEXRCore-3_1)
+decoders=${SNELL_FUZZ_DECODERS:-debian}
+case $decoders in
+  debian)
+    # shellcheck disable=SC2207
+    image_libs=($(pkg-config --libs spng libjpeg) -lOpenEXRCore-3_1) ;;
+  source)
+    bash "$root/tests/fuzz/build_decoders.sh" "$out/decoders"
+    image_libs=("$out/decoders/lib/libspng.a" "$out/decoders/lib/libjpeg.a" "$out/decoders/lib/libOpenEXRCore.a" -lz -lm) ;;
+  *) echo "run_fuzzers: SNELL_FUZZ_DECODERS is debian or source, not '$decoders'" >&2; exit 2 ;;
+esac
+# The targets remember which decoders they were linked with: a change rebuilds them.
+[ "$(cat "$out/decoders.kind" 2>/dev/null)" = "$decoders" ] || { rm -f "$out"/fuzz_*; echo "$decoders" > "$out/decoders.kind"; }
 common+=($(pkg-config --cflags-only-I OpenEXR | sed 's/-I/-isystem /g'))
 
 # The lab core, instrumented for coverage; the tracer (Embree) only for scene_render.
@@ -65,6 +79,7 @@ for t in $targets; do
   case $t in
     include_flattener) ;;
     scene_render) extra=("${objs[@]}" "${render_objs[@]}" "${image_libs[@]}" -lembree3) ;;
+    image_*) extra=("-DSNELL_FUZZ_IMAGE_$(tr '[:lower:]' '[:upper:]' <<< "${t#image_}")" "${objs[@]}" "${image_libs[@]}") ;;
     *) extra=("${objs[@]}" "${image_libs[@]}") ;;
   esac
   "$cxx" "${common[@]}" -fsanitize=fuzzer "$root/tests/fuzz/fuzz_$src.cpp" "${extra[@]}" -o "$bin.tmp" -lpthread &&
@@ -96,7 +111,8 @@ fuzz_target() {
   mkdir -p "$work" "$crashes"
   cp "$root/tests/fuzz/corpus/$(corpus_of "$t")/"* "$work/"
   echo "run_fuzzers: $t: fuzzing for ${seconds}s"
-  if "$out/fuzz_$t" "$work" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=1024 -timeout=25 \
+  # shellcheck disable=SC2046
+  if "$out/fuzz_$t" "$work" $(dict_of "$t") -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=1024 -timeout=25 \
        -max_len=65536 -print_final_stats=1 -artifact_prefix="$crashes/" > "$out/$t.log" 2>&1; then
     echo "run_fuzzers: $t: $(grep -h 'stat::number_of_executed_units' "$out/$t.log" | awk '{print $2}') executions, no crash"
   else

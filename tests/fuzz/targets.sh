@@ -7,3 +7,5 @@ snell_fuzz_targets="include_flattener scene scene_render obj gltf image_png imag
 corpus_of() { case $1 in scene_render) echo scene ;; *) echo "$1" ;; esac; }
 # The image_<format> targets are one source, fuzz_image.cpp, each fuzzed from its own format's corpus.
 source_of() { case $1 in image_*) echo image ;; *) echo "$1" ;; esac; }
+# The dictionary libFuzzer inserts whole (-dict), for the targets that have one.
+dict_of() { case $1 in scene|scene_render) echo "-dict=$root/tests/fuzz/dictionaries/scene.dict" ;; esac; }
