@@ -7,8 +7,12 @@
 
 #include <snell/depth_pyramid.hpp>
 
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <limits>
+#include <random>
+#include <utility>
 
 #include "support/depth_scenes.hpp"
 
@@ -109,3 +113,54 @@ TEST(DepthPyramid, NormalMipsHaveEveryLevel) {
 }
 
 }  // namespace
+
+// snellDepthMinMaxReduce texel by texel against the contract's children, computed here: 2 x 2 blocks, the
+// third column or row of odd sizes at the last texel, column / row 0 alone at size 1; a child counts when
+// its w > 0; the sums in the same order (row by row), so the results agree exactly. Random texels with
+// empty ones, on sizes odd and even, down to 1 x 1.
+TEST(DepthPyramid, MinMaxReduceIsTheContractsChildrenByHand) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  const float empty = 1.0f;
+  for (const auto& [w, h] : {std::pair{8, 8}, {7, 5}, {5, 7}, {3, 3}, {2, 1}, {1, 2}, {1, 1}, {9, 1}, {1, 9}, {6, 3}}) {
+    snell::Image level(w, h);
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i) {
+        const bool valid = u(rng) < 0.7f;
+        const float y = 1.0f + 5.0f * u(rng);
+        // Some children with the smallest coverage there is (a denormal w still counts: w > 0).
+        const float cover = u(rng) < 0.1f ? 1e-40f : 0.1f + 0.9f * u(rng);
+        level.at(i, j) = valid ? glm::vec4(u(rng), y, y + 3.0f * u(rng), cover) : glm::vec4(empty, 0.0f, 0.0f, 0.0f);
+      }
+    const snell::Texture2D tex(level);
+    for (int py = 0; py < std::max(1, h / 2); ++py)
+      for (int px = 0; px < std::max(1, w / 2); ++px) {
+        const int x0 = w == 1 ? 0 : 2 * px, x1 = w == 1 ? 0 : (px == w / 2 - 1 ? w - 1 : 2 * px + 1);
+        const int y0 = h == 1 ? 0 : 2 * py, y1 = h == 1 ? 0 : (py == h / 2 - 1 ? h - 1 : 2 * py + 1);
+        float sum = 0.0f, coverage = 0.0f, nearest = 0.0f, farthest = 0.0f;
+        int valid = 0, children = 0;
+        for (int y = y0; y <= y1; ++y)
+          for (int x = x0; x <= x1; ++x) {
+            const glm::vec4 t = level.at(x, y);
+            ++children;
+            coverage += t.w;
+            if (!(t.w > 0.0f)) continue;
+            sum += t.x;
+            nearest = valid == 0 ? t.y : std::min(nearest, t.y);
+            farthest = valid == 0 ? t.z : std::max(farthest, t.z);
+            ++valid;
+          }
+        const glm::vec4 want = valid == 0 ? glm::vec4(empty, 0.0f, 0.0f, 0.0f)
+                                          : glm::vec4(sum / float(valid), nearest, farthest, coverage / float(children));
+        const glm::vec4 got = snell::snellDepthMinMaxReduce(tex, 0, glm::ivec2(px, py), empty);
+        EXPECT_EQ(got, want) << w << "x" << h << " texel " << px << "," << py << " (" << children << " children)";
+      }
+  }
+}
+
+// The smallest distance a base texel can hold: zNear = FLT_MIN at depth 0 is FLT_MIN away, and valid.
+TEST(DepthPyramid, BaseKeepsTheSmallestDistance) {
+  const snell::SnellDepthSurface s = snell::snellDepthSurface(glm::mat4(1.0f), FLT_MIN, 1.0f, SNELL_DEPTH_GL, 1.0f);
+  EXPECT_EQ(snell::snellDepthPyramidBase(0.0f, s), glm::vec4(0.0f, FLT_MIN, FLT_MIN, 1.0f));
+  EXPECT_EQ(snell::snellDepthPyramidBase(1.0f, s), glm::vec4(1.0f, 0.0f, 0.0f, 0.0f));  // the empty value
+}

@@ -206,3 +206,42 @@ TEST(DepthSurface, InconsistentHandFilledSurfacesGiveFiniteResults) {
 }
 
 }  // namespace
+
+// The boundaries the contracts state exactly: uv in the closed [0,1]^2 (0 and 1 read, the next float past
+// them does not); the smallest zNear and perspective determinant that count (FLT_MIN itself); the fields
+// snellDepthSurface sets; a miss reads as viewZ 0.
+TEST(IntersectDepthSurface, BoundariesAreWhereTheContractsPutThem) {
+  Texture2D depth(Image(4, 4, glm::vec4(0.5f, 0.0f, 0.0f, 0.0f)));
+  const SnellDepthSurface s = snellDepthSurface(glm::perspective(1.0f, 1.0f, 0.5f, 20.0f), 0.5f, 20.0f, SNELL_DEPTH_GL, 1.0f);
+  EXPECT_EQ(s.depthFilter, SNELL_DEPTH_FILTER_NEAREST);
+  EXPECT_TRUE(s.closed);
+  EXPECT_EQ(s.lod, 0);
+  const float below0 = -std::numeric_limits<float>::denorm_min(), above1 = std::nextafter(1.0f, 2.0f);
+  for (const glm::vec2 uv : {glm::vec2(0.0f, 0.5f), glm::vec2(1.0f, 0.5f), glm::vec2(0.5f, 0.0f), glm::vec2(0.5f, 1.0f),
+                             glm::vec2(0.0f, 0.0f), glm::vec2(1.0f, 1.0f), glm::vec2(1e-40f, 0.5f)}) {
+    const SnellSurfaceSample x = snellSampleSurface(depth, uv, s);
+    EXPECT_TRUE(x.valid) << uv.x << "," << uv.y;
+    EXPECT_LT(x.viewZ, 0.0f) << uv.x << "," << uv.y;
+  }
+  for (const glm::vec2 uv : {glm::vec2(below0, 0.5f), glm::vec2(above1, 0.5f), glm::vec2(0.5f, below0),
+                             glm::vec2(0.5f, above1)}) {
+    const SnellSurfaceSample x = snellSampleSurface(depth, uv, s);
+    EXPECT_FALSE(x.valid) << uv.x << "," << uv.y;
+    EXPECT_EQ(x.viewZ, 0.0f) << uv.x << "," << uv.y;
+    EXPECT_FALSE(x.interpolated);
+  }
+  // zNear = FLT_MIN linearizes (the smallest normal float is accepted); depth 0 is then FLT_MIN away.
+  const SnellDepthSurface tiny = snellDepthSurface(glm::mat4(1.0f), FLT_MIN, 1.0f, SNELL_DEPTH_GL, 1.0f);
+  EXPECT_TRUE(tiny.linearizable);
+  EXPECT_EQ(snellSurfaceLinearDepth(tiny, 0.0f), FLT_MIN);
+  EXPECT_FALSE(snellDepthSurface(glm::mat4(1.0f), FLT_MIN / 2.0f, 1.0f, SNELL_DEPTH_GL, 1.0f).linearizable);
+  // A perspective matrix whose x and y scales multiply to exactly FLT_MIN keeps its determinant.
+  glm::mat4 p = glm::perspective(1.0f, 1.0f, 0.5f, 20.0f);
+  p[0][0] = 1.0f;
+  p[1][1] = FLT_MIN;
+  const SnellDepthSurface edge = snellDepthSurface(p, 0.5f, 20.0f, SNELL_DEPTH_GL, 1.0f);
+  ASSERT_TRUE(edge.perspective);
+  EXPECT_EQ(edge.perspectiveDet, FLT_MIN);
+  p[1][1] = FLT_MIN / 2.0f;
+  EXPECT_EQ(snellDepthSurface(p, 0.5f, 20.0f, SNELL_DEPTH_GL, 1.0f).perspectiveDet, 0.0f);
+}

@@ -6,6 +6,8 @@
 
 #include <snell/intersect.hpp>
 
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -275,3 +277,274 @@ TEST(IntersectMarch, LinearMarchHitsLieOnValidTexelsBehindTheSurface) {
 }
 
 }  // namespace
+
+namespace {
+
+// The DDA's contract replayed in double: the segment (capped, cut at the near plane), both ends projected
+// with the scene's matrix, steps of ds along the major axis, each owning [s - ds/2, s + ds/2] of the screen
+// parameter and that part's depth interval, texels read by plain index math, the first step whose texel is
+// valid with zNear >= viewZ - thickness and zFar <= viewZ hitting at the ray's point of depth
+// clamp(viewZ, zFar, zNear). `ambiguous` where float could decide otherwise (a uv within 1e-3 texel of a
+// texel edge or the screen's border, a depth within 1e-5 |z| of a bound).
+struct DdaReference {
+  glm::dvec3 position{0.0};
+  glm::dvec2 uv{0.0};
+  bool valid = false;
+  int fetches = 0;
+  bool ambiguous = false;
+};
+DdaReference ddaReference(const DepthScene& sc, glm::dvec3 o, glm::dvec3 d, double maxDistance, double thickness,
+                          double stride, int steps) {
+  DdaReference r;
+  const double thick = std::isnan(thickness) ? double(SNELL_DDA_THICKNESS) : std::clamp(thickness, 0.0, double(FLT_MAX));
+  const double px = std::isnan(stride) ? 1.0 : std::max(stride, 1.0);
+  double tMax = std::min(maxDistance, 1e30) / glm::length(d);
+  if (d.z > 0.0) tMax = std::min(tMax, (-double(sc.zNear) - o.z) / d.z);
+  const glm::dvec3 e = o + tMax * d;
+  const glm::dmat4 m(sc.clipFromView);
+  const glm::dvec4 h0 = m * glm::dvec4(o, 1.0), h1 = m * glm::dvec4(e, 1.0);
+  const double k0 = 1.0 / h0.w, k1 = 1.0 / h1.w;
+  const glm::dvec3 q0 = o * k0, q1 = e * k1;
+  const glm::dvec2 uv0 = glm::dvec2(h0.x, h0.y) * k0 * 0.5 + 0.5;
+  const glm::dvec2 duv = glm::dvec2(h1.x, h1.y) * k1 * 0.5 + 0.5 - uv0;
+  const double major = std::max(std::fabs(duv.x * sc.width), std::fabs(duv.y * sc.height));
+  const double ds = major > px ? px / major : 1.0;
+  const int n = std::clamp(steps, 1, SNELL_DDA_MAX_STEPS);
+  const auto at = [&](double s) { return (q0 * (1.0 - s) + q1 * s) / (k0 * (1.0 - s) + k1 * s); };
+  double sA = 0.0, zA = o.z;
+  for (int i = 0; i < SNELL_DDA_MAX_STEPS; ++i) {
+    const double sC = std::min(i * ds, 1.0), sB = std::min((i + 0.5) * ds, 1.0);
+    const double zB = at(sB).z;
+    const glm::dvec2 uv = uv0 + sC * duv;
+    const glm::dvec2 t(uv.x * sc.width, uv.y * sc.height);
+    const double border = std::min({std::fabs(uv.x), std::fabs(uv.x - 1.0), std::fabs(uv.y), std::fabs(uv.y - 1.0)});
+    if (border < 1e-6) r.ambiguous = true;
+    if (!(uv.x >= 0.0 && uv.x <= 1.0 && uv.y >= 0.0 && uv.y <= 1.0)) return r;
+    if (std::fabs(t.x - std::round(t.x)) < 1e-3 || std::fabs(t.y - std::round(t.y)) < 1e-3) r.ambiguous = true;
+    const double z = snell_search_test::texelViewZ(sc, std::min(int(std::floor(t.x)), sc.width - 1),
+                                                   std::min(int(std::floor(t.y)), sc.height - 1));
+    ++r.fetches;
+    const double zNear = std::max(zA, zB), zFar = std::min(zA, zB);
+    if (!std::isnan(z)) {
+      const double eps = 1e-5 * std::fabs(z);
+      if (std::fabs(zNear - (z - thick)) < eps || std::fabs(zFar - z) < eps) r.ambiguous = true;
+      if (zNear >= z - thick && zFar <= z) {
+        const double zHit = std::clamp(z, zFar, zNear);
+        const glm::dvec3 pA = at(sA), pB = at(sB);
+        const double f = pB.z != pA.z ? std::clamp((zHit - pA.z) / (pB.z - pA.z), 0.0, 1.0) : 0.5;
+        r.position = pA + f * (pB - pA);
+        r.uv = uv;
+        r.valid = true;
+        return r;
+      }
+    }
+    sA = sB;
+    zA = zB;
+    if (i + 1 >= n || sA >= 1.0) break;
+  }
+  return r;
+}
+
+// The same fetches and validity, and for a hit the same texel (uv within 1e-4) and point (1e-4 relative).
+void expectTheReferenceHit(const SnellHit& h, const DdaReference& want, const std::string& what) {
+  EXPECT_EQ(h.fetches, want.fetches) << what;
+  EXPECT_EQ(h.valid, want.valid) << what;
+  if (!want.valid || !h.valid) return;
+  EXPECT_NEAR(h.uv.x, want.uv.x, 1e-4) << what;
+  EXPECT_NEAR(h.uv.y, want.uv.y, 1e-4) << what;
+  EXPECT_LT(glm::length(glm::dvec3(h.position) - want.position), 1e-4 * glm::length(want.position)) << what;
+}
+
+}  // namespace
+
+// snellDdaMarch against its contract replayed step by step, over strides, thicknesses, distances and step
+// counts: the same fetches, the same hit texel and validity, the same point.
+TEST(IntersectMarch, DdaIsTheContractsWalkStepByStep) {
+  const float thicknesses[] = {FLT_MAX, 0.5f, 0.05f, 0.0f};
+  const float strides[] = {1.0f, 2.5f, 7.0f, 0.25f};
+  const float distances[] = {10.0f, 3.0f, 1e31f};
+  for (const DepthScene* sc : {&sphereScene(), &planeScene()}) {
+    const SnellDepthSurface surf = sc->surface();
+    const std::vector<Ray> rays = snell_search_test::sceneRays(*sc, 3000, 31);
+    int checked = 0, skipped = 0, hits = 0;
+    for (std::size_t k = 0; k < rays.size(); ++k) {
+      const Ray& ray = rays[k];
+      const float thick = thicknesses[k % 4], stride = strides[(k / 4) % 4], dist = distances[(k / 16) % 3];
+      const int steps = 1 + static_cast<int>((k * 37) % 400);
+      const SnellHit h = snellDdaMarch(ray.origin, ray.dir, sc->depth, surf, dist, thick, stride, steps);
+      const DdaReference want = ddaReference(*sc, glm::dvec3(ray.origin), glm::dvec3(ray.dir), dist, thick, stride, steps);
+      if (want.ambiguous) {
+        ++skipped;
+        continue;
+      }
+      ++checked;
+      hits += want.valid;
+      const std::string what = "ray " + std::to_string(k) + " thickness " + std::to_string(thick) + " stride " +
+                               std::to_string(stride) + " distance " + std::to_string(dist) + " steps " +
+                               std::to_string(steps);
+      expectTheReferenceHit(h, want, what);
+      if (::testing::Test::HasFailure()) return;
+    }
+    std::printf("[dda step by step] %s: %d rays checked (%d hits), %d skipped as ambiguous\n", sc->name.c_str(),
+                checked, hits, skipped);
+    EXPECT_GT(checked, 2500);
+    EXPECT_GT(hits, 500);
+  }
+}
+
+// The edges the contract names: the defaults are the documented values; a ray parallel to the image plane
+// (dir.z = 0) marches; an origin exactly on the near plane marches, one in front of it does not; a NaN
+// thickness is the default and a negative one 0; a NaN stride is 1 and one below 1 is 1; steps are clamped
+// to [1, SNELL_DDA_MAX_STEPS].
+TEST(IntersectMarch, DdaEdgesOfTheContract) {
+  const DepthScene& sc = planeScene();
+  const SnellDepthSurface surf = sc.surface();
+  const auto same = [](const SnellHit& a, const SnellHit& b) {
+    return a.uv == b.uv && a.position == b.position && a.valid == b.valid && a.fetches == b.fetches;
+  };
+  const std::vector<Ray> rays = snell_search_test::sceneRays(sc, 400, 32);
+  int differsFromStride11 = 0, differsFromDistance11 = 0;
+  for (const Ray& r : rays) {
+    const SnellHit h = snellDdaMarch(r.origin, r.dir, sc.depth, surf);
+    EXPECT_TRUE(same(h, snellDdaMarch(r.origin, r.dir, sc.depth, surf, 10.0f, FLT_MAX, 1.0f, 256)));
+    differsFromStride11 += !same(h, snellDdaMarch(r.origin, r.dir, sc.depth, surf, 10.0f, FLT_MAX, 1.1f, 256));
+    differsFromDistance11 += !same(h, snellDdaMarch(r.origin, r.dir, sc.depth, surf, 11.0f, FLT_MAX, 1.0f, 256));
+    EXPECT_TRUE(same(snellDdaMarch(r.origin, r.dir, sc.depth, surf, 10.0f, kNaN, kNaN, 256), h));
+    EXPECT_TRUE(same(snellDdaMarch(r.origin, r.dir, sc.depth, surf, 10.0f, -3.0f, 0.5f, 256),
+                     snellDdaMarch(r.origin, r.dir, sc.depth, surf, 10.0f, 0.0f, 1.0f, 256)));
+    EXPECT_TRUE(same(snellDdaMarch(r.origin, r.dir, sc.depth, surf, 10.0f, FLT_MAX, 1.0f, 1 << 30),
+                     snellDdaMarch(r.origin, r.dir, sc.depth, surf, 10.0f, FLT_MAX, 1.0f, SNELL_DDA_MAX_STEPS)));
+    EXPECT_TRUE(same(snellDdaMarch(r.origin, r.dir, sc.depth, surf, 10.0f, FLT_MAX, 1.0f, -5),
+                     snellDdaMarch(r.origin, r.dir, sc.depth, surf, 10.0f, FLT_MAX, 1.0f, 1)));
+  }
+  EXPECT_GT(differsFromStride11, 40);    // the checks above see the stride's default
+  EXPECT_GT(differsFromDistance11, 4);   // and the distance's
+  // dir.z = 0: no near-plane cut; the march crosses the screen and hits the slanted plane.
+  const SnellHit flat = snellDdaMarch(vec3(-1.0f, 0.0f, -5.0f), vec3(1.0f, 0.0f, 0.0f), sc.depth, surf, 10.0f,
+                                      FLT_MAX, 1.0f, 1024);
+  const DdaReference flatWant = ddaReference(sc, glm::dvec3(-1.0, 0.0, -5.0), glm::dvec3(1.0, 0.0, 0.0), 10.0,
+                                             FLT_MAX, 1.0, 1024);
+  EXPECT_GT(flat.fetches, 1);
+  EXPECT_EQ(flat.fetches, flatWant.fetches);
+  EXPECT_EQ(flat.valid, flatWant.valid);
+  // The near plane itself is inside the frustum; anything in front of it is not.
+  const float zNear = surf.zNear;
+  EXPECT_GT(snellDdaMarch(vec3(0.0f, 0.0f, -zNear), vec3(0.0f, 0.0f, -1.0f), sc.depth, surf).fetches, 0);
+  EXPECT_EQ(snellDdaMarch(vec3(0.0f, 0.0f, std::nextafter(-zNear, 0.0f)), vec3(0.0f, 0.0f, -1.0f), sc.depth, surf)
+                .fetches, 0);
+}
+
+namespace {
+
+// The linear march's contract replayed in double: samples t_i = i tMax / steps (cut at the near plane), a
+// sample crossing when its texel (plain index math) is valid and z <= viewZ, the first off-screen sample a
+// miss, then the bisection of [t_(i-1), t_i] (an off-screen midpoint moves lo without a fetch).
+DdaReference linearReference(const DepthScene& sc, glm::dvec3 o, glm::dvec3 d, double maxDistance, int steps,
+                             int refineSteps) {
+  DdaReference r;
+  double tMax = maxDistance / glm::length(d);
+  if (d.z > 0.0) tMax = std::min(tMax, (-double(sc.zNear) - o.z) / d.z);
+  const int n = std::clamp(steps, 1, SNELL_LINEAR_MARCH_MAX_STEPS);
+  const int nr = std::clamp(refineSteps, 0, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS);
+  const double dt = tMax / n;
+  // 0: in front or empty, 1: crosses, -1: off screen; ambiguity where float could decide otherwise.
+  // `matters`: whether a different decision here could show (in the march always; in the bisection while its
+  // move is above the position tolerance).
+  const auto test = [&](double t, glm::dvec2* uvOut, bool matters = true) {
+    const glm::dvec3 p = o + t * d;
+    const glm::dvec2 uv = sc.project(p);
+    *uvOut = uv;
+    const double border = std::min({std::fabs(uv.x), std::fabs(uv.x - 1.0), std::fabs(uv.y), std::fabs(uv.y - 1.0)});
+    if (border < 1e-6) r.ambiguous = true;  // off screen costs no fetch: always shows
+    if (!(p.z < 0.0) || !(uv.x >= 0.0 && uv.x <= 1.0 && uv.y >= 0.0 && uv.y <= 1.0)) return -1;
+    const glm::dvec2 tx(uv.x * sc.width, uv.y * sc.height);
+    // The decision at the texel, and at the texels 1e-3 texel away (float may pick either near an edge).
+    const auto decide = [&](double x, double y) {
+      const double z = snell_search_test::texelViewZ(sc, std::clamp(int(std::floor(x)), 0, sc.width - 1),
+                                                     std::clamp(int(std::floor(y)), 0, sc.height - 1));
+      if (std::isnan(z)) return 0;
+      if (std::fabs(p.z - z) < 1e-5 * std::fabs(z)) r.ambiguous |= matters;
+      return p.z <= z ? 1 : 0;
+    };
+    const int c = decide(tx.x, tx.y);
+    for (const double ex : {-1e-3, 1e-3})
+      for (const double ey : {-1e-3, 1e-3})
+        if (decide(tx.x + ex, tx.y + ey) != c) r.ambiguous |= matters;
+    return c;
+  };
+  double tHit = 0.0;
+  bool found = false;
+  for (int i = 1; i <= n; ++i) {
+    const double t = i * dt;
+    glm::dvec2 uv;
+    const int c = test(t, &uv);
+    if (c < 0) return r;
+    ++r.fetches;
+    if (c == 1) {
+      found = true;
+      tHit = t;
+      r.uv = uv;
+      break;
+    }
+  }
+  if (!found) return r;
+  double lo = tHit - dt;
+  for (int j = 0; j < nr; ++j) {
+    const double mid = 0.5 * (lo + tHit);
+    glm::dvec2 uv;
+    const int c = test(mid, &uv, j + 1 == nr || 0.5 * (tHit - lo) * glm::length(d) > 1e-5);
+    if (c >= 0) ++r.fetches;
+    if (c == 1) {
+      tHit = mid;
+      r.uv = uv;
+    } else {
+      lo = mid;
+    }
+  }
+  r.valid = true;
+  r.position = o + tHit * d;
+  return r;
+}
+
+}  // namespace
+
+// snellLinearMarch against its contract replayed step by step over distances, step and refinement counts
+// (clamped ones too): the same fetches, validity, hit texel and point.
+TEST(IntersectMarch, LinearMarchIsTheContractsWalkStepByStep) {
+  const float distances[] = {10.0f, 4.0f, 25.0f};
+  for (const DepthScene* sc : {&sphereScene(), &planeScene()}) {
+    const SnellDepthSurface surf = sc->surface();
+    const std::vector<Ray> rays = snell_search_test::sceneRays(*sc, 3000, 33);
+    int checked = 0, skipped = 0, hits = 0;
+    for (std::size_t k = 0; k < rays.size(); ++k) {
+      const Ray& ray = rays[k];
+      const float dist = distances[k % 3];
+      const int steps = static_cast<int>((k * 7) % 300) - 3;        // -3 .. 296: clamped below to 1
+      const int refine = static_cast<int>((k / 3) % 20) - 2;        // -2 .. 17: clamped to [0, max]
+      const SnellHit h = snellLinearMarch(ray.origin, ray.dir, sc->depth, surf, dist, steps, refine);
+      const DdaReference want = linearReference(*sc, glm::dvec3(ray.origin), glm::dvec3(ray.dir), dist, steps, refine);
+      if (want.ambiguous) {
+        ++skipped;
+        continue;
+      }
+      ++checked;
+      hits += want.valid;
+      const std::string what = "ray " + std::to_string(k) + " distance " + std::to_string(dist) + " steps " +
+                               std::to_string(steps) + " refine " + std::to_string(refine);
+      expectTheReferenceHit(h, want, what);
+      if (::testing::Test::HasFailure()) return;
+    }
+    std::printf("[linear march step by step] %s: %d rays checked (%d hits), %d skipped as ambiguous\n",
+                sc->name.c_str(), checked, hits, skipped);
+    EXPECT_GT(checked, 1500);
+    EXPECT_GT(hits, 300);
+  }
+  // The defaults are the documented values.
+  const DepthScene& sc = sphereScene();
+  for (const Ray& r : snell_search_test::sceneRays(sc, 200, 34)) {
+    const SnellHit a = snellLinearMarch(r.origin, r.dir, sc.depth, sc.surface());
+    const SnellHit b = snellLinearMarch(r.origin, r.dir, sc.depth, sc.surface(), SNELL_LINEAR_MARCH_MAX_DISTANCE,
+                                        SNELL_LINEAR_MARCH_STEPS, SNELL_LINEAR_MARCH_REFINE_STEPS);
+    EXPECT_TRUE(a.uv == b.uv && a.position == b.position && a.valid == b.valid && a.fetches == b.fetches);
+  }
+}
