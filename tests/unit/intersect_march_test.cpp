@@ -285,17 +285,18 @@ namespace {
 // parameter and that part's depth interval, texels read by plain index math, the first step whose texel is
 // valid with zNear >= viewZ - thickness and zFar <= viewZ hitting at the ray's point of depth
 // clamp(viewZ, zFar, zNear). `ambiguous` where float could decide otherwise (a uv within 1e-3 texel of a
-// texel edge or the screen's border, a depth within 1e-5 |z| of a bound).
-struct DdaReference {
+// texel edge or the screen's border, a depth within 1e-5 |z| of a bound). The linear march's replay below
+// returns the same record.
+struct MarchReference {
   glm::dvec3 position{0.0};
   glm::dvec2 uv{0.0};
   bool valid = false;
   int fetches = 0;
   bool ambiguous = false;
 };
-DdaReference ddaReference(const DepthScene& sc, glm::dvec3 o, glm::dvec3 d, double maxDistance, double thickness,
+MarchReference ddaReference(const DepthScene& sc, glm::dvec3 o, glm::dvec3 d, double maxDistance, double thickness,
                           double stride, int steps) {
-  DdaReference r;
+  MarchReference r;
   const double thick = std::isnan(thickness) ? double(SNELL_DDA_THICKNESS) : std::clamp(thickness, 0.0, double(FLT_MAX));
   const double px = std::isnan(stride) ? 1.0 : std::max(stride, 1.0);
   double tMax = std::min(maxDistance, 1e30) / glm::length(d);
@@ -346,7 +347,7 @@ DdaReference ddaReference(const DepthScene& sc, glm::dvec3 o, glm::dvec3 d, doub
 }
 
 // The same fetches and validity, and for a hit the same texel (uv within 1e-4) and point (1e-4 relative).
-void expectTheReferenceHit(const SnellHit& h, const DdaReference& want, const std::string& what) {
+void expectTheReferenceHit(const SnellHit& h, const MarchReference& want, const std::string& what) {
   EXPECT_EQ(h.fetches, want.fetches) << what;
   EXPECT_EQ(h.valid, want.valid) << what;
   if (!want.valid || !h.valid) return;
@@ -372,7 +373,7 @@ TEST(IntersectMarch, DdaIsTheContractsWalkStepByStep) {
       const float thick = thicknesses[k % 4], stride = strides[(k / 4) % 4], dist = distances[(k / 16) % 3];
       const int steps = 1 + static_cast<int>((k * 37) % 400);
       const SnellHit h = snellDdaMarch(ray.origin, ray.dir, sc->depth, surf, dist, thick, stride, steps);
-      const DdaReference want = ddaReference(*sc, glm::dvec3(ray.origin), glm::dvec3(ray.dir), dist, thick, stride, steps);
+      const MarchReference want = ddaReference(*sc, glm::dvec3(ray.origin), glm::dvec3(ray.dir), dist, thick, stride, steps);
       if (want.ambiguous) {
         ++skipped;
         continue;
@@ -422,7 +423,7 @@ TEST(IntersectMarch, DdaEdgesOfTheContract) {
   // dir.z = 0: no near-plane cut; the march crosses the screen and hits the slanted plane.
   const SnellHit flat = snellDdaMarch(vec3(-1.0f, 0.0f, -5.0f), vec3(1.0f, 0.0f, 0.0f), sc.depth, surf, 10.0f,
                                       FLT_MAX, 1.0f, 1024);
-  const DdaReference flatWant = ddaReference(sc, glm::dvec3(-1.0, 0.0, -5.0), glm::dvec3(1.0, 0.0, 0.0), 10.0,
+  const MarchReference flatWant = ddaReference(sc, glm::dvec3(-1.0, 0.0, -5.0), glm::dvec3(1.0, 0.0, 0.0), 10.0,
                                              FLT_MAX, 1.0, 1024);
   EXPECT_GT(flat.fetches, 1);
   EXPECT_EQ(flat.fetches, flatWant.fetches);
@@ -439,9 +440,9 @@ namespace {
 // The linear march's contract replayed in double: samples t_i = i tMax / steps (cut at the near plane), a
 // sample crossing when its texel (plain index math) is valid and z <= viewZ, the first off-screen sample a
 // miss, then the bisection of [t_(i-1), t_i] (an off-screen midpoint moves lo without a fetch).
-DdaReference linearReference(const DepthScene& sc, glm::dvec3 o, glm::dvec3 d, double maxDistance, int steps,
+MarchReference linearReference(const DepthScene& sc, glm::dvec3 o, glm::dvec3 d, double maxDistance, int steps,
                              int refineSteps) {
-  DdaReference r;
+  MarchReference r;
   double tMax = maxDistance / glm::length(d);
   if (d.z > 0.0) tMax = std::min(tMax, (-double(sc.zNear) - o.z) / d.z);
   const int n = std::clamp(steps, 1, SNELL_LINEAR_MARCH_MAX_STEPS);
@@ -522,7 +523,7 @@ TEST(IntersectMarch, LinearMarchIsTheContractsWalkStepByStep) {
       const int steps = static_cast<int>((k * 7) % 300) - 3;        // -3 .. 296: clamped below to 1
       const int refine = static_cast<int>((k / 3) % 20) - 2;        // -2 .. 17: clamped to [0, max]
       const SnellHit h = snellLinearMarch(ray.origin, ray.dir, sc->depth, surf, dist, steps, refine);
-      const DdaReference want = linearReference(*sc, glm::dvec3(ray.origin), glm::dvec3(ray.dir), dist, steps, refine);
+      const MarchReference want = linearReference(*sc, glm::dvec3(ray.origin), glm::dvec3(ray.dir), dist, steps, refine);
       if (want.ambiguous) {
         ++skipped;
         continue;
