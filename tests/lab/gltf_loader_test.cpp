@@ -184,11 +184,23 @@ TEST(GltfLoader, GlassWithoutVolumeIsRefusedNamingTheMaterial) {
 
 TEST(GltfLoader, WhatTheLabDoesNotRenderIsAWarning) {
   Json j = tetra();
-  j["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = 0.3;
+  j["materials"][0]["pbrMetallicRoughness"]["metallicRoughnessTexture"] = {{"index", 0}};
   j["materials"][0]["extensions"]["KHR_materials_transmission"]["transmissionFactor"] = 0.5;
   const GltfScene g = load(j);
   ASSERT_EQ(g.warnings.size(), 2u);
   for (const std::string& w : g.warnings) EXPECT_NE(w.find("materials[0] 'Glass'"), std::string::npos) << w;
+}
+
+// glTF's roughnessFactor is the scene file's roughness (both perceptual, GGX alpha its square); glTF's
+// default is 1, and out-of-range values are refused as a scene file's are.
+TEST(GltfLoader, RoughnessFactorIsTheObjectsRoughness) {
+  Json j = tetra();
+  j["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = 0.3;
+  EXPECT_FLOAT_EQ(load(j).objects.at(0).roughness, 0.3f);
+  j["materials"][0]["pbrMetallicRoughness"].erase("roughnessFactor");
+  EXPECT_FLOAT_EQ(load(j).objects.at(0).roughness, 1.0f);
+  j["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = 1.5;
+  EXPECT_NE(gltfError(j, ErrorKind::Schema).find("roughnessFactor must be in [0, 1]"), std::string::npos);
 }
 
 // KHR_materials_dispersion: V_d = 20 / dispersion, and the IORs per channel its text gives,

@@ -477,9 +477,13 @@ class Reader {
     if (transmissionFactor < 1.0)
       warn(materialAt + ": transmissionFactor " + number(transmissionFactor) +
            " is rendered as 1 (the lab has no diffuse part under the glass)");
-    if (material.pbrMetallicRoughness.roughnessFactor > 0.0)
-      warn(materialAt + ": roughness " + number(material.pbrMetallicRoughness.roughnessFactor) +
-           " is rendered smooth (the lab's truth has smooth interfaces)");
+    // glTF's perceptual roughness is the scene file's (GGX alpha = roughness^2 in both); its texture is not read.
+    const double roughness = material.pbrMetallicRoughness.roughnessFactor;
+    if (!(roughness >= 0.0 && roughness <= 1.0))
+      fail(ErrorKind::Schema, materialAt + ": roughnessFactor must be in [0, 1], got " + number(roughness));
+    if (material.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0)
+      warn(materialAt + ": metallicRoughnessTexture is not read (roughnessFactor " + number(roughness) +
+           " is used everywhere)");
     // KHR_materials_dispersion: the Abbe number V_d = 20 / dispersion. Its n(lambda) = n_d + (n_d - 1) / V_d *
     // (523655 / lambda^2 - 1.5168) is the Cauchy fit of snellDispersionIors (the constants are 1 / (1/l_F^2 -
     // 1/l_C^2) and that over l_d^2, lambda in nm). Above V_d 10^4 the channels differ by less than 1e-4 of
@@ -514,6 +518,7 @@ class Reader {
     o.ior = static_cast<float>(ior);
     o.absorption = vec3(sigma);
     o.abbe = static_cast<float>(abbe);
+    o.roughness = static_cast<float>(roughness);
     out_.objects.push_back(std::move(o));
   }
 

@@ -134,6 +134,7 @@ RefractiveObject readObject(ObjectReader r, std::string field, const std::string
   o.ior = static_cast<float>(r.number("ior", o.ior, Range{0.0, 10.0, true, false}));
   o.absorption = r.vector3("absorption", o.absorption, kColor);
   o.abbe = static_cast<float>(r.number("abbe", o.abbe, Range{1.0, 1e4, false, false}));
+  o.roughness = static_cast<float>(r.number("roughness", o.roughness, Range{0.0, 1.0, false, false}));
   r.finish();
   return o;
 }
@@ -530,7 +531,7 @@ SceneFrame buildFrame(const Scene& scene, float time) {
   f.camera = scene.camera;
   for (std::size_t i = 0; i < scene.objects.size(); ++i)
     f.objects.push_back(FrameObject{buildObjectMesh(scene, i, time), scene.objects[i].ior, scene.objects[i].absorption,
-                                       scene.objects[i].abbe});
+                                       scene.objects[i].abbe, scene.objects[i].roughness});
   f.environment = buildEnvironment(scene);
   f.paintings = buildPaintings(scene);
   return f;

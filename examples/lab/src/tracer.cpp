@@ -2,6 +2,7 @@
 
 #include "lab/error.hpp"
 #include "lab/progress.hpp"
+#include "lab/rough_optics.hpp"
 
 #include <embree3/rtcore.h>
 
@@ -24,6 +25,8 @@ TraceStats& TraceStats::operator+=(const TraceStats& o) {
   tirEvents += o.tirEvents;
   leaks += o.leaks;
   truncated += o.truncated;
+  sampledPixels += o.sampledPixels;
+  varianceSum += o.varianceSum;
   return *this;
 }
 
@@ -45,6 +48,50 @@ void embreeError(void* user, RTCError code, const char* message) {
 }
 
 glm::dvec3 toD(const vec3& v) { return glm::dvec3(v); }
+
+// splitmix64 (Steele, Lea & Flood 2014): a well-mixed 64-bit sequence from any state, so that seeds that
+// differ in one bit (neighbouring pixels) start unrelated streams.
+std::uint64_t mix64(std::uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+// The random numbers of one pixel's paths (TraceOptions::seed); `used` tells whether a path drew any.
+struct Sampler {
+  std::uint64_t state = 0;
+  std::uint64_t used = 0;
+  double next() {  // uniform in [0, 1)
+    ++used;
+    state += 0x9E3779B97F4A7C15ull;
+    return static_cast<double>(mix64(state) >> 11) * 0x1.0p-53;
+  }
+};
+
+// Full mode without Fresnel: a choice number no Fresnel term below 1 exceeds, so only a microfacet's
+// total internal reflection (F = 1) reflects.
+constexpr double kRefractUnlessTir = 1.0;
+
+Sampler pixelSampler(std::uint64_t seed, int x, int y) {
+  Sampler s;
+  s.state = mix64(mix64(seed) ^ (static_cast<std::uint64_t>(static_cast<std::uint32_t>(y)) << 32 |
+                                 static_cast<std::uint32_t>(x)));
+  return s;
+}
+
+// Walter et al. 2007, eq. 41: the weight of a direction `out` scattered about microfacet normal m (both
+// travel directions, n the macro normal on m's side: G1's chi+ wants them together), for the principal path, which picks its
+// direction about m itself (refraction, a critical clamp or a reflection) rather than by the Fresnel
+// term; 0 when `out` is on the side of the macro surface its scattering cannot reach.
+double microfacetWeight(const glm::dvec3& d, const glm::dvec3& out, const glm::dvec3& m, const glm::dvec3& n,
+                        double alpha, bool reflected) {
+  const glm::dvec3 i = -d;  // Walter's i and o point away from the surface
+  const double in = glm::dot(i, n), on = glm::dot(out, n);
+  if (in == 0.0 || (reflected ? in * on <= 0.0 : in * on >= 0.0)) return 0.0;
+  const double mn = std::abs(glm::dot(m, n));
+  if (!(mn > 0.0)) return 0.0;
+  return std::abs(glm::dot(i, m)) * ggxG1(i, m, n, alpha) * ggxG1(out, m, n, alpha) / (std::abs(in) * mn);
+}
 
 // The media a ray travels in, innermost last: crossing into an object pushes it, out of one removes it.
 // Where two objects overlap, the one entered last is the medium: the surface of the other one there
@@ -122,6 +169,7 @@ struct ReferenceTracer::Impl {
     Mesh mesh;
     glm::dvec3 iors{1.5};  // per colour channel (channelIors); green is the d line's
     glm::dvec3 sigma{0.0};
+    double alpha = 0.0;  // GGX alpha of both interfaces (roughness^2); 0: smooth
   };
   std::vector<Object> objects;
   std::vector<int> objectOfGeom;  // full's geomID -> object index, -1 for the paintings
@@ -334,8 +382,13 @@ struct ReferenceTracer::Impl {
     return s.point + (glm::dot(d, s.geometricNormal) >= 0.0 ? eps : -eps) * s.geometricNormal;
   }
 
+  // ReferenceTracer::radiance with the pixel's random numbers.
+  glm::dvec3 radiance(const Ray& ray, const TraceOptions& options, TraceStats* stats, bool* hitObject,
+                      Sampler& rng) const;
+
   glm::dvec3 traceFull(const glm::dvec3& o, const glm::dvec3& d, double tNear, double tFar, int depth, double weight,
-                       const Media& media, const TraceOptions& opt, TraceStats& stats, bool* firstHitObject) const {
+                       const Media& media, const TraceOptions& opt, TraceStats& stats, bool* firstHitObject,
+                       Sampler& rng) const {
     const Hit h = intersect(full, true, o, d, tNear, tFar, stats);
     if (firstHitObject) *firstHitObject = h.kind == HitKind::Object;
     if (h.kind == HitKind::None) {
@@ -353,19 +406,30 @@ struct ReferenceTracer::Impl {
     }
     const double w = weight * std::max({atten.x, atten.y, atten.z});
     const ExactRefraction r = refractExact(d, s.normal, c.eta, TirPolicy::Reflect);
-    if (r.tir) {
-      ++stats.tirEvents;
-      return atten * traceFull(spawn(s, r.direction), r.direction, 0.0, 1e30, depth + 1, w, c.reflected, opt, stats,
-                               nullptr);
+    if (r.tir) ++stats.tirEvents;
+    const double alpha = objects[static_cast<std::size_t>(h.object)].alpha;
+    if (alpha > 0.0) {
+      // One path: reflect with probability F at the sampled microfacet (never, without Fresnel, unless
+      // the microfacet itself reflects totally), weighted by eq. 41.
+      const double u1 = rng.next(), u2 = rng.next();
+      const double u3 = opt.fresnel ? rng.next() : kRefractUnlessTir;
+      const RoughScatter rs = sampleRoughDielectric(d, s.normal, c.eta, alpha, u1, u2, u3);
+      if (!(rs.weight > 0.0)) return glm::dvec3(0.0);
+      return atten * rs.weight *
+             traceFull(spawn(s, rs.direction), rs.direction, 0.0, 1e30, depth + 1, w * rs.weight,
+                       rs.reflected ? c.reflected : c.refracted, opt, stats, nullptr, rng);
     }
+    if (r.tir)
+      return atten * traceFull(spawn(s, r.direction), r.direction, 0.0, 1e30, depth + 1, w, c.reflected, opt, stats,
+                               nullptr, rng);
     const double F = opt.fresnel ? fresnelExact(glm::dot(d, s.normal), c.eta) : 0.0;
     glm::dvec3 L(0.0);
     if (F > 0.0 && w * F >= opt.minWeight) {
       const glm::dvec3 refl = reflectExact(d, s.normal);
-      L += F * traceFull(spawn(s, refl), refl, 0.0, 1e30, depth + 1, w * F, c.reflected, opt, stats, nullptr);
+      L += F * traceFull(spawn(s, refl), refl, 0.0, 1e30, depth + 1, w * F, c.reflected, opt, stats, nullptr, rng);
     }
     L += (1.0 - F) * traceFull(spawn(s, r.direction), r.direction, 0.0, 1e30, depth + 1, w * (1.0 - F), c.refracted,
-                               opt, stats, nullptr);
+                               opt, stats, nullptr, rng);
     return atten * L;
   }
 
@@ -382,7 +446,7 @@ struct ReferenceTracer::Impl {
   using EventCounts = std::array<std::uint8_t, kMaxObjects>;
   glm::dvec3 tracePrincipal(const glm::dvec3& o, const glm::dvec3& d, double tNear, double tFar, const Media& media,
                             std::uint32_t done, EventCounts count, int events, const TraceOptions& opt,
-                            TraceStats& stats, bool* firstHitObject) const {
+                            TraceStats& stats, bool* firstHitObject, Sampler& rng) const {
     const Hit h = intersectSkipping(done, o, d, tNear, tFar, stats);
     if (firstHitObject) *firstHitObject = h.kind == HitKind::Object;
     if (h.kind == HitKind::None) {
@@ -395,27 +459,42 @@ struct ReferenceTracer::Impl {
     const int n = ++count[static_cast<std::size_t>(b)];
     // The first surface met is the entry, every later one an exit, whatever the normal says.
     const Crossing c = crossing(media, b, n > 1, opt.channel);
+    // A rough interface: the path's events happen about a sampled microfacet normal m, weighted by eq. 41.
+    const double alpha = objects[static_cast<std::size_t>(b)].alpha;
+    const glm::dvec3 facing = glm::dot(d, s.normal) > 0.0 ? -s.normal : s.normal;
+    const glm::dvec3 m = alpha > 0.0 ? ggxSampleNormal(facing, alpha, rng.next(), rng.next()) : s.normal;
+    const auto weight = [&](const glm::dvec3& out, bool reflected) {
+      return alpha > 0.0 ? microfacetWeight(d, out, m, facing, alpha, reflected) : 1.0;
+    };
     if (n == 1) {
-      const ExactRefraction t = refractExact(d, s.normal, c.eta, TirPolicy::Critical);
+      const ExactRefraction t = refractExact(d, m, c.eta, TirPolicy::Critical);
       if (t.tir) ++stats.tirEvents;
-      const double F = opt.fresnel ? fresnelExact(glm::dot(d, s.normal), c.eta) : 0.0;
+      const double F = opt.fresnel ? fresnelExact(glm::dot(d, m), c.eta) : 0.0;
       glm::dvec3 L(0.0);
       if (F > 0.0) {
-        const glm::dvec3 refl = reflectExact(d, s.normal);
-        L += F * tracePrincipal(spawn(s, refl), refl, 0.0, 1e30, c.reflected, done | (1u << b), count, events, opt,
-                                stats, nullptr);
+        const glm::dvec3 refl = reflectExact(d, m);
+        const double wr = weight(refl, true);
+        if (wr > 0.0)
+          L += F * wr * tracePrincipal(spawn(s, refl), refl, 0.0, 1e30, c.reflected, done | (1u << b), count, events,
+                                       opt, stats, nullptr, rng);
       }
-      L += (1.0 - F) * tracePrincipal(spawn(s, t.direction), t.direction, 0.0, 1e30, c.refracted, done, count, events,
-                                      opt, stats, nullptr);
+      const double wt = weight(t.direction, false);
+      if (wt > 0.0)
+        L += (1.0 - F) * wt * tracePrincipal(spawn(s, t.direction), t.direction, 0.0, 1e30, c.refracted, done, count,
+                                             events, opt, stats, nullptr, rng);
       return beer(c.before, h.t, opt) * L;
     }
     const bool last = n >= events;
-    const ExactRefraction t = refractExact(d, s.normal, c.eta, last ? TirPolicy::Critical : TirPolicy::Reflect);
+    const ExactRefraction t = refractExact(d, m, c.eta, last ? TirPolicy::Critical : TirPolicy::Reflect);
     if (t.tir) ++stats.tirEvents;
     const bool out = last || !t.tir;
-    return beer(c.before, h.t, opt) * tracePrincipal(spawn(s, t.direction), t.direction, 0.0, 1e30,
-                                                     out ? c.refracted : c.reflected, out ? done | (1u << b) : done,
-                                                     count, events, opt, stats, nullptr);
+    // The critical clamp is the image-space model's, not a scattering event: no weight (its direction,
+    // tangent to m, often lies on the inner side of the macro surface, where eq. 41 would absorb it).
+    const double w = last && t.tir ? 1.0 : weight(t.direction, !out);
+    if (!(w > 0.0)) return glm::dvec3(0.0);
+    return beer(c.before, h.t, opt) * w *
+           tracePrincipal(spawn(s, t.direction), t.direction, 0.0, 1e30, out ? c.refracted : c.reflected,
+                          out ? done | (1u << b) : done, count, events, opt, stats, nullptr, rng);
   }
 
   // The frame so far as a picture (renderComposited): what an object drawn later sees of the ones before it.
@@ -526,8 +605,13 @@ ReferenceTracer::ReferenceTracer(const std::vector<FrameObject>& objects, std::v
                                        std::to_string(kMaxObjects) + " are supported)");
   for (std::size_t i = 0; i < objects.size(); ++i) {
     validateMesh(objects[i].mesh, "reference tracer mesh " + std::to_string(i));
+    const float roughness = objects[i].roughness;
+    if (!(roughness >= 0.0f && roughness <= 1.0f))
+      throw Error(ErrorKind::Render, "ray tracer: object " + std::to_string(i) + "'s roughness " +
+                                         std::to_string(roughness) + " is not in [0, 1]");
     impl_->objects.push_back(Impl::Object{objects[i].mesh, glm::dvec3(channelIors(objects[i])),
-                                          glm::dvec3(objects[i].absorption)});
+                                          glm::dvec3(objects[i].absorption),
+                                          static_cast<double>(roughness) * static_cast<double>(roughness)});
     impl_->dispersive = impl_->dispersive || dispersive(objects[i]);
   }
   impl_->paintings = std::move(paintings);
@@ -542,6 +626,12 @@ double ReferenceTracer::offsetEpsilon() const { return impl_->eps; }
 
 glm::dvec3 ReferenceTracer::radiance(const Ray& ray, const TraceOptions& options, TraceStats* stats,
                                      bool* hitObject) const {
+  Sampler rng = pixelSampler(options.seed, 0, 0);
+  return impl_->radiance(ray, options, stats, hitObject, rng);
+}
+
+glm::dvec3 ReferenceTracer::Impl::radiance(const Ray& ray, const TraceOptions& options, TraceStats* stats,
+                                           bool* hitObject, Sampler& rng) const {
   TraceStats local;
   TraceStats& s = stats ? *stats : local;
   if (options.channel < -1 || options.channel > 2)
@@ -549,12 +639,12 @@ glm::dvec3 ReferenceTracer::radiance(const Ray& ray, const TraceOptions& options
   if (options.channel < 0) {
     TraceOptions one = options;
     one.channel = 1;
-    if (!impl_->dispersive) return radiance(ray, one, &s, hitObject);
+    if (!dispersive) return radiance(ray, one, &s, hitObject, rng);
     // Each channel along its own path: red's and blue's first hit is green's (the primary ray bends nowhere).
     glm::dvec3 c;
     for (int k = 0; k < 3; ++k) {
       one.channel = k;
-      c[k] = radiance(ray, one, &s, k == 1 ? hitObject : nullptr)[k];
+      c[k] = radiance(ray, one, &s, k == 1 ? hitObject : nullptr, rng)[k];
     }
     return c;
   }
@@ -563,10 +653,10 @@ glm::dvec3 ReferenceTracer::radiance(const Ray& ray, const TraceOptions& options
     if (events < 2 || events > 255)
       throw Error(ErrorKind::Render, "ray tracer: a principal path needs 2 to 255 interface events (got " +
                                          std::to_string(options.events) + ")");
-    return impl_->tracePrincipal(ray.origin, ray.direction, ray.tNear, ray.tFar, Media{}, 0u, Impl::EventCounts{},
-                                 events, options, s, hitObject);
+    return tracePrincipal(ray.origin, ray.direction, ray.tNear, ray.tFar, Media{}, 0u, EventCounts{},
+                                 events, options, s, hitObject, rng);
   }
-  return impl_->traceFull(ray.origin, ray.direction, ray.tNear, ray.tFar, 0, 1.0, Media{}, options, s, hitObject);
+  return traceFull(ray.origin, ray.direction, ray.tNear, ray.tFar, 0, 1.0, Media{}, options, s, hitObject, rng);
 }
 
 TraceResult ReferenceTracer::render(const Camera& camera, const TraceOptions& options) const {
@@ -583,19 +673,44 @@ TraceResult ReferenceTracer::render(const Camera& camera, const TraceOptions& op
                            : options.mode == TraceMode::TwoInterfaces ? "ray tracing (two interfaces)"
                                                                       : "ray tracing (principal path, " +
                                                                             std::to_string(options.events) + " events)";
+  if (options.samples < 1 || options.samples > (1 << 20))
+    throw Error(ErrorKind::Render, "ray tracer: " + std::to_string(options.samples) +
+                                       " samples per pixel (1 to 1048576)");
+  const int samples = options.samples;
   ProgressBar bar(what, camera.height, options.progress);
   traceRows(camera.height, threads, bar, result.stats, [&](int y, TraceStats& local) {
     for (int x = 0; x < camera.width; ++x) {
       bool hitObject = false;
       const std::uint64_t tirBefore = local.tirEvents;
-      const glm::dvec3 c = radiance(primaryRay(camera, x, y), options, &local, &hitObject);
-      result.color.at(x, y) = vec4(vec3(c), 1.0f);
+      const Ray ray = primaryRay(camera, x, y);
+      Sampler rng = pixelSampler(options.seed, x, y);
+      glm::dvec3 sum(0.0), sumSquares(0.0);
+      int n = 0, tirPaths = 0;
+      do {
+        const std::uint64_t before = local.tirEvents;
+        const glm::dvec3 c = impl_->radiance(ray, options, &local, n == 0 ? &hitObject : nullptr, rng);
+        sum += c;
+        sumSquares += c * c;
+        if (local.tirEvents != before) ++tirPaths;
+        ++n;
+      } while (rng.used > 0 && n < samples);  // a path with no rough interface is every path
+      const glm::dvec3 mean = sum / static_cast<double>(n);
+      result.color.at(x, y) = vec4(vec3(mean), 1.0f);
       result.mask.set(x, y, hitObject);
-      result.tir.set(x, y, local.tirEvents != tirBefore);
+      // Sampled: most of its paths (one met by chance says little of the pixel).
+      result.tir.set(x, y, n == 1 ? local.tirEvents != tirBefore : 2 * tirPaths > n);
       if (hitObject) ++local.objectPixels;
+      if (n > 1) {
+        ++local.sampledPixels;
+        // The sample variance over n, per channel: the variance of the mean.
+        const glm::dvec3 var = glm::max(sumSquares - sum * mean, glm::dvec3(0.0)) / (static_cast<double>(n - 1) * n);
+        if (hitObject) local.varianceSum += (var.x + var.y + var.z) / 3.0;
+      }
     }
   });
   bar.finish();
+  const std::size_t objectPixels = result.mask.count();
+  result.noise = objectPixels > 0 ? result.stats.varianceSum / static_cast<double>(objectPixels) : 0.0;
   result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

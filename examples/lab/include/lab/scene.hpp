@@ -43,6 +43,8 @@ struct RefractiveObject {
   float ior = 1.5f;       // at the helium d line (587.56 nm): the green channel's
   vec3 absorption{0.0f};  // Beer-Lambert sigma_a per world unit, linear RGB
   float abbe = 0.0f;      // Abbe number V_d of its dispersion; 0: none (one IOR for every channel)
+  // Perceptual roughness of both interfaces (glTF's roughnessFactor): GGX alpha = roughness^2; 0: smooth.
+  float roughness = 0.0f;
 };
 
 enum class EnvironmentKind { Sky, Image, Color };
@@ -125,6 +127,7 @@ struct FrameObject {
   float ior = 1.5f;
   vec3 absorption{0.0f};
   float abbe = 0.0f;  // RefractiveObject::abbe
+  float roughness = 0.0f;  // RefractiveObject::roughness
 };
 // The IOR per colour channel (red, green, blue) of an object: snellDispersionIors (shade/dispersion.glsl:
 // red at the C line, green at the d line, so green is `ior`, blue at the F line) with an Abbe number,

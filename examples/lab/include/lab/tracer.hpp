@@ -6,8 +6,13 @@
 // environment and opaque paintings the GL renderer draws. Several objects are
 // nested media: the ray carries the stack of objects it is inside; at a
 // surface the relative index is the medium's before over the medium's after
-// (where two objects overlap, the one entered last is the medium). One ray per pixel
-// through the pixel centre (what a rasterizer shades), deterministic: no noise.
+// (where two objects overlap, the one entered last is the medium). Rays through
+// the pixel centre (what a rasterizer shades). Smooth objects are traced once
+// per pixel, deterministic: no noise. A rough object's interfaces (its
+// roughness r > 0) are GGX microfacet surfaces with alpha = r^2 (Walter et al.
+// 2007, lab/rough_optics.hpp), sampled: TraceOptions::samples paths per pixel
+// whose path meets one, with random numbers seeded per pixel, and the noise
+// that leaves in the image estimated (TraceResult::noise).
 #pragma once
 #include "lab/camera.hpp"
 #include "lab/environment.hpp"
@@ -65,6 +70,14 @@ struct TraceOptions {
   // per pixel where an object disperses, one where none does); 0, 1, 2: every channel with the red, green
   // (the d line: `ior`) or blue one.
   int channel = -1;
+  // Rough objects: paths per pixel whose first path meets a rough interface (the others are traced once:
+  // their every path is the same). At each rough interface a path samples a microfacet normal (Walter et al.
+  // 2007, eq. 35-36); Full mode then reflects or refracts with probability F (eq. 41's weight), the
+  // principal path refracts about it (reflecting on TIR as at a smooth interface), its entry's Fresnel
+  // reflection about the same normal. The random numbers of pixel (x, y) come from (seed, x, y) alone: the
+  // same seed draws the same numbers at a pixel whatever the thread, the image or the frame.
+  int samples = 256;
+  std::uint64_t seed = 0;
 };
 
 struct TraceStats {
@@ -77,6 +90,10 @@ struct TraceStats {
   // (coarse meshes such as the bunny, a few per thousand object pixels).
   std::uint64_t leaks = 0;
   std::uint64_t truncated = 0;      // paths cut at maxDepth
+  std::uint64_t sampledPixels = 0;  // pixels traced with TraceOptions::samples paths (a rough interface met)
+  // Over the object pixels: the sum of the channel-averaged variance of each pixel's mean (the paths'
+  // sample variance over their count): what TraceResult::noise averages.
+  double varianceSum = 0.0;
   TraceStats& operator+=(const TraceStats& o);
 };
 
@@ -88,6 +105,10 @@ struct TraceResult {
   // event's critical clamp included).
   Mask tir;
   TraceStats stats;
+  // The expected MSE (lab/metrics.hpp, unclamped) of `color` against the exact image over `mask`: the
+  // variance of the pixels' means, estimated from their paths; 0 when no path met a rough interface. A
+  // row's MSE against this image is its MSE against the exact one plus this, on average.
+  double noise = 0.0;
 };
 
 enum class PathEventType {
@@ -129,16 +150,17 @@ class ReferenceTracer {
   // shades them over the frame so far; its rays see the paintings, and the objects drawn before it as
   // the frame shows them where they meet them (bilinear between pixel centres; off screen: as if they
   // were not there). The floor of any image-space method that composites objects (mask: pixels whose
-  // primary ray meets an object first; tir: clamped exits).
+  // primary ray meets an object first; tir: clamped exits). Every interface is smooth here (roughness ignored).
   TraceResult renderComposited(const Camera& camera, const std::vector<std::size_t>& order,
                                const std::vector<glm::dvec3>& index, const TraceOptions& options) const;
 
   // Radiance along one ray (linear RGB). hitObject: whether the ray's first
-  // hit is the refractive object.
+  // hit is the refractive object. One path: at rough interfaces, with random
+  // numbers seeded by options.seed alone.
   glm::dvec3 radiance(const Ray& ray, const TraceOptions& options, TraceStats* stats = nullptr,
                       bool* hitObject = nullptr) const;
 
-  // The principal specular path of a ray: refraction wherever Snell allows it,
+  // The principal specular path of a ray (every interface smooth, roughness ignored): refraction wherever Snell allows it,
   // TIR handled by `policy` (Reflect: mirror; Critical: tangent clamp), no
   // Fresnel branching, with the objects' IOR at the d line (green); stops at an escape, a painting, or after maxEvents
   // object interfaces. Whether each hit enters or exits is decided by the
