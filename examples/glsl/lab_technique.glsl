@@ -77,6 +77,10 @@ struct LabParams {
   int insideScene;    // 1: the opaque scene has surfaces inside the object (SnellTechnique.insideScene)
   vec3 iors;          // the IOR per colour channel (green is ior) where dispersion is 1
   int dispersion;     // 1: one path per colour channel with iors (SnellMaterial.dispersion 3); 0: one with ior
+  float roughness;    // SnellMaterial.roughness (the scene's perceptual roughness; 0 smooth)
+  int sceneColorLevels;   // SnellView's: the scene colour's mip levels (1 when smooth: no mips)
+  int environmentLevels;  // ... the environment's
+  int pad0;           // std140: the block's size a multiple of 16
 };
 
 SNELL_FN SnellTechnique labTechnique(int technique, bool reference, LabParams p) {
@@ -107,6 +111,7 @@ SNELL_FN SnellMaterial labMaterial(LabParams p) {
   m.iors = p.iors;
   m.dispersion = p.dispersion != 0 ? 3 : 1;
   m.absorption = p.absorption;
+  m.roughness = p.roughness;
   m.reflection = true;
   return m;
 }
@@ -116,6 +121,8 @@ SNELL_FN SnellView labView(LabParams p) {
   v.envX = p.envX;
   v.envY = p.envY;
   v.envZ = p.envZ;
+  v.sceneColorLevels = p.sceneColorLevels;
+  v.environmentLevels = p.environmentLevels;
   return v;
 }
 

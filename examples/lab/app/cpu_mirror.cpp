@@ -17,7 +17,8 @@ CpuBuffers cpuBuffers(const StaticBuffers& b, const ShadeConstants& k, const Sce
   c.frontNormal = Texture2D(b.frontNormal, normalFilter);
   c.sceneDepth = Texture2D(b.sceneDepth);
   c.sceneNormal = Texture2D(b.sceneNormal, normalFilter);
-  c.sceneColor = Texture2D(b.sceneColor, Filter::Linear);
+  c.sceneColor = Texture2D(b.sceneColor, Filter::Linear, b.sceneColorMips.empty() ? MipFilter::None : MipFilter::Linear);
+  for (const Image& level : b.sceneColorMips) c.sceneColor.addLevel(level);
   c.fullDepth = Texture2D(b.fullDepth);
   c.fullNormal = Texture2D(b.fullNormal, normalFilter);
   c.fullColor = Texture2D(b.fullColor, Filter::Linear);

@@ -104,6 +104,13 @@ ShadeConstants shadeConstants(const SceneFrame& frame, std::size_t object, int m
   k.params.iors = channelIors(o);
   k.params.dispersion = dispersive(o) ? 1 : 0;
   k.params.absorption = o.absorption;
+  // Rough: the blurred reads need the scene colour's and the environment's mip chains (what the lab builds
+  // when an object is rough: GpuLab's scene layer and environmentTexture).
+  k.params.roughness = o.roughness;
+  if (roughObjects(frame)) {
+    k.params.sceneColorLevels = mipLevels(frame.camera.width + 2 * k.margin, frame.camera.height + 2 * k.margin);
+    k.params.environmentLevels = mipLevels(frame.environment.image().width, frame.environment.image().height);
+  }
   // Environment lookups take world directions: world-from-view, then the
   // environment's rotation about +Y (environment.hpp: phi = atan2(x, -z) - rotation,
   // i.e. the direction turned by +rotation about Y).
@@ -152,11 +159,26 @@ std::vector<std::size_t> drawOrder(const std::vector<ShadeConstants>& objects) {
   return order;
 }
 
+bool roughObjects(const SceneFrame& frame) {
+  for (const FrameObject& o : frame.objects)
+    if (o.roughness > 0.0f) return true;
+  return false;
+}
+
+int mipLevels(int width, int height) {
+  int levels = 1;
+  for (int s = std::max(width, height); s > 1; s /= 2) ++levels;
+  return levels;
+}
+
 Texture2D environmentTexture(const SceneFrame& frame) {
   Image img = frame.environment.image();
   const float s = frame.environment.intensity();
   for (vec4& t : img.texels) t = vec4(vec3(t) * s, 1.0f);
-  return Texture2D(std::move(img), Filter::Linear);
+  if (!roughObjects(frame)) return Texture2D(std::move(img), Filter::Linear);
+  Texture2D t(std::move(img), Filter::Linear, MipFilter::Linear);
+  t.generateMipmaps();
+  return t;
 }
 
 namespace {
@@ -172,7 +194,8 @@ static_assert(offsetof(LabParams, clipFromView) == 0 && offsetof(LabParams, prox
                   offsetof(LabParams, exitRange) == 192 && offsetof(LabParams, depthFilter) == 196 &&
                   offsetof(LabParams, reflectSource) == 200 && offsetof(LabParams, insideScene) == 204 &&
                   offsetof(LabParams, iors) == 208 && offsetof(LabParams, dispersion) == 220 &&
-                  sizeof(LabParams) == 224,
+                  offsetof(LabParams, roughness) == 224 && offsetof(LabParams, sceneColorLevels) == 228 &&
+                  offsetof(LabParams, environmentLevels) == 232 && sizeof(LabParams) == 240,
               "LabParams must keep the std140 layout of the uniform block LabUniforms");
 
 gpu::FlatSource flatten(const fs::path& file, const ShaderDirs& dirs, const std::vector<std::string>& defines = {}) {
@@ -287,6 +310,7 @@ struct GpuLab::Impl {
   int width, height;
   ShadeConstants k;  // what every object shares (camera, guard band, read modes); the object's own in objects[i]
   int bufferWidth, bufferHeight;
+  bool rough = false;  // an object is rough: the scene layer's colour carries its mip chain
   std::vector<LabShader> shaders;
   gpu::Texture environment;
   std::vector<std::unique_ptr<PaintingBuffers>> paintings;
@@ -328,6 +352,7 @@ struct GpuLab::Impl {
     if (constants.size() != frame.objects.size())
       throw gpu::Error("snell-lab: " + std::to_string(constants.size()) + " sets of constants for " +
                        std::to_string(frame.objects.size()) + " objects");
+    rough = roughObjects(frame);
     for (std::size_t i = 0; i < frame.objects.size(); ++i) {
       objects.push_back(std::make_unique<ObjectPasses>(gl, frame.objects[i].mesh, i < dN.size() ? dN[i] : std::vector<float>{},
                                                        constants[i], bufferWidth, bufferHeight));
@@ -341,11 +366,17 @@ struct GpuLab::Impl {
       pyramidPass.build(o.backPyramid, o.backFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 0.0f);
     }
     for (const Painting& painting : frame.paintings) paintings.push_back(std::make_unique<PaintingBuffers>(gl, painting));
-    // The scene colour is read with bilinear filtering (no mips) on both sides.
+    // The scene colour is read with bilinear filtering (no mips) on both sides; with a rough object, snell's
+    // rows read the layer's trilinear mip chain, which drawLayer regenerates after each draw.
     for (GLuint colorTexture : {sceneFb.colorTexture(0), fullFb.colorTexture(0)}) {
       gl.BindTexture(GL_TEXTURE_2D, colorTexture);
       gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
       gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    }
+    if (rough) {
+      gl.BindTexture(GL_TEXTURE_2D, sceneFb.colorTexture(0));
+      gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, mipLevels(bufferWidth, bufferHeight) - 1);
+      gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     }
     const GLint normalGl = k.normalFilter == NormalFilter::Linear ? GL_LINEAR : GL_NEAREST;
     std::vector<GLuint> normalTextures = {sceneFb.colorTexture(1), fullFb.colorTexture(1)};
@@ -517,6 +548,12 @@ struct GpuLab::Impl {
       gpu::checkGl(gl, "scene layer: objects drawn before");
     }
     pyramidPass.build(scenePyramid, sceneFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 1.0f);
+    if (rough) {
+      gl.BindTexture(GL_TEXTURE_2D, sceneFb.colorTexture(0));
+      gl.GenerateMipmap(GL_TEXTURE_2D);
+      gl.BindTexture(GL_TEXTURE_2D, 0);
+      gpu::checkGl(gl, "scene layer: its colour's mip chain");
+    }
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 
@@ -591,6 +628,19 @@ StaticBuffers GpuLab::readStatic(std::size_t object) const {
   const ObjectPasses& o = *impl_->objects.at(object);
   StaticBuffers b;
   b.sceneColor = impl_->sceneFb.readColor(0);
+  if (impl_->rough) {
+    const gpu::GlApi& gl = impl_->gl;
+    gl.BindTexture(GL_TEXTURE_2D, impl_->sceneFb.colorTexture(0));
+    gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
+    for (int lod = 1; lod < mipLevels(impl_->bufferWidth, impl_->bufferHeight); ++lod) {
+      const Image& above = lod == 1 ? b.sceneColor : b.sceneColorMips.back();
+      Image level(std::max(1, above.width / 2), std::max(1, above.height / 2));
+      gl.GetTexImage(GL_TEXTURE_2D, lod, GL_RGBA, GL_FLOAT, level.texels.data());
+      b.sceneColorMips.push_back(std::move(level));
+    }
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    gpu::checkGl(gl, "reading the scene layer's mip chain (glGetTexImage)");
+  }
   b.sceneNormal = impl_->sceneFb.readColor(1);
   b.sceneDepth = impl_->sceneFb.readDepth();
   b.sceneSurface = impl_->sceneFb.readColor(2);

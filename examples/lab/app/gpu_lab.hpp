@@ -48,6 +48,9 @@ struct StaticBuffers {
   // k + 1 painting k, -(o + 1) object o (drawn before). The lab's leak count names what leaked with it; no
   // technique reads it, and the memory report leaves it out.
   Image sceneSurface, fullSurface;
+  // With a rough object: the scene layer's colour mip levels 1, 2, ... as the GPU generated them (its
+  // glGenerateMipmap), which the C++ side samples as they are.
+  std::vector<Image> sceneColorMips;
   Image backDepth, backNormal;                // depth in .x (0 = empty)
   Image frontDepth, frontNormal;              // the object's front faces: depth in .x (1 = empty)
 };
@@ -115,6 +118,10 @@ struct ShadeConstants {
     p.reflectSource = SNELL_SOURCE_BUFFERS;
     p.insideScene = 0;  // shadeConstants: 1 when a painting reaches inside the object
     p.proxyFromView = mat4(1.0f);  // shadeConstants: the world-axis box around the object and the paintings
+    p.roughness = 0.0f;
+    p.sceneColorLevels = 1;  // shadeConstants: the full chains when an object is rough
+    p.environmentLevels = 1;
+    p.pad0 = 0;
     return p;
   }
 };
@@ -129,8 +136,13 @@ ShadeConstants shadeConstants(const SceneFrame& frame, std::size_t object, int m
 // keep the file's order. Each object's exit and reflect slots read the ones drawn before it.
 std::vector<std::size_t> drawOrder(const std::vector<ShadeConstants>& objects);
 
-// The environment as both sides sample it: intensity applied, GL_LINEAR, clamp to edge.
+// The environment as both sides sample it: intensity applied, GL_LINEAR, clamp to edge; with a rough
+// object, its box-filtered mip chain too (trilinear).
 Texture2D environmentTexture(const SceneFrame& frame);
+// Whether an object of the frame is rough (then the scene colour and the environment carry mip chains).
+bool roughObjects(const SceneFrame& frame);
+// The levels of a full mip chain of a width x height texture (floor(log2(max)) + 1).
+int mipLevels(int width, int height);
 
 // One pass-4 program: a technique of the table (SNELL_TECHNIQUE_*, `reference` for the table's Reference rows)
 // or, when engineModel >= 0, that engine model (SNELL_ENGINE_*).

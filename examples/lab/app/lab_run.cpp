@@ -458,6 +458,10 @@ LabResult runLab(const LabOptions& options) {
   if (!options.webBundleDir.empty() && options.sceneLayer == SceneLayer::Peeled)
     throw Error(ErrorKind::Render, "--web-bundle: the three.js page draws the behind and full scene layers, not "
                                    "the peeled one (--scene-layer peeled)");
+  for (const RefractiveObject& o : scene.objects)
+    if (!options.webBundleDir.empty() && o.roughness > 0.0f)
+      throw Error(ErrorKind::Render, "--web-bundle: " + o.field + " is rough (roughness " + std::to_string(o.roughness) +
+                                         "); the three.js page draws smooth glass only (its scene colour has no mips)");
   if (scene.objects.size() < 2 && options.techniques.empty())
     techniques.erase(std::remove_if(techniques.begin(), techniques.end(), [](const LabRowSpec& t) { return t.multiObject(); }),
                      techniques.end());

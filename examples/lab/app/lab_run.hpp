@@ -35,6 +35,7 @@ struct LabOptions {
   std::string webBundleDir;  // "": none; else the three.js page's bundle (web_bundle.hpp) is written there
   bool threejs = true;  // a glTF scene: also render it with three.js's own renderer (threejs_renderer.hpp)
   double guardBand = 0.1;  // scene and back-face buffers wider than the viewport by this share of its size per side
+  int truthSamples = 1024;  // the ray tracer's paths per pixel on a rough object (TraceOptions::samples)
   ShaderDirs dirs;
 };
 
@@ -123,6 +124,11 @@ struct LabResult {
   std::vector<ObjectReport> objects;  // in draw order: back to front
   std::size_t sharedBytes = 0;        // GPU memory every object shares (scene layers, the pass's targets)
   double mseTwoVsFull = 0.0;  // the two-interface model's own error (model + TIR)
+  // A rough object: the ray tracer's paths per pixel and the noise left in its full image (TraceResult::noise:
+  // the expected MSE of the truth against its own mean, which every row's mseFull carries on top of its own
+  // error). 0 and 0 when every object is smooth (one deterministic path per pixel).
+  int truthSamples = 0;
+  double truthNoise = 0.0;
   // Several objects: the composited two-interface model's (References::composited) error, the floor of
   // the rows (-1 with one object, where it is the two-interface model).
   double mseCompositedVsFull = -1.0;

@@ -150,6 +150,10 @@ int main(int argc, char** argv) {
                  "on or off")
       ->check(CLI::IsMember({"auto", "on", "off"}))
       ->capture_default_str();
+  app.add_option("--truth-samples", o.truthSamples,
+                 "the ray tracer's paths per pixel on rough glass (its noise is reported; smooth glass takes one)")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
   app.add_option("--guard-band", o.guardBand,
                  "extra border of the scene and back-face buffers beyond the viewport, per side, as a share of the "
                  "render size (0: the viewport only), so that exits just off screen are found")

@@ -33,8 +33,13 @@ References traceReferences(const SceneFrame& frame, const std::vector<LabRowSpec
   TraceOptions to;
   to.threads = options.threads;
   to.progress = !options.quiet;
+  to.samples = options.truthSamples;
   to.mode = TraceMode::Full;
   refs.full = refs.tracer->render(frame.camera, to);
+  if (refs.full.stats.sampledPixels > 0) {
+    result.truthSamples = to.samples;
+    result.truthNoise = refs.full.noise;
+  }
   to.mode = TraceMode::TwoInterfaces;
   refs.two = refs.tracer->render(frame.camera, to);
   result.traceSeconds = refs.full.stats.seconds + refs.two.stats.seconds;

@@ -113,7 +113,18 @@ std::string markdownTable(const LabResult& r) {
        std::to_string(r.objectPixels) + " object pixels, scene and back-face buffers " +
        std::to_string(r.width + 2 * r.guardBand) + "x" + std::to_string(r.height + 2 * r.guardBand) + " (a guard band of " +
        std::to_string(r.guardBand) + " texels around the viewport). MSE: linear RGB clamped to [0, 1], over the "
-       "object's pixels (Mayer & Assarsson's measure).\n\nWhere the error comes from:\n";
+       "object's pixels (Mayer & Assarsson's measure).\n";
+  if (r.truthSamples > 0) {
+    double smallest = 0.0;
+    for (const TechniqueRow& t : r.rows)
+      if (smallest == 0.0 || t.mseFull < smallest) smallest = t.mseFull;
+    s += "\nThe glass is rough: the ray tracer samples its microfacets (GGX, Walter et al. 2007) with " +
+         std::to_string(r.truthSamples) + " paths per pixel, which leaves noise of " + fmt("%.3g", r.truthNoise) +
+         " (MSE of the truth against its own mean) in every MSE against it: " +
+         fmt("%.3f", smallest > 0.0 ? r.truthNoise / smallest : 0.0) + " of the smallest row's" +
+         (smallest > 0.0 && r.truthNoise > 0.1 * smallest ? " (above a tenth: raise --truth-samples)" : "") + ".\n";
+  }
+  s += "\nWhere the error comes from:\n";
   s += "- model: the two-interface reference (two refractions, Fresnel reflection of the scene at the first "
        "surface, no internal bounces) is " + fmt("%.3g", r.mseTwoVsFull) + " from the full ray tracer; no technique "
        "that models two interfaces can get closer to the ray tracer than that.\n";
@@ -283,6 +294,10 @@ void writeJson(const fs::path& path, const LabResult& r) {
   j["frames"] = r.frames;
   j["gpu"] = r.gpu;
   j["mse_two_interface_vs_full"] = r.mseTwoVsFull;
+  if (r.truthSamples > 0) {
+    j["truth_samples"] = r.truthSamples;
+    j["truth_noise"] = r.truthNoise;
+  }
   if (r.mseCompositedVsFull >= 0.0) j["mse_composited_two_interface_vs_full"] = r.mseCompositedVsFull;
   j["mse_two_interface_vs_full_on_tir"] = r.mseTwoVsFullTir;
   j["tir_share"] = r.tirShare;

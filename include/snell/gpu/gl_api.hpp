@@ -97,6 +97,7 @@ namespace snell::gpu {
   X(PFNGLTEXIMAGE2DPROC, TexImage2D)                            \
   X(PFNGLTEXPARAMETERIPROC, TexParameteri)                      \
   X(PFNGLGENERATEMIPMAPPROC, GenerateMipmap)                    \
+  X(PFNGLGETTEXIMAGEPROC, GetTexImage)                          \
   X(PFNGLBINDIMAGETEXTUREPROC, BindImageTexture)                \
   /* framebuffers */                                            \
   X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                  \
