@@ -3803,7 +3803,7 @@ SNELL_FN int snellInsideSide(vec3 p, vec2 uv, SNELL_TEX2D backDepth, SNELL_IN(Sn
   bool behindBack = b.valid && p.z <= b.viewZ;
   bool beforeFront = f.valid && p.z >= f.viewZ;
   if (behindBack && beforeFront) {
-    return (b.viewZ - p.z) <= (p.z - f.viewZ) ? 2 : 1;
+    return (b.viewZ - p.z) <= (p.z - f.viewZ) ? 1 : 2;
   }
   if (behindBack) {
     return 1;
