@@ -6,10 +6,9 @@
 // A client (include/snell/gpu/parity_webgpu.hpp) writes one line, a WGSL file's absolute path; the
 // answer is what `node tint_check.mjs FILE` would exit with and print, "<status>\n<output>", then the
 // server closes the connection. Checks run one at a time (tintCheck's error scope).
-import fs from "node:fs";
-import net from "node:net";
 import path from "node:path";
 
+import { serveLines } from "../servers/servers.mjs";
 import { openTint, tintCheck } from "./tint_check.mjs";
 
 const socketPath = process.argv[2];
@@ -36,16 +35,4 @@ async function answer(file) {
   }
 }
 
-fs.rmSync(socketPath, { force: true });
-net.createServer((conn) => {
-  let line = "";
-  conn.setEncoding("utf8");
-  conn.on("error", (e) => console.error(`tint_server: ${e.message}`));
-  conn.on("data", (d) => {
-    line += d;
-    if (!line.includes("\n")) return;
-    conn.pause();
-    const reply = (queue = queue.then(() => answer(line.slice(0, line.indexOf("\n")))));
-    reply.then((text) => conn.end(text));
-  });
-}).listen(socketPath, () => console.error(`tint_server: listening on ${socketPath}`));
+serveLines(socketPath, (line) => (queue = queue.then(() => answer(line))), "tint_server");
