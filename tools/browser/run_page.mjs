@@ -11,7 +11,7 @@
 // modules in examples/web, e.g. gltf_scene.js), fetches /job/<file>
 // (job.json, shader.frag, shader.wgsl, inputs.f32, tex_<k>.f32, asset.glb) and posts /renderer (kept in
 // renderer.txt), /log (timing.txt),
-// /results (written to JOB_DIR/RESULTS_FILE) or /error. --webgpu turns on
+// /results (written to JOB_DIR/RESULTS_FILE) or /error (page_job.mjs). --webgpu turns on
 // Chromium's WebGPU on SwiftShader. --three=DIR serves the .js files of three.js's package folder
 // (examples/web/node_modules/three) under /three/, with an import map for "three" and "three/addons/".
 // Any failure (no Chromium, a page error, a crashed GPU process, a timeout) exits with status 1 and a
@@ -22,6 +22,7 @@ import path from "node:path";
 import { fileURLToPath } from "node:url";
 
 import { launchChromium } from "./chromium.mjs";
+import { answerJobRequest, libFile } from "./page_job.mjs";
 import { openSharedPage } from "./shared_chromium.mjs";
 
 const args = process.argv.slice(2);
@@ -56,7 +57,6 @@ const importMap = threeRoot
   ? '<script type="importmap">{ "imports": { "three": "/three/build/three.module.js", "three/addons/": "/three/examples/jsm/" } }</script>'
   : "";
 const page = `<!doctype html><meta charset="utf-8"><title>snell parity</title>${importMap}<script type="module" src="/page.js"></script>`;
-const jobFiles = /^\/job\/(job\.json|shader\.frag|shader\.wgsl|inputs\.f32|tex_\d+\.f32|asset\.glb)$/;
 // A .js file of three.js's package under /three/ (--three), never outside that folder.
 const threeFile = (url) => {
   if (!threeRoot || !url.startsWith("/three/")) return "";
@@ -67,9 +67,8 @@ const threeFile = (url) => {
     return "";  // a malformed or missing name
   }
 };
-// Modules the page imports, next to it: /lib/<name>.js; and the three.js page's modules it shares
-// (examples/web, e.g. gltf_scene.js): /web/<name>.js.
-const libFiles = /^\/lib\/(\w+\.js)$/;
+// Modules the page imports, next to it: /lib/<name>.js (page_job.mjs's libFile); and the three.js page's
+// modules it shares (examples/web, e.g. gltf_scene.js): /web/<name>.js.
 const webFiles = /^\/web\/(\w+\.js)$/;
 const webDir = path.join(path.dirname(fileURLToPath(import.meta.url)), "..", "..", "examples", "web");
 const server = http.createServer((req, res) => {
@@ -82,30 +81,21 @@ const server = http.createServer((req, res) => {
       res.writeHead(200, { "content-type": "text/html" }).end(page);
     } else if (req.method === "GET" && req.url === "/page.js") {
       res.writeHead(200, { "content-type": "text/javascript" }).end(fs.readFileSync(pageJs));
-    } else if (req.method === "GET" && (m = libFiles.exec(req.url)) && fs.existsSync(path.join(path.dirname(pageJs), m[1]))) {
-      res.writeHead(200, { "content-type": "text/javascript" }).end(fs.readFileSync(path.join(path.dirname(pageJs), m[1])));
+    } else if (req.method === "GET" && (m = libFile(path.dirname(pageJs), req.url))) {
+      res.writeHead(200, { "content-type": "text/javascript" }).end(fs.readFileSync(m));
     } else if (req.method === "GET" && (m = webFiles.exec(req.url)) && fs.existsSync(path.join(webDir, m[1]))) {
       res.writeHead(200, { "content-type": "text/javascript" }).end(fs.readFileSync(path.join(webDir, m[1])));
     } else if (req.method === "GET" && (m = threeFile(req.url))) {
       res.writeHead(200, { "content-type": "text/javascript" }).end(fs.readFileSync(m));
     } else if (req.method === "GET" && req.url === "/browser/page_io.js") {
       res.writeHead(200, { "content-type": "text/javascript" }).end(fs.readFileSync(new URL("page_io.js", import.meta.url)));
-    } else if (req.method === "GET" && (m = jobFiles.exec(req.url))) {
-      res.writeHead(200, { "content-type": "application/octet-stream" }).end(fs.readFileSync(path.join(dir, m[1])));
-    } else if (req.method === "POST" && req.url === "/renderer") {
-      fs.writeFileSync(path.join(dir, "renderer.txt"), data.toString() + "\n");
-      res.end();
-    } else if (req.method === "POST" && req.url === "/log") {
-      fs.writeFileSync(path.join(dir, "timing.txt"), data.toString() + "\n");
-      res.end();
-    } else if (req.method === "POST" && req.url === "/results") {
-      fs.writeFileSync(path.join(dir, resultsFile), data);
-      res.end();
-      server.close();
-      finish(0);
-    } else if (req.method === "POST" && req.url === "/error") {
-      res.end();
-      finish(1, data.toString());
+    } else if ((m = answerJobRequest(req, req.url, data, res, dir, resultsFile))) {
+      if (m.done) {
+        server.close();
+        finish(0);
+      } else if (m.error !== undefined) {
+        finish(1, m.error);
+      }
     } else {
       res.writeHead(404).end();
     }
