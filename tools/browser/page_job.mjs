@@ -1,6 +1,7 @@
-// A page's requests about its job (run_page.mjs), apart from how the page is served, for anything else
-// that runs a page on a job to answer the same: the page reads the same files of the job folder, and
-// what it posts lands in the same files there, so the C++ side reads a job the same whichever ran it.
+// A page's requests about its job, for both ways of running one: run_page.mjs (a page, or a tab, per
+// job) and page_server.mjs (one page for every job of a ctest run, each job's routes under
+// /jobs/<id>). Either way the page reads the same files of the job folder and what it posts lands in
+// the same files there, so the C++ side reads a job the same whichever ran it.
 import fs from "node:fs";
 import path from "node:path";
 

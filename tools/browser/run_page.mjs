@@ -11,7 +11,8 @@
 // modules in examples/web, e.g. gltf_scene.js), fetches /job/<file>
 // (job.json, shader.frag, shader.wgsl, inputs.f32, tex_<k>.f32, asset.glb) and posts /renderer (kept in
 // renderer.txt), /log (timing.txt),
-// /results (written to JOB_DIR/RESULTS_FILE) or /error (page_job.mjs). --webgpu turns on
+// /results (written to JOB_DIR/RESULTS_FILE) or /error: page_job.mjs, which page_server.mjs shares, the
+// way under ctest to run every job in one page. --webgpu turns on
 // Chromium's WebGPU on SwiftShader. --three=DIR serves the .js files of three.js's package folder
 // (examples/web/node_modules/three) under /three/, with an import map for "three" and "three/addons/".
 // Any failure (no Chromium, a page error, a crashed GPU process, a timeout) exits with status 1 and a

@@ -1,6 +1,6 @@
-// Long-lived servers for a whole ctest run (the WebGPU runtime's, tools/webgpu/webgpu_servers.mjs):
-// started detached by a fixture's setup test, asked by every case over a Unix socket, killed by its
-// cleanup test.
+// Long-lived servers for a whole ctest run (the WebGPU runtime's, tools/webgpu/webgpu_servers.mjs; the
+// WebGL 2 runtime's page server, tools/webgl/webgl_server.mjs): started detached by a fixture's setup
+// test, asked by every case over a Unix socket, killed by its cleanup test.
 //
 //   await startServers(STATE_DIR, { name: [program, args, options], ... });  // waits until all listen
 //   await stopServers(STATE_DIR, ["name", ...]);

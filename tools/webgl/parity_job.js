@@ -1,7 +1,7 @@
 // A WebGL 2 parity job: the job's ES 3.00 fragment shader once per case, the four output vectors of
 // every case posted back as 16 floats. parity_page.js runs one in a page of its own
-// (tools/browser/run_page.mjs); a page that runs many jobs runs each with the same code, for the same
-// bits.
+// (tools/browser/run_page.mjs); under ctest, tools/browser/page_server.mjs's page runs every job with
+// it: the same code either way, for the same bits.
 //
 // get(file) reads a file of the job; post(what, body) posts "/renderer", "/log" or "/results".
 export async function run({ get, post }) {
