@@ -10,10 +10,14 @@
 // writes its four output vectors to four RGBA32F colour attachments, read back
 // as floats (EXT_color_buffer_float). The case's textures keep their uniform
 // names, levels and filters (a texture without mips is clamped to level 0,
-// as on GL). The browser side is tools/webgl/parity_page.js, run by
-// detail::runChromiumPage (chromium_page.hpp); the renderer string it reports
-// is kept in the job folder. Source tree only: `cmake --install` leaves this
-// header out, as it leaves out tools/ and its npm packages.
+// as on GL). The browser side is tools/webgl/parity_job.js: each case starts
+// tools/browser/run_page.mjs on parity_page.js, which runs it in a page of its
+// own (detail::runChromiumPage, chromium_page.hpp), or, when
+// SNELL_WEBGL_SERVER names the state folder of tools/webgl/webgl_server.mjs
+// (ctest does), asks the page server that folder's socket leads to, whose
+// tabs run every job. The renderer string the page reports is kept in the job
+// folder. Source tree only: `cmake --install` leaves this header out, as it
+// leaves out tools/ and its npm packages.
 #pragma once
 
 #include "chromium_page.hpp"
@@ -21,6 +25,7 @@
 #include "include_flattener.hpp"
 #include "parity.hpp"
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -40,6 +45,25 @@ struct WebGlTools {
 // input texels per case keep the input texture 4096 wide, inside every
 // WebGL 2 implementation's limit (MAX_TEXTURE_SIZE >= 4096 in practice).
 constexpr int kParityWebGlColumns = 1024;
+
+namespace detail {
+
+// A case's wait for the page server: the page's own limit (SNELL_BROWSER_TIMEOUT_MS, 600 s), then the
+// jobs of the other ctest jobs' cases ahead of it. Longer only if the server hangs.
+constexpr int kWebGlServerTimeoutSeconds = 900;
+
+// What run_page.mjs would exit with and print for the job in `job` (an absolute path), from the page
+// server in the state folder `dir` (tools/webgl/webgl_server.mjs). Not reaching it is an error, never a
+// fallback to a page per case: SNELL_WEBGL_SERVER says the server is there.
+inline ToolResult askWebGlServer(const std::string& dir, const std::filesystem::path& job) {
+  const std::filesystem::path d(dir);
+  return askServer(d / "page.sock", "parity_job.js results.f32 " + job.string(), kWebGlServerTimeoutSeconds,
+                   "the WebGL 2 runtime's page server (SNELL_WEBGL_SERVER=" + dir +
+                       ": ctest starts it in the test webgl.server_start; its output is in " +
+                       (d / "page_server.log").string() + ")");
+}
+
+}  // namespace detail
 
 // The generated ES 3.00 fragment shader, before flattening.
 inline std::string parityWebGlSource(const std::string& caseFile, const std::string& entry,
@@ -100,8 +124,13 @@ inline std::vector<ParityIO> runParityWebGl(const WebGlTools& webgl,
   detail::writeTextFile(job / "job.json", json + "]}\n");
   static_assert(sizeof(ParityIO) == 16 * sizeof(float), "ParityIO is 16 packed floats");
   detail::writeFloats(job / "inputs.f32", reinterpret_cast<const float*>(inputs.data()), 16 * inputs.size());
-  return detail::runChromiumPage(webgl.node, webgl.chromium, webgl.toolsDir / "parity_page.js", job, "results.f32", {},
-                                 inputs.size(), "the WebGL 2 runtime", &src, renderer);
+  const char* server = std::getenv("SNELL_WEBGL_SERVER");
+  if (server == nullptr || *server == '\0')
+    return detail::runChromiumPage(webgl.node, webgl.chromium, webgl.toolsDir / "parity_page.js", job, "results.f32",
+                                   {}, inputs.size(), "the WebGL 2 runtime", &src, renderer);
+  fs::remove(job / "results.f32", ec);
+  return detail::pageJobResults(detail::askWebGlServer(server, fs::absolute(job)), job, "results.f32", inputs.size(),
+                                "the WebGL 2 runtime", &src, renderer);
 }
 
 }  // namespace snell::gpu

@@ -6,7 +6,8 @@
 // runTool starts the program with posix_spawnp (no shell: arguments are passed as they are, nothing is
 // expanded), collects its stdout and stderr interleaved and waits for it. A program that cannot be
 // started is an Error naming the Debian package that provides it. askServer puts the same question to a
-// server that answers like a tool (tools/webgpu/parity_server.ts, tint_server.mjs).
+// server that answers like a tool (tools/webgpu/parity_server.ts, tint_server.mjs,
+// tools/browser/page_server.mjs).
 #pragma once
 
 #include "error.hpp"
