@@ -79,20 +79,6 @@ Sampler pixelSampler(std::uint64_t seed, int x, int y) {
   return s;
 }
 
-// Walter et al. 2007, eq. 41: the weight of a direction `out` scattered about microfacet normal m (both
-// travel directions, n the macro normal on m's side: G1's chi+ wants them together), for the principal path, which picks its
-// direction about m itself (refraction, a critical clamp or a reflection) rather than by the Fresnel
-// term; 0 when `out` is on the side of the macro surface its scattering cannot reach.
-double microfacetWeight(const glm::dvec3& d, const glm::dvec3& out, const glm::dvec3& m, const glm::dvec3& n,
-                        double alpha, bool reflected) {
-  const glm::dvec3 i = -d;  // Walter's i and o point away from the surface
-  const double in = glm::dot(i, n), on = glm::dot(out, n);
-  if (in == 0.0 || (reflected ? in * on <= 0.0 : in * on >= 0.0)) return 0.0;
-  const double mn = std::abs(glm::dot(m, n));
-  if (!(mn > 0.0)) return 0.0;
-  return std::abs(glm::dot(i, m)) * ggxG1(i, m, n, alpha) * ggxG1(out, m, n, alpha) / (std::abs(in) * mn);
-}
-
 // The media a ray travels in, innermost last: crossing into an object pushes it, out of one removes it.
 // Where two objects overlap, the one entered last is the medium: the surface of the other one there
 // separates that medium from itself and does not bend the ray. Deeper nesting than kMax drops the
@@ -464,7 +450,7 @@ struct ReferenceTracer::Impl {
     const glm::dvec3 facing = glm::dot(d, s.normal) > 0.0 ? -s.normal : s.normal;
     const glm::dvec3 m = alpha > 0.0 ? ggxSampleNormal(facing, alpha, rng.next(), rng.next()) : s.normal;
     const auto weight = [&](const glm::dvec3& out, bool reflected) {
-      return alpha > 0.0 ? microfacetWeight(d, out, m, facing, alpha, reflected) : 1.0;
+      return alpha > 0.0 ? ggxScatterWeight(d, out, m, facing, alpha, reflected) : 1.0;
     };
     if (n == 1) {
       const ExactRefraction t = refractExact(d, m, c.eta, TirPolicy::Critical);

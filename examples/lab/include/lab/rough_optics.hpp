@@ -113,6 +113,21 @@ inline glm::dvec3 ggxSampleNormal(const glm::dvec3& n, double alpha, double xi1,
   return sinT * (std::cos(phi) * t + std::sin(phi) * u) + cosT * n;
 }
 
+// The importance weight (41) of a direction `outgoing` scattered about the microfacet normal m: incident
+// and outgoing are travel directions, n the macro normal on m's side (G1's chi+ wants them together). 0
+// when outgoing lies on the side of the macro surface that its event (reflected or not) cannot reach,
+// or at grazing incidence. The sampler below weighs its choice with it; the tracer's principal path, which
+// picks its direction about m itself (refraction, a reflection), does too.
+inline double ggxScatterWeight(const glm::dvec3& incident, const glm::dvec3& outgoing, const glm::dvec3& m,
+                               const glm::dvec3& n, double alpha, bool reflected) {
+  const glm::dvec3 i = -incident;
+  const double in = glm::dot(i, n), on = glm::dot(outgoing, n);
+  if (in == 0.0 || (reflected ? in * on <= 0.0 : in * on >= 0.0)) return 0.0;
+  const double mn = std::abs(glm::dot(m, n));
+  if (!(mn > 0.0)) return 0.0;
+  return std::abs(glm::dot(i, m)) * ggxG1(i, m, n, alpha) * ggxG1(outgoing, m, n, alpha) / (std::abs(in) * mn);
+}
+
 struct RoughScatter {
   glm::dvec3 direction{0.0};  // unit direction of travel
   double weight = 0.0;        // f |o.n| / pdf, (41); 0: absorbed
@@ -158,9 +173,7 @@ inline RoughScatter sampleRoughDielectric(const glm::dvec3& incident, glm::dvec3
   }
   o = glm::normalize(o);
   r.direction = o;
-  const double on = glm::dot(o, normal);
-  if (r.reflected ? !(on > 0.0) : !(on < 0.0)) return r;
-  r.weight = c * ggxG1(i, m, normal, alpha) * ggxG1(o, m, normal, alpha) / (cosI * mn);
+  r.weight = ggxScatterWeight(incident, o, m, normal, alpha, r.reflected);
   return r;
 }
 
