@@ -5,14 +5,12 @@
 
 namespace snell::lab {
 
-namespace {
-double clamp01(float v) { return v > 0.0f ? std::min(static_cast<double>(v), 1.0) : 0.0; }
-}  // namespace
+double clampedChannel(float v) { return v > 0.0f ? std::min(static_cast<double>(v), 1.0) : 0.0; }
 
 double pixelSquaredError(const vec4& a, const vec4& b) {
   double s = 0.0;
   for (int c = 0; c < 3; ++c) {
-    const double d = clamp01(a[c]) - clamp01(b[c]);
+    const double d = clampedChannel(a[c]) - clampedChannel(b[c]);
     s += d * d;
   }
   return s / 3.0;

@@ -15,6 +15,9 @@ struct ErrorStats {
   std::size_t pixels = 0;     // pixels compared (mask count)
 };
 
+// A linear colour channel as every measure of the lab reads it: clamped to [0, 1] (NaN reads 0).
+double clampedChannel(float v);
+
 // Per-pixel channel-averaged squared error of two linear images, each clamped to [0, 1].
 double pixelSquaredError(const vec4& a, const vec4& b);
 
