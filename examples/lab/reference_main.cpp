@@ -32,7 +32,10 @@ int main(int argc, char** argv) {
   app.add_option("--mode", mode, "full: Fresnel + TIR at every interface; two: refract in, refract out, look up")
       ->check(CLI::IsMember({"full", "two"}))
       ->capture_default_str();
-  app.add_option("--frame", frame, "animation frame (time = time_start + frame * time_step)")->check(CLI::NonNegativeNumber);
+  app.add_option("--frame", frame,
+                 "animation frame (time = time_start + frame * time_step; the camera panned by frame * "
+                 "camera_pan_pixels)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--width", width, "override the scene's resolution (with --height)")->check(CLI::PositiveNumber);
   app.add_option("--height", height, "override the scene's resolution (with --width)")->check(CLI::PositiveNumber);
   app.add_option("--max-depth", maxDepth, "interface events per path (full mode)")->capture_default_str();
@@ -48,7 +51,7 @@ int main(int argc, char** argv) {
     Scene scene = loadScene(scenePath);
     if (width > 0) scene.camera.width = width;
     if (height > 0) scene.camera.height = height;
-    const SceneFrame f = buildFrame(scene, scene.frameTime(frame));
+    const SceneFrame f = buildAnimationFrame(scene, frame);
     const ReferenceTracer tracer(f);
     TraceOptions opt;
     opt.mode = mode == "two" ? TraceMode::TwoInterfaces : TraceMode::Full;

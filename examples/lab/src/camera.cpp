@@ -33,6 +33,22 @@ Ray primaryRayAtUv(const Camera& camera, glm::dvec2 uv) {
   return r;
 }
 
+Camera pannedCamera(const Camera& camera, vec2 pixels) {
+  // The basis of glm::lookAt in double, as primaryRayAtUv builds it.
+  const glm::dvec3 eye(camera.position), target(camera.target);
+  const glm::dvec3 f = glm::normalize(target - eye);
+  const glm::dvec3 s = glm::normalize(glm::cross(f, glm::dvec3(camera.up)));
+  const glm::dvec3 u = glm::cross(s, f);
+  // A pixel's height at the target's view depth (the target lies on the view axis, so its depth is its distance).
+  const double pixel = 2.0 * glm::length(target - eye) * std::tan(0.5 * static_cast<double>(camera.fovYRadians())) /
+                       static_cast<double>(camera.height);
+  const glm::dvec3 shift = (s * static_cast<double>(pixels.x) + u * static_cast<double>(pixels.y)) * pixel;
+  Camera moved = camera;
+  moved.position = vec3(eye + shift);
+  moved.target = vec3(target + shift);
+  return moved;
+}
+
 namespace {
 bool finiteMatrix(const mat4& m) {
   for (int c = 0; c < 4; ++c)

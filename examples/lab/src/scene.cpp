@@ -248,7 +248,7 @@ std::string readableUtf8(const std::string& s) {
   return out;
 }
 
-AnimationSpec readAnimation(ObjectReader r) {
+AnimationSpec readAnimation(ObjectReader r, const Camera& camera) {
   AnimationSpec a;
   a.frames = r.integer("frames", a.frames, 1, 100000);
   a.timeStart = static_cast<float>(r.number("time_start", a.timeStart, Range::any()));
@@ -258,6 +258,11 @@ AnimationSpec readAnimation(ObjectReader r) {
   const float last = a.timeStart + static_cast<float>(a.frames - 1) * a.timeStep;
   if (!std::isfinite(static_cast<float>(a.frames - 1) * a.timeStep) || !std::isfinite(last))
     r.fail("time_step", "the last frame's time, time_start + (frames - 1) * time_step, overflows a float");
+  a.cameraPanPixels = r.vector2("camera_pan_pixels", a.cameraPanPixels, Range::any());
+  // The camera moves farthest in the last frame; a pan that carries it beyond float arithmetic is refused here,
+  // not left to the ray tracer and GL.
+  const std::string far = cameraProblem(pannedCamera(camera, a.cameraPanPixels * static_cast<float>(a.frames - 1)));
+  if (!far.empty()) r.fail("camera_pan_pixels", "the last frame's camera (panned by (frames - 1) times it): " + far);
   r.finish();
   return a;
 }
@@ -373,7 +378,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
     s.environment = readEnvironment(r.object("environment"), file);
   }
   for (ObjectReader& p : r.objectArray("opaque", kMaxPaintings)) s.paintings.push_back(readPainting(p, file));
-  if (r.has("animation")) s.animation = readAnimation(r.object("animation"));
+  if (r.has("animation")) s.animation = readAnimation(r.object("animation"), s.camera);
   r.finish();
   return s;
 }
@@ -518,6 +523,16 @@ std::vector<Painting> buildPaintings(const Scene& scene) {
     out.push_back(makePainting(p.center, p.size, p.rotateDegrees, std::move(tex)));
   }
   return out;
+}
+
+Camera Scene::frameCamera(int frame) const {
+  return pannedCamera(camera, animation.cameraPanPixels * static_cast<float>(frame));
+}
+
+SceneFrame buildAnimationFrame(const Scene& scene, int frame) {
+  SceneFrame f = buildFrame(scene, scene.frameTime(frame));
+  f.camera = scene.frameCamera(frame);
+  return f;
 }
 
 bool dispersive(const FrameObject& o) { return o.abbe > 0.0f; }

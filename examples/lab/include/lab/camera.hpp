@@ -50,6 +50,13 @@ struct Ray {
 // neither Embree nor GL ever sees a non-finite ray.
 std::string cameraProblem(const Camera& camera);
 
+// `camera` moved parallel to its image plane, position and target together,
+// by `pixels` (x right, y up in the picture) measured at the target's distance:
+// the target then shows `pixels` away from where it was, the other way (the
+// picture pans with the camera). Points nearer than the target move more,
+// farther ones less (parallax), as a real camera dolly's would.
+Camera pannedCamera(const Camera& camera, vec2 pixels);
+
 // The ray through the centre of pixel (px, py) (py = 0 is the bottom row),
 // from the camera position, clipped to the near and far planes (tNear/tFar are
 // the distances along the ray to those planes).

@@ -84,6 +84,8 @@ struct AnimationSpec {
   int frames = 1;
   float timeStart = 0.0f;
   float timeStep = 1.0f / 30.0f;
+  // The camera's move per frame: pannedCamera (lab/camera.hpp) by this many pixels times the frame index.
+  vec2 cameraPanPixels{0.0f};
 };
 
 struct Scene {
@@ -102,6 +104,8 @@ struct Scene {
   std::vector<std::string> warnings;
 
   float frameTime(int frame) const { return animation.timeStart + static_cast<float>(frame) * animation.timeStep; }
+  // The camera of frame `frame`: `camera` panned by animation.cameraPanPixels per frame.
+  Camera frameCamera(int frame) const;
 };
 
 // Reads and checks a scene file. Error(Io) when it is missing, Error(Parse) for
@@ -143,5 +147,7 @@ struct SceneFrame {
   std::vector<Painting> paintings;
 };
 SceneFrame buildFrame(const Scene& scene, float time = 0.0f);
+// Frame `frame` of the scene's animation: the meshes at frameTime(frame), the camera frameCamera(frame).
+SceneFrame buildAnimationFrame(const Scene& scene, int frame);
 
 }  // namespace snell::lab
