@@ -1,6 +1,6 @@
 // The camera's pan over an animation (animation.camera_pan_pixels, lab::pannedCamera): the target shows the asked
 // pixels away in frame f, by the camera's own projection (glm::lookAt and snellPerspective, not the pan's basis);
-// the scene reader's errors name the field.
+// the scene reader's errors name the field; the bundled sequences load.
 #include "lab/camera.hpp"
 #include "lab/scene.hpp"
 
@@ -83,4 +83,16 @@ TEST(LabCameraPan, BadPansAreNamed) {
         [&] { snell::lab::parseScene(sceneWithAnimation(c.animation), "pan.json"); }, ErrorKind::Schema);
     EXPECT_NE(message.find(c.expected), std::string::npos) << message;
   }
+}
+
+TEST(LabCameraPan, TheBundledSequencesLoad) {
+  const snell::lab::Scene blob = snell::lab::loadScene(labtest::scenesDir() + "/sequences/blob_rough_030.json");
+  EXPECT_EQ(blob.animation.frames, 8);
+  EXPECT_EQ(blob.animation.cameraPanPixels, vec2(0.0f));
+  EXPECT_EQ(blob.objects.at(0).roughness, 0.3f);
+  const snell::lab::Scene bunny = snell::lab::loadScene(labtest::scenesDir() + "/sequences/bunny_rough_030_pan.json");
+  EXPECT_EQ(bunny.animation.frames, 8);
+  EXPECT_EQ(bunny.animation.cameraPanPixels, vec2(0.25f, 0.0f));
+  EXPECT_EQ(bunny.objects.at(0).roughness, 0.3f);
+  EXPECT_GT(snell::lab::buildAnimationFrame(bunny, 7).objects.at(0).mesh.triangleCount(), 3000u);
 }
