@@ -611,6 +611,8 @@ std::string GpuLab::description() const {
          impl_->ctx.version();
 }
 
+void GpuLab::makeCurrent() const { impl_->ctx.makeCurrent(); }
+
 double GpuLab::renderStatic() {
   return impl_->timed([&] { impl_->drawStatic(); });
 }

@@ -165,6 +165,9 @@ class GpuLab {
   GpuLab& operator=(const GpuLab&) = delete;
 
   std::string description() const;  // backend, GL renderer and version
+  // Binds this lab's context to the thread again after another GpuLab used it (an animated run draws each
+  // further frame with its own), so that what follows, its destructor included, reaches its own objects.
+  void makeCurrent() const;
 
   // Passes 1-3; returns their wall time in ms (glFinish on both sides).
   double renderStatic();

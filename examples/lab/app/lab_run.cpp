@@ -3,6 +3,7 @@
 #include "engine_sweep.hpp"
 #include "pictures.hpp"
 #include "references.hpp"
+#include "sequence.hpp"
 #include "threejs_renderer.hpp"
 #include "report.hpp"
 #include "web_bundle.hpp"
@@ -446,7 +447,49 @@ void checkMemoryBudget(int width, int height, std::size_t objects, std::size_t r
                   " fits) or fewer techniques (-t)");
 }
 
+// One program per row.
+std::vector<LabShader> labShaders(const std::vector<LabRowSpec>& techniques) {
+  std::vector<LabShader> shaders;
+  for (const LabRowSpec& t : techniques) shaders.push_back({t.techniqueId(), t.reference(), t.engineModel()});
+  return shaders;
+}
+
+// Every object's constants with the run's read modes, the draw order and the guard band (fullColor comes from
+// the GPU's static passes).
+FrameSetup frameSetup(const SceneFrame& frame, const LabOptions& options) {
+  FrameSetup setup;
+  setup.margin = guardBandMargin(options.guardBand, frame.camera.width, frame.camera.height);
+  for (std::size_t i = 0; i < frame.objects.size(); ++i) {
+    ShadeConstants k = shadeConstants(frame, i, setup.margin);
+    k.normalFilter = options.normalFilter;
+    k.params.depthFilter = options.depthFilter;
+    k.params.reflectSource = options.reflectSource;
+    k.sceneLayer = options.sceneLayer;
+    if (options.insideScene >= 0) k.params.insideScene = options.insideScene;
+    setup.k.push_back(k);
+  }
+  setup.order = drawOrder(setup.k);
+  return setup;
+}
+
 }  // namespace
+
+std::vector<Image> renderRowsAtFrame(const SceneFrame& frame, const std::vector<LabRowSpec>& techniques,
+                                     const std::vector<float>& engineParameters, const LabOptions& options) {
+  FrameSetup setup = frameSetup(frame, options);
+  GpuLab gpu(options.backend, frame, wymanDn(frame, techniques, false), labShaders(techniques), options.dirs, setup.k);
+  gpu.renderStatic();
+  if (!setup.several()) gpu.renderLayer(0, {}, nullptr);
+  setup.fullColor = gpu.readStatic(setup.order.front()).fullColor;
+  std::vector<Image> images;
+  for (std::size_t i = 0; i < techniques.size(); ++i) {
+    if (techniques[i].engine) gpu.setEngineParameter(i, engineParameters.at(i));
+    Image finalFrame;
+    renderObjects(gpu, i, techniques[i], setup, frame, finalFrame, nullptr);
+    images.push_back(viewportOf(finalFrame, setup.margin, frame.camera.width, frame.camera.height));
+  }
+  return images;
+}
 
 LabResult runLab(const LabOptions& options) {
   const auto start = std::chrono::steady_clock::now();
@@ -468,7 +511,9 @@ LabResult runLab(const LabOptions& options) {
   if (options.width > 0) scene.camera.width = options.width;
   if (options.height > 0) scene.camera.height = options.height;
   checkMemoryBudget(scene.camera.width, scene.camera.height, scene.objects.size(), techniques.size());
-  const SceneFrame frame = buildFrame(scene, scene.frameTime(0));
+  // Before the ray trace: a run asked for frames the scene cannot give should not cost one.
+  sequenceLength(scene, options);
+  const SceneFrame frame = buildAnimationFrame(scene, 0);
   // A glTF asset's open glass was named when it was read; a scene file's meshes are built here.
   for (std::size_t i = 0; i < frame.objects.size(); ++i) {
     const MeshSpec& m = scene.objects[i].mesh;
@@ -490,22 +535,10 @@ LabResult runLab(const LabOptions& options) {
 
   // Stage 3: the GPU passes that do not depend on the technique (scene, back faces, pyramids), once:
   // the frame is static. Their read-back buffers are what the C++ side shades from.
-  std::vector<LabShader> shaders;
-  for (const LabRowSpec& t : techniques) shaders.push_back({t.techniqueId(), t.reference(), t.engineModel()});
-  const int margin = guardBandMargin(options.guardBand, result.width, result.height);
+  const std::vector<LabShader> shaders = labShaders(techniques);
+  FrameSetup setup = frameSetup(frame, options);
+  const int margin = setup.margin;
   result.guardBand = margin;
-  FrameSetup setup;
-  setup.margin = margin;
-  for (std::size_t i = 0; i < frame.objects.size(); ++i) {
-    ShadeConstants k = shadeConstants(frame, i, margin);
-    k.normalFilter = options.normalFilter;
-    k.params.depthFilter = options.depthFilter;
-    k.params.reflectSource = options.reflectSource;
-    k.sceneLayer = options.sceneLayer;
-    if (options.insideScene >= 0) k.params.insideScene = options.insideScene;
-    setup.k.push_back(k);
-  }
-  setup.order = drawOrder(setup.k);
   if (setup.several()) traceComposited(refs, frame, setup.order, setup.k, options, result);
   result.insideScene = std::any_of(setup.k.begin(), setup.k.end(), [](const ShadeConstants& k) { return k.params.insideScene != 0; });
   result.sceneLayer = options.sceneLayer;
@@ -586,6 +619,11 @@ LabResult runLab(const LabOptions& options) {
     row.mseTwo = compareImages(refs.two.color, three.image, refs.full.mask).mse;
     result.renderers.push_back(row);
     rendererImages.push_back(std::move(three.image));
+  }
+  // An animated run: the frames after this one, and each row's flicker (sequence.hpp).
+  if (sequenceLength(scene, options) > 0) {
+    result.sequence = runSequence(scene, techniques, result.rows, refs.full, images, options);
+    gpu.makeCurrent();
   }
   result.markdown = markdownTable(result);
   result.targets = targetsText(result) + whichToPick(result);

@@ -36,6 +36,9 @@ struct LabOptions {
   bool threejs = true;  // a glTF scene: also render it with three.js's own renderer (threejs_renderer.hpp)
   double guardBand = 0.1;  // scene and back-face buffers wider than the viewport by this share of its size per side
   int truthSamples = 1024;  // the ray tracer's paths per pixel on a rough object (TraceOptions::samples)
+  // An animated run (sequence.hpp): frames 0 .. sequenceFrames - 1 of the scene's animation for every row and
+  // each row's flicker; -1: the scene's animation.frames; 0: frame 0 alone (no animated run).
+  int sequenceFrames = 0;
   ShaderDirs dirs;
 };
 
@@ -114,6 +117,20 @@ struct ObjectReport {
   std::size_t bytes = 0;      // GPU memory of its own buffers (mesh, back and front faces, back-face pyramid)
 };
 
+// An animated run's measures (sequence.hpp; frames 0: none ran).
+struct SequenceReport {
+  int frames = 0;
+  float timeStart = 0.0f, timeStep = 0.0f;  // frame f at timeStart + f * timeStep
+  vec2 panPixels{0.0f};                     // the camera's move per frame (AnimationSpec::cameraPanPixels)
+  std::vector<double> flicker;              // per row, in LabResult::rows' order (lab/flicker.hpp)
+  double truthChange = 0.0;    // mean over the pairs of the truth's own mean |change| (FlickerPair::truthChange)
+  double pixelsPerPair = 0.0;  // mean over the pairs of the pixels in both frames' masks
+  // The flicker the truth's noise alone gives a row (rough glass; 0 when smooth): see sequenceNoiseFloor.
+  double noiseFloor = 0.0;
+  double seconds = 0.0;       // frames 1 .. frames - 1 and the noise floor's traces
+  double traceSeconds = 0.0;  // ... of it, ray tracing
+};
+
 struct LabResult {
   std::string scene;
   int width = 0, height = 0;
@@ -152,6 +169,7 @@ struct LabResult {
   std::string gpu;
   std::vector<RendererRow> renderers;  // a glTF scene's real renderers (three.js), after the rows
   std::vector<TechniqueRow> rows;
+  SequenceReport sequence;  // an animated run (LabOptions::sequenceFrames)
   std::string markdown;  // the table (and notes) as printed
   std::string targets;   // the Mayer-Assarsson comparison and which row to pick, as printed
 

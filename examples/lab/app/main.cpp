@@ -154,6 +154,15 @@ int main(int argc, char** argv) {
                  "the ray tracer's paths per pixel on rough glass (its noise is reported; smooth glass takes one)")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
+  bool sequence = false;
+  app.add_flag("--sequence", sequence,
+               "an animated run: frames 0 to N - 1 of the scene's animation (N: its animation.frames), every row "
+               "drawn and the ray tracer's truth traced per frame, and each row's flicker against the truth's own "
+               "change (a second table in table.md, `flicker` per row and `sequence` in table.json)");
+  int sequenceFrames = 0;
+  app.add_option("--sequence-frames", sequenceFrames,
+                 "the animated run's frame count instead of the scene's animation.frames (implies --sequence)")
+      ->check(CLI::Range(2, 100000));
   app.add_option("--guard-band", o.guardBand,
                  "extra border of the scene and back-face buffers beyond the viewport, per side, as a share of the "
                  "render size (0: the viewport only), so that exits just off screen are found")
@@ -170,6 +179,7 @@ int main(int argc, char** argv) {
   if (const int code = parseCommandLine(app, argc, argv, [&] { suggestOptions(app, argc, argv); }); code >= 0)
     return code;
   o.threejs = !noThreejs;
+  o.sequenceFrames = sequenceFrames > 0 ? sequenceFrames : sequence ? -1 : 0;
   // Comma-separated here rather than by CLI11, which drops empty names: "single,," is a typo, not "single".
   std::vector<std::string> names;
   for (const std::string& arg : techniqueArgs) {

@@ -1,4 +1,5 @@
 #include "report.hpp"
+#include "sequence.hpp"
 #include "cpu_mirror.hpp"
 
 #include "technique.hpp"
@@ -207,6 +208,7 @@ std::string markdownTable(const LabResult& r) {
        "build reproduces within 1/255 when P1 or N1 moves by at most " + std::to_string(kTieUlps) +
        " ulps per component (a texel or TIR boundary that last-bit differences put on opposite sides, not a "
        "disagreement between the builds).\n";
+  s += sequenceMarkdown(r);
   return s;
 }
 
@@ -379,6 +381,7 @@ void writeJson(const fs::path& path, const LabResult& r) {
     renderers.push_back({{"renderer", x.name}, {"label", x.label}, {"ran_on", x.renderer}, {"mse_vs_ray_traced", x.mseFull},
                          {"mse_vs_two_interface", x.mseTwo}, {"frame_ms", x.msPerFrame}});
   if (!r.renderers.empty()) j["renderers"] = renderers;
+  addSequenceJson(j, r);
   // Scene names come from file names, which need not be UTF-8: replace what JSON cannot hold, don't throw.
   writeText(path, j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
