@@ -52,6 +52,7 @@ TEST(LabSequence, RoughBlobReportsAFlickerPerRowAndTheNoiseFloor) {
   EXPECT_GT(r.sequence.pixelsPerPair, 100.0);
   // 8 paths per pixel leave noise; its floor is measured and printed under the table.
   EXPECT_GT(r.sequence.noiseFloor, 0.0);
+  EXPECT_GT(r.sequence.noiseFloorIndependent, 0.0);
   EXPECT_NE(r.markdown.find("Flicker over frames 0 to 2"), std::string::npos);
   EXPECT_NE(r.markdown.find("Noise floor: the truth's own noise"), std::string::npos);
   labtest::TempDir dir;

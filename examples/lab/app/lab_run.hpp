@@ -127,6 +127,7 @@ struct SequenceReport {
   double pixelsPerPair = 0.0;  // mean over the pairs of the pixels in both frames' masks
   // The flicker the truth's noise alone gives a row (rough glass; 0 when smooth): see sequenceNoiseFloor.
   double noiseFloor = 0.0;
+  double noiseFloorIndependent = 0.0;  // ... were each frame's noise drawn afresh (0 when smooth)
   double seconds = 0.0;       // frames 1 .. frames - 1 and the noise floor's traces
   double traceSeconds = 0.0;  // ... of it, ray tracing
 };

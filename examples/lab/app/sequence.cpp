@@ -27,8 +27,11 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 // independent noise of one kind (Gaussian) is sqrt(2) times one noise's change: the floor is that over
 // sqrt(2). Both sequences keep their seed from frame to frame (TraceOptions::seed), as the run's truth does,
 // so the floor carries the same frame-to-frame correlation as the run's truth.
+// `independent`: the floor were each frame's noise drawn afresh, the mean |seed 1 - seed 0| of frame 0 itself
+// (two independent draws of the noise, as two frames' would be); the floor below it is what the shared seed
+// keeps out.
 double noiseFloor(const Scene& scene, const TraceOptions& base, const TraceResult& truth0, const TraceResult& truth1,
-                  double& traceSeconds) {
+                  double& independent, double& traceSeconds) {
   TraceOptions other = base;
   other.seed = base.seed + 1;
   TraceResult again[2];
@@ -37,6 +40,8 @@ double noiseFloor(const Scene& scene, const TraceOptions& base, const TraceResul
     again[f] = ReferenceTracer(frame).render(frame.camera, other);
     traceSeconds += again[f].stats.seconds;
   }
+  independent =
+      pairFlicker(truth0.color, again[0].color, truth0.mask, again[0].mask, truth0.color, truth0.color).flicker;
   return pairFlicker(truth0.color, truth1.color, truth0.mask, truth1.mask, again[0].color, again[1].color).flicker /
          std::sqrt(2.0);
 }
@@ -89,7 +94,7 @@ SequenceReport runSequence(const Scene& scene, const std::vector<LabRowSpec>& te
       truthChange += pairs[0].back().truthChange;
     }
     if (f == 1 && truth0.stats.sampledPixels > 0)
-      report.noiseFloor = noiseFloor(scene, to, truth0, truth, report.traceSeconds);
+      report.noiseFloor = noiseFloor(scene, to, truth0, truth, report.noiseFloorIndependent, report.traceSeconds);
     before = std::move(truth);
     imagesBefore = std::move(images);
   }
@@ -121,9 +126,12 @@ std::string sequenceMarkdown(const LabResult& r) {
   if (q.noiseFloor > 0.0)
     s += "\nNoise floor: the truth's own noise (" + std::to_string(r.truthSamples) + " paths per pixel) reads as "
          "flicker too: " + per255(q.noiseFloor) + ", measured by tracing frames 0 and 1 again with another seed "
-         "(the second truth's flicker against the first, over sqrt(2) as for independent Gaussian noise). Every "
-         "frame draws the same random numbers at a pixel, so the noise changes less between frames than between "
-         "seeds; a row near 1x the floor is as steady as this truth can tell.\n";
+         "(the second truth's flicker against the first, over sqrt(2) as for independent Gaussian noise); a row "
+         "near 1x the floor is as steady as this truth can tell. Were each frame's noise drawn afresh it would be " +
+         per255(q.noiseFloorIndependent) + " (frame 0's two truths against each other): every frame draws the "
+         "same random numbers at a pixel, which keeps " +
+         fmt("%.0f %%", q.noiseFloorIndependent > 0.0 ? 100.0 * (1.0 - q.noiseFloor / q.noiseFloorIndependent) : 0.0) +
+         " of it out.\n";
   else
     s += "\nNoise floor: 0 (smooth glass: the truth traces one deterministic path per pixel).\n";
   s += "Frames 1 to " + std::to_string(q.frames - 1) + " took " + fmt("%.1f", q.seconds) + " s (ray tracing " +
@@ -141,6 +149,7 @@ void addSequenceJson(nlohmann::json& table, const LabResult& r) {
                        {"truth_change", q.truthChange},
                        {"pixels_per_pair", q.pixelsPerPair},
                        {"noise_floor", q.noiseFloor},
+                       {"noise_floor_independent_frames", q.noiseFloorIndependent},
                        {"seconds", q.seconds},
                        {"trace_seconds", q.traceSeconds}};
   nlohmann::json& rows = table["techniques"];
