@@ -102,4 +102,86 @@ SNELL_PARITY_CASE(snellEngineInvalid, [] { return smallIntInputs(851, 0, 1); },
                   SnellEngineRefraction e = snellEngineInvalid();
                   TECH_ENGINE_OUT(e))
 
+// The engines' rough reads (shade/engine_models/engine_rough.glsl) of the sphere scene's mipmapped colour (96x96,
+// 7 levels): colours 1e-4, lods 1e-4, fetch counts exact. Bevy's noise has jumps (a fract of a fract), so its
+// pixels stay 1e-3 away from them, and the dispatcher's p projects to a pixel centre.
+inline bool bevyNoiseTie(double x, double y) {
+  const double t = 0.06711056 * x + 0.00583715 * y;
+  const double f = t - std::floor(t);
+  const double u = 52.9829189 * f;
+  const double w = u - std::floor(u);
+  return f < 1e-3 || f > 1.0 - 1e-3 || w < 1e-3 || w > 1.0 - 1e-3;
+}
+
+inline std::vector<ParityIO> blurInputs(std::uint32_t seed) {
+  InputGen g(seed);
+  std::vector<ParityIO> v;
+  const glm::vec4 m = matrixEntries();
+  for (int i = 0; i < kInputs; ++i) {
+    const float px = std::floor(g.uniform(0.0f, 95.99f)) + 0.5f, py = std::floor(g.uniform(0.0f, 95.99f)) + 0.5f;
+    if (bevyNoiseTie(px, kSize - py)) {
+      --i;
+      continue;
+    }
+    // p on the ray through that pixel's centre, at a depth in front of the camera.
+    const float z = g.uniform(2.0f, 12.0f);
+    const glm::vec3 p((px / kSize * 2.0f - 1.0f) * z / m.x, (py / kSize * 2.0f - 1.0f) * z / m.y, -z);
+    float r = g.uniform(0.0f, 1.0f);
+    if (g.chance(0.05f)) r = 0.0f;
+    if (g.chance(0.03f)) r = g.chance(0.5f) ? -g.uniform(0.0f, 1.0f) : g.hostile();
+    float ior = g.uniform(1.0f, 2.0f);
+    if (g.chance(0.03f)) ior = g.hostile();
+    glm::vec2 uv(g.uniform(-0.1f, 1.1f), g.uniform(-0.1f, 1.1f));
+    if (g.chance(0.02f)) uv = glm::vec2(g.hostile(), g.hostile());
+    float lod = g.uniform(-0.5f, 7.0f);
+    if (g.chance(0.02f)) lod = g.hostile();
+    ParityIO in{};
+    in.v[0] = glm::vec4(uv, r, ior);
+    in.v[1] = glm::vec4(p, float(g.integer(-1, SNELL_ENGINE_BLUR_COUNT)));
+    in.v[2] = m;
+    in.v[3] = glm::vec4(lod, px, kSize - py, float(4 << g.integer(0, 3)));
+    v.push_back(in);
+  }
+  return v;
+}
+
+#define TECH_BLUR_INPUTS                                                                                        \
+  (vec2, uv, 0)(float, roughness, 2)(float, ior, 3)(vec3, p, 4)(int, blur, 7)(vec4, projection, 8)              \
+  (float, lod, 12)(vec2, pixel, 13)(int, taps, 15)
+#define TECH_BLUR_OUTPUTS (vec3, color, 0, within(1e-4f, 1e-4f))(int, fetches, 3, exact)
+
+SNELL_PARITY_CASE(snellEngineBlurLod, [] { return blurInputs(853); }, TECH_BLUR_INPUTS,
+                  (float, level, 0, within(1e-4f, 1e-4f)), techExtras(),
+                  level = snellEngineBlurLod(blur, roughness, ior, 7, vec2(96.0f, 96.0f), techMatrix(projection));)
+
+SNELL_PARITY_CASE(snellEngineBicubicMips, [] { return blurInputs(854); }, TECH_BLUR_INPUTS, TECH_BLUR_OUTPUTS,
+                  techExtras(),
+                  SnellEngineBlurRead r = snellEngineBicubicMips(techSceneColor,
+                                                                 clamp(uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f)), lod, 7);
+                  color = r.color;
+                  fetches = r.fetches;)
+
+SNELL_PARITY_CASE(snellEngineBevyBlur, [] { return blurInputs(855); }, TECH_BLUR_INPUTS, TECH_BLUR_OUTPUTS,
+                  techExtras(),
+                  SnellEngineBlurRead r = snellEngineBevyBlur(techSceneColor, uv, roughness, ior, p.z, pixel, taps);
+                  color = r.color;
+                  fetches = r.fetches;)
+
+SNELL_PARITY_CASE(snellEngineBlurRead, [] { return blurInputs(856); }, TECH_BLUR_INPUTS, TECH_BLUR_OUTPUTS,
+                  techExtras(),
+                  SnellEngineBlurRead r = snellEngineBlurRead(blur, techSceneColor, uv, roughness, ior, p,
+                                                              techMatrix(projection), 7);
+                  color = r.color;
+                  fetches = r.fetches;)
+
+SNELL_PARITY_CASE(snellEngineSmoothRead, [] { return blurInputs(857); }, TECH_BLUR_INPUTS, TECH_BLUR_OUTPUTS,
+                  techExtras(),
+                  SnellEngineBlurRead r = snellEngineSmoothRead(techSceneColor, uv);
+                  color = r.color;
+                  fetches = r.fetches;)
+
+SNELL_PARITY_CASE(snellEngineBlurOf, [] { return smallIntInputs(858, -2, SNELL_ENGINE_MODEL_COUNT + 1); },
+                  (int, model, 0), (int, blur, 0, exact), techExtras(),
+                  blur = snellEngineBlurOf(model);)
+
 }  // namespace parity_technique

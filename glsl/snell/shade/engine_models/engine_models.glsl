@@ -4,6 +4,7 @@ description: the engines' screen-space refraction models by number, so a host
   labels for C++ are in include/snell/engine_model_table.hpp.
 use: SnellEngineRefraction e = snellEngineRefraction(SNELL_ENGINE_THREEJS, p, n, eta, parameter,
                                                      proxyFromView, sceneDepth, scene);
+     int blur = snellEngineBlurOf(SNELL_ENGINE_THREEJS);  // how that engine reads rough glass (engine_rough.glsl)
   model       SNELL_ENGINE_* below
   parameter   the model's one free value: thickness (three.js / Bevy,
               Filament solid, HDRP sphere and box), microThickness (Filament
@@ -21,6 +22,13 @@ ids:
   SNELL_ENGINE_MODEL_COUNT      the number of ids (0 .. COUNT - 1)
 contract: the chosen model's function with these arguments; a model outside
   0 .. SNELL_ENGINE_MODEL_COUNT - 1: snellEngineInvalid().
+  snellEngineBlurOf(model): the engine's blur of engine_rough.glsl
+  (SNELL_ENGINE_BLUR_THREEJS for three.js, _FILAMENT for both Filament
+  models, _HDRP for both HDRP models, _GODOT for Godot); -1 for any other id
+  (snellEngineBlurRead then reads the smooth texel). Bevy shares three.js's
+  point (SNELL_ENGINE_THREEJS) but has a blur of its own,
+  SNELL_ENGINE_BLUR_BEVY, which no model id names: a host that shows Bevy
+  pairs the two (the lab's engine-bevy row).
 source: the models' own files.
 */
 #ifndef SNELL_SHADE_ENGINE_MODELS_ENGINE_MODELS_GLSL
@@ -30,6 +38,7 @@ source: the models' own files.
 #include "filament.glsl"
 #include "hdrp.glsl"
 #include "godot.glsl"
+#include "engine_rough.glsl"
 
 #define SNELL_ENGINE_THREEJS 0
 #define SNELL_ENGINE_FILAMENT_SOLID 1
@@ -61,6 +70,22 @@ SNELL_FN SnellEngineRefraction snellEngineRefraction(int model, vec3 p, vec3 n, 
     return snellEngineGodot(p, n, parameter, sceneDepth, scene);
   }
   return snellEngineInvalid();
+}
+
+SNELL_FN int snellEngineBlurOf(int model) {
+  if (model == SNELL_ENGINE_THREEJS) {
+    return SNELL_ENGINE_BLUR_THREEJS;
+  }
+  if (model == SNELL_ENGINE_FILAMENT_SOLID || model == SNELL_ENGINE_FILAMENT_THIN) {
+    return SNELL_ENGINE_BLUR_FILAMENT;
+  }
+  if (model == SNELL_ENGINE_HDRP_SPHERE || model == SNELL_ENGINE_HDRP_BOX) {
+    return SNELL_ENGINE_BLUR_HDRP;
+  }
+  if (model == SNELL_ENGINE_GODOT) {
+    return SNELL_ENGINE_BLUR_GODOT;
+  }
+  return -1;
 }
 
 #endif
