@@ -3737,6 +3737,190 @@ SNELL_FN SnellEngineRefraction snellEngineGodot(vec3 p, vec3 n, float scale, SNE
 
 #endif
 
+#ifndef SNELL_SHADE_ENGINE_MODELS_ENGINE_ROUGH_GLSL
+#define SNELL_SHADE_ENGINE_MODELS_ENGINE_ROUGH_GLSL
+
+#ifndef SNELL_BEVY_TRANSMISSION_TAPS
+#  define SNELL_BEVY_TRANSMISSION_TAPS 8
+#endif
+
+#define SNELL_ENGINE_BLUR_THREEJS 0
+#define SNELL_ENGINE_BLUR_BEVY 1
+#define SNELL_ENGINE_BLUR_FILAMENT 2
+#define SNELL_ENGINE_BLUR_HDRP 3
+#define SNELL_ENGINE_BLUR_GODOT 4
+#define SNELL_ENGINE_BLUR_COUNT 5
+
+struct SnellEngineBlurRead {
+  vec3 color;
+  int fetches;
+};
+
+SNELL_FN float snellEngineBlurLod(int blur, float roughness, float ior, int levels, vec2 size, mat4 clipFromView) {
+  if (isnan(roughness) || !(roughness > 0.0f) || isnan(ior) || !SNELL_FINITE(ior) || !(ior > 0.0f)) {
+    return 0.0f;
+  }
+  float r = min(roughness, 1.0f);
+  float last = float(max(levels, 1) - 1);
+  if (blur == SNELL_ENGINE_BLUR_THREEJS) {
+    float w = isnan(size.x) ? 1.0f : max(size.x, 1.0f);
+    return log2(w) * max(r, 0.045f) * clamp(2.0f * ior - 2.0f, 0.0f, 1.0f);
+  }
+  if (blur == SNELL_ENGINE_BLUR_FILAMENT) {
+    float q = r * (1.0f - clamp(3.0f / ior - 2.0f, 0.0f, 1.0f));
+    float x = 1.0f / abs(clipFromView[1][1]);
+    float t = 2.0f * x / (1.0f - x * x);
+    float h = isnan(size.y) ? 1.0f : max(size.y, 1.0f);
+    if (!(q > 0.0f) || isnan(t) || !SNELL_FINITE(t) || !(t > 0.0f)) {
+      return 0.0f;
+    }
+    float offset = -log2(1.41421356f * (22.0f / 6.0f) * t / h);
+    float lod = max((2.0f * log2(q) + offset) * 0.8614f, 0.0f);
+    int count = max(min(4, max(levels, 1)), max(levels, 1) - 4);
+    return min(lod, float(count - 1));
+  }
+  if (blur == SNELL_ENGINE_BLUR_HDRP) {
+    return pow(r, 1.3f) * last;
+  }
+  if (blur == SNELL_ENGINE_BLUR_GODOT) {
+    return min(8.0f * r, last);
+  }
+  return 0.0f;
+}
+
+SNELL_FN SnellEngineBlurRead snellEngineBicubicMips(SNELL_TEX2D sceneColor, vec2 uv, float lod, int levels) {
+  int last = max(levels, 1) - 1;
+  float l = isnan(lod) ? 0.0f : clamp(lod, 0.0f, float(last));
+  int a = int(floor(l));
+  int b = min(int(ceil(l)), last);
+  int sizeB = min(a + 1, last);
+  float mixB = l - floor(l);
+  vec3 sum = vec3(0.0f, 0.0f, 0.0f);
+  for (int k = 0; k < 2; ++k) {
+    int level = k == 0 ? a : b;
+    ivec2 si = SNELL_TEXTURE_SIZE(sceneColor, k == 0 ? a : sizeB);
+    vec2 s = vec2(float(si.x), float(si.y));
+    vec2 inv = vec2(1.0f / s.x, 1.0f / s.y);
+    vec2 x = uv * s + vec2(0.5f, 0.5f);
+    vec2 i = floor(x);
+    vec2 f = x - i;
+    vec2 w0 = (1.0f / 6.0f) * (f * (f * (-f + 3.0f) - 3.0f) + 1.0f);
+    vec2 w1 = (1.0f / 6.0f) * (f * f * (3.0f * f - 6.0f) + 4.0f);
+    vec2 w2 = (1.0f / 6.0f) * (f * (f * (-3.0f * f + 3.0f) + 3.0f) + 1.0f);
+    vec2 w3 = (1.0f / 6.0f) * (f * f * f);
+    vec2 g0 = w0 + w1;
+    vec2 g1 = w2 + w3;
+    vec2 h0 = w1 / (w0 + w1) - 1.0f;
+    vec2 h1 = w3 / (w2 + w3) + 1.0f;
+    vec2 p0 = (vec2(i.x + h0.x, i.y + h0.y) - 0.5f) * inv;
+    vec2 p1 = (vec2(i.x + h1.x, i.y + h0.y) - 0.5f) * inv;
+    vec2 p2 = (vec2(i.x + h0.x, i.y + h1.y) - 0.5f) * inv;
+    vec2 p3 = (vec2(i.x + h1.x, i.y + h1.y) - 0.5f) * inv;
+    float lf = float(level);
+    vec4 c = g0.y * (g0.x * SNELL_SAMPLE_LOD(sceneColor, p0, lf) + g1.x * SNELL_SAMPLE_LOD(sceneColor, p1, lf)) +
+             g1.y * (g0.x * SNELL_SAMPLE_LOD(sceneColor, p2, lf) + g1.x * SNELL_SAMPLE_LOD(sceneColor, p3, lf));
+    float weight = k == 0 ? 1.0f - mixB : mixB;
+    sum = sum + weight * vec3(c.x, c.y, c.z);
+  }
+  SnellEngineBlurRead r;
+  r.color = sum;
+  r.fetches = 8;
+  return r;
+}
+
+SNELL_FN SnellEngineBlurRead snellEngineSmoothRead(SNELL_TEX2D sceneColor, vec2 uv) {
+  vec4 c = SNELL_SAMPLE_LOD(sceneColor, clamp(uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f)), 0.0f);
+  SnellEngineBlurRead r;
+  r.color = vec3(c.x, c.y, c.z);
+  r.fetches = 1;
+  return r;
+}
+
+SNELL_FN SnellEngineBlurRead snellEngineBevyBlur(SNELL_TEX2D sceneColor, vec2 uv, float roughness, float ior,
+                                                 float viewZ, vec2 pixel, int taps) {
+  vec2 c0 = clamp(uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  bool rough = !isnan(roughness) && roughness > 0.0f && !isnan(ior) && SNELL_FINITE(ior) && ior > 0.0f;
+  float s = rough ? min(roughness, 1.0f) * clamp(2.0f * ior - 2.0f, 0.0f, 1.0f) : 0.0f;
+  if (!(s > 0.0f) || isnan(viewZ) || !SNELL_FINITE(viewZ) || viewZ == 0.0f) {
+    return snellEngineSmoothRead(sceneColor, c0);
+  }
+  float b = s * s / viewZ;
+  ivec2 si = SNELL_TEXTURE_SIZE(sceneColor, 0);
+  float aspect = float(si.x) / float(si.y);
+  int n = clamp(taps, 1, 32);
+  int spirals = (n + 7) / 8;
+  float px = (isnan(pixel.x) || !SNELL_FINITE(pixel.x)) ? 0.0f : clamp(pixel.x, 0.0f, 16777216.0f);
+  float py = (isnan(pixel.y) || !SNELL_FINITE(pixel.y)) ? 0.0f : clamp(pixel.y, 0.0f, 16777216.0f);
+  float t = 0.06711056f * px + 0.00583715f * py;
+  t = 52.9829189f * (t - floor(t));
+  float noise = t - floor(t);
+  float checker = float((int(px) + int(py)) & 1);
+  float scale = b * (1.0f - 0.1f * checker);
+  vec3 sum = vec3(0.0f, 0.0f, 0.0f);
+  for (int i = 0; i < 32; ++i) {
+    int k = i >> 3;
+    int j = i & 7;
+    vec2 o = vec2(-0.7071f, 0.7071f);
+    if (j == 1) {
+      o = vec2(0.5303f, 0.5303f);
+    } else if (j == 2) {
+      o = vec2(0.3536f, -0.3536f);
+    } else if (j == 3) {
+      o = vec2(-0.1768f, -0.1768f);
+    } else if (j == 4) {
+      o = vec2(0.0f, -0.875f);
+    } else if (j == 5) {
+      o = vec2(-0.625f, 0.0f);
+    } else if (j == 6) {
+      o = vec2(0.0f, 0.375f);
+    } else if (j == 7) {
+      o = vec2(0.125f, 0.0f);
+    }
+    o = o * (1.0f - 0.5f * float(k + 1) / float(spirals));
+    float angle = (noise + float(k) / float(spirals)) * (2.0f * SNELL_PI);
+    float sa = sin(angle);
+    float ca = cos(angle);
+    vec2 d = vec2(ca * o.x + sa * o.y, (ca * o.y - sa * o.x) * aspect) * scale;
+    vec2 tap = clamp(c0 + vec2(d.x, -d.y), vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+    vec4 c = SNELL_SAMPLE_LOD(sceneColor, tap, 0.0f);
+    sum = sum + vec3(c.x, c.y, c.z);
+    if (i + 1 >= n) {
+      break;
+    }
+  }
+  SnellEngineBlurRead r;
+  r.color = sum / float(n);
+  r.fetches = n;
+  return r;
+}
+
+SNELL_FN SnellEngineBlurRead snellEngineBlurRead(int blur, SNELL_TEX2D sceneColor, vec2 uv, float roughness, float ior,
+                                                 vec3 p, mat4 clipFromView, int levels) {
+  vec2 c0 = clamp(uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  ivec2 si = SNELL_TEXTURE_SIZE(sceneColor, 0);
+  vec2 size = vec2(float(si.x), float(si.y));
+  if (blur == SNELL_ENGINE_BLUR_BEVY) {
+    vec2 f = snellViewToUv(clipFromView, p).uv;
+    vec2 pixel = vec2(floor(f.x * size.x) + 0.5f, size.y - floor(f.y * size.y) - 0.5f);
+    return snellEngineBevyBlur(sceneColor, c0, roughness, ior, p.z, pixel, SNELL_BEVY_TRANSMISSION_TAPS);
+  }
+  bool rough = !isnan(roughness) && roughness > 0.0f && !isnan(ior) && SNELL_FINITE(ior) && ior > 0.0f;
+  if (!rough || blur < 0 || blur >= SNELL_ENGINE_BLUR_COUNT) {
+    return snellEngineSmoothRead(sceneColor, c0);
+  }
+  float lod = snellEngineBlurLod(blur, roughness, ior, levels, size, clipFromView);
+  if (blur == SNELL_ENGINE_BLUR_THREEJS) {
+    return snellEngineBicubicMips(sceneColor, c0, lod, levels);
+  }
+  vec4 c = SNELL_SAMPLE_LOD(sceneColor, c0, lod);
+  SnellEngineBlurRead r;
+  r.color = vec3(c.x, c.y, c.z);
+  r.fetches = 1;
+  return r;
+}
+
+#endif
+
 #define SNELL_ENGINE_THREEJS 0
 #define SNELL_ENGINE_FILAMENT_SOLID 1
 #define SNELL_ENGINE_FILAMENT_THIN 2
@@ -3767,6 +3951,22 @@ SNELL_FN SnellEngineRefraction snellEngineRefraction(int model, vec3 p, vec3 n, 
     return snellEngineGodot(p, n, parameter, sceneDepth, scene);
   }
   return snellEngineInvalid();
+}
+
+SNELL_FN int snellEngineBlurOf(int model) {
+  if (model == SNELL_ENGINE_THREEJS) {
+    return SNELL_ENGINE_BLUR_THREEJS;
+  }
+  if (model == SNELL_ENGINE_FILAMENT_SOLID || model == SNELL_ENGINE_FILAMENT_THIN) {
+    return SNELL_ENGINE_BLUR_FILAMENT;
+  }
+  if (model == SNELL_ENGINE_HDRP_SPHERE || model == SNELL_ENGINE_HDRP_BOX) {
+    return SNELL_ENGINE_BLUR_HDRP;
+  }
+  if (model == SNELL_ENGINE_GODOT) {
+    return SNELL_ENGINE_BLUR_GODOT;
+  }
+  return -1;
 }
 
 #endif
