@@ -14,8 +14,9 @@ use: LabParams p;  // the host fills every field (C++), or the uniform block Lab
          scenePyramid, sceneColor, environment, p);
      SnellTwoInterfaceResult r = labShadeRow(technique, engineModel, engineParameter, reference, ...the same);
   technique   SNELL_TECHNIQUE_* (shade/technique_presets.glsl)
-  engineModel SNELL_ENGINE_* (shade/engine_models/engine_models.glsl), or -1:
-              the technique; engineParameter: the model's free value
+  engineModel SNELL_ENGINE_* (shade/engine_models/engine_models.glsl) or
+              LAB_ENGINE_BEVY, or -1: the technique; engineParameter: the
+              model's free value
   reference   the technique table's row is a Reference (the image-space
               bound): its exit slot marches over the whole scene
   frontPosition, frontNormal, dN: the front-face fragment (view space), Wyman's d_N
@@ -142,11 +143,18 @@ SNELL_FN SnellTwoInterfaceResult labShade(int technique, bool reference, vec3 fr
    compared with), so that an engine row differs from them only in the transmitted light. */
 #define LAB_ENGINE_REFLECTION_TECHNIQUE SNELL_TECHNIQUE_PLANE_NORMAL_2
 
+/* The lab's engine row that pairs three.js's point (SNELL_ENGINE_THREEJS, which Bevy shares) with Bevy's own
+   blur (SNELL_ENGINE_BLUR_BEVY): one id past the engine models, so a row is still one int. */
+#define LAB_ENGINE_BEVY SNELL_ENGINE_MODEL_COUNT
+#define LAB_ENGINE_ROW_COUNT (SNELL_ENGINE_MODEL_COUNT + 1)
+
 /* An engine's refraction model in place of the two-interface trace (the lab's engine rows): the scene colour
-   where the model reads it (clamped to the edge, as the engines' samplers), mixed with the environment along the
-   model's direction by its scene weight, absorbed over the model's distance; the same Fresnel reflection at the
-   first surface as labShade's rows, through LAB_ENGINE_REFLECTION_TECHNIQUE's reflect slot. fetches: the
-   colour read, the environment read where the weight is below 1, one depth read for the models that test
+   where the model reads it, through the engine's rough read (snellEngineBlurRead: on smooth glass the one
+   texel at lod 0 of the uv clamped to the edge, as the engines' samplers; on rough glass the engine's blur of
+   the mipmapped colour), mixed with the environment along the model's direction by its scene weight, absorbed
+   over the model's distance; the same Fresnel reflection at the first surface as labShade's rows, through
+   LAB_ENGINE_REFLECTION_TECHNIQUE's reflect slot. model: SNELL_ENGINE_* or LAB_ENGINE_BEVY. fetches: the
+   colour reads, the environment read where the weight is below 1, one depth read for the models that test
    depth (HDRP, Godot) and the reflect slot's. */
 SNELL_FN SnellTwoInterfaceResult labEngineShade(int model, float parameter, vec3 frontPosition, vec3 frontNormal,
                                                 SNELL_TEX2D sceneDepth, SNELL_TEX2D sceneNormal,
@@ -158,8 +166,10 @@ SNELL_FN SnellTwoInterfaceResult labEngineShade(int model, float parameter, vec3
   SnellMaterial m = labMaterial(p);
   SnellView v = labView(p);
   float eta = snellIorToEta(m.iorOutside, m.ior);
+  int point = model == LAB_ENGINE_BEVY ? SNELL_ENGINE_THREEJS : model;
+  int blur = model == LAB_ENGINE_BEVY ? SNELL_ENGINE_BLUR_BEVY : snellEngineBlurOf(model);
   SnellEngineRefraction e =
-      snellEngineRefraction(model, frontPosition, frontNormal, eta, parameter, p.proxyFromView, sceneDepth, scene);
+      snellEngineRefraction(point, frontPosition, frontNormal, eta, parameter, p.proxyFromView, sceneDepth, scene);
   SnellTwoInterfaceResult r;
   r.color = vec3(0.0f, 0.0f, 0.0f);
   r.exitPoint = frontPosition;
@@ -176,10 +186,11 @@ SNELL_FN SnellTwoInterfaceResult labEngineShade(int model, float parameter, vec3
   r.insideHit = false;
   vec3 transmitted = vec3(0.0f, 0.0f, 0.0f);
   if (e.valid) {
-    vec4 c = SNELL_SAMPLE_LOD(sceneColor, clamp(e.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f)), 0.0f);
-    transmitted = vec3(c.x, c.y, c.z);
-    bool readsDepth = model == SNELL_ENGINE_HDRP_SPHERE || model == SNELL_ENGINE_HDRP_BOX || model == SNELL_ENGINE_GODOT;
-    r.fetches = readsDepth ? 2 : 1;
+    SnellEngineBlurRead c = snellEngineBlurRead(blur, sceneColor, e.uv, m.roughness, m.ior, frontPosition,
+                                                p.clipFromView, p.sceneColorLevels);
+    transmitted = c.color;
+    bool readsDepth = point == SNELL_ENGINE_HDRP_SPHERE || point == SNELL_ENGINE_HDRP_BOX || point == SNELL_ENGINE_GODOT;
+    r.fetches = (readsDepth ? 1 : 0) + c.fetches;
     r.exitHit.valid = e.sceneWeight > 0.0f;
     r.exitHit.uv = e.uv;
     if (e.sceneWeight < 1.0f) {

@@ -234,6 +234,51 @@ TEST(LabRun, ARoughObjectIsBlurredAlikeOnBothSidesAndItsTruthsNoiseReported) {
               rough.rows.front().mseFull, rough.truthNoise, smooth.rows.front().mseFull);
 }
 
+// The engine rows on a rough ball read through their engines' blurs (engine_rough.glsl) alike in GL and in the
+// C++ mirror, Bevy's spiral included; three.js's bicubic and Bevy's taps read 8 texels where the smooth ball's
+// rows read one, and Bevy's row reads three.js's point differently.
+TEST(LabRun, EngineRowsOnARoughObjectBlurAlikeOnBothSides) {
+  labtest::TempDir dir;
+  const std::string ball = R"({
+    "camera": { "position": [0, 0, 5], "fov": 40 },
+    "object": { "mesh": { "type": "icosphere", "radius": 1, "subdivisions": 5 }, "ior": 1.5 ROUGH},
+    "environment": { "type": "sky" },
+    "opaque": [ { "type": "painting", "center": [0, 0, -3.5], "size": [8, 6],
+                  "texture": { "type": "checker", "squares": [16, 12], "resolution": [256, 192] } } ] })";
+  const auto run = [&](const std::string& name, const std::string& rough) {
+    std::string text = ball;
+    text.replace(text.find("ROUGH"), 5, rough);
+    LabOptions o = labtest::labRunOptions("sphere_painting", 96);
+    o.scenePath = dir.write(name, text);
+    o.techniques = {"engine-threejs", "engine-bevy", "engine-filament-solid", "engine-hdrp-sphere", "engine-godot"};
+    o.truthSamples = 16;
+    return snell::lab::runLab(o);
+  };
+  const LabResult rough = run("rough.json", R"(, "roughness": 0.4)");
+  const LabResult smooth = run("smooth.json", "");
+  const auto row = [](const LabResult& r, const std::string& name) -> const TechniqueRow& {
+    for (const TechniqueRow& t : r.rows)
+      if (t.name == name) return t;
+    throw std::runtime_error("no row " + name);
+  };
+  for (const LabResult* r : {&rough, &smooth})
+    for (const TechniqueRow& t : r->rows) {
+      if (t.engine == nullptr) continue;  // the image-space bound comes along; its agreement is tested above
+      SCOPED_TRACE(t.name);
+      EXPECT_LE(t.cpuGpuBeyond1, 0.001);
+      EXPECT_EQ(t.cpuGpuBeyond4Pixels, t.cpuGpuBeyond4Ties);
+      EXPECT_EQ(t.fetchMismatch, 0.0);
+    }
+  for (const std::string name : {"engine-threejs", "engine-bevy"}) {
+    SCOPED_TRACE(name);
+    EXPECT_GT(row(rough, name).fetchesPerPixel, row(smooth, name).fetchesPerPixel + 5.0);
+  }
+  EXPECT_NE(row(rough, "engine-bevy").mseFull, row(rough, "engine-threejs").mseFull);
+  for (const TechniqueRow& t : rough.rows)
+    std::printf("[lab] rough ball: %s %.4g (fetches %.1f); smooth ball %.4g (fetches %.1f)\n", t.name.c_str(),
+                t.mseFull, t.fetchesPerPixel, row(smooth, t.name).mseFull, row(smooth, t.name).fetchesPerPixel);
+}
+
 // A glass ball under the sky alone: every exit ray rightly finds no scene and shows the environment, which
 // is not a fallback to count (it was 100 % invalid); the exact paths that the rule trusts are the ray
 // tracer's: before a painting that fills every exit ray's view none escapes.

@@ -21,7 +21,8 @@ CpuBuffers cpuBuffers(const StaticBuffers& b, const ShadeConstants& k, const Sce
   for (const Image& level : b.sceneColorMips) c.sceneColor.addLevel(level);
   c.fullDepth = Texture2D(b.fullDepth);
   c.fullNormal = Texture2D(b.fullNormal, normalFilter);
-  c.fullColor = Texture2D(b.fullColor, Filter::Linear);
+  c.fullColor = Texture2D(b.fullColor, Filter::Linear, b.fullColorMips.empty() ? MipFilter::None : MipFilter::Linear);
+  for (const Image& level : b.fullColorMips) c.fullColor.addLevel(level);
   c.sceneSurface = b.sceneSurface;
   c.fullSurface = b.fullSurface;
   c.fullPyramid =

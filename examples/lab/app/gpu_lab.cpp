@@ -373,11 +373,13 @@ struct GpuLab::Impl {
       gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
       gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     }
-    if (rough) {
-      gl.BindTexture(GL_TEXTURE_2D, sceneFb.colorTexture(0));
-      gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, mipLevels(bufferWidth, bufferHeight) - 1);
-      gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    }
+    // The whole scene's colour too: the engine rows read it through their engines' blurs (engine_rough.glsl).
+    if (rough)
+      for (GLuint colorTexture : {sceneFb.colorTexture(0), fullFb.colorTexture(0)}) {
+        gl.BindTexture(GL_TEXTURE_2D, colorTexture);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, mipLevels(bufferWidth, bufferHeight) - 1);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+      }
     const GLint normalGl = k.normalFilter == NormalFilter::Linear ? GL_LINEAR : GL_NEAREST;
     std::vector<GLuint> normalTextures = {sceneFb.colorTexture(1), fullFb.colorTexture(1)};
     for (const auto& o : objects) {
@@ -411,7 +413,7 @@ struct GpuLab::Impl {
       // of the time. An engine row's only slot is the reflection's, LAB_ENGINE_REFLECTION_TECHNIQUE's.
       const int id = shader.engineModel >= 0 ? LAB_ENGINE_REFLECTION_TECHNIQUE : shader.technique;
       if (snellFindTechnique(id) == nullptr) throw gpu::Error("snell-lab: no technique has id " + std::to_string(id));
-      if (shader.engineModel >= SNELL_ENGINE_MODEL_COUNT)
+      if (shader.engineModel >= LAB_ENGINE_ROW_COUNT)
         throw gpu::Error("snell-lab: no engine model has id " + std::to_string(shader.engineModel));
       const bool reference = shader.engineModel < 0 && shader.reference;
       int strategies = 0;
@@ -518,6 +520,12 @@ struct GpuLab::Impl {
                         o->rect);
     }
     pyramidPass.build(fullPyramid, fullFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 1.0f);
+    if (rough) {
+      gl.BindTexture(GL_TEXTURE_2D, fullFb.colorTexture(0));
+      gl.GenerateMipmap(GL_TEXTURE_2D);
+      gl.BindTexture(GL_TEXTURE_2D, 0);
+      gpu::checkGl(gl, "the whole scene's colour: its mip chain");
+    }
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 
@@ -630,23 +638,27 @@ StaticBuffers GpuLab::readStatic(std::size_t object) const {
   const ObjectPasses& o = *impl_->objects.at(object);
   StaticBuffers b;
   b.sceneColor = impl_->sceneFb.readColor(0);
+  b.fullColor = impl_->fullFb.readColor(0);
   if (impl_->rough) {
     const gpu::GlApi& gl = impl_->gl;
-    gl.BindTexture(GL_TEXTURE_2D, impl_->sceneFb.colorTexture(0));
     gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
-    for (int lod = 1; lod < mipLevels(impl_->bufferWidth, impl_->bufferHeight); ++lod) {
-      const Image& above = lod == 1 ? b.sceneColor : b.sceneColorMips.back();
-      Image level(std::max(1, above.width / 2), std::max(1, above.height / 2));
-      gl.GetTexImage(GL_TEXTURE_2D, lod, GL_RGBA, GL_FLOAT, level.texels.data());
-      b.sceneColorMips.push_back(std::move(level));
-    }
+    const auto readMips = [&](GLuint texture, const Image& base, std::vector<Image>& mips) {
+      gl.BindTexture(GL_TEXTURE_2D, texture);
+      for (int lod = 1; lod < mipLevels(impl_->bufferWidth, impl_->bufferHeight); ++lod) {
+        const Image& above = lod == 1 ? base : mips.back();
+        Image level(std::max(1, above.width / 2), std::max(1, above.height / 2));
+        gl.GetTexImage(GL_TEXTURE_2D, lod, GL_RGBA, GL_FLOAT, level.texels.data());
+        mips.push_back(std::move(level));
+      }
+    };
+    readMips(impl_->sceneFb.colorTexture(0), b.sceneColor, b.sceneColorMips);
+    readMips(impl_->fullFb.colorTexture(0), b.fullColor, b.fullColorMips);
     gl.BindTexture(GL_TEXTURE_2D, 0);
-    gpu::checkGl(gl, "reading the scene layer's mip chain (glGetTexImage)");
+    gpu::checkGl(gl, "reading the scene layers' mip chains (glGetTexImage)");
   }
   b.sceneNormal = impl_->sceneFb.readColor(1);
   b.sceneDepth = impl_->sceneFb.readDepth();
   b.sceneSurface = impl_->sceneFb.readColor(2);
-  b.fullColor = impl_->fullFb.readColor(0);
   b.fullNormal = impl_->fullFb.readColor(1);
   b.fullDepth = impl_->fullFb.readDepth();
   b.fullSurface = impl_->fullFb.readColor(2);

@@ -51,6 +51,7 @@ struct StaticBuffers {
   // With a rough object: the scene layer's colour mip levels 1, 2, ... as the GPU generated them (its
   // glGenerateMipmap), which the C++ side samples as they are.
   std::vector<Image> sceneColorMips;
+  std::vector<Image> fullColorMips;  // ... and of the whole scene's colour (the engine rows'), with a rough object
   Image backDepth, backNormal;                // depth in .x (0 = empty)
   Image frontDepth, frontNormal;              // the object's front faces: depth in .x (1 = empty)
 };

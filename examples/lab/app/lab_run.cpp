@@ -68,6 +68,9 @@ std::vector<LabRowSpec> selectTechniques(const LabOptions& options) {
   // drops them otherwise).
   for (const LabRowSpec& r : multiObjectRows())
     if (asked(r.name())) rows.push_back(r);
+  // The engines' rough-only rows: named, or with every row when an object is rough (runLab drops them otherwise).
+  for (const LabRowSpec& r : roughRows())
+    if (asked(r.name())) rows.push_back(r);
   return rows;
 }
 
@@ -507,6 +510,11 @@ LabResult runLab(const LabOptions& options) {
                                          "); the three.js page draws smooth glass only (its scene colour has no mips)");
   if (scene.objects.size() < 2 && options.techniques.empty())
     techniques.erase(std::remove_if(techniques.begin(), techniques.end(), [](const LabRowSpec& t) { return t.multiObject(); }),
+                     techniques.end());
+  const bool rough = std::any_of(scene.objects.begin(), scene.objects.end(),
+                                 [](const RefractiveObject& o) { return o.roughness > 0.0f; });
+  if (!rough && options.techniques.empty())
+    techniques.erase(std::remove_if(techniques.begin(), techniques.end(), [](const LabRowSpec& t) { return t.roughOnly(); }),
                      techniques.end());
   if (options.width > 0) scene.camera.width = options.width;
   if (options.height > 0) scene.camera.height = options.height;

@@ -94,6 +94,8 @@ int main(int argc, char** argv) {
   for (const snell::SnellEngineModelInfo& m : snell::snellEngineModelTable())
     techniqueHelp += std::string("\n  ") + m.name + ": " + m.engine + " (its " + m.parameter +
                      " swept to its best value on the scene; no back-face pass)";
+  techniqueHelp += "\n  engine-bevy: Bevy 0.20 transmission.wesl, three.js's point read through Bevy's spiral blur (rough "
+                   "glass only, unless named; its thickness swept as three.js's)";
 
   CLI::App app{"snell-lab: image-space refraction techniques rendered on the GL driver (Mesa llvmpipe by default) "
                "against an Embree ray tracer. Writes per-technique panels (ground truth | technique | error), an "
