@@ -3751,6 +3751,8 @@ SNELL_FN SnellEngineRefraction snellEngineGodot(vec3 p, vec3 n, float scale, SNE
 #define SNELL_ENGINE_BLUR_GODOT 4
 #define SNELL_ENGINE_BLUR_COUNT 5
 
+#define SNELL_ENGINE_BLUR_UV(uv) vec2(isnan((uv).x) ? 0.0f : clamp((uv).x, 0.0f, 1.0f), isnan((uv).y) ? 0.0f : clamp((uv).y, 0.0f, 1.0f))
+
 struct SnellEngineBlurRead {
   vec3 color;
   int fetches;
@@ -3789,6 +3791,7 @@ SNELL_FN float snellEngineBlurLod(int blur, float roughness, float ior, int leve
 }
 
 SNELL_FN SnellEngineBlurRead snellEngineBicubicMips(SNELL_TEX2D sceneColor, vec2 uv, float lod, int levels) {
+  vec2 c0 = SNELL_ENGINE_BLUR_UV(uv);
   int last = max(levels, 1) - 1;
   float l = isnan(lod) ? 0.0f : clamp(lod, 0.0f, float(last));
   int a = int(floor(l));
@@ -3801,7 +3804,7 @@ SNELL_FN SnellEngineBlurRead snellEngineBicubicMips(SNELL_TEX2D sceneColor, vec2
     ivec2 si = SNELL_TEXTURE_SIZE(sceneColor, k == 0 ? a : sizeB);
     vec2 s = vec2(float(si.x), float(si.y));
     vec2 inv = vec2(1.0f / s.x, 1.0f / s.y);
-    vec2 x = uv * s + vec2(0.5f, 0.5f);
+    vec2 x = c0 * s + vec2(0.5f, 0.5f);
     vec2 i = floor(x);
     vec2 f = x - i;
     vec2 w0 = (1.0f / 6.0f) * (f * (f * (-f + 3.0f) - 3.0f) + 1.0f);
@@ -3829,7 +3832,7 @@ SNELL_FN SnellEngineBlurRead snellEngineBicubicMips(SNELL_TEX2D sceneColor, vec2
 }
 
 SNELL_FN SnellEngineBlurRead snellEngineSmoothRead(SNELL_TEX2D sceneColor, vec2 uv) {
-  vec4 c = SNELL_SAMPLE_LOD(sceneColor, clamp(uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f)), 0.0f);
+  vec4 c = SNELL_SAMPLE_LOD(sceneColor, SNELL_ENGINE_BLUR_UV(uv), 0.0f);
   SnellEngineBlurRead r;
   r.color = vec3(c.x, c.y, c.z);
   r.fetches = 1;
@@ -3838,7 +3841,7 @@ SNELL_FN SnellEngineBlurRead snellEngineSmoothRead(SNELL_TEX2D sceneColor, vec2 
 
 SNELL_FN SnellEngineBlurRead snellEngineBevyBlur(SNELL_TEX2D sceneColor, vec2 uv, float roughness, float ior,
                                                  float viewZ, vec2 pixel, int taps) {
-  vec2 c0 = clamp(uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  vec2 c0 = SNELL_ENGINE_BLUR_UV(uv);
   bool rough = !isnan(roughness) && roughness > 0.0f && !isnan(ior) && SNELL_FINITE(ior) && ior > 0.0f;
   float s = rough ? min(roughness, 1.0f) * clamp(2.0f * ior - 2.0f, 0.0f, 1.0f) : 0.0f;
   if (!(s > 0.0f) || isnan(viewZ) || !SNELL_FINITE(viewZ) || viewZ == 0.0f) {
@@ -3896,7 +3899,7 @@ SNELL_FN SnellEngineBlurRead snellEngineBevyBlur(SNELL_TEX2D sceneColor, vec2 uv
 
 SNELL_FN SnellEngineBlurRead snellEngineBlurRead(int blur, SNELL_TEX2D sceneColor, vec2 uv, float roughness, float ior,
                                                  vec3 p, mat4 clipFromView, int levels) {
-  vec2 c0 = clamp(uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  vec2 c0 = SNELL_ENGINE_BLUR_UV(uv);
   ivec2 si = SNELL_TEXTURE_SIZE(sceneColor, 0);
   vec2 size = vec2(float(si.x), float(si.y));
   if (blur == SNELL_ENGINE_BLUR_BEVY) {

@@ -156,8 +156,7 @@ SNELL_PARITY_CASE(snellEngineBlurLod, [] { return blurInputs(853); }, TECH_BLUR_
 
 SNELL_PARITY_CASE(snellEngineBicubicMips, [] { return blurInputs(854); }, TECH_BLUR_INPUTS, TECH_BLUR_OUTPUTS,
                   techExtras(),
-                  SnellEngineBlurRead r = snellEngineBicubicMips(techSceneColor,
-                                                                 clamp(uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f)), lod, 7);
+                  SnellEngineBlurRead r = snellEngineBicubicMips(techSceneColor, uv, lod, 7);
                   color = r.color;
                   fetches = r.fetches;)
 

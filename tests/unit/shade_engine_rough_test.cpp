@@ -151,12 +151,19 @@ TEST(EngineBicubicMips, IsTheBSplineOfTwoLevelsMixedByTheLodsFraction) {
     const double l = std::min(double(lod), 4.0);
     const int a = int(std::floor(l)), b = std::min(int(std::ceil(l)), 4);
     const double f = l - a;
-    const dvec3 want = (1.0 - f) * bsplineLevel(t.level(a), dvec2(uv)) + f * bsplineLevel(t.level(b), dvec2(uv));
+    // The centre is clamped to the image first (the contract), the B-spline's taps then reach past it.
+    const dvec2 c(std::clamp(double(uv.x), 0.0, 1.0), std::clamp(double(uv.y), 0.0, 1.0));
+    const dvec3 want = (1.0 - f) * bsplineLevel(t.level(a), c) + f * bsplineLevel(t.level(b), c);
     const SnellEngineBlurRead got = snell::snellEngineBicubicMips(t, uv, lod, 5);
     EXPECT_EQ(got.fetches, 8);
     for (int c = 0; c < 3; ++c)
       ASSERT_NEAR(got.color[c], want[c], 2e-5) << "uv " << uv.x << " " << uv.y << " lod " << lod << " channel " << c;
   }
+  // A NaN uv component is 0.
+  const SnellEngineBlurRead nanUv = snell::snellEngineBicubicMips(t, vec2(kNaN, 0.5f), 1.5f, 5);
+  EXPECT_EQ(nanUv.color, snell::snellEngineBicubicMips(t, vec2(0.0f, 0.5f), 1.5f, 5).color);
+  EXPECT_EQ(snell::snellEngineSmoothRead(t, vec2(0.5f, kNaN)).color,
+            snell::snellEngineSmoothRead(t, vec2(0.5f, 0.0f)).color);
   // A negative or NaN lod is level 0.
   const vec2 uv(0.3f, 0.6f);
   const dvec3 zero = bsplineLevel(t.level(0), dvec2(uv));

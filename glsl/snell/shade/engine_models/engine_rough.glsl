@@ -16,7 +16,8 @@ use: SnellEngineBlurRead c = snellEngineBlurRead(blur, sceneColor, e.uv, roughne
   sceneColor  the opaque scene's colour, mipmapped (levels levels, a full or
               partial chain; filtered linearly within and between levels)
   uv          where the engine reads (SnellEngineRefraction.uv; clamped to
-              [0,1]^2 here, as the engines' clamp-to-edge samplers read it)
+              [0,1]^2 here, as the engines' clamp-to-edge samplers read it;
+              a NaN component counts as 0)
   roughness   the material's perceptual roughness (0 smooth, 1 fully rough)
   ior         the material's index of refraction (the engines refract from air)
   p           the front-face fragment's view-space position (Bevy's blur
@@ -41,7 +42,8 @@ ids:
 contract:
   - smooth: where roughness is not > 0 (0, negative, NaN) or ior is not a
     finite positive number, every blur reads what the smooth models read:
-    SNELL_SAMPLE_LOD(sceneColor, clamp(uv, 0, 1), 0), 1 fetch. (three.js
+    SNELL_SAMPLE_LOD(sceneColor, clamp(uv, 0, 1), 0), 1 fetch (every function
+    clamps uv so, a NaN component to 0). (three.js
     reads its bicubic filter, and floors roughness at 0.045, even on smooth
     glass; not modelled, so a smooth material's read is one texel read.)
   - r = min(roughness, 1). levels < 1 counts as 1; L = levels - 1, the last level.
@@ -127,6 +129,9 @@ source: three.js r187 (npm three@0.187.0, MIT),
 #define SNELL_ENGINE_BLUR_GODOT 4
 #define SNELL_ENGINE_BLUR_COUNT 5
 
+/* uv clamped to [0,1]^2, a NaN component 0: clamp of a NaN differs between GPUs and GLM. */
+#define SNELL_ENGINE_BLUR_UV(uv) vec2(isnan((uv).x) ? 0.0f : clamp((uv).x, 0.0f, 1.0f), isnan((uv).y) ? 0.0f : clamp((uv).y, 0.0f, 1.0f))
+
 struct SnellEngineBlurRead {
   vec3 color;
   int fetches;
@@ -169,6 +174,7 @@ SNELL_FN float snellEngineBlurLod(int blur, float roughness, float ior, int leve
 
 /* three.js textureBicubic: the cubic B-spline of two mip levels, 4 bilinear reads each, mixed by fract(lod) */
 SNELL_FN SnellEngineBlurRead snellEngineBicubicMips(SNELL_TEX2D sceneColor, vec2 uv, float lod, int levels) {
+  vec2 c0 = SNELL_ENGINE_BLUR_UV(uv);
   int last = max(levels, 1) - 1;
   float l = isnan(lod) ? 0.0f : clamp(lod, 0.0f, float(last));
   int a = int(floor(l));
@@ -181,7 +187,7 @@ SNELL_FN SnellEngineBlurRead snellEngineBicubicMips(SNELL_TEX2D sceneColor, vec2
     ivec2 si = SNELL_TEXTURE_SIZE(sceneColor, k == 0 ? a : sizeB);
     vec2 s = vec2(float(si.x), float(si.y));
     vec2 inv = vec2(1.0f / s.x, 1.0f / s.y);
-    vec2 x = uv * s + vec2(0.5f, 0.5f);
+    vec2 x = c0 * s + vec2(0.5f, 0.5f);
     vec2 i = floor(x);
     vec2 f = x - i;
     // The B-spline's four weights per axis, then its two halves' weights g and offsets h.
@@ -211,7 +217,7 @@ SNELL_FN SnellEngineBlurRead snellEngineBicubicMips(SNELL_TEX2D sceneColor, vec2
 
 /* The read every blur makes on smooth glass: one texel read at level 0 */
 SNELL_FN SnellEngineBlurRead snellEngineSmoothRead(SNELL_TEX2D sceneColor, vec2 uv) {
-  vec4 c = SNELL_SAMPLE_LOD(sceneColor, clamp(uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f)), 0.0f);
+  vec4 c = SNELL_SAMPLE_LOD(sceneColor, SNELL_ENGINE_BLUR_UV(uv), 0.0f);
   SnellEngineBlurRead r;
   r.color = vec3(c.x, c.y, c.z);
   r.fetches = 1;
@@ -221,7 +227,7 @@ SNELL_FN SnellEngineBlurRead snellEngineSmoothRead(SNELL_TEX2D sceneColor, vec2 
 /* Bevy fetch_transmissive_background: spiral taps at level 0 (frame 0 of its noise) */
 SNELL_FN SnellEngineBlurRead snellEngineBevyBlur(SNELL_TEX2D sceneColor, vec2 uv, float roughness, float ior,
                                                  float viewZ, vec2 pixel, int taps) {
-  vec2 c0 = clamp(uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  vec2 c0 = SNELL_ENGINE_BLUR_UV(uv);
   bool rough = !isnan(roughness) && roughness > 0.0f && !isnan(ior) && SNELL_FINITE(ior) && ior > 0.0f;
   float s = rough ? min(roughness, 1.0f) * clamp(2.0f * ior - 2.0f, 0.0f, 1.0f) : 0.0f;
   if (!(s > 0.0f) || isnan(viewZ) || !SNELL_FINITE(viewZ) || viewZ == 0.0f) {
@@ -282,7 +288,7 @@ SNELL_FN SnellEngineBlurRead snellEngineBevyBlur(SNELL_TEX2D sceneColor, vec2 uv
 /* The scene colour an engine reads at uv for a material of that roughness and ior */
 SNELL_FN SnellEngineBlurRead snellEngineBlurRead(int blur, SNELL_TEX2D sceneColor, vec2 uv, float roughness, float ior,
                                                  vec3 p, mat4 clipFromView, int levels) {
-  vec2 c0 = clamp(uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
+  vec2 c0 = SNELL_ENGINE_BLUR_UV(uv);
   ivec2 si = SNELL_TEXTURE_SIZE(sceneColor, 0);
   vec2 size = vec2(float(si.x), float(si.y));
   if (blur == SNELL_ENGINE_BLUR_BEVY) {
