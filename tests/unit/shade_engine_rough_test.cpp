@@ -34,7 +34,7 @@ mat4 projection(float fovyDegrees) { return glm::perspective(glm::radians(fovyDe
 // A W x H chain of `levels` levels whose texels are random in every level (not a box filter of the one above), so
 // a read from the wrong level or the wrong texel shows.
 Texture2D randomChain(int w, int h, int levels, std::uint64_t seed) {
-  snell_test::Rng g(seed);
+  snell_test::Rng g(static_cast<std::uint32_t>(seed));
   auto level = [&](int lw, int lh) {
     snell::Image im(lw, lh);
     for (auto& t : im.texels) t = vec4(g.uniform(0.0f, 1.0f), g.uniform(0.0f, 1.0f), g.uniform(0.0f, 1.0f), 1.0f);
@@ -50,8 +50,8 @@ Texture2D smoothPicture(int w, int h) {
   snell::Image im(w, h);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      im.at(x, y) = vec4(0.5f + 0.4f * std::sin(0.21f * x + 0.05f * y), 0.5f + 0.4f * std::cos(0.13f * y),
-                         0.5f + 0.3f * std::sin(0.07f * (x + y)), 1.0f);
+      im.at(x, y) = vec4(0.5f + 0.4f * std::sin(0.21f * float(x) + 0.05f * float(y)),
+                         0.5f + 0.4f * std::cos(0.13f * float(y)), 0.5f + 0.3f * std::sin(0.07f * float(x + y)), 1.0f);
   Texture2D t(im, snell::Filter::Linear, snell::MipFilter::Linear);
   t.generateMipmaps();
   return t;
@@ -152,8 +152,8 @@ TEST(EngineBicubicMips, IsTheBSplineOfTwoLevelsMixedByTheLodsFraction) {
     const int a = int(std::floor(l)), b = std::min(int(std::ceil(l)), 4);
     const double f = l - a;
     // The centre is clamped to the image first (the contract), the B-spline's taps then reach past it.
-    const dvec2 c(std::clamp(double(uv.x), 0.0, 1.0), std::clamp(double(uv.y), 0.0, 1.0));
-    const dvec3 want = (1.0 - f) * bsplineLevel(t.level(a), c) + f * bsplineLevel(t.level(b), c);
+    const dvec2 centre(std::clamp(double(uv.x), 0.0, 1.0), std::clamp(double(uv.y), 0.0, 1.0));
+    const dvec3 want = (1.0 - f) * bsplineLevel(t.level(a), centre) + f * bsplineLevel(t.level(b), centre);
     const SnellEngineBlurRead got = snell::snellEngineBicubicMips(t, uv, lod, 5);
     EXPECT_EQ(got.fetches, 8);
     for (int c = 0; c < 3; ++c)
