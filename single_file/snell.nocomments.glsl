@@ -2976,6 +2976,200 @@ SNELL_FN float snellRoughnessToLod(float roughness, int levels) {
 
 #endif
 
+#ifndef SNELL_SHADE_ROUGH_CONE_GLSL
+#define SNELL_SHADE_ROUGH_CONE_GLSL
+
+#ifndef SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
+#define SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
+
+#define SNELL_SOURCE_ENVIRONMENT 0
+#define SNELL_SOURCE_BUFFERS 1
+#define SNELL_SOURCE_WYMAN 2
+
+#define SNELL_FALLBACK_ENVIRONMENT 0
+#define SNELL_FALLBACK_EDGE_FADE 1
+
+struct SnellSlot {
+  int source;
+  SnellIntersectOptions intersect;
+  int fallback;
+  float fallbackDistance;
+  float edgeFadeWidth;
+};
+
+#ifndef SNELL_MAX_BOUNCES
+#  define SNELL_MAX_BOUNCES 4
+#endif
+
+struct SnellTechnique {
+  SnellSlot back;
+  SnellSlot exit;
+  SnellSlot reflect;
+  SnellSlot inside;
+  int bounces;
+  bool insideScene;
+};
+
+struct SnellMaterial {
+  float ior;
+  float iorOutside;
+  int dispersion;
+  vec3 iors;
+  vec3 absorption;
+  int tirPolicy;
+  bool reflection;
+  float roughness;
+};
+
+struct SnellView {
+  vec3 envX;
+  vec3 envY;
+  vec3 envZ;
+  int sceneColorLevels;
+  int environmentLevels;
+};
+
+SNELL_FN SnellSlot snellSlot(int source, int strategy) {
+  SnellSlot s;
+  s.source = source;
+  s.intersect = snellIntersectOptions(strategy);
+  s.fallback = SNELL_FALLBACK_ENVIRONMENT;
+  s.fallbackDistance = 1.0f;
+  s.edgeFadeWidth = 0.1f;
+  return s;
+}
+
+SNELL_FN SnellTechnique snellTechnique() {
+  SnellTechnique t;
+  t.back = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_CBS);
+  t.exit = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_PLANE_NORMAL);
+  t.reflect = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_LINEAR_MARCH);
+  t.inside = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_LINEAR_MARCH);
+  t.bounces = 0;
+  t.insideScene = false;
+  return t;
+}
+
+SNELL_FN SnellMaterial snellMaterial() {
+  SnellMaterial m;
+  m.ior = 1.5f;
+  m.iorOutside = 1.0f;
+  m.dispersion = 1;
+  m.iors = vec3(1.5f, 1.5f, 1.5f);
+  m.absorption = vec3(0.0f, 0.0f, 0.0f);
+  m.tirPolicy = SNELL_TIR_CRITICAL;
+  m.reflection = true;
+  m.roughness = 0.0f;
+  return m;
+}
+
+SNELL_FN SnellView snellView() {
+  SnellView v;
+  v.envX = vec3(1.0f, 0.0f, 0.0f);
+  v.envY = vec3(0.0f, 1.0f, 0.0f);
+  v.envZ = vec3(0.0f, 0.0f, 1.0f);
+  v.sceneColorLevels = 1;
+  v.environmentLevels = 1;
+  return v;
+}
+
+#endif
+
+#ifndef SNELL_ROUGH_CONE_LOD_SCALE
+#  define SNELL_ROUGH_CONE_LOD_SCALE 3.0f
+#endif
+
+struct SnellRoughCone {
+  float radius;
+  float angle;
+  float exitAngle;
+};
+
+SNELL_FN float snellRoughConeSlope(float roughness) {
+  float r = isnan(roughness) ? 0.0f : clamp(roughness, 0.0f, 1.0f);
+  return r * r;
+}
+
+SNELL_FN SnellRoughCone snellRoughConeTransmit(float roughness, float eta, float insideLength, int bounces) {
+  float s = snellRoughConeSlope(roughness);
+  float e = (eta >= 1e-6f && eta <= 1e6f) ? eta : 1.0f;
+  float len = (insideLength > 0.0f && insideLength < SNELL_FLT_MAX) ? insideLength : 0.0f;
+  int b = clamp(bounces, 0, SNELL_MAX_BOUNCES);
+  float a = s * sqrt((1.0f - e) * (1.0f - e) + 4.0f * float(b));
+  SnellRoughCone c;
+  c.radius = min(a * len, SNELL_FLT_MAX);
+  c.angle = min(a / e, SNELL_FLT_MAX);
+  c.exitAngle = min(s * abs(1.0f / e - 1.0f), SNELL_FLT_MAX);
+  return c;
+}
+
+SNELL_FN SnellRoughCone snellRoughConeReflect(float roughness) {
+  SnellRoughCone c;
+  c.radius = 0.0f;
+  c.angle = 2.0f * snellRoughConeSlope(roughness);
+  c.exitAngle = 0.0f;
+  return c;
+}
+
+SNELL_FN float snellRoughConeMeasure(float x) {
+  return x > 0.0f ? min(x, SNELL_FLT_MAX) : 0.0f;
+}
+
+SNELL_FN float snellRoughConeHypot(float x, float y) {
+  float a = snellRoughConeMeasure(x);
+  float b = snellRoughConeMeasure(y);
+  float hi = max(a, b);
+  if (!(hi > 0.0f)) {
+    return 0.0f;
+  }
+  float q = min(a, b) / hi;
+  return min(hi * sqrt(1.0f + q * q), SNELL_FLT_MAX);
+}
+
+SNELL_FN float snellRoughConeRadius(SNELL_IN(SnellRoughCone) c, float distance) {
+  float d = snellRoughConeMeasure(distance);
+  float carried = min(snellRoughConeMeasure(c.radius) + min(snellRoughConeMeasure(c.angle) * d, SNELL_FLT_MAX),
+                      SNELL_FLT_MAX);
+  return snellRoughConeHypot(carried, snellRoughConeMeasure(c.exitAngle) * d);
+}
+
+SNELL_FN float snellRoughConeLevel(float radius, float texelsPerUnit, int levels) {
+  if (levels <= 1 || !(radius > 0.0f) || !(texelsPerUnit > 0.0f)) {
+    return 0.0f;
+  }
+  float lod = log2(SNELL_ROUGH_CONE_LOD_SCALE) + log2(clamp(radius, SNELL_FLT_MIN, SNELL_FLT_MAX)) +
+              log2(clamp(texelsPerUnit, SNELL_FLT_MIN, SNELL_FLT_MAX));
+  return clamp(lod, 0.0f, float(levels - 1));
+}
+
+SNELL_FN float snellRoughConeSceneLod(SNELL_IN(SnellRoughCone) c, float distance, vec3 p, mat4 clipFromView,
+                                      ivec2 size, int levels) {
+  float radius = levels > 1 ? snellRoughConeRadius(c, distance) : 0.0f;
+  if (!(radius > 0.0f)) {
+    return 0.0f;
+  }
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z)) {
+    return 0.0f;
+  }
+  vec4 clip = SNELL_MUL(clipFromView, vec4(p, 1.0f));
+  if (!(clip.w > 0.0f) || !(clip.w < SNELL_FLT_MAX)) {
+    return 0.0f;
+  }
+  float span = float(size.x) * abs(clipFromView[0][0]) + float(size.y) * abs(clipFromView[1][1]);
+  float texelsPerUnit = min(span / (4.0f * clip.w), SNELL_FLT_MAX);
+  return snellRoughConeLevel(radius, texelsPerUnit, levels);
+}
+
+SNELL_FN float snellRoughConeEnvironmentLod(SNELL_IN(SnellRoughCone) c, int levels) {
+  if (levels <= 1) {
+    return 0.0f;
+  }
+  float texelsPerRadian = exp2(float(min(levels - 1, 100))) / (2.0f * SNELL_PI);
+  return snellRoughConeLevel(snellRoughConeHypot(c.angle, c.exitAngle), texelsPerRadian, levels);
+}
+
+#endif
+
 #ifndef SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
 #define SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
 
@@ -3097,102 +3291,6 @@ SNELL_FN vec2 snellEquirectUv(vec3 dir) {
 
 SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
   return SNELL_SAMPLE_LOD(env, snellEquirectUv(dir), lod);
-}
-
-#endif
-
-#ifndef SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
-#define SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
-
-#define SNELL_SOURCE_ENVIRONMENT 0
-#define SNELL_SOURCE_BUFFERS 1
-#define SNELL_SOURCE_WYMAN 2
-
-#define SNELL_FALLBACK_ENVIRONMENT 0
-#define SNELL_FALLBACK_EDGE_FADE 1
-
-struct SnellSlot {
-  int source;
-  SnellIntersectOptions intersect;
-  int fallback;
-  float fallbackDistance;
-  float edgeFadeWidth;
-};
-
-#ifndef SNELL_MAX_BOUNCES
-#  define SNELL_MAX_BOUNCES 4
-#endif
-
-struct SnellTechnique {
-  SnellSlot back;
-  SnellSlot exit;
-  SnellSlot reflect;
-  SnellSlot inside;
-  int bounces;
-  bool insideScene;
-};
-
-struct SnellMaterial {
-  float ior;
-  float iorOutside;
-  int dispersion;
-  vec3 iors;
-  vec3 absorption;
-  int tirPolicy;
-  bool reflection;
-  float roughness;
-};
-
-struct SnellView {
-  vec3 envX;
-  vec3 envY;
-  vec3 envZ;
-  int sceneColorLevels;
-  int environmentLevels;
-};
-
-SNELL_FN SnellSlot snellSlot(int source, int strategy) {
-  SnellSlot s;
-  s.source = source;
-  s.intersect = snellIntersectOptions(strategy);
-  s.fallback = SNELL_FALLBACK_ENVIRONMENT;
-  s.fallbackDistance = 1.0f;
-  s.edgeFadeWidth = 0.1f;
-  return s;
-}
-
-SNELL_FN SnellTechnique snellTechnique() {
-  SnellTechnique t;
-  t.back = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_CBS);
-  t.exit = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_PLANE_NORMAL);
-  t.reflect = snellSlot(SNELL_SOURCE_ENVIRONMENT, SNELL_STRATEGY_LINEAR_MARCH);
-  t.inside = snellSlot(SNELL_SOURCE_BUFFERS, SNELL_STRATEGY_LINEAR_MARCH);
-  t.bounces = 0;
-  t.insideScene = false;
-  return t;
-}
-
-SNELL_FN SnellMaterial snellMaterial() {
-  SnellMaterial m;
-  m.ior = 1.5f;
-  m.iorOutside = 1.0f;
-  m.dispersion = 1;
-  m.iors = vec3(1.5f, 1.5f, 1.5f);
-  m.absorption = vec3(0.0f, 0.0f, 0.0f);
-  m.tirPolicy = SNELL_TIR_CRITICAL;
-  m.reflection = true;
-  m.roughness = 0.0f;
-  return m;
-}
-
-SNELL_FN SnellView snellView() {
-  SnellView v;
-  v.envX = vec3(1.0f, 0.0f, 0.0f);
-  v.envY = vec3(0.0f, 1.0f, 0.0f);
-  v.envZ = vec3(0.0f, 0.0f, 1.0f);
-  v.sceneColorLevels = 1;
-  v.environmentLevels = 1;
-  return v;
 }
 
 #endif
@@ -3537,9 +3635,9 @@ struct SnellTwoInterfaceResult {
   bool insideHit;
 };
 
-SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_SCENE_BUFFERS,
-                                                     SNELL_IN(SnellSlot) slot, SNELL_IN(SnellMaterial) m,
-                                                     SNELL_IN(SnellView) v) {
+SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExitRough(vec3 origin, vec3 dir, SNELL_IN(SnellRoughCone) cone,
+                                                          SNELL_SCENE_BUFFERS, SNELL_IN(SnellSlot) slot,
+                                                          SNELL_IN(SnellView) v) {
   SnellTwoInterfaceExit e;
   e.color = vec3(0.0f, 0.0f, 0.0f);
   e.hit = snellHitMiss(0);
@@ -3550,15 +3648,17 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
       !SNELL_FINITE(origin.z)) {
     return e;
   }
-  float envLod = snellRoughnessToLod(m.roughness, v.environmentLevels);
-  float sceneLod = snellRoughnessToLod(m.roughness, v.sceneColorLevels);
+  float envLod = snellRoughConeEnvironmentLod(cone, v.environmentLevels);
+  ivec2 colorSize = SNELL_TEXTURE_SIZE(sceneColor, 0);
   vec3 world = d.x * v.envX + d.y * v.envY + d.z * v.envZ;
   if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
     e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, slot.intersect);
     e.hit = snellRejectForeground(e.hit, origin, sceneDepth, scene, SNELL_FOREGROUND_TOLERANCE);
     e.fetches = e.hit.fetches;
     if (e.hit.valid) {
-      vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);
+      float lod = snellRoughConeSceneLod(cone, length(e.hit.position - origin), e.hit.position, scene.clipFromView,
+                                         colorSize, v.sceneColorLevels);
+      vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, lod);
       e.color = vec3(c.x, c.y, c.z);
       e.fetches = e.fetches + 1;
       e.fellBack = false;
@@ -3568,11 +3668,14 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
     e.fetches = e.fetches + 1;
     e.color = vec3(env.x, env.y, env.z);
     if (slot.fallback == SNELL_FALLBACK_EDGE_FADE) {
-      SnellScreenPoint sp = snellViewToUv(scene.clipFromView, origin + slot.fallbackDistance * d);
+      vec3 q = origin + slot.fallbackDistance * d;
+      SnellScreenPoint sp = snellViewToUv(scene.clipFromView, q);
       float w = sp.valid ? snellScreenEdgeFade(sp.uv, slot.edgeFadeWidth) : 0.0f;
       if (w > 0.0f) {
         vec2 uv = clamp(sp.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
-        vec4 c = SNELL_SAMPLE_LOD(sceneColor, uv, sceneLod);
+        float lod = snellRoughConeSceneLod(cone, slot.fallbackDistance, q, scene.clipFromView, colorSize,
+                                           v.sceneColorLevels);
+        vec4 c = SNELL_SAMPLE_LOD(sceneColor, uv, lod);
         e.fetches = e.fetches + 1;
         e.color = mix(e.color, vec3(c.x, c.y, c.z), w);
       }
@@ -3584,6 +3687,13 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
   e.fetches = 1;
   e.fellBack = false;
   return e;
+}
+
+SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_SCENE_BUFFERS,
+                                                     SNELL_IN(SnellSlot) slot, SNELL_IN(SnellMaterial) m,
+                                                     SNELL_IN(SnellView) v) {
+  SnellRoughCone cone = snellRoughConeTransmit(m.roughness, snellIorToEta(m.iorOutside, m.ior), 0.0f, 0);
+  return snellTwoInterfaceExitRough(origin, dir, cone, SNELL_SCENE_BUFFER_ARGS, slot, v);
 }
 
 SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition, vec3 frontNormal, float dN,
@@ -3630,15 +3740,21 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     if (t.bounces > 0 && p.exitFront) {
       leave = t.reflect;
     }
+    SnellRoughCone cone = snellRoughConeTransmit(m.roughness, etaK, p.pathLength, p.bounces);
     SnellTwoInterfaceExit e;
     if (inside) {
-      vec4 c = SNELL_SAMPLE_LOD(sceneColor, ih.uv, snellRoughnessToLod(m.roughness, v.sceneColorLevels));
+      SnellRoughCone entry = cone;
+      entry.angle = 0.0f;
+      entry.exitAngle = 0.0f;
+      float lod = snellRoughConeSceneLod(entry, 0.0f, ih.position, scene.clipFromView,
+                                         SNELL_TEXTURE_SIZE(sceneColor, 0), v.sceneColorLevels);
+      vec4 c = SNELL_SAMPLE_LOD(sceneColor, ih.uv, lod);
       e.color = vec3(c.x, c.y, c.z);
       e.hit = ih;
       e.fellBack = false;
       e.fetches = 1;
     } else {
-      e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, leave, m, v);
+      e = snellTwoInterfaceExitRough(p.exitPoint, p.exitDirection, cone, SNELL_SCENE_BUFFER_ARGS, leave, v);
     }
     vec3 c = e.color * snellBeerLambert(m.absorption, p.pathLength);
     bool fellBack = p.fellBack || (e.fellBack && !p.exitFront);
@@ -3672,8 +3788,9 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   vec3 n1 = snellSafeNormalize(frontNormal);
   if (m.reflection && dot(vv, vv) > 0.0f && dot(n1, n1) > 0.0f) {
     float f = snellFresnelDielectric(dot(vv, n1), eta);
-    SnellTwoInterfaceExit re =
-        snellTwoInterfaceExit(frontPosition, reflect(vv, n1), SNELL_SCENE_BUFFER_ARGS, t.reflect, m, v);
+    SnellTwoInterfaceExit re = snellTwoInterfaceExitRough(frontPosition, reflect(vv, n1),
+                                                          snellRoughConeReflect(m.roughness),
+                                                          SNELL_SCENE_BUFFER_ARGS, t.reflect, v);
     r.reflectionHit = re.hit;
     r.fetches = r.fetches + re.fetches;
     r.fresnel = f;
@@ -4040,6 +4157,9 @@ SNELL_FN SnellEngineBlurRead snellEngineBevyBlur(SNELL_TEX2D sceneColor, vec2 uv
   float scale = b * (1.0f - 0.1f * checker);
   vec3 sum = vec3(0.0f, 0.0f, 0.0f);
   for (int i = 0; i < 32; ++i) {
+    if (i >= n) {
+      continue;
+    }
     int k = i >> 3;
     int j = i & 7;
     vec2 o = vec2(-0.7071f, 0.7071f);
@@ -4066,9 +4186,6 @@ SNELL_FN SnellEngineBlurRead snellEngineBevyBlur(SNELL_TEX2D sceneColor, vec2 uv
     vec2 tap = clamp(c0 + vec2(d.x, -d.y), vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
     vec4 c = SNELL_SAMPLE_LOD(sceneColor, tap, 0.0f);
     sum = sum + vec3(c.x, c.y, c.z);
-    if (i + 1 >= n) {
-      break;
-    }
   }
   SnellEngineBlurRead r;
   r.color = sum / float(n);

@@ -784,130 +784,8 @@ SNELL_FN float snellRoughnessToLod(float roughness, int levels) {
 
 #endif
 
-#ifndef SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
-#define SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
-
-struct SnellCubeFace {
-  int face;
-  vec2 uv;
-  bool valid;
-};
-
-SNELL_FN SnellCubeFace snellCubeFaceUv(vec3 dir) {
-  SnellCubeFace r;
-  r.face = 0;
-  r.uv = vec2(0.5f, 0.5f);
-  r.valid = false;
-  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
-    return r;
-  }
-  float ax = abs(dir.x);
-  float ay = abs(dir.y);
-  float az = abs(dir.z);
-  float sc = 0.0f;
-  float tc = 0.0f;
-  float ma = 0.0f;
-  if (ax >= ay && ax >= az) {
-    ma = ax;
-    r.face = dir.x >= 0.0f ? 0 : 1;
-    sc = dir.x >= 0.0f ? -dir.z : dir.z;
-    tc = -dir.y;
-  } else if (ay >= az) {
-    ma = ay;
-    r.face = dir.y >= 0.0f ? 2 : 3;
-    sc = dir.x;
-    tc = dir.y >= 0.0f ? dir.z : -dir.z;
-  } else {
-    ma = az;
-    r.face = dir.z >= 0.0f ? 4 : 5;
-    sc = dir.z >= 0.0f ? dir.x : -dir.x;
-    tc = -dir.y;
-  }
-  if (!(ma >= SNELL_FLT_MIN)) {
-    r.face = 0;
-    return r;
-  }
-  r.uv = vec2(0.5f * (sc / ma + 1.0f), 0.5f * (tc / ma + 1.0f));
-  r.valid = true;
-  return r;
-}
-
-#endif
-
-#ifndef SNELL_SHADE_ENVIRONMENT_GLSL
-#define SNELL_SHADE_ENVIRONMENT_GLSL
-
-#if defined(SNELL_LANG_GLSL)
-#  ifndef SNELL_TEXCUBE
-#    define SNELL_TEXCUBE samplerCube
-#  endif
-#  ifndef SNELL_SAMPLE_CUBE_LOD
-#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) textureLod(tex, dir, lod)
-#  endif
-#elif defined(SNELL_LANG_HLSL)
-#  ifndef SNELL_TEXCUBE
-#    define SNELL_TEXCUBE TextureCube<float4>
-#  endif
-#  ifndef SNELL_SAMPLE_CUBE_LOD
-#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) ((tex).SampleLevel(SNELL_HLSL_SAMPLER, dir, lod))
-#  endif
-#else
-#  ifndef SNELL_TEXCUBE
-#    define SNELL_TEXCUBE const ::snell::TextureCube&
-#  endif
-#  ifndef SNELL_SAMPLE_CUBE_LOD
-#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) ((tex).sampleLod(dir, lod))
-#  endif
-#endif
-
-#ifndef SNELL_ENVIRONMENT_TEX
-#  define SNELL_ENVIRONMENT_TEX SNELL_TEX2D
-#endif
-#ifndef SNELL_SAMPLE_ENVIRONMENT
-#  define SNELL_SAMPLE_ENVIRONMENT(tex, dir, lod) snellSampleEquirect(tex, dir, lod)
-#endif
-
-SNELL_FN float snellAtan2(float y, float x) {
-  if (isnan(x) || isnan(y)) {
-    return 0.0f;
-  }
-  float ax = abs(x);
-  float ay = abs(y);
-  float hi = max(ax, ay);
-  float lo = min(ax, ay);
-  if (!(hi > 0.0f)) {
-    return 0.0f;
-  }
-  float a = isinf(hi) ? (isinf(lo) ? 1.0f : 0.0f) : lo / hi;
-  float s = a * a;
-  float r = a * (0.9998660f + s * (-0.3302995f + s * (0.1801410f + s * (-0.0851330f + s * 0.0208351f))));
-  if (ay > ax) {
-    r = 1.57079632679f - r;
-  }
-  if (x < 0.0f) {
-    r = 3.14159265359f - r;
-  }
-  if (y < 0.0f) {
-    r = -r;
-  }
-  return r;
-}
-
-SNELL_FN vec2 snellEquirectUv(vec3 dir) {
-  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
-    return vec2(0.5f, 0.5f);
-  }
-  float horizontal = sqrt(dir.x * dir.x + dir.z * dir.z);
-  float u = 0.5f + snellAtan2(dir.x, -dir.z) * (0.5f / SNELL_PI);
-  float v = 0.5f + snellAtan2(dir.y, horizontal) * (1.0f / SNELL_PI);
-  return vec2(u, v);
-}
-
-SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
-  return SNELL_SAMPLE_LOD(env, snellEquirectUv(dir), lod);
-}
-
-#endif
+#ifndef SNELL_SHADE_ROUGH_CONE_GLSL
+#define SNELL_SHADE_ROUGH_CONE_GLSL
 
 #ifndef SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
 #define SNELL_SHADE_TECHNIQUE_OPTIONS_GLSL
@@ -2636,6 +2514,226 @@ SNELL_FN SnellView snellView() {
 
 #endif
 
+#ifndef SNELL_ROUGH_CONE_LOD_SCALE
+#  define SNELL_ROUGH_CONE_LOD_SCALE 3.0f
+#endif
+
+struct SnellRoughCone {
+  float radius;
+  float angle;
+  float exitAngle;
+};
+
+SNELL_FN float snellRoughConeSlope(float roughness) {
+  float r = isnan(roughness) ? 0.0f : clamp(roughness, 0.0f, 1.0f);
+  return r * r;
+}
+
+SNELL_FN SnellRoughCone snellRoughConeTransmit(float roughness, float eta, float insideLength, int bounces) {
+  float s = snellRoughConeSlope(roughness);
+  float e = (eta >= 1e-6f && eta <= 1e6f) ? eta : 1.0f;
+  float len = (insideLength > 0.0f && insideLength < SNELL_FLT_MAX) ? insideLength : 0.0f;
+  int b = clamp(bounces, 0, SNELL_MAX_BOUNCES);
+  float a = s * sqrt((1.0f - e) * (1.0f - e) + 4.0f * float(b));
+  SnellRoughCone c;
+  c.radius = min(a * len, SNELL_FLT_MAX);
+  c.angle = min(a / e, SNELL_FLT_MAX);
+  c.exitAngle = min(s * abs(1.0f / e - 1.0f), SNELL_FLT_MAX);
+  return c;
+}
+
+SNELL_FN SnellRoughCone snellRoughConeReflect(float roughness) {
+  SnellRoughCone c;
+  c.radius = 0.0f;
+  c.angle = 2.0f * snellRoughConeSlope(roughness);
+  c.exitAngle = 0.0f;
+  return c;
+}
+
+SNELL_FN float snellRoughConeMeasure(float x) {
+  return x > 0.0f ? min(x, SNELL_FLT_MAX) : 0.0f;
+}
+
+SNELL_FN float snellRoughConeHypot(float x, float y) {
+  float a = snellRoughConeMeasure(x);
+  float b = snellRoughConeMeasure(y);
+  float hi = max(a, b);
+  if (!(hi > 0.0f)) {
+    return 0.0f;
+  }
+  float q = min(a, b) / hi;
+  return min(hi * sqrt(1.0f + q * q), SNELL_FLT_MAX);
+}
+
+SNELL_FN float snellRoughConeRadius(SNELL_IN(SnellRoughCone) c, float distance) {
+  float d = snellRoughConeMeasure(distance);
+  float carried = min(snellRoughConeMeasure(c.radius) + min(snellRoughConeMeasure(c.angle) * d, SNELL_FLT_MAX),
+                      SNELL_FLT_MAX);
+  return snellRoughConeHypot(carried, snellRoughConeMeasure(c.exitAngle) * d);
+}
+
+SNELL_FN float snellRoughConeLevel(float radius, float texelsPerUnit, int levels) {
+  if (levels <= 1 || !(radius > 0.0f) || !(texelsPerUnit > 0.0f)) {
+    return 0.0f;
+  }
+  float lod = log2(SNELL_ROUGH_CONE_LOD_SCALE) + log2(clamp(radius, SNELL_FLT_MIN, SNELL_FLT_MAX)) +
+              log2(clamp(texelsPerUnit, SNELL_FLT_MIN, SNELL_FLT_MAX));
+  return clamp(lod, 0.0f, float(levels - 1));
+}
+
+SNELL_FN float snellRoughConeSceneLod(SNELL_IN(SnellRoughCone) c, float distance, vec3 p, mat4 clipFromView,
+                                      ivec2 size, int levels) {
+  float radius = levels > 1 ? snellRoughConeRadius(c, distance) : 0.0f;
+  if (!(radius > 0.0f)) {
+    return 0.0f;
+  }
+  if (!SNELL_FINITE(p.x) || !SNELL_FINITE(p.y) || !SNELL_FINITE(p.z)) {
+    return 0.0f;
+  }
+  vec4 clip = SNELL_MUL(clipFromView, vec4(p, 1.0f));
+  if (!(clip.w > 0.0f) || !(clip.w < SNELL_FLT_MAX)) {
+    return 0.0f;
+  }
+  float span = float(size.x) * abs(clipFromView[0][0]) + float(size.y) * abs(clipFromView[1][1]);
+  float texelsPerUnit = min(span / (4.0f * clip.w), SNELL_FLT_MAX);
+  return snellRoughConeLevel(radius, texelsPerUnit, levels);
+}
+
+SNELL_FN float snellRoughConeEnvironmentLod(SNELL_IN(SnellRoughCone) c, int levels) {
+  if (levels <= 1) {
+    return 0.0f;
+  }
+  float texelsPerRadian = exp2(float(min(levels - 1, 100))) / (2.0f * SNELL_PI);
+  return snellRoughConeLevel(snellRoughConeHypot(c.angle, c.exitAngle), texelsPerRadian, levels);
+}
+
+#endif
+
+#ifndef SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
+#define SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
+
+struct SnellCubeFace {
+  int face;
+  vec2 uv;
+  bool valid;
+};
+
+SNELL_FN SnellCubeFace snellCubeFaceUv(vec3 dir) {
+  SnellCubeFace r;
+  r.face = 0;
+  r.uv = vec2(0.5f, 0.5f);
+  r.valid = false;
+  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
+    return r;
+  }
+  float ax = abs(dir.x);
+  float ay = abs(dir.y);
+  float az = abs(dir.z);
+  float sc = 0.0f;
+  float tc = 0.0f;
+  float ma = 0.0f;
+  if (ax >= ay && ax >= az) {
+    ma = ax;
+    r.face = dir.x >= 0.0f ? 0 : 1;
+    sc = dir.x >= 0.0f ? -dir.z : dir.z;
+    tc = -dir.y;
+  } else if (ay >= az) {
+    ma = ay;
+    r.face = dir.y >= 0.0f ? 2 : 3;
+    sc = dir.x;
+    tc = dir.y >= 0.0f ? dir.z : -dir.z;
+  } else {
+    ma = az;
+    r.face = dir.z >= 0.0f ? 4 : 5;
+    sc = dir.z >= 0.0f ? dir.x : -dir.x;
+    tc = -dir.y;
+  }
+  if (!(ma >= SNELL_FLT_MIN)) {
+    r.face = 0;
+    return r;
+  }
+  r.uv = vec2(0.5f * (sc / ma + 1.0f), 0.5f * (tc / ma + 1.0f));
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+#ifndef SNELL_SHADE_ENVIRONMENT_GLSL
+#define SNELL_SHADE_ENVIRONMENT_GLSL
+
+#if defined(SNELL_LANG_GLSL)
+#  ifndef SNELL_TEXCUBE
+#    define SNELL_TEXCUBE samplerCube
+#  endif
+#  ifndef SNELL_SAMPLE_CUBE_LOD
+#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) textureLod(tex, dir, lod)
+#  endif
+#elif defined(SNELL_LANG_HLSL)
+#  ifndef SNELL_TEXCUBE
+#    define SNELL_TEXCUBE TextureCube<float4>
+#  endif
+#  ifndef SNELL_SAMPLE_CUBE_LOD
+#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) ((tex).SampleLevel(SNELL_HLSL_SAMPLER, dir, lod))
+#  endif
+#else
+#  ifndef SNELL_TEXCUBE
+#    define SNELL_TEXCUBE const ::snell::TextureCube&
+#  endif
+#  ifndef SNELL_SAMPLE_CUBE_LOD
+#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) ((tex).sampleLod(dir, lod))
+#  endif
+#endif
+
+#ifndef SNELL_ENVIRONMENT_TEX
+#  define SNELL_ENVIRONMENT_TEX SNELL_TEX2D
+#endif
+#ifndef SNELL_SAMPLE_ENVIRONMENT
+#  define SNELL_SAMPLE_ENVIRONMENT(tex, dir, lod) snellSampleEquirect(tex, dir, lod)
+#endif
+
+SNELL_FN float snellAtan2(float y, float x) {
+  if (isnan(x) || isnan(y)) {
+    return 0.0f;
+  }
+  float ax = abs(x);
+  float ay = abs(y);
+  float hi = max(ax, ay);
+  float lo = min(ax, ay);
+  if (!(hi > 0.0f)) {
+    return 0.0f;
+  }
+  float a = isinf(hi) ? (isinf(lo) ? 1.0f : 0.0f) : lo / hi;
+  float s = a * a;
+  float r = a * (0.9998660f + s * (-0.3302995f + s * (0.1801410f + s * (-0.0851330f + s * 0.0208351f))));
+  if (ay > ax) {
+    r = 1.57079632679f - r;
+  }
+  if (x < 0.0f) {
+    r = 3.14159265359f - r;
+  }
+  if (y < 0.0f) {
+    r = -r;
+  }
+  return r;
+}
+
+SNELL_FN vec2 snellEquirectUv(vec3 dir) {
+  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
+    return vec2(0.5f, 0.5f);
+  }
+  float horizontal = sqrt(dir.x * dir.x + dir.z * dir.z);
+  float u = 0.5f + snellAtan2(dir.x, -dir.z) * (0.5f / SNELL_PI);
+  float v = 0.5f + snellAtan2(dir.y, horizontal) * (1.0f / SNELL_PI);
+  return vec2(u, v);
+}
+
+SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
+  return SNELL_SAMPLE_LOD(env, snellEquirectUv(dir), lod);
+}
+
+#endif
+
 #ifndef SNELL_SHADE_TECHNIQUE_BUFFERS_GLSL
 #define SNELL_SHADE_TECHNIQUE_BUFFERS_GLSL
 
@@ -3358,9 +3456,9 @@ struct SnellTwoInterfaceResult {
   bool insideHit;
 };
 
-SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_SCENE_BUFFERS,
-                                                     SNELL_IN(SnellSlot) slot, SNELL_IN(SnellMaterial) m,
-                                                     SNELL_IN(SnellView) v) {
+SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExitRough(vec3 origin, vec3 dir, SNELL_IN(SnellRoughCone) cone,
+                                                          SNELL_SCENE_BUFFERS, SNELL_IN(SnellSlot) slot,
+                                                          SNELL_IN(SnellView) v) {
   SnellTwoInterfaceExit e;
   e.color = vec3(0.0f, 0.0f, 0.0f);
   e.hit = snellHitMiss(0);
@@ -3371,15 +3469,17 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
       !SNELL_FINITE(origin.z)) {
     return e;
   }
-  float envLod = snellRoughnessToLod(m.roughness, v.environmentLevels);
-  float sceneLod = snellRoughnessToLod(m.roughness, v.sceneColorLevels);
+  float envLod = snellRoughConeEnvironmentLod(cone, v.environmentLevels);
+  ivec2 colorSize = SNELL_TEXTURE_SIZE(sceneColor, 0);
   vec3 world = d.x * v.envX + d.y * v.envY + d.z * v.envZ;
   if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
     e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, slot.intersect);
     e.hit = snellRejectForeground(e.hit, origin, sceneDepth, scene, SNELL_FOREGROUND_TOLERANCE);
     e.fetches = e.hit.fetches;
     if (e.hit.valid) {
-      vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);
+      float lod = snellRoughConeSceneLod(cone, length(e.hit.position - origin), e.hit.position, scene.clipFromView,
+                                         colorSize, v.sceneColorLevels);
+      vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, lod);
       e.color = vec3(c.x, c.y, c.z);
       e.fetches = e.fetches + 1;
       e.fellBack = false;
@@ -3389,11 +3489,14 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
     e.fetches = e.fetches + 1;
     e.color = vec3(env.x, env.y, env.z);
     if (slot.fallback == SNELL_FALLBACK_EDGE_FADE) {
-      SnellScreenPoint sp = snellViewToUv(scene.clipFromView, origin + slot.fallbackDistance * d);
+      vec3 q = origin + slot.fallbackDistance * d;
+      SnellScreenPoint sp = snellViewToUv(scene.clipFromView, q);
       float w = sp.valid ? snellScreenEdgeFade(sp.uv, slot.edgeFadeWidth) : 0.0f;
       if (w > 0.0f) {
         vec2 uv = clamp(sp.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
-        vec4 c = SNELL_SAMPLE_LOD(sceneColor, uv, sceneLod);
+        float lod = snellRoughConeSceneLod(cone, slot.fallbackDistance, q, scene.clipFromView, colorSize,
+                                           v.sceneColorLevels);
+        vec4 c = SNELL_SAMPLE_LOD(sceneColor, uv, lod);
         e.fetches = e.fetches + 1;
         e.color = mix(e.color, vec3(c.x, c.y, c.z), w);
       }
@@ -3405,6 +3508,13 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
   e.fetches = 1;
   e.fellBack = false;
   return e;
+}
+
+SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_SCENE_BUFFERS,
+                                                     SNELL_IN(SnellSlot) slot, SNELL_IN(SnellMaterial) m,
+                                                     SNELL_IN(SnellView) v) {
+  SnellRoughCone cone = snellRoughConeTransmit(m.roughness, snellIorToEta(m.iorOutside, m.ior), 0.0f, 0);
+  return snellTwoInterfaceExitRough(origin, dir, cone, SNELL_SCENE_BUFFER_ARGS, slot, v);
 }
 
 SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition, vec3 frontNormal, float dN,
@@ -3451,15 +3561,21 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     if (t.bounces > 0 && p.exitFront) {
       leave = t.reflect;
     }
+    SnellRoughCone cone = snellRoughConeTransmit(m.roughness, etaK, p.pathLength, p.bounces);
     SnellTwoInterfaceExit e;
     if (inside) {
-      vec4 c = SNELL_SAMPLE_LOD(sceneColor, ih.uv, snellRoughnessToLod(m.roughness, v.sceneColorLevels));
+      SnellRoughCone entry = cone;
+      entry.angle = 0.0f;
+      entry.exitAngle = 0.0f;
+      float lod = snellRoughConeSceneLod(entry, 0.0f, ih.position, scene.clipFromView,
+                                         SNELL_TEXTURE_SIZE(sceneColor, 0), v.sceneColorLevels);
+      vec4 c = SNELL_SAMPLE_LOD(sceneColor, ih.uv, lod);
       e.color = vec3(c.x, c.y, c.z);
       e.hit = ih;
       e.fellBack = false;
       e.fetches = 1;
     } else {
-      e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, leave, m, v);
+      e = snellTwoInterfaceExitRough(p.exitPoint, p.exitDirection, cone, SNELL_SCENE_BUFFER_ARGS, leave, v);
     }
     vec3 c = e.color * snellBeerLambert(m.absorption, p.pathLength);
     bool fellBack = p.fellBack || (e.fellBack && !p.exitFront);
@@ -3493,8 +3609,9 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   vec3 n1 = snellSafeNormalize(frontNormal);
   if (m.reflection && dot(vv, vv) > 0.0f && dot(n1, n1) > 0.0f) {
     float f = snellFresnelDielectric(dot(vv, n1), eta);
-    SnellTwoInterfaceExit re =
-        snellTwoInterfaceExit(frontPosition, reflect(vv, n1), SNELL_SCENE_BUFFER_ARGS, t.reflect, m, v);
+    SnellTwoInterfaceExit re = snellTwoInterfaceExitRough(frontPosition, reflect(vv, n1),
+                                                          snellRoughConeReflect(m.roughness),
+                                                          SNELL_SCENE_BUFFER_ARGS, t.reflect, v);
     r.reflectionHit = re.hit;
     r.fetches = r.fetches + re.fetches;
     r.fresnel = f;
@@ -3861,6 +3978,9 @@ SNELL_FN SnellEngineBlurRead snellEngineBevyBlur(SNELL_TEX2D sceneColor, vec2 uv
   float scale = b * (1.0f - 0.1f * checker);
   vec3 sum = vec3(0.0f, 0.0f, 0.0f);
   for (int i = 0; i < 32; ++i) {
+    if (i >= n) {
+      continue;
+    }
     int k = i >> 3;
     int j = i & 7;
     vec2 o = vec2(-0.7071f, 0.7071f);
@@ -3887,9 +4007,6 @@ SNELL_FN SnellEngineBlurRead snellEngineBevyBlur(SNELL_TEX2D sceneColor, vec2 uv
     vec2 tap = clamp(c0 + vec2(d.x, -d.y), vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
     vec4 c = SNELL_SAMPLE_LOD(sceneColor, tap, 0.0f);
     sum = sum + vec3(c.x, c.y, c.z);
-    if (i + 1 >= n) {
-      break;
-    }
   }
   SnellEngineBlurRead r;
   r.color = sum / float(n);

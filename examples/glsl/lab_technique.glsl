@@ -209,8 +209,10 @@ SNELL_FN SnellTwoInterfaceResult labEngineShade(int model, float parameter, vec3
   vec3 n1 = snellSafeNormalize(frontNormal);
   if (dot(vv, vv) > 0.0f && dot(n1, n1) > 0.0f) {
     float f = snellFresnelDielectric(dot(vv, n1), eta);
-    SnellTwoInterfaceExit re = snellTwoInterfaceExit(frontPosition, reflect(vv, n1), sceneDepth, sceneNormal,
-                                                     scenePyramid, sceneColor, scene, environment, t.reflect, m, v);
+    SnellTwoInterfaceExit re = snellTwoInterfaceExitRough(frontPosition, reflect(vv, n1),
+                                                          snellRoughConeReflect(m.roughness), sceneDepth,
+                                                          sceneNormal, scenePyramid, sceneColor, scene, environment,
+                                                          t.reflect, v);
     r.reflectionHit = re.hit;
     r.fetches = r.fetches + re.fetches;
     r.fresnel = f;

@@ -475,6 +475,37 @@ std::vector<ParityIO> roughnessInputs() {
   }
   return v;
 }
+
+// The rough cone's functions read floats 0..11: roughness or a cone's radius (0), eta or its angle (1), a path
+// length or its exit angle (2), a distance (3), a view-space point in front of the camera (4..6), fovy (7),
+// aspect (8), a texture size (9, 10) and a level count or a bounce count (11); a few floats hostile.
+std::vector<ParityIO> roughConeInputs() {
+  InputGen g(620);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < 10000; ++i) {
+    float x[12];
+    x[0] = g.chance(0.1f) ? 0.0f : g.uniform(0.0f, 1.0f);
+    x[1] = g.uniform(0.3f, 3.0f);
+    x[2] = g.uniform(0.0f, 10.0f);
+    x[3] = g.uniform(0.0f, 20.0f);
+    x[4] = g.uniform(-3.0f, 3.0f);
+    x[5] = g.uniform(-3.0f, 3.0f);
+    x[6] = -g.uniform(0.2f, 50.0f);
+    x[7] = g.uniform(0.2f, 2.5f);
+    x[8] = g.uniform(0.5f, 2.0f);
+    x[9] = static_cast<float>(g.integer(1, 4096));
+    x[10] = static_cast<float>(g.integer(1, 4096));
+    x[11] = static_cast<float>(g.integer(-1, 14));
+    for (int k = 0; k < 9; ++k)
+      if (g.chance(0.02f)) x[k] = hostile(g);
+    ParityIO in{};
+    in.v[0] = vec4(x[0], x[1], x[2], x[3]);
+    in.v[1] = vec4(x[4], x[5], x[6], x[7]);
+    in.v[2] = vec4(x[8], x[9], x[10], x[11]);
+    v.push_back(in);
+  }
+  return v;
+}
 }  // namespace
 
 namespace parity_shade {
@@ -741,5 +772,81 @@ SNELL_PARITY_CASE(snellRoughnessToLod, roughnessInputs,
                   {},
                   lod = vec4(snellRoughnessToLod(roughness0, levels0), snellRoughnessToLod(roughness1, levels1),
                              snellRoughnessToLod(roughness2, levels2), snellRoughnessToLod(roughness3, levels3));)
+
+SNELL_PARITY_CASE(snellRoughConeSlope, roughConeInputs,
+                  (float, roughness, 0),
+                  (float, slope, 0, within(0.0f, 1e-6f)),
+                  {},
+                  slope = snellRoughConeSlope(roughness);)
+
+SNELL_PARITY_CASE(snellRoughConeHypot, roughConeInputs,
+                  (float, x, 2)(float, y, 4),
+                  (float, length, 0, within(1e-6f, 1e-5f)),
+                  {},
+                  length = snellRoughConeHypot(x, y);)
+
+SNELL_PARITY_CASE(snellRoughConeMeasure, roughConeInputs,
+                  (float, x, 2),
+                  (float, measure, 0, exact),
+                  {},
+                  measure = snellRoughConeMeasure(x);)
+
+SNELL_PARITY_CASE(snellRoughConeLevel, roughConeInputs,
+                  (float, radius, 2)(float, texelsPerUnit, 3)(int, levels, 11),
+                  (float, lod, 0, within(1e-4f, 1e-5f)),
+                  {},
+                  lod = snellRoughConeLevel(radius, texelsPerUnit, levels);)
+
+SNELL_PARITY_CASE(snellRoughConeTransmit, roughConeInputs,
+                  (float, roughness, 0)(float, eta, 1)(float, insideLength, 2)(int, bounces, 11),
+                  (float, radius, 0, within(1e-6f, 1e-5f))(float, angle, 1, within(1e-6f, 1e-5f))
+                  (float, exitAngle, 2, within(1e-6f, 1e-5f)),
+                  {},
+                  SnellRoughCone c = snellRoughConeTransmit(roughness, eta, insideLength, bounces);
+                  radius = c.radius;
+                  angle = c.angle;
+                  exitAngle = c.exitAngle;)
+
+SNELL_PARITY_CASE(snellRoughConeReflect, roughConeInputs,
+                  (float, roughness, 0),
+                  (float, radius, 0, exact)(float, angle, 1, within(0.0f, 1e-6f))(float, exitAngle, 2, exact),
+                  {},
+                  SnellRoughCone c = snellRoughConeReflect(roughness);
+                  radius = c.radius;
+                  angle = c.angle;
+                  exitAngle = c.exitAngle;)
+
+SNELL_PARITY_CASE(snellRoughConeRadius, roughConeInputs,
+                  (float, coneRadius, 0)(float, coneAngle, 1)(float, coneExitAngle, 2)(float, distance, 3),
+                  (float, radius, 0, within(1e-6f, 1e-5f)),
+                  {},
+                  SnellRoughCone c;
+                  c.radius = coneRadius;
+                  c.angle = coneAngle;
+                  c.exitAngle = coneExitAngle;
+                  radius = snellRoughConeRadius(c, distance);)
+
+// The level through a perspective projection built from fovy and aspect.
+SNELL_PARITY_CASE(snellRoughConeSceneLod, roughConeInputs,
+                  (float, coneRadius, 0)(float, coneAngle, 1)(float, coneExitAngle, 2)(float, distance, 3)
+                  (vec3, p, 4)(float, fovy, 7)(float, aspect, 8)(ivec2, size, 9)(int, levels, 11),
+                  (float, lod, 0, within(1e-4f, 1e-5f)),
+                  {},
+                  SnellRoughCone c;
+                  c.radius = coneRadius;
+                  c.angle = coneAngle;
+                  c.exitAngle = coneExitAngle;
+                  lod = snellRoughConeSceneLod(c, distance, p, snellPerspective(fovy, aspect, 0.1f, 100.0f), size,
+                                               levels);)
+
+SNELL_PARITY_CASE(snellRoughConeEnvironmentLod, roughConeInputs,
+                  (float, coneRadius, 0)(float, coneAngle, 1)(float, coneExitAngle, 2)(int, levels, 11),
+                  (float, lod, 0, within(1e-4f, 1e-5f)),
+                  {},
+                  SnellRoughCone c;
+                  c.radius = coneRadius;
+                  c.angle = coneAngle;
+                  c.exitAngle = coneExitAngle;
+                  lod = snellRoughConeEnvironmentLod(c, levels);)
 
 }  // namespace parity_shade

@@ -210,6 +210,25 @@ SNELL_PARITY_CASE(snellTwoInterfaceExit, [] { return exitInputs(822); },
                   fellBack = e.fellBack;
                   hitPosition = e.hit.position;)
 
+// Through a cone of the input's roughness, with d_N as the path inside and one bounce.
+SNELL_PARITY_CASE(snellTwoInterfaceExitRough, [] { return exitInputs(824); },
+                  TECH_RAY_INPUTS(origin, direction),
+                  (vec3, color, 0, within(1e-4f, 1e-4f))(int, fetches, 3, exact)(vec2, hitUv, 4, within(1e-4f, 1e-4f))
+                  (bool, hitValid, 6, exact)(bool, fellBack, 7, exact)(vec3, hitPosition, 8, within(1e-4f, 1e-4f)),
+                  techExtras(),
+                  SnellTechnique t = techTechnique(preset, steps, modes);
+                  SnellRoughCone cone = snellRoughConeTransmit(roughness, snellIorToEta(1.0f, ior), dN, 1);
+                  SnellTwoInterfaceExit e = snellTwoInterfaceExitRough(origin, direction, cone, techSceneDepth,
+                                                                       techSceneNormal, techScenePyramid,
+                                                                       techSceneColor, techSceneSurface(projection),
+                                                                       techEnv, t.exit, techView());
+                  color = e.color;
+                  fetches = e.fetches;
+                  hitUv = e.hit.uv;
+                  hitValid = e.hit.valid;
+                  fellBack = e.fellBack;
+                  hitPosition = e.hit.position;)
+
 // Fetches, flags and the reflection hit exact; colour, directions, points, fresnel 1e-4. flags: backHit +
 // 2 fellBack + 4 tir + 8 exit hit valid.
 SNELL_PARITY_CASE(snellTwoInterfaceRefraction, [] { return techniqueInputs(823); },

@@ -36,6 +36,7 @@ struct Options {
 glm::dvec3 kCentreD() { return technique_test::kCentre; }
 
 constexpr double kIor = 1.5;
+constexpr double kScale = double(SNELL_ROUGH_CONE_LOD_SCALE);
 
 const Scene& scene() {
   static const Scene s = technique_test::makeScene(256, 256);
@@ -603,20 +604,83 @@ TEST(TechniqueTwoInterface, DispersionTracesThreeChannels) {
   EXPECT_EQ(disp.color.z, run(oB).color.z);
 }
 
-TEST(TechniqueTwoInterface, RoughnessSelectsBlurredLevels) {
-  const Scene& s = scene();
-  Options o = snellPresetDir();
+// A scene colour whose level k holds the value k everywhere: trilinear filtering returns the level read.
+Texture2D levelTexture(int w, int h) {
+  Texture2D t(Image(w, h, glm::vec4(0.0f)), Filter::Linear, MipFilter::Linear);
+  for (int k = 1; w > 1 || h > 1; ++k) {
+    w = std::max(1, w / 2);
+    h = std::max(1, h / 2);
+    t.addLevel(Image(w, h, glm::vec4(float(k))));
+  }
+  return t;
+}
+
+// Texels per view unit at p in a w x h buffer seen through clip: p moved a little along x and y, projected.
+double texelsPerUnitAt(const glm::mat4& clip, glm::dvec3 p, int w, int h) {
+  auto texel = [&](glm::dvec3 q) {
+    const glm::dvec4 c = glm::dmat4(clip) * glm::dvec4(q, 1.0);
+    return glm::dvec2((c.x / c.w * 0.5 + 0.5) * w, (c.y / c.w * 0.5 + 0.5) * h);
+  };
+  const double e = 1e-5;
+  return 0.5 * (glm::length(texel(p + glm::dvec3(e, 0, 0)) - texel(p)) +
+                glm::length(texel(p + glm::dvec3(0, e, 0)) - texel(p))) / e;
+}
+
+// Rough glass reads the scene colour at the level whose texels are as wide as the cone of light through it
+// (shade/rough_cone.glsl): the entry lobe carried over the exact chord inside, both lobes over the exact
+// distance behind, at the exact hit's texel density; the reflection's cone is twice the slope over its own
+// distance. Checked with a colour whose level k reads k, against the exact sphere trace.
+TEST(TechniqueTwoInterface, RoughGlassReadsTheLevelOfItsCone) {
+  Scene s = technique_test::makeScene(256, 256);
+  s.sceneColor = levelTexture(s.width, s.height);
+  const double eta = 1.0 / kIor;
+  int checked = 0;
+  for (float roughness : {0.1f, 0.3f, 0.6f}) {
+    Options o = snellPresetPlaneNormal(4);
+    o.m.reflection = false;
+    o.t.exit.source = SNELL_SOURCE_BUFFERS;
+    o.m.roughness = roughness;
+    o.v.sceneColorLevels = s.sceneColor.levelCount();
+    for (glm::dvec2 uv : {glm::dvec2(0.5, 0.5), glm::dvec2(0.42, 0.55), glm::dvec2(0.56, 0.47)}) {
+      const Exact e = technique_test::exactTrace(s.front, uv, kIor);
+      ASSERT_TRUE(e.hitsSphere && !e.tir && e.planeHit);
+      const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(glm::vec3(e.p1), glm::vec3(e.n1), 0.0f,
+                                                                    TECH_OBJECT_ARGS(s), TECH_SCENE_ARGS(s), o.t, o.m,
+                                                                    o.v);
+      ASSERT_TRUE(r.exitHit.valid);
+      const double a = double(roughness) * double(roughness) * (1.0 - eta);  // the entry lobe inside
+      const double behind = glm::length(*e.planeHit - e.p2);
+      const double radius = std::hypot(a * glm::length(e.p2 - e.p1) + a / eta * behind,
+                                       double(roughness) * double(roughness) * (1.0 / eta - 1.0) * behind);
+      const double lod = std::clamp(
+          std::log2(kScale * radius *
+                    texelsPerUnitAt(s.sceneSurface().clipFromView, *e.planeHit, s.width, s.height)),
+          0.0, double(s.sceneColor.levelCount() - 1));
+      EXPECT_NEAR(r.color.x, lod, 0.02) << roughness << " at " << uv.x << ", " << uv.y;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 9);
+  // The reflection: the environment read through a cone of twice the slope (the environment's level k reads k).
+  Options o = snellPresetPlaneNormal(4);
+  o.m.roughness = 0.5f;
+  o.v.environmentLevels = 9;
+  const Texture2D env = levelTexture(256, 128);
+  const Exact e = technique_test::exactTrace(s.front, glm::dvec2(0.5, 0.5), kIor);
+  const SnellTwoInterfaceExit re =
+      snellTwoInterfaceExitRough(glm::vec3(e.p1), glm::reflect(glm::vec3(glm::normalize(e.p1)), glm::vec3(e.n1)),
+                                 snellRoughConeReflect(0.5f), s.plane.depth, s.sceneNormalMips, s.scenePyramid,
+                                 s.sceneColor, s.sceneSurface(), env, o.t.reflect, o.v);
+  const double envLod = std::log2(kScale * 2.0 * 0.25 * 256.0 / (2.0 * M_PI));
+  EXPECT_NEAR(re.color.x, envLod, 0.02);
+  // Smooth glass reads level 0.
+  o.m.roughness = 0.0f;
   o.m.reflection = false;
   o.t.exit.source = SNELL_SOURCE_BUFFERS;
-  o.m.roughness = 1.0f;
   o.v.sceneColorLevels = s.sceneColor.levelCount();
-  const Exact e = technique_test::exactTrace(s.front, glm::dvec2(0.5, 0.5), kIor);
-  const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
-      glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, TECH_OBJECT_ARGS(s),
-      TECH_SCENE_ARGS(s), o.t, o.m, o.v);
-  ASSERT_TRUE(r.exitHit.valid);
-  const glm::vec4 top = s.sceneColor.level(s.sceneColor.levelCount() - 1).at(0, 0);
-  EXPECT_LT(glm::length(r.color - glm::vec3(top)), 1e-6f);
+  const SnellTwoInterfaceResult smooth = snellTwoInterfaceRefraction(
+      glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, TECH_OBJECT_ARGS(s), TECH_SCENE_ARGS(s), o.t, o.m, o.v);
+  EXPECT_EQ(smooth.color.x, 0.0f);
 }
 
 TEST(TechniqueEnvironment, Atan2MatchesTheLibrary) {

@@ -1,7 +1,11 @@
 /*
 description: surface roughness -> mip level of the scene-colour texture, for
   blurred (frosted) refraction: read S with SNELL_SAMPLE_LOD at this level of
-  a mipmapped (ideally pre-blurred) chain.
+  a mipmapped (ideally pre-blurred) chain. A fixed share of the chain per
+  roughness, whatever the distances and the resolution: the composed
+  technique blurs by the cone of light instead (shade/rough_cone.glsl: the
+  same width in the world at every resolution, measured closer to a rough
+  ray trace); this mapping suits a host without the path's lengths.
 use: float lod = snellRoughnessToLod(perceptualRoughness, levelCount);
      vec4 c = SNELL_SAMPLE_LOD(sceneColor, uvRefracted, lod);
   roughness  perceptual roughness in [0, 1] (0 smooth, 1 fully rough)

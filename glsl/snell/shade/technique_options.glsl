@@ -76,7 +76,8 @@ contract (defaults):
     roughness = 0.
   snellView(): envX/envY/envZ = the columns of the world-from-view rotation
     used for environment lookups (identity), sceneColorLevels =
-    environmentLevels = 1 (mip levels for snellRoughnessToLod).
+    environmentLevels = 1 (mip levels the rough cone reads,
+    shade/rough_cone.glsl).
 source: the composition of DESIGN.md sec. 2 (a technique = optics, an
   intersector against the back faces, optics, an intersector against the scene
   or an environment lookup); Oliveira & Brauwers 2007 sec. 3; Wyman 2005;

@@ -17,8 +17,10 @@ use: SnellTechnique t = snellPresetDir();   // or any preset, then adjust
          backDepth, backNormal, backPyramid, back, frontLayerDepth, frontLayerNormal, frontLayer,
          sceneDepth, sceneNormal, scenePyramid, sceneColor, scene, environment, t, m, v);
      fragColor = vec4(r.color, 1.0f);
+     SnellTwoInterfaceExit e = snellTwoInterfaceExitRough(origin, dir, cone, sceneDepth, sceneNormal,
+         scenePyramid, sceneColor, scene, environment, t.exit, v);   // one slot alone
      SnellTwoInterfaceExit e = snellTwoInterfaceExit(origin, dir, sceneDepth, sceneNormal,
-         scenePyramid, sceneColor, scene, environment, t.exit, m, v);   // one slot alone
+         scenePyramid, sceneColor, scene, environment, t.exit, m, v);   // ... through a thin sheet of m
   frontPosition, frontNormal, dN, back*: as snellTwoInterfaceTrace
                  (SNELL_OBJECT_BUFFERS, technique_buffers.glsl)
   sceneDepth, sceneNormal, scenePyramid, scene: the opaque scene without the
@@ -33,10 +35,14 @@ use: SnellTechnique t = snellPresetDir();   // or any preset, then adjust
   t, m, v        SnellTechnique (its back, exit and reflect slots),
                  SnellMaterial, SnellView (technique_options.glsl)
 options: technique_options.glsl; technique_buffers.glsl; environment.glsl hooks.
-contract (snellTwoInterfaceExit(origin, dir, ..., slot, m, v)):
-  - lods: envLod = snellRoughnessToLod(m.roughness, v.environmentLevels),
-    sceneLod = snellRoughnessToLod(m.roughness, v.sceneColorLevels)
-    (shade/roughness.glsl); every colour read uses them.
+contract (snellTwoInterfaceExitRough(origin, dir, cone, ..., slot, v)):
+  - lods (shade/rough_cone.glsl): every environment read at
+    envLod = snellRoughConeEnvironmentLod(cone, v.environmentLevels); a read
+    of the scene colour at a point q (the hit, or the edge fade's point) at
+    snellRoughConeSceneLod(cone, |q - origin|, q, scene.clipFromView, its
+    base size, v.sceneColorLevels): the cone's width where the ray meets
+    the scene, in that buffer's texels. A cone of radius and angles 0 (smooth
+    glass) reads level 0.
   - dir zero or not finite, or origin not finite: color 0, fellBack, 0 fetches.
   - slot.source ENVIRONMENT: color = SNELL_SAMPLE_ENVIRONMENT(env,
     world(dir / |dir|), envLod).xyz, 1 fetch, hit = snellHitMiss(0), fellBack
@@ -58,6 +64,9 @@ contract (snellTwoInterfaceExit(origin, dir, ..., slot, m, v)):
     when w > 0). Never black unless the environment is.
   - fetches: the strategy's, the foreground rule's read, and one per colour
     or environment read.
+contract (snellTwoInterfaceExit(origin, dir, ..., slot, m, v)): the above
+  with the cone of a ray through a thin sheet of the material:
+  snellRoughConeTransmit(m.roughness, snellIorToEta(m.iorOutside, m.ior), 0, 0).
 contract (snellTwoInterfaceRefraction):
   - one trace with eta = snellIorToEta(m.iorOutside, m.ior) (m.dispersion != 3),
     or three (m.dispersion == 3), with m.iors.x/.y/.z for red/green/blue, each
@@ -80,11 +89,19 @@ contract (snellTwoInterfaceRefraction):
     that passed behind a surface's silhouette is not taken for a hit on it;
     its fetches added). A hit nearer than the back hit
     (|hit - P1| < the path's entryLength) ends the path on that surface:
-    colour = sceneColor at the hit (sceneLod; 1 fetch), exitPoint = the hit,
+    colour = sceneColor at the hit (1 fetch; at the level of the entry
+    lobe's width there: the cone below with its angles set to 0, at
+    distance 0), exitPoint = the hit,
     exitDirection = T1, exitHit = the hit, pathLength = |hit - P1|, no tir,
     no bounces, no fallback, insideHit = true (the single / green trace's).
     The surface is shaded as the opaque surface it is: its colour, absorbed
     over the path inside, no second refraction.
+  - blur: each trace's exit slot reads through the cone
+    snellRoughConeTransmit(m.roughness, that trace's eta, pathLength,
+    bounces) (both interfaces' lobes: the entry lobe carried over the path
+    inside and the distance behind, the exit lobe over the distance behind,
+    added in quadrature); the reflect slot of the first surface's reflection
+    through snellRoughConeReflect(m.roughness).
   - transmitted = exit color * snellBeerLambert(m.absorption, pathLength) per
     channel, pathLength = |P2 - P1| of that channel's trace (0 on fallback
     without a back hit; finite: a back hit whose |P2 - P1| overflows a float
@@ -93,7 +110,8 @@ contract (snellTwoInterfaceRefraction):
     the green/single trace); R = reflect(V, N1); bg(R) =
     snellTwoInterfaceExit(P1, R, scene..., t.reflect, m, v) (the environment
     along R, or the scene colour where the reflect slot's intersector finds
-    the scene, else its fallback); its fetches added, its hit in
+    the scene, else its fallback; snellTwoInterfaceExitRough with the
+    reflection's cone); its fetches added, its hit in
     reflectionHit; color = F bg(R) + (1 - F) transmitted. Else F = 0, color =
     transmitted. The Fresnel loss at the later interfaces, and the light they
     reflect back inside where Snell allows refraction, are not modelled.
@@ -104,7 +122,8 @@ source: Wyman 2005 and Oliveira & Brauwers 2007 (two interfaces, distant
   Simulation" (nearby geometry: the exit ray against the scene buffers, "a
   transparent sphere refracts a painting"); Fresnel: optics/fresnel_dielectric.glsl;
   edge fade: shade/perturb_edge_fade.glsl;
-  absorption: optics/beer_lambert.glsl (Beer-Lambert over the found chord).
+  absorption: optics/beer_lambert.glsl (Beer-Lambert over the found chord);
+  blur: shade/rough_cone.glsl (Walter et al. 2007; de Rousiers et al. 2012).
 */
 #ifndef SNELL_SHADE_TWO_INTERFACE_SHADE_GLSL
 #define SNELL_SHADE_TWO_INTERFACE_SHADE_GLSL
@@ -116,7 +135,7 @@ source: Wyman 2005 and Oliveira & Brauwers 2007 (two interfaces, distant
 #include "../optics/fresnel_dielectric.glsl"
 #include "../optics/beer_lambert.glsl"
 #include "../intersect/hit.glsl"
-#include "roughness.glsl"
+#include "rough_cone.glsl"
 #include "environment.glsl"
 #include "perturb_edge_fade.glsl"
 #include "../intersect/intersect_with.glsl"
@@ -148,10 +167,11 @@ struct SnellTwoInterfaceResult {
   bool insideHit;      // the refracted ray met the opaque scene inside the object (t.insideScene)
 };
 
-/* Mayer & Assarsson: a ray from the object resolved by one slot against the scene buffers or the environment */
-SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_SCENE_BUFFERS,
-                                                     SNELL_IN(SnellSlot) slot, SNELL_IN(SnellMaterial) m,
-                                                     SNELL_IN(SnellView) v) {
+/* Mayer & Assarsson: a ray from the object resolved by one slot against the scene buffers or the environment,
+   its colour blurred over the rough glass's cone (de Rousiers et al.; shade/rough_cone.glsl) */
+SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExitRough(vec3 origin, vec3 dir, SNELL_IN(SnellRoughCone) cone,
+                                                          SNELL_SCENE_BUFFERS, SNELL_IN(SnellSlot) slot,
+                                                          SNELL_IN(SnellView) v) {
   SnellTwoInterfaceExit e;
   e.color = vec3(0.0f, 0.0f, 0.0f);
   e.hit = snellHitMiss(0);
@@ -162,15 +182,17 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
       !SNELL_FINITE(origin.z)) {
     return e;
   }
-  float envLod = snellRoughnessToLod(m.roughness, v.environmentLevels);
-  float sceneLod = snellRoughnessToLod(m.roughness, v.sceneColorLevels);
+  float envLod = snellRoughConeEnvironmentLod(cone, v.environmentLevels);
+  ivec2 colorSize = SNELL_TEXTURE_SIZE(sceneColor, 0);
   vec3 world = d.x * v.envX + d.y * v.envY + d.z * v.envZ;
   if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
     e.hit = snellIntersectWith(origin, dir, sceneDepth, sceneNormal, scenePyramid, scene, slot.intersect);
     e.hit = snellRejectForeground(e.hit, origin, sceneDepth, scene, SNELL_FOREGROUND_TOLERANCE);
     e.fetches = e.hit.fetches;
     if (e.hit.valid) {
-      vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, sceneLod);
+      float lod = snellRoughConeSceneLod(cone, length(e.hit.position - origin), e.hit.position, scene.clipFromView,
+                                         colorSize, v.sceneColorLevels);
+      vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, lod);
       e.color = vec3(c.x, c.y, c.z);
       e.fetches = e.fetches + 1;
       e.fellBack = false;
@@ -180,11 +202,14 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
     e.fetches = e.fetches + 1;
     e.color = vec3(env.x, env.y, env.z);
     if (slot.fallback == SNELL_FALLBACK_EDGE_FADE) {
-      SnellScreenPoint sp = snellViewToUv(scene.clipFromView, origin + slot.fallbackDistance * d);
+      vec3 q = origin + slot.fallbackDistance * d;
+      SnellScreenPoint sp = snellViewToUv(scene.clipFromView, q);
       float w = sp.valid ? snellScreenEdgeFade(sp.uv, slot.edgeFadeWidth) : 0.0f;
       if (w > 0.0f) {
         vec2 uv = clamp(sp.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
-        vec4 c = SNELL_SAMPLE_LOD(sceneColor, uv, sceneLod);
+        float lod = snellRoughConeSceneLod(cone, slot.fallbackDistance, q, scene.clipFromView, colorSize,
+                                           v.sceneColorLevels);
+        vec4 c = SNELL_SAMPLE_LOD(sceneColor, uv, lod);
         e.fetches = e.fetches + 1;
         e.color = mix(e.color, vec3(c.x, c.y, c.z), w);
       }
@@ -196,6 +221,14 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNEL
   e.fetches = 1;
   e.fellBack = false;
   return e;
+}
+
+/* The same for a ray that left through a thin sheet of the material: both rough interfaces, no path inside */
+SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExit(vec3 origin, vec3 dir, SNELL_SCENE_BUFFERS,
+                                                     SNELL_IN(SnellSlot) slot, SNELL_IN(SnellMaterial) m,
+                                                     SNELL_IN(SnellView) v) {
+  SnellRoughCone cone = snellRoughConeTransmit(m.roughness, snellIorToEta(m.iorOutside, m.ior), 0.0f, 0);
+  return snellTwoInterfaceExitRough(origin, dir, cone, SNELL_SCENE_BUFFER_ARGS, slot, v);
 }
 
 /* Wyman 2005; Oliveira & Brauwers 2007; Mayer & Assarsson: the composed technique */
@@ -253,15 +286,23 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     if (t.bounces > 0 && p.exitFront) {
       leave = t.reflect;
     }
+    // The blur: the entry lobe carried over the path inside and both lobes over the distance behind; an
+    // opaque surface inside the glass sees the entry lobe alone.
+    SnellRoughCone cone = snellRoughConeTransmit(m.roughness, etaK, p.pathLength, p.bounces);
     SnellTwoInterfaceExit e;
     if (inside) {
-      vec4 c = SNELL_SAMPLE_LOD(sceneColor, ih.uv, snellRoughnessToLod(m.roughness, v.sceneColorLevels));
+      SnellRoughCone entry = cone;
+      entry.angle = 0.0f;
+      entry.exitAngle = 0.0f;
+      float lod = snellRoughConeSceneLod(entry, 0.0f, ih.position, scene.clipFromView,
+                                         SNELL_TEXTURE_SIZE(sceneColor, 0), v.sceneColorLevels);
+      vec4 c = SNELL_SAMPLE_LOD(sceneColor, ih.uv, lod);
       e.color = vec3(c.x, c.y, c.z);
       e.hit = ih;
       e.fellBack = false;
       e.fetches = 1;
     } else {
-      e = snellTwoInterfaceExit(p.exitPoint, p.exitDirection, SNELL_SCENE_BUFFER_ARGS, leave, m, v);
+      e = snellTwoInterfaceExitRough(p.exitPoint, p.exitDirection, cone, SNELL_SCENE_BUFFER_ARGS, leave, v);
     }
     vec3 c = e.color * snellBeerLambert(m.absorption, p.pathLength);
     // Where the reflect slot finds no scene after a front-face exit, the environment is what is there,
@@ -299,8 +340,9 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
   if (m.reflection && dot(vv, vv) > 0.0f && dot(n1, n1) > 0.0f) {
     float f = snellFresnelDielectric(dot(vv, n1), eta);
     // The reflect slot: the exit's call with its own slot, from P1 along R.
-    SnellTwoInterfaceExit re =
-        snellTwoInterfaceExit(frontPosition, reflect(vv, n1), SNELL_SCENE_BUFFER_ARGS, t.reflect, m, v);
+    SnellTwoInterfaceExit re = snellTwoInterfaceExitRough(frontPosition, reflect(vv, n1),
+                                                          snellRoughConeReflect(m.roughness),
+                                                          SNELL_SCENE_BUFFER_ARGS, t.reflect, v);
     r.reflectionHit = re.hit;
     r.fetches = r.fetches + re.fetches;
     r.fresnel = f;

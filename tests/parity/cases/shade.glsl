@@ -1,7 +1,9 @@
 /* The shade/ parity cases' shared part (the cases themselves are described in
    tests/parity/shade_cases.cpp): the family's include and the three textures
-   the sampling cases read (built by buildTextures() there). */
+   the sampling cases read (built by buildTextures() there); the camera's
+   perspective, which the rough cone's case projects with. */
 #include "snell/shade.glsl"
+#include "snell/camera/perspective.glsl"
 
 #if defined(SNELL_LANG_GLSL)
 uniform sampler2D parityShadeScene;       /* LINEAR, rgb colour, alpha = Sousa's mask (0 inside) */
