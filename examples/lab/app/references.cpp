@@ -26,15 +26,20 @@ Mask both(const Mask& a, const Mask& b) {
 
 }  // namespace
 
+TraceOptions truthOptions(const LabOptions& options) {
+  TraceOptions to;
+  to.mode = TraceMode::Full;
+  to.threads = options.threads;
+  to.progress = !options.quiet;
+  to.samples = options.truthSamples;
+  return to;
+}
+
 References traceReferences(const SceneFrame& frame, const std::vector<LabRowSpec>& techniques,
                             const LabOptions& options, LabResult& result) {
   References refs;
   refs.tracer = std::make_unique<ReferenceTracer>(frame);
-  TraceOptions to;
-  to.threads = options.threads;
-  to.progress = !options.quiet;
-  to.samples = options.truthSamples;
-  to.mode = TraceMode::Full;
+  TraceOptions to = truthOptions(options);
   refs.full = refs.tracer->render(frame.camera, to);
   if (refs.full.stats.sampledPixels > 0) {
     result.truthSamples = to.samples;

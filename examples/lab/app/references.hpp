@@ -33,6 +33,10 @@ struct References {
   const TraceResult& modelOf(int bounces) const { return bounces > 0 ? principal.at(2 + bounces) : two; }
 };
 
+// How the lab traces a frame's full truth (mode Full, the run's threads, progress and truth samples, the
+// default seed): every frame of a run traces it alike, so two frames differ by the scene alone.
+TraceOptions truthOptions(const LabOptions& options);
+
 References traceReferences(const SceneFrame& frame, const std::vector<LabRowSpec>& techniques,
                             const LabOptions& options, LabResult& result);
 

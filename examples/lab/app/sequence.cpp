@@ -1,5 +1,6 @@
 #include "sequence.hpp"
 
+#include "references.hpp"
 #include "report.hpp"
 
 #include "lab/error.hpp"
@@ -70,13 +71,9 @@ SequenceReport runSequence(const Scene& scene, const std::vector<LabRowSpec>& te
   report.panPixels = scene.animation.cameraPanPixels;
   std::vector<float> engineParameters;
   for (const TechniqueRow& r : rows) engineParameters.push_back(r.engineParameter);
-  // The full truth as traceReferences traces frame 0's (the same options, seed included), so that a pair's
-  // difference holds the scene's change and not a change of how the truth was made.
-  TraceOptions to;
-  to.mode = TraceMode::Full;
-  to.threads = options.threads;
-  to.progress = !options.quiet;
-  to.samples = options.truthSamples;
+  // The full truth as frame 0's (the same options, seed included), so that a pair's difference holds the
+  // scene's change and not a change of how the truth was made.
+  const TraceOptions to = truthOptions(options);
   std::vector<std::vector<FlickerPair>> pairs(techniques.size());
   TraceResult before = truth0;
   std::vector<Image> imagesBefore = images0;
