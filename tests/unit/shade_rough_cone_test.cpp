@@ -7,6 +7,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "support/texel_density.hpp"
+
 #include <cmath>
 #include <limits>
 
@@ -84,19 +86,6 @@ TEST(ShadeRoughCone, RadiusAddsTheCarriedLobeLinearlyAndTheExitLobeInQuadrature)
   EXPECT_TRUE(std::isfinite(snellRoughConeRadius(c, kInf)));
 }
 
-// Texels per view unit at p, by projecting p and p moved a little along x and y to texel coordinates.
-double texelsPerUnit(const glm::mat4& clip, glm::vec3 p, glm::ivec2 size) {
-  auto texel = [&](glm::dvec3 q) {
-    const glm::dvec4 c = glm::dmat4(clip) * glm::dvec4(q, 1.0);
-    return glm::dvec2((c.x / c.w * 0.5 + 0.5) * size.x, (c.y / c.w * 0.5 + 0.5) * size.y);
-  };
-  const double h = 1e-4;
-  const glm::dvec3 pd(p);
-  const double dx = glm::length(texel(pd + glm::dvec3(h, 0, 0)) - texel(pd)) / h;
-  const double dy = glm::length(texel(pd + glm::dvec3(0, h, 0)) - texel(pd)) / h;
-  return 0.5 * (dx + dy);
-}
-
 TEST(ShadeRoughCone, SceneLevelIsTheConesWidthInTexels) {
   const glm::mat4 clip = glm::perspective(glm::radians(50.0f), 1.25f, 0.1f, 100.0f);
   const glm::ivec2 size(640, 512);
@@ -106,7 +95,8 @@ TEST(ShadeRoughCone, SceneLevelIsTheConesWidthInTexels) {
       const glm::vec3 p(0.4f, -0.3f, z);
       const double radius = std::hypot(double(c.radius) + double(c.angle) * double(d), double(c.exitAngle) * double(d));
       const double expected =
-          std::clamp(std::log2(kScale * radius * texelsPerUnit(clip, p, size)), 0.0, 9.0);
+          std::clamp(std::log2(kScale * radius * snell_test::texelsPerUnit(clip, glm::dvec3(p), size.x, size.y)),
+                     0.0, 9.0);
       EXPECT_NEAR(snellRoughConeSceneLod(c, d, p, clip, size, 10), expected, 2e-3) << z << " " << d;
     }
   }

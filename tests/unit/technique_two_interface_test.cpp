@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "support/technique_scene.hpp"
+#include "support/texel_density.hpp"
 
 namespace {
 
@@ -615,17 +616,6 @@ Texture2D levelTexture(int w, int h) {
   return t;
 }
 
-// Texels per view unit at p in a w x h buffer seen through clip: p moved a little along x and y, projected.
-double texelsPerUnitAt(const glm::mat4& clip, glm::dvec3 p, int w, int h) {
-  auto texel = [&](glm::dvec3 q) {
-    const glm::dvec4 c = glm::dmat4(clip) * glm::dvec4(q, 1.0);
-    return glm::dvec2((c.x / c.w * 0.5 + 0.5) * w, (c.y / c.w * 0.5 + 0.5) * h);
-  };
-  const double e = 1e-5;
-  return 0.5 * (glm::length(texel(p + glm::dvec3(e, 0, 0)) - texel(p)) +
-                glm::length(texel(p + glm::dvec3(0, e, 0)) - texel(p))) / e;
-}
-
 // Rough glass reads the scene colour at the level whose texels are as wide as the cone of light through it
 // (shade/rough_cone.glsl): the entry lobe carried over the exact chord inside, both lobes over the exact
 // distance behind, at the exact hit's texel density; the reflection's cone is twice the slope over its own
@@ -654,7 +644,7 @@ TEST(TechniqueTwoInterface, RoughGlassReadsTheLevelOfItsCone) {
                                        double(roughness) * double(roughness) * (1.0 / eta - 1.0) * behind);
       const double lod = std::clamp(
           std::log2(kScale * radius *
-                    texelsPerUnitAt(s.sceneSurface().clipFromView, *e.planeHit, s.width, s.height)),
+                    snell_test::texelsPerUnit(s.sceneSurface().clipFromView, *e.planeHit, s.width, s.height)),
           0.0, double(s.sceneColor.levelCount() - 1));
       EXPECT_NEAR(r.color.x, lod, 0.02) << roughness << " at " << uv.x << ", " << uv.y;
       ++checked;
