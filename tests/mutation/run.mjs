@@ -1,8 +1,8 @@
 // The mutation score of glsl/snell (tests/mutation/README.md): every mutant of the chosen files, one at a
 // time, against the tests that reach it. Not part of the test command: it takes about two hours on 2 cores.
 //
-//   node tests/mutation/run.mjs [--work=DIR] [--jobs=N] [--report=FILE] [--only=ID,ID.. | --resume | --report-only]
-//                               [FILE|FOLDER ...]
+//   node tests/mutation/run.mjs [--work=DIR] [--jobs=N] [--report=FILE] [--carry-from=COMMIT] [--prepare]
+//                               [--only=ID,ID.. | --resume | --report-only] [FILE|FOLDER ...]
 //
 // FILE|FOLDER: paths under glsl/snell (default: intersect optics camera shade/two_interface.glsl
 // shade/two_interface_shade.glsl). --work (default build/mutation): the source copy with the schemata
@@ -35,10 +35,10 @@ const option = (name, fallback) => {
   return a ? a.slice(name.length + 3) : fallback;
 };
 for (const a of args.filter((x) => x.startsWith("--")))
-  if (!["work", "jobs", "report", "only", "resume", "report-only"].includes(a.slice(2).split("=")[0])) usage(`unknown option ${a}`);
+  if (!["work", "jobs", "report", "only", "resume", "report-only", "carry-from", "prepare"].includes(a.slice(2).split("=")[0])) usage(`unknown option ${a}`);
 function usage(message) {
   console.error(`run.mjs: ${message}\nusage: node tests/mutation/run.mjs [--work=DIR] [--jobs=N] [--report=FILE] ` +
-    "[--only=ID,ID.. | --resume | --report-only] [FILE|FOLDER under glsl/snell ...]");
+    "[--carry-from=COMMIT] [--prepare] [--only=ID,ID.. | --resume | --report-only] [FILE|FOLDER under glsl/snell ...]");
   process.exit(2);
 }
 const work = path.resolve(option("work", path.join(root, "build", "mutation")));
@@ -87,6 +87,48 @@ for (const f of files) {
 }
 const schemaHash = crypto.createHash("sha256").update(JSON.stringify(mutants)).digest("hex").slice(0, 16);
 const resultsFile = path.join(work, "results.json");
+// A mutant's identity across edits of the one body: its file, operator, source line's text, code and change,
+// and which of the mutants alike in that file it is (line numbers move when a file changes).
+function identities(list, textOf) {
+  const seen = new Map();
+  return list.map((m) => {
+    const base = [m.file, m.op, textOf(m), m.original, m.mutated].join("\t");
+    const n = seen.get(base) ?? 0;
+    seen.set(base, n + 1);
+    return `${base}\t${n}`;
+  });
+}
+const lineOf = (text) => { const lines = text.split("\n"); return (m) => (lines[m.line - 1] ?? "").trim().replace(/\s+/g, " "); };
+// --carry-from=COMMIT: the last results were of the one body at COMMIT (checked: its mutants give the results'
+// schema hash). Each of them that was killed and is still a mutant now (same identity) keeps its result; every
+// other mutant runs. Sound while no test that killed one has been weakened since; a full run settles it.
+const carryFrom = option("carry-from", "");
+const carried = new Map();
+if (carryFrom) {
+  if (!fs.existsSync(resultsFile)) usage(`--carry-from: no results in ${resultsFile}`);
+  const last = JSON.parse(fs.readFileSync(resultsFile, "utf8"));
+  const oldMutants = [], oldText = new Map();
+  let id = 0;
+  for (const f of files) {
+    const r = run("git", ["-C", root, "show", `${carryFrom}:glsl/snell/${f}`]);
+    if (r.status !== 0) continue;  // a file new since
+    const s = schemaOf(r.stdout, { file: f, firstId: id });
+    id = s.nextId;
+    oldMutants.push(...s.mutants);
+    oldText.set(f, lineOf(r.stdout));
+  }
+  const oldHash = crypto.createHash("sha256").update(JSON.stringify(oldMutants)).digest("hex").slice(0, 16);
+  if (oldHash !== last.schemaHash)
+    throw new Error(`--carry-from=${carryFrom}: the one body there does not give the mutants of ${resultsFile}`);
+  const newText = new Map(files.map((f) => [f, lineOf(fs.readFileSync(path.join(glslRoot, f), "utf8"))]));
+  const byKey = new Map(identities(mutants, (m) => newText.get(m.file)(m)).map((k, i) => [k, mutants[i]]));
+  const lastById = new Map(last.results.map((r) => [r.id, r]));
+  identities(oldMutants, (m) => oldText.get(m.file)(m)).forEach((k, i) => {
+    const was = lastById.get(oldMutants[i].id), now = byKey.get(k);
+    if (was?.status === "killed" && now) carried.set(now.id, { ...now, status: "killed", by: `${was.by} (at ${carryFrom})`, tests: was.tests });
+  });
+  log(`--carry-from=${carryFrom}: ${carried.size} of ${mutants.length} mutants keep their kill`);
+}
 if (args.includes("--report-only")) {
   const last = fs.existsSync(resultsFile) ? JSON.parse(fs.readFileSync(resultsFile, "utf8")) : null;
   if (last?.schemaHash !== schemaHash) throw new Error(`no results of these mutants in ${resultsFile}: run without --report-only`);
@@ -160,6 +202,18 @@ const mutantFile = path.join(src, "glsl", "snell", "mutant.glsl");
 const setGlslMutant = (id) => fs.writeFileSync(mutantFile, `#define SNELL_MUTANT ${id}\n`);
 setGlslMutant(-1);
 log(`${mutants.length} mutants in ${files.length} files${unparsed.length ? `; not parsed, left unmutated: ${unparsed.join("; ")}` : ""}`);
+// --prepare: the source copy and DIR/mutants.tsv only (id, file:line, operator, code, change, and the last
+// result when one is known), for writing a test against one mutant: build a test file against DIR/src and
+// run it with SNELL_MUTANT=ID.
+if (args.includes("--prepare")) {
+  const known = fs.existsSync(resultsFile) ? JSON.parse(fs.readFileSync(resultsFile, "utf8")) : null;
+  const last = new Map(known?.schemaHash === schemaHash ? known.results.map((r) => [r.id, r]) : carried);
+  fs.writeFileSync(path.join(work, "mutants.tsv"), mutants.map((m) =>
+    [m.id, `${m.file}:${m.line}`, m.op, m.original, m.mutated || "(dropped)", last.get(m.id)?.status ?? "not run"].join("\t"))
+    .join("\n") + "\n");
+  log(`the source copy is ${src}; the mutants are listed in ${path.join(work, "mutants.tsv")}`);
+  process.exit(0);
+}
 
 // 2. One build of the copy (the mutants are chosen at run time).
 const build = path.join(work, "build");
@@ -255,9 +309,9 @@ const propertyInputs = process.env.SNELL_PROPERTY_INPUTS ?? "100000";
 // 4. Each mutant against the tests that reach it. The GLSL literal is one file, so the parity step of one
 // mutant runs at a time.
 const previous = fs.existsSync(resultsFile) ? JSON.parse(fs.readFileSync(resultsFile, "utf8")) : null;
-const results = new Map(previous?.schemaHash === schemaHash ? previous.results.map((r) => [r.id, r]) : []);
+const results = new Map(previous?.schemaHash === schemaHash ? previous.results.map((r) => [r.id, r]) : carried);
 let glslLock = Promise.resolve();
-const resume = args.includes("--resume");
+const resume = args.includes("--resume") || carried.size > 0;
 const todo = mutants.filter((m) => (only ? only.has(m.id) : !resume || !results.has(m.id)));
 let finished = 0;
 const startedAt = Date.now();
