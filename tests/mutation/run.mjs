@@ -383,18 +383,21 @@ const tally = (list) => {
   const s = list.filter((r) => r.status === "survived").length;
   const e = list.filter((r) => r.status === "survived" && whyOf(r)).length;
   const u = list.filter((r) => r.status === "unreached").length;
-  return { k, s, e, u, n: list.length, score: list.length ? (100 * k) / list.length : 0 };
+  // The usual mutation score leaves out the mutants no test can kill: killed / (all - explained).
+  return { k, s, e, u, n: list.length, score: list.length ? (100 * k) / list.length : 0,
+    scoreOfRest: list.length > e ? (100 * k) / (list.length - e) : 0 };
 };
 const row = (name, list) => {
   const t = tally(list);
-  return `| ${name} | ${t.n} | ${t.k} | ${t.s} | ${t.e} | ${t.u} | ${t.score.toFixed(1)} % |`;
+  return `| ${name} | ${t.n} | ${t.k} | ${t.s} | ${t.e} | ${t.u} | ${t.score.toFixed(1)} % | ${t.scoreOfRest.toFixed(1)} % |`;
 };
-const header = (what) => [`| ${what} | mutants | killed | survived | of them explained | unreached | score |`,
-  "|---|---:|---:|---:|---:|---:|---:|"];
+const header = (what) => [`| ${what} | mutants | killed | survived | of them explained | unreached | score | of the unexplained |`,
+  "|---|---:|---:|---:|---:|---:|---:|---:|"];
 const folderOf = (f) => f.split("/")[0];
   const lines = [`Mutants of glsl/snell, commit ${must("git", ["-C", root, "rev-parse", "--short", "HEAD"]).stdout.trim()}, ` +
   `${new Date().toISOString().slice(0, 16).replace("T", " ")} UTC (tests/mutation/run.mjs). Score: killed / all; ` +
-  "an explained survivor is one tests/mutation/explained.tsv says why no test can or should kill.", "",
+  "an explained survivor is one tests/mutation/explained.tsv says why no test can or should kill; the last " +
+  "column leaves those out (killed / (all - explained)).", "",
 ...header("folder")];
 for (const folder of [...new Set(files.map(folderOf))]) lines.push(row(`${folder}/`, all.filter((r) => folderOf(r.file) === folder)));
 lines.push(row("all", all), "", ...header("file"));
