@@ -549,3 +549,286 @@ TEST(IntersectMarch, LinearMarchIsTheContractsWalkStepByStep) {
     EXPECT_TRUE(a.uv == b.uv && a.position == b.position && a.valid == b.valid && a.fetches == b.fetches);
   }
 }
+
+namespace {
+
+// A fronto-parallel wall at view z = -4 filling a size.x x size.y buffer, seen through the projection
+// clip = (x, y, -z - 1, -z): uv = 0.5 (x, y) / -z + 0.5 with no rounding for the points below, so a
+// ray can be put exactly on the screen's edge or exactly on the wall. INFINITE_REVERSED depth 0.125 is
+// view distance zNear / 0.125 = 4 (the convention's v = n / d, exact in float).
+struct FlatWall {
+  snell::Texture2D depth;
+  SnellDepthSurface surface;
+};
+FlatWall flatWall(int w, int h, float scale = 1.0f) {
+  mat4 m(0.0f);
+  m[0][0] = scale;
+  m[1][1] = scale;
+  m[2][2] = -scale;
+  m[2][3] = -scale;
+  m[3][2] = -scale;
+  FlatWall fw{snell::Texture2D(snell::Image(w, h, vec4(0.125f, 0.0f, 0.0f, 0.0f))),
+              snellDepthSurface(m, 0.5f, 100.0f, SNELL_DEPTH_INFINITE_REVERSED, 0.0f)};
+  return fw;
+}
+constexpr float kWallZ = -4.0f;
+const float kJustPastOne = std::nextafter(1.0f, 2.0f);
+
+}  // namespace
+
+// The screen is the closed square [0,1]^2: a sample exactly on an edge is read (the texel at the edge), one
+// an ulp past it ends the march. Points at view z -8 with x or y = +-8 project exactly onto the edges.
+TEST(IntersectMarch, LinearMarchSamplesOnTheScreensEdgeAreOnScreen) {
+  const FlatWall fw = flatWall(64, 64);
+  const vec3 down(0.0f, 0.0f, -1.0f);
+  struct Edge {
+    vec2 xy;
+    vec2 uv;
+  };
+  const Edge edges[] = {{{-8.0f, 2.0f}, {0.0f, 0.625f}}, {{8.0f, 2.0f}, {1.0f, 0.625f}},
+                        {{2.0f, -8.0f}, {0.625f, 0.0f}}, {{2.0f, 8.0f}, {0.625f, 1.0f}}};
+  for (const Edge& e : edges) {
+    // One step of 6 from z = -2: the sample is (x, y, -8), on the edge and behind the wall.
+    const SnellHit h = snellLinearMarch(vec3(e.xy, -2.0f), down, fw.depth, fw.surface, 6.0f, 1, 0);
+    ASSERT_TRUE(h.valid) << e.uv.x << " " << e.uv.y;
+    EXPECT_EQ(h.fetches, 1);
+    EXPECT_EQ(h.uv, e.uv);
+    EXPECT_EQ(h.position, vec3(e.xy, -8.0f));
+    // An ulp past the edge: off screen, the march ends without a fetch.
+    const vec2 past = e.xy * kJustPastOne * kJustPastOne;  // x / 8 = 1 + 2^-22: uv = 1 + 2^-23 (or -2^-23)
+    const SnellHit m = snellLinearMarch(vec3(past, -2.0f), down, fw.depth, fw.surface, 6.0f, 1, 0);
+    EXPECT_FALSE(m.valid);
+    EXPECT_EQ(m.fetches, 0);
+    // Refinement: the one step from z = -2 to -14 crosses; its midpoint (z = -8) is on the edge and crosses
+    // too, so it becomes the hit. Past the edge (an ulp, or 10 %), the midpoint is off screen: no fetch, the
+    // bracket's far end stays the hit.
+    const SnellHit r = snellLinearMarch(vec3(e.xy, -2.0f), down, fw.depth, fw.surface, 12.0f, 1, 1);
+    ASSERT_TRUE(r.valid);
+    EXPECT_EQ(r.fetches, 2);
+    EXPECT_EQ(r.uv, e.uv);
+    EXPECT_EQ(r.position, vec3(e.xy, -8.0f));
+    for (const vec2 xy : {past, e.xy * 1.1f}) {
+      const SnellHit o = snellLinearMarch(vec3(xy, -2.0f), down, fw.depth, fw.surface, 12.0f, 1, 1);
+      ASSERT_TRUE(o.valid);
+      EXPECT_EQ(o.fetches, 1);
+      EXPECT_EQ(o.position, vec3(xy, -14.0f));
+    }
+  }
+}
+
+// "On or behind the surface (z <= viewZ)" crosses: a sample exactly on the wall is a hit, in the march and
+// in the refinement.
+TEST(IntersectMarch, LinearMarchSampleExactlyOnTheSurfaceCrosses) {
+  const FlatWall fw = flatWall(64, 64);
+  const vec3 o(0.3f, 0.2f, -1.0f), down(0.0f, 0.0f, -1.0f);
+  const SnellHit h = snellLinearMarch(o, down, fw.depth, fw.surface, 3.0f, 1, 0);
+  ASSERT_TRUE(h.valid);
+  EXPECT_EQ(h.fetches, 1);
+  EXPECT_EQ(h.position, vec3(0.3f, 0.2f, kWallZ));
+  // One step to z = -7, its midpoint exactly on the wall: the hit moves there.
+  const SnellHit r = snellLinearMarch(o, down, fw.depth, fw.surface, 6.0f, 1, 3);
+  ASSERT_TRUE(r.valid);
+  EXPECT_EQ(r.fetches, 4);
+  EXPECT_EQ(r.position.z, kWallZ);
+}
+
+// The cases the contract answers with 0 fetches cost none; a ray parallel to the image plane (dir.z = 0) is
+// not cut at the near plane; a positive maxDistance, however small, is marched.
+TEST(IntersectMarch, LinearMarchEarlyMissesCostNoFetchAndTinyRaysMarch) {
+  const FlatWall fw = flatWall(64, 64);
+  const SnellDepthSurface& s = fw.surface;
+  const vec3 o(0.3f, 0.2f, -2.0f), d(0.0f, 0.0f, -1.0f);
+  EXPECT_EQ(snellLinearMarch(vec3(kNaN, 0.2f, -2.0f), d, fw.depth, s, 10.0f, 8, 2).fetches, 0);
+  EXPECT_EQ(snellLinearMarch(o, vec3(0.0f), fw.depth, s, 10.0f, 8, 2).fetches, 0);
+  // At the near plane, towards the camera (an ulp of dir.z, or a whole one): nothing of the ray is inside.
+  for (const float dz : {1e-40f, 1e-30f, 1.0f}) {
+    const SnellHit h = snellLinearMarch(vec3(0.3f, 0.2f, -0.5f), vec3(0.1f, 0.0f, dz), fw.depth, s, 0.1f, 8, 2);
+    EXPECT_FALSE(h.valid) << dz;
+    EXPECT_EQ(h.fetches, 0) << dz;
+  }
+  // Parallel to the image plane behind the wall: the first sample crosses.
+  const SnellHit flat = snellLinearMarch(vec3(-0.5f, 0.25f, -6.0f), vec3(1.0f, 0.0f, 0.0f), fw.depth, s, 4.0f, 4, 0);
+  ASSERT_TRUE(flat.valid);
+  EXPECT_EQ(flat.fetches, 1);
+  EXPECT_EQ(flat.position, vec3(0.5f, 0.25f, -6.0f));
+  // A denormal maxDistance from behind the wall: the one sample is (up to rounding) the origin, behind it.
+  const SnellHit tiny = snellLinearMarch(vec3(0.3f, 0.2f, -6.0f), d, fw.depth, s, 1e-40f, 1, 0);
+  ASSERT_TRUE(tiny.valid);
+  EXPECT_EQ(tiny.fetches, 1);
+  EXPECT_EQ(tiny.position, vec3(0.3f, 0.2f, -6.0f));
+  // Steps beyond the bound are the bound: 512 steps of 4 / 512 from z = -2 meet the wall at step 256.
+  const SnellHit many = snellLinearMarch(o, d, fw.depth, s, 4.0f, 100000, 0);
+  ASSERT_TRUE(many.valid);
+  EXPECT_EQ(many.fetches, SNELL_LINEAR_MARCH_MAX_STEPS / 2);
+  EXPECT_EQ(many.position.z, kWallZ);
+}
+
+// Rays towards the camera are marched up to the near plane: t_i = i tMax / steps with tMax cut there, the
+// contract's walk replayed in double (linearReference) from origins behind the slanted plane.
+TEST(IntersectMarch, LinearMarchTowardsTheCameraStopsAtTheNearPlane) {
+  const DepthScene& sc = planeScene();
+  const SnellDepthSurface surf = sc.surface();
+  std::mt19937 rng(35);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  int checked = 0, cut = 0;
+  for (int k = 0; k < 600; ++k) {
+    const glm::dvec2 uv(0.2 + 0.6 * u01(rng), 0.2 + 0.6 * u01(rng));
+    const double zs = sc.surfaceZ(uv);
+    const glm::dvec3 o = (-zs + 0.2 + 2.0 * u01(rng)) * sc.pixelRay(uv);
+    const glm::dvec3 target = (0.1 + 2.0 * u01(rng)) * sc.pixelRay(glm::dvec2(0.2 + 0.6 * u01(rng), 0.2 + 0.6 * u01(rng)));
+    const vec3 of(o), df(glm::normalize(target - o));
+    const float dist = k % 2 ? 25.0f : 6.0f;
+    const int steps = 1 + k % 7, refine = k % 5;
+    const MarchReference want = linearReference(sc, glm::dvec3(of), glm::dvec3(df), dist, steps, refine);
+    if (want.ambiguous) continue;
+    ++checked;
+    cut += (-sc.zNear - of.z) / df.z < dist;
+    expectTheReferenceHit(snellLinearMarch(of, df, sc.depth, surf, dist, steps, refine), want, "ray " + std::to_string(k));
+    if (::testing::Test::HasFailure()) return;
+  }
+  EXPECT_GT(checked, 400);
+  EXPECT_GT(cut, 100);
+}
+
+// The DDA's first step samples the origin's own uv: exactly on an edge of [0,1]^2 it is on screen (a hit
+// here, the origin being behind the wall), an ulp past it the walk ends with no fetch.
+TEST(IntersectMarch, DdaStepOnTheScreensEdgeIsOnScreen) {
+  const FlatWall fw = flatWall(64, 64);
+  const vec3 down(0.0f, 0.0f, -1.0f);
+  struct Edge {
+    vec2 xy;
+    vec2 uv;
+  };
+  const Edge edges[] = {{{-8.0f, 2.0f}, {0.0f, 0.625f}}, {{8.0f, 2.0f}, {1.0f, 0.625f}},
+                        {{2.0f, -8.0f}, {0.625f, 0.0f}}, {{2.0f, 8.0f}, {0.625f, 1.0f}}};
+  for (const Edge& e : edges) {
+    const SnellHit h = snellDdaMarch(vec3(e.xy, -8.0f), down, fw.depth, fw.surface, 10.0f, FLT_MAX, 1.0f, 64);
+    ASSERT_TRUE(h.valid) << e.uv.x << " " << e.uv.y;
+    EXPECT_EQ(h.fetches, 1);
+    EXPECT_EQ(h.uv, e.uv);
+    EXPECT_LT(glm::length(h.position - vec3(e.xy, -8.0f)), 1e-5f);
+    const vec2 past = e.xy * kJustPastOne * kJustPastOne;  // uv = 1 + 2^-23 (or -2^-23)
+    const SnellHit m = snellDdaMarch(vec3(past, -8.0f), down, fw.depth, fw.surface, 10.0f, FLT_MAX, 1.0f, 64);
+    EXPECT_FALSE(m.valid);
+    EXPECT_EQ(m.fetches, 0);
+  }
+}
+
+// A step hits when zNear >= viewZ - thickness and zFar <= viewZ, both ends included: with thickness 0 the
+// wall is the single depth -4, met by a step that starts on it and by the last step of a segment that ends
+// on it (its far end, s = 1, is the end point itself).
+TEST(IntersectMarch, DdaDepthIntervalIncludesItsEnds) {
+  const FlatWall fw = flatWall(64, 64);
+  const vec3 down(0.0f, 0.0f, -1.0f);
+  const SnellHit starts = snellDdaMarch(vec3(0.3f, 0.2f, kWallZ), down, fw.depth, fw.surface, 4.0f, 0.0f, 1.0f, 64);
+  ASSERT_TRUE(starts.valid);
+  EXPECT_EQ(starts.fetches, 1);
+  EXPECT_LT(glm::length(starts.position - vec3(0.3f, 0.2f, kWallZ)), 1e-5f);
+  // From z = -2 to -4: uv moves 2.4 px in x (0.575 to 0.5375 of 64), so steps s = 0, 1/2.4, 2/2.4, the last
+  // owning s = 1.
+  const SnellHit ends = snellDdaMarch(vec3(0.3f, 0.2f, -2.0f), down, fw.depth, fw.surface, 2.0f, 0.0f, 1.0f, 64);
+  ASSERT_TRUE(ends.valid);
+  EXPECT_EQ(ends.fetches, 3);
+  EXPECT_LT(glm::length(ends.position - vec3(0.3f, 0.2f, kWallZ)), 1e-5f);
+}
+
+// A segment within one pixel (a ray along the line of sight) is two steps, s in [0, 1/2] and [1/2, 1]:
+// from z = -2 to -40, 1/z is linear in s, and the wall (1/z = -1/4) lies at s = 0.25 / 0.475 = 0.526, in
+// the second half.
+TEST(IntersectMarch, DdaSegmentWithinOnePixelTakesTwoHalves) {
+  const FlatWall fw = flatWall(64, 64);
+  const vec3 o(0.5f, 0.25f, -2.0f);
+  const float dist = 19.0f * glm::length(o);  // end = 20 o
+  const SnellHit h = snellDdaMarch(o, o, fw.depth, fw.surface, dist, FLT_MAX, 1.0f, 64);
+  ASSERT_TRUE(h.valid);
+  EXPECT_EQ(h.fetches, 2);
+  EXPECT_LT(glm::length(h.position - 2.0f * o), 1e-4f);
+}
+
+// The zero-fetch cases of the contract cost no fetch, and the ends' 1/w is accepted over the whole normal
+// range: the same wall seen through the projection scaled by 2^-126 or 2^123 (the same uv, clip w scaled)
+// with an end at w exactly FLT_MIN or 1 / FLT_MIN, and rejected just above 1 / FLT_MIN.
+TEST(IntersectMarch, DdaEarlyMissesAndTheRangeOfW) {
+  const FlatWall fw = flatWall(64, 64);
+  const vec3 down(0.0f, 0.0f, -1.0f), up(0.0f, 0.0f, 1.0f);
+  EXPECT_EQ(snellDdaMarch(vec3(kNaN, 0.2f, -2.0f), down, fw.depth, fw.surface, 10.0f, FLT_MAX, 1.0f, 64).fetches, 0);
+  // The level has no texels.
+  SnellDepthSurface lod1 = fw.surface;
+  lod1.lod = 1;
+  const SnellHit none = snellDdaMarch(vec3(0.3f, 0.2f, -2.0f), down, fw.depth, lod1, 10.0f, FLT_MAX, 1.0f, 64);
+  EXPECT_FALSE(none.valid);
+  EXPECT_EQ(none.fetches, 0);
+  // An origin whose uv overflows (x / w = 3e38 / 0.5): off screen at the first step.
+  const SnellHit far = snellDdaMarch(vec3(1.5e38f, 0.0f, -0.5f), down, fw.depth, fw.surface, 10.0f, FLT_MAX, 1.0f, 64);
+  EXPECT_FALSE(far.valid);
+  EXPECT_EQ(far.fetches, 0);
+  // A denormal maxDistance from behind the wall: the segment is the origin, which hits.
+  const SnellHit tiny = snellDdaMarch(vec3(0.3f, 0.2f, -6.0f), down, fw.depth, fw.surface, 1e-40f, FLT_MAX, 1.0f, 64);
+  ASSERT_TRUE(tiny.valid);
+  EXPECT_EQ(tiny.fetches, 1);
+  EXPECT_LT(glm::length(tiny.position - vec3(0.3f, 0.2f, -6.0f)), 1e-5f);
+
+  const FlatWall small = flatWall(64, 64, std::ldexp(1.0f, -126));
+  // Origin at w = FLT_MIN (z = -1), crossing the wall further on.
+  const SnellHit a = snellDdaMarch(vec3(0.25f, 0.125f, -1.0f), down, small.depth, small.surface, 10.0f, FLT_MAX, 1.0f, 64);
+  ASSERT_TRUE(a.valid);
+  EXPECT_LT(glm::length(a.position - vec3(0.25f, 0.125f, kWallZ)), 1e-5f);
+  // End at w = FLT_MIN; the origin is behind the wall, so the first step hits.
+  const SnellHit b = snellDdaMarch(vec3(0.25f, 0.125f, -6.0f), up, small.depth, small.surface, 5.0f, FLT_MAX, 1.0f, 64);
+  ASSERT_TRUE(b.valid);
+  EXPECT_EQ(b.fetches, 1);
+  const FlatWall large = flatWall(64, 64, std::ldexp(1.0f, 123));
+  // Origin, then end, at w = 8 2^123 = 1 / FLT_MIN, the other end at z = -6; origins behind the wall.
+  const SnellHit c = snellDdaMarch(vec3(0.25f, 0.125f, -8.0f), up, large.depth, large.surface, 2.0f, FLT_MAX, 1.0f, 64);
+  ASSERT_TRUE(c.valid);
+  EXPECT_EQ(c.fetches, 1);
+  const SnellHit d = snellDdaMarch(vec3(0.25f, 0.125f, -6.0f), down, large.depth, large.surface, 2.0f, FLT_MAX, 1.0f, 64);
+  ASSERT_TRUE(d.valid);
+  EXPECT_EQ(d.fetches, 1);
+  // w = 8.5 2^123 at the origin, then at the end: 1/w is denormal.
+  const SnellHit e = snellDdaMarch(vec3(0.25f, 0.125f, -8.5f), up, large.depth, large.surface, 2.0f, FLT_MAX, 1.0f, 64);
+  EXPECT_FALSE(e.valid);
+  EXPECT_EQ(e.fetches, 0);
+  const SnellHit f = snellDdaMarch(vec3(0.25f, 0.125f, -6.0f), down, large.depth, large.surface, 2.5f, FLT_MAX, 1.0f, 64);
+  EXPECT_FALSE(f.valid);
+  EXPECT_EQ(f.fetches, 0);
+}
+
+// A level one texel wide or high has texels: the DDA marches it.
+TEST(IntersectMarch, DdaReadsALevelOneTexelWide) {
+  for (const glm::ivec2 size : {glm::ivec2(1, 64), glm::ivec2(64, 1)}) {
+    const FlatWall fw = flatWall(size.x, size.y);
+    const SnellHit h = snellDdaMarch(vec3(0.3f, 0.2f, -2.0f), vec3(0.0f, 0.0f, -1.0f), fw.depth, fw.surface, 4.0f,
+                                     FLT_MAX, 1.0f, 64);
+    ASSERT_TRUE(h.valid) << size.x;
+    EXPECT_LT(glm::length(h.position - vec3(0.3f, 0.2f, kWallZ)), 1e-5f);
+  }
+}
+
+// Rays towards the camera are cut at the near plane: the contract's walk replayed (ddaReference) from
+// origins behind the slanted plane, with thicknesses that let the first steps pass behind it.
+TEST(IntersectMarch, DdaTowardsTheCameraStopsAtTheNearPlane) {
+  const DepthScene& sc = planeScene();
+  const SnellDepthSurface surf = sc.surface();
+  std::mt19937 rng(36);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  int checked = 0, cut = 0, hits = 0;
+  for (int k = 0; k < 600; ++k) {
+    const glm::dvec2 uv(0.2 + 0.6 * u01(rng), 0.2 + 0.6 * u01(rng));
+    const double zs = sc.surfaceZ(uv);
+    const glm::dvec3 o = (-zs + 0.2 + 2.0 * u01(rng)) * sc.pixelRay(uv);
+    const glm::dvec3 target = (0.1 + 2.0 * u01(rng)) * sc.pixelRay(glm::dvec2(0.2 + 0.6 * u01(rng), 0.2 + 0.6 * u01(rng)));
+    const vec3 of(o), df(glm::normalize(target - o));
+    const float dist = k % 2 ? 25.0f : 6.0f, thick = k % 3 ? 0.3f : 1.0f, stride = 1.0f + float(k % 3);
+    const MarchReference want = ddaReference(sc, glm::dvec3(of), glm::dvec3(df), dist, thick, stride, 1024);
+    if (want.ambiguous) continue;
+    ++checked;
+    hits += want.valid;
+    cut += (-sc.zNear - of.z) / df.z < dist;
+    expectTheReferenceHit(snellDdaMarch(of, df, sc.depth, surf, dist, thick, stride, 1024), want, "ray " + std::to_string(k));
+    if (::testing::Test::HasFailure()) return;
+  }
+  EXPECT_GT(checked, 400);
+  EXPECT_GT(cut, 100);
+  EXPECT_GT(hits, 100);
+}

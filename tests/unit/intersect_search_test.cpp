@@ -443,3 +443,174 @@ TEST(IntersectSearch, BisectTexRayClampsItsBracketAndSteps) {
   EXPECT_TRUE(same(snellBisectTexRay(r, sc.depth, surf, kNaN, 1.0f, 5, given), given));
   EXPECT_TRUE(same(snellBisectTexRay(r, sc.depth, surf, 0.0f, kNaN, 5, given), given));
 }
+
+namespace {
+
+// The linear phase of snellLinearBinarySearch replayed in double (beta_i = i / L, texels by index math, the
+// first sample that is not a valid texel strictly in front ends it), then the bisection of its step
+// (referenceBisection), whose last point is the result; with no bisection step the linear sample itself.
+Bisection referenceLinearBinary(const DepthScene& sc, const SnellTexRay& r, int linearSteps, int binarySteps) {
+  Bisection b;
+  const glm::dvec3 s(r.s), e(r.e);
+  const int nl = std::clamp(linearSteps, 1, SNELL_LINEAR_SEARCH_MAX_STEPS);
+  for (int i = 1; i <= nl; ++i) {
+    const double beta = double(i) / nl;
+    const glm::dvec3 p = s + beta * (e - s);
+    const glm::dvec2 uv = sc.project(p);
+    const glm::dvec2 t(uv.x * sc.width, uv.y * sc.height);
+    const bool onScreen = uv.x >= 0.0 && uv.x <= 1.0 && uv.y >= 0.0 && uv.y <= 1.0;
+    double z = std::numeric_limits<double>::quiet_NaN();
+    if (onScreen) {
+      z = texelViewZ(sc, std::min(int(std::floor(t.x)), sc.width - 1), std::min(int(std::floor(t.y)), sc.height - 1));
+      if (std::fabs(t.x - std::round(t.x)) < 1e-4 || std::fabs(t.y - std::round(t.y)) < 1e-4) b.ambiguous = true;
+      if (!std::isnan(z) && std::fabs(p.z - z) < 2e-6 * std::fabs(z)) b.ambiguous = true;
+    } else if (std::max(std::fabs(uv.x - std::clamp(uv.x, 0.0, 1.0)), std::fabs(uv.y - std::clamp(uv.y, 0.0, 1.0))) < 1e-6) {
+      b.ambiguous = true;
+    }
+    ++b.fetches;
+    const bool valid = onScreen && !std::isnan(z);
+    if (valid && p.z > z) continue;
+    if (std::clamp(binarySteps, 0, SNELL_BINARY_SEARCH_MAX_STEPS) == 0) {
+      b.position = p;
+      b.uv = uv;
+      b.valid = valid;
+      return b;
+    }
+    const Bisection tail = referenceBisection(sc, r, double(i - 1) / nl, beta, binarySteps, 1e-5);
+    Bisection out = tail;
+    out.fetches += b.fetches;
+    out.ambiguous |= b.ambiguous;
+    return out;
+  }
+  b.position = glm::dvec3(0.0);  // no crossing: a miss
+  b.valid = false;
+  b.uv = glm::dvec2(0.0);
+  return b;
+}
+
+}  // namespace
+
+// snellLinearBinarySearch against the contract replayed step by step, for linear step counts -2 .. 299
+// (clamped to [1, SNELL_LINEAR_SEARCH_MAX_STEPS]) and binary ones -1 .. 29, also with depth ranges that end
+// in front of the surface (no crossing: a miss with the fetches spent).
+TEST(IntersectSearch, LinearBinarySearchIsTheContractsWalkStepByStep) {
+  for (const DepthScene* sc : {&silhouetteScene(), &sphereScene()}) {
+    const SnellDepthSurface surf = sc->surface();
+    const auto range = depthRange(*sc);
+    const std::vector<Ray> rays = snell_search_test::sceneRays(*sc, 2000, 22);
+    int checked = 0, skipped = 0, misses = 0, invalidEnds = 0;
+    for (std::size_t k = 0; k < rays.size(); ++k) {
+      const Ray& ray = rays[k];
+      const int linear = static_cast<int>((k * 37) % 302) - 2, binary = static_cast<int>(k % 31) - 1;
+      // Every third ray searches only the front part of the range, which may hold no crossing.
+      const float zf = k % 3 ? range.second : range.first - 0.2f * (range.first - range.second);
+      const SnellTexRay r = snellSearchSegment(ray.origin, ray.dir, range.first, zf, sc->clipFromView);
+      const SnellHit h = snellLinearBinarySearch(ray.origin, ray.dir, sc->depth, surf, range.first, zf, linear, binary);
+      if (!r.valid) {
+        EXPECT_FALSE(h.valid);
+        EXPECT_EQ(h.fetches, 0);
+        continue;
+      }
+      const Bisection want = referenceLinearBinary(*sc, r, linear, binary);
+      if (want.ambiguous) {
+        ++skipped;
+        continue;
+      }
+      ++checked;
+      const std::string what = "ray " + std::to_string(k) + ", linear " + std::to_string(linear) + ", binary " +
+                               std::to_string(binary);
+      EXPECT_EQ(h.fetches, want.fetches) << what;
+      EXPECT_EQ(h.valid, want.valid) << what;
+      const bool miss = want.position == glm::dvec3(0.0);
+      misses += miss;
+      invalidEnds += !miss && !want.valid;
+      const double scale = std::max(1.0, glm::length(glm::dvec3(r.e)));
+      EXPECT_NEAR(h.position.x, want.position.x, 2e-5 * scale) << what;
+      EXPECT_NEAR(h.position.y, want.position.y, 2e-5 * scale) << what;
+      EXPECT_NEAR(h.position.z, want.position.z, 2e-5 * scale) << what;
+      EXPECT_NEAR(h.uv.x, want.uv.x, 2e-5) << what;
+      EXPECT_NEAR(h.uv.y, want.uv.y, 2e-5) << what;
+      if (::testing::Test::HasFailure()) return;
+    }
+    std::printf("[linear+binary step by step] %s: %d checked (%d misses, %d ending on an empty texel), %d skipped\n",
+                sc->name.c_str(), checked, misses, invalidEnds, skipped);
+    EXPECT_GT(checked, 1000);
+    EXPECT_GT(misses, 10);
+    EXPECT_GT(invalidEnds, 10);
+  }
+}
+
+namespace {
+
+// A fronto-parallel wall at view z = -4 (INFINITE_REVERSED depth 0.125 = zNear / 4, exact in float) filling
+// a 64 x 64 buffer, seen through a plain perspective (clip = (x, y, -z - 1, -z)). With S at z = -2 and E at
+// z = -6, beta = 1/2 is z = -4 exactly: a point exactly on the surface, which is not strictly in front.
+struct Wall {
+  snell::Texture2D depth{snell::Image(64, 64, vec4(0.125f, 0.0f, 0.0f, 0.0f))};
+  SnellDepthSurface surface;
+  Wall() {
+    mat4 m(0.0f);
+    m[0][0] = 1.0f;
+    m[1][1] = 1.0f;
+    m[2][2] = -1.0f;
+    m[2][3] = -1.0f;
+    m[3][2] = -1.0f;
+    surface = snellDepthSurface(m, 0.5f, 100.0f, SNELL_DEPTH_INFINITE_REVERSED, 0.0f);
+  }
+};
+
+}  // namespace
+
+// "Strictly in front (z > viewZ)" advances: a point exactly on the surface does not, in each search.
+TEST(IntersectSearch, APointExactlyOnTheSurfaceIsNotInFront) {
+  const Wall w;
+  const vec3 o(0.3f, 0.2f, -1.0f), d(0.0f, 0.0f, -1.0f);
+  // Binary: mid 1/2 is on the wall, so hi moves there and the next mid is 1/4 (z = -3).
+  const SnellHit b = snellBinarySearch(o, d, w.depth, w.surface, -2.0f, -6.0f, 2);
+  EXPECT_TRUE(b.valid);
+  EXPECT_EQ(b.fetches, 2);
+  EXPECT_EQ(b.position, vec3(0.3f, 0.2f, -3.0f));
+  // Linear + binary: the first linear sample (1/2) ends the linear phase.
+  const SnellHit l = snellLinearBinarySearch(o, d, w.depth, w.surface, -2.0f, -6.0f, 2, 0);
+  EXPECT_TRUE(l.valid);
+  EXPECT_EQ(l.fetches, 1);
+  EXPECT_EQ(l.position, vec3(0.3f, 0.2f, -4.0f));
+  // CBS: the one step (1/2) does not advance, so S is tested and returned.
+  const SnellHit c = snellConservativeBinarySearch(o, d, w.depth, w.surface, -2.0f, -6.0f, 1);
+  EXPECT_TRUE(c.valid);
+  EXPECT_EQ(c.fetches, 2);
+  EXPECT_EQ(c.position, vec3(0.3f, 0.2f, -2.0f));
+  // CBS with no step tests S only.
+  const SnellHit c0 = snellConservativeBinarySearch(o, d, w.depth, w.surface, -2.0f, -6.0f, 0);
+  EXPECT_TRUE(c0.valid);
+  EXPECT_EQ(c0.fetches, 1);
+  EXPECT_EQ(c0.position, vec3(0.3f, 0.2f, -2.0f));
+  // snellBisectTexRay clamps lo above 1 to 1: the one midpoint is E.
+  const SnellTexRay r = snellSearchSegment(o, d, -2.0f, -6.0f, w.surface.clipFromView);
+  ASSERT_TRUE(r.valid);
+  const SnellHit e = snellBisectTexRay(r, w.depth, w.surface, 1.05f, 1.0f, 1, snellHitMiss(0));
+  EXPECT_EQ(e.fetches, 1);
+  EXPECT_EQ(e.position.z, -6.0f);
+}
+
+// An invalid segment: every field 0, and each search misses without a fetch. dir.z = -FLT_MIN is not
+// denormal (a valid, if steep, segment); an origin exactly at zFarthest has nothing left to search.
+TEST(IntersectSearch, SegmentEdgesAndInvalidSegmentsCostNoFetch) {
+  const Wall w;
+  const vec3 o(0.3f, 0.2f, -1.0f), towards(0.0f, 0.1f, 1.0f);
+  const SnellTexRay bad = snellSearchSegment(o, towards, -2.0f, -6.0f, w.surface.clipFromView);
+  EXPECT_FALSE(bad.valid);
+  EXPECT_EQ(bad.s, vec3(0.0f));
+  EXPECT_EQ(bad.e, vec3(0.0f));
+  EXPECT_EQ(bad.k1, 0.0f);
+  EXPECT_EQ(bad.k2, 0.0f);
+  EXPECT_EQ(bad.ts, vec2(0.0f));
+  EXPECT_EQ(bad.dt, vec2(0.0f));
+  EXPECT_EQ(snellBinarySearch(o, towards, w.depth, w.surface, -2.0f, -6.0f, 4).fetches, 0);
+  EXPECT_EQ(snellConservativeBinarySearch(o, towards, w.depth, w.surface, -2.0f, -6.0f, 4).fetches, 0);
+  EXPECT_EQ(snellLinearBinarySearch(o, towards, w.depth, w.surface, -2.0f, -6.0f, 4, 4).fetches, 0);
+  EXPECT_TRUE(snellSearchSegment(vec3(0.3f, 0.2f, -5.0f), vec3(0.0f, 0.0f, -FLT_MIN), -2.0f, -6.0f,
+                                 w.surface.clipFromView).valid);  // E at t = 2^126
+  EXPECT_FALSE(snellSearchSegment(vec3(0.3f, 0.2f, -6.0f), vec3(0.0f, 0.0f, -1.0f), -2.0f, -6.0f,
+                                  w.surface.clipFromView).valid);
+}

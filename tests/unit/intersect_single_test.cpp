@@ -198,3 +198,36 @@ TEST(IntersectSingle, HitOnSurfaceAndSampleSurface) {
 }
 
 }  // namespace
+
+// |dir|^2 below 1e-30 is rejected, 1e-30 itself is not; a position 5 % past the screen's right edge is
+// off screen. On a wall at z = -4 (INFINITE_REVERSED depth 0.125 = zNear / 4), seen through
+// clip = (x, y, -z - 1, -z): from W = (0, 0, -3) B is 1 behind, so the position is W + 1 along dir.
+TEST(IntersectSingle, DirectionLengthThresholdAndTheScreensEdge) {
+  mat4 m(0.0f);
+  m[0][0] = 1.0f;
+  m[1][1] = 1.0f;
+  m[2][2] = -1.0f;
+  m[2][3] = -1.0f;
+  m[3][2] = -1.0f;
+  const snell::SnellDepthSurface s = snell::snellDepthSurface(m, 0.5f, 100.0f, SNELL_DEPTH_INFINITE_REVERSED, 0.0f);
+  const snell::Texture2D wall(snell::Image(64, 64, glm::vec4(0.125f, 0.0f, 0.0f, 0.0f)));
+  // The float x whose square (dot(dir, dir) for dir = (x, 0, 0)) is 1e-30f exactly.
+  float x = 1e-15f;
+  for (int k = 0; k < 64 && x * x != 1e-30f; ++k) x = std::nextafter(x, x * x < 1e-30f ? 1.0f : 0.0f);
+  ASSERT_EQ(x * x, 1e-30f);
+  const glm::vec3 w(0.0f, 0.0f, -3.0f);
+  const snell::SnellHit h = snell::snellIntersectSingleSample(w, glm::vec3(x, 0.0f, 0.0f), wall, s);
+  EXPECT_TRUE(h.valid);
+  EXPECT_EQ(h.fetches, 1);
+  const float below = std::nextafter(x, 0.0f);
+  ASSERT_LT(below * below, 1e-30f);
+  EXPECT_EQ(snell::snellIntersectSingleSample(w, glm::vec3(below, 0.0f, 0.0f), wall, s).fetches, 0);
+  // From W = (0, 0, -1.9), B (the centre of the texel at uv 1/2) is about 2.1 behind, so the position
+  // (2.1, 0, -1.9) or (0, 2.1, -1.9) projects to uv 0.5 + 0.5 (2.1 / 1.9) = 1.05: off screen.
+  const glm::vec3 w2(0.0f, 0.0f, -1.9f);
+  for (const glm::vec3 dir : {glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)}) {
+    const snell::SnellHit o = snell::snellIntersectSingleSample(w2, dir, wall, s);
+    EXPECT_FALSE(o.valid);
+    EXPECT_EQ(o.fetches, 1);
+  }
+}
