@@ -250,8 +250,54 @@ TEST(CameraDepth, NdcZMapping) {
   EXPECT_EQ(snellNdcZToDepth(-5.0f, SNELL_DEPTH_GL), 0.0f);
   EXPECT_EQ(snellNdcZToDepth(kInf, SNELL_DEPTH_GL), 1.0f);
   EXPECT_EQ(snellNdcZToDepth(-0.5f, SNELL_DEPTH_ZERO_ONE), 0.0f);
+  EXPECT_EQ(snellNdcZToDepth(1.05f, SNELL_DEPTH_ZERO_ONE), 1.0f);
+  EXPECT_EQ(snellNdcZToDepth(kInf, SNELL_DEPTH_REVERSED), 1.0f);
   EXPECT_EQ(snellNdcZToDepth(kNaN, SNELL_DEPTH_INFINITE_GL), 0.0f);
   EXPECT_EQ(snellNdcZToDepth(kNaN, SNELL_DEPTH_ZERO_ONE), 0.0f);
+}
+
+// The smallest normal zNear is a positive near plane (only denormals count as 0):
+// depth 0 is the near plane itself, and a point at twice that distance has infinite
+// reversed depth n / v = 1/2 exactly.
+TEST(CameraDepth, SmallestNormalNearPlaneIsValid) {
+  const float n = std::numeric_limits<float>::min();
+  EXPECT_EQ(snellLinearizeDepth(0.0f, n, 1.0f, SNELL_DEPTH_GL), n);
+  EXPECT_EQ(snellLinearizeDepth(0.5f, n, 1.0f, SNELL_DEPTH_INFINITE_REVERSED), 2.0f * n);
+  EXPECT_EQ(snellDelinearizeDepth(2.0f * n, n, 1.0f, SNELL_DEPTH_INFINITE_REVERSED), 0.5f);
+  EXPECT_EQ(snellDelinearizeDepth(4.0f * n, n, 1.0f, SNELL_DEPTH_INFINITE_GL), 0.75f);
+}
+
+// SNELL_DEPTH_CONVENTION_COUNT is one past the last convention: unknown, so the
+// clear value 1; and zFar == zNear is an empty depth range (invalid) whatever the
+// distance, also one nearer than the near plane.
+TEST(CameraDepth, DelinearizeRejectsCountConventionAndEmptyRange) {
+  EXPECT_EQ(snellLinearizeDepth(0.5f, 1.0f, 10.0f, SNELL_DEPTH_CONVENTION_COUNT), 0.0f);
+  EXPECT_EQ(snellDelinearizeDepth(2.0f, 1.0f, 10.0f, SNELL_DEPTH_CONVENTION_COUNT), 1.0f);
+  for (int conv : kFinite) {
+    const float farValue = isReversed(conv) ? 0.0f : 1.0f;
+    for (float v : {0.5f, 1.0f, 2.0f}) {
+      EXPECT_EQ(snellDelinearizeDepth(v, 1.0f, 1.0f, conv), farValue) << conv << " v " << v;
+    }
+  }
+}
+
+// Depth is a value in [0, 1], and the far plane gives exactly the far value: the
+// GL/ZERO_ONE form multiplies two rounded quotients, which can land an ulp off 1
+// at the far plane and an ulp above 1 just nearer than it.
+TEST(CameraDepth, DelinearizeNeverExceedsOneAtTheFarPlane) {
+  std::mt19937 rng(5);
+  for (int i = 0; i < 20000; ++i) {
+    const Camera c = randomCamera(rng);
+    for (int conv : kFinite) {
+      const float farValue = isReversed(conv) ? 0.0f : 1.0f;
+      ASSERT_EQ(snellDelinearizeDepth(c.f, c.n, c.f, conv), farValue) << conv << " n " << c.n << " f " << c.f;
+      const float below = std::nextafter(c.f, 0.0f);
+      const float d = snellDelinearizeDepth(below, c.n, c.f, conv);
+      ASSERT_GE(d, 0.0f);
+      ASSERT_LE(d, 1.0f) << conv << " n " << c.n << " f " << c.f;
+      ASSERT_NEAR(d, referenceDepth(below, c.n, c.f, conv), 5e-7);
+    }
+  }
 }
 
 }  // namespace

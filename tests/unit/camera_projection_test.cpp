@@ -1,5 +1,5 @@
 // glsl/snell/camera/perspective.glsl, view_to_clip.glsl, view_to_uv.glsl,
-// pixel_to_uv.glsl and uv_depth_to_view.glsl, checked against GLM (matrices,
+// pixel_to_uv.glsl, uv_depth_to_view.glsl and uv_z_to_view.glsl, checked against GLM (matrices,
 // glm::inverse and glm::project in double) and against exact arithmetic.
 #include <gtest/gtest.h>
 
@@ -374,6 +374,158 @@ TEST(CameraProjection, UvDepthToViewEdgeCases) {
               snellUvDepthToView(glm::vec2(0.3f), 0.0f, inv, conv).position);
   }
   EXPECT_FALSE(snellUvDepthToView(glm::vec2(0.5f), 0.5f, snellPerspectiveInverse(1.0f, 1.0f, n, f, 0), 7).valid);
+}
+
+constexpr float kFltMin = std::numeric_limits<float>::min();
+
+// Entries at the smallest normal float are kept (only denormal ones zero the
+// matrix): infinite reversed Z has D = zNear, so zNear = FLT_MIN gives D =
+// FLT_MIN and the inverse's 1 / D = 2^126; aspect 2^126 at fovy = 2 float(pi/4)
+// has A = 1 / (2^126 tanf(pi/4)) = FLT_MIN in glm::perspective (tanf rounds to 1).
+TEST(CameraProjection, EntriesAtTheSmallestNormalFloatAreKept) {
+  const glm::mat4 m = snellPerspectiveWithDepth(1.0f, 1.0f, kFltMin, 10.0f, SNELL_DEPTH_INFINITE_REVERSED);
+  EXPECT_EQ(m[3][2], kFltMin);
+  EXPECT_EQ(m[2][3], -1.0f);
+  const glm::mat4 inv = snellPerspectiveInverse(1.0f, 1.0f, kFltMin, 10.0f, SNELL_DEPTH_INFINITE_REVERSED);
+  EXPECT_EQ(inv[2][3], 1.0f / kFltMin);
+  EXPECT_EQ(inv[3][2], -1.0f);
+
+  const float fovy = 2.0f * 0.78539818525f, aspect = std::ldexp(1.0f, 126);
+  const glm::mat4 g = glm::perspective(fovy, aspect, 1.0f, 10.0f);
+  ASSERT_EQ(g[0][0], kFltMin);
+  const glm::mat4 p = snellPerspective(fovy, aspect, 1.0f, 10.0f);
+  ASSERT_FALSE(isZero(p));
+  expectGlmEntries(p, g);
+  const glm::mat4 pi = snellPerspectiveInverse(fovy, aspect, 1.0f, 10.0f, SNELL_DEPTH_GL);
+  EXPECT_NEAR(pi[0][0], 1.0 / double(kFltMin), 4e-7 / double(kFltMin));
+}
+
+// One-pixel-wide or -high viewports are viewports: their only column or row has
+// its centre at 1/2; a zero height is no viewport at all.
+TEST(CameraProjection, OnePixelWideViewports) {
+  EXPECT_EQ(snellPixelToUv(glm::ivec2(0, 0), glm::ivec2(1, 1)), glm::vec2(0.5f, 0.5f));
+  EXPECT_EQ(snellPixelToUv(glm::ivec2(2, 1), glm::ivec2(1, 3)), glm::vec2(2.5f, float(1.5 / 3.0)));
+  EXPECT_EQ(snellUvToPixel(glm::vec2(0.5f, 0.9f), glm::ivec2(1, 4)), glm::ivec2(0, 3));
+  EXPECT_EQ(snellUvToPixel(glm::vec2(0.9f, 0.5f), glm::ivec2(4, 1)), glm::ivec2(3, 0));
+  EXPECT_EQ(snellUvToPixel(glm::vec2(0.9f, 0.5f), glm::ivec2(4, 0)), glm::ivec2(0, 0));
+  EXPECT_EQ(snellUvToPixel(glm::vec2(0.9f, 0.5f), glm::ivec2(4, -2)), glm::ivec2(0, 0));
+}
+
+// clip w = FLT_MIN is the smallest positive normal w: in front of the camera.
+TEST(CameraProjection, SmallestNormalClipWIsInFront) {
+  const SnellNdc n = snellClipToNdc(glm::vec4(0.0f, kFltMin, -kFltMin, kFltMin));
+  EXPECT_TRUE(n.valid);
+  EXPECT_EQ(n.ndc, glm::vec3(0.0f, 1.0f, -1.0f));
+  // A point FLT_MIN in front of the eye on the axis: w = -z = FLT_MIN; NDC z
+  // (C z + D) / w is finite here (|D| / FLT_MIN < FLT_MAX).
+  const glm::mat4 m = snellPerspective(1.0f, 1.0f, 0.1f, 100.0f);
+  const SnellScreenPoint sp = snellViewToUv(m, glm::vec3(0.0f, 0.0f, -kFltMin));
+  ASSERT_TRUE(sp.valid);
+  EXPECT_EQ(sp.uv, glm::vec2(0.5f));
+  const glm::dmat4 gl = glm::perspective(1.0, 1.0, 0.1, 100.0);
+  const double ndcZ = (gl[2][2] * -double(kFltMin) + gl[3][2]) / double(kFltMin);
+  EXPECT_NEAR(sp.ndcZ, ndcZ, 1e-6 * std::abs(ndcZ));
+}
+
+// A homogeneous matrix may be scaled by any factor: the points are the same.
+// The inverse of infinite reversed Z with A = B = zNear = 1 maps (x, y, z, w)
+// to (x, y, -w, z); scaled by 2 FLT_MIN it gives h.w = FLT_MIN for NDC z = 1/2,
+// the smallest normal w, still a point: p = (1, 1, -2) seen at uv (3/4, 3/4)
+// with depth n / 2 = 1/2.
+TEST(CameraProjection, ScaledInverseDownToSmallestNormalW) {
+  for (float scale : {1.0f, 2.0f * kFltMin}) {
+    const glm::mat4 inv(glm::vec4(scale, 0, 0, 0), glm::vec4(0, scale, 0, 0), glm::vec4(0, 0, 0, scale),
+                        glm::vec4(0, 0, -scale, 0));
+    const SnellViewPoint a = snellUvDepthToView(glm::vec2(0.75f), 0.5f, inv, SNELL_DEPTH_INFINITE_REVERSED);
+    EXPECT_TRUE(a.valid) << scale;
+    EXPECT_EQ(a.position, glm::vec3(1.0f, 1.0f, -2.0f)) << scale;
+    const SnellViewPoint b = snellUvDistanceToView(glm::vec2(0.75f), 2.0f, inv);
+    EXPECT_TRUE(b.valid) << scale;
+    EXPECT_EQ(b.position, glm::vec3(1.0f, 1.0f, -2.0f)) << scale;
+  }
+}
+
+// viewFromClip = identity (an orthographic camera whose view volume is the NDC
+// cube): GL depth d is the view z 2 d - 1, so depth 1/2 lies on the eye's plane
+// z = 0 (not in front: invalid) and depth 1/4 at z = -1/2.
+TEST(CameraProjection, UvDepthToViewRejectsThePlaneOfTheEye) {
+  const glm::mat4 id(1.0f);
+  const SnellViewPoint onPlane = snellUvDepthToView(glm::vec2(0.25f, 0.75f), 0.5f, id, SNELL_DEPTH_GL);
+  EXPECT_FALSE(onPlane.valid);
+  EXPECT_EQ(onPlane.position, glm::vec3(0.0f));
+  const SnellViewPoint inFront = snellUvDepthToView(glm::vec2(0.25f, 0.75f), 0.25f, id, SNELL_DEPTH_GL);
+  EXPECT_TRUE(inFront.valid);
+  EXPECT_EQ(inFront.position, glm::vec3(-0.5f, 0.5f, -0.5f));
+  // SNELL_DEPTH_CONVENTION_COUNT is no convention.
+  EXPECT_FALSE(snellUvDepthToView(glm::vec2(0.5f), 0.5f, snellPerspectiveInverse(1.0f, 1.0f, 0.1f, 10.0f, 0),
+                                  SNELL_DEPTH_CONVENTION_COUNT).valid);
+}
+
+// The smallest normal distance or view z is in front of the camera: the point
+// on the optical axis at that z.
+TEST(CameraProjection, SmallestNormalDistanceIsInFront) {
+  const glm::mat4 inv = snellPerspectiveInverse(1.0f, 1.3f, 0.1f, 10.0f, SNELL_DEPTH_GL);
+  const SnellViewPoint a = snellUvDistanceToView(glm::vec2(0.5f), kFltMin, inv);
+  EXPECT_TRUE(a.valid);
+  EXPECT_EQ(a.position, glm::vec3(0.0f, 0.0f, -kFltMin));
+  const SnellViewPoint b = snellUvZToView(snellPerspective(1.0f, 1.3f, 0.1f, 10.0f), glm::vec2(0.5f), -kFltMin);
+  EXPECT_TRUE(b.valid);
+  EXPECT_EQ(b.position, glm::vec3(0.0f, 0.0f, -kFltMin));
+}
+
+// Any projection with clip w = -z: a frustum rolled about the axis and shifted
+// off centre (clip x depends on view y, clip x and y have constant terms). The
+// point at p.z whose NDC is the uv of p, projected in double, is p.
+TEST(CameraProjection, UvZToViewInvertsRolledOffCentreFrusta) {
+  std::mt19937 rng(14);
+  std::uniform_real_distribution<double> angle(-3.0, 3.0), shift(-0.5, 0.5), s(-1.0, 1.0), dist(0.2, 40.0);
+  for (int i = 0; i < 2000; ++i) {
+    const glm::dmat4 proj = glm::perspective(1.1, 1.4, 0.1, 50.0) *
+                            glm::translate(glm::dmat4(1.0), glm::dvec3(shift(rng), shift(rng), 0.0)) *
+                            glm::rotate(glm::dmat4(1.0), angle(rng), glm::dvec3(0.0, 0.0, 1.0));
+    const glm::mat4 m(proj);
+    const double v = dist(rng);
+    const glm::vec3 p(float(s(rng) * v), float(s(rng) * v), float(-v));
+    const glm::dvec4 clip = glm::dmat4(m) * glm::dvec4(glm::dvec3(p), 1.0);
+    const glm::vec2 uv(glm::dvec2(clip) / clip.w * 0.5 + 0.5);
+    const SnellViewPoint r = snellUvZToView(m, uv, p.z);
+    ASSERT_TRUE(r.valid);
+    ASSERT_EQ(r.position.z, p.z);
+    // uv carries p to float precision; unprojected, that is a few ulp of the
+    // point's extent.
+    const double tol = 2e-6 * (std::abs(double(p.x)) + std::abs(double(p.y)) + v);
+    ASSERT_NEAR(r.position.x, p.x, tol) << i;
+    ASSERT_NEAR(r.position.y, p.y, tol) << i;
+  }
+}
+
+// A field of view with tan(fovy / 2) = 2^63 on both axes: the 2x2 system's
+// determinant A B is exactly FLT_MIN, the smallest non-singular one. The point
+// at view z -1 with NDC (1/2, -1/2) is (1/2, -1/2) / A = (2^62, -2^62).
+TEST(CameraProjection, UvZToViewAtTheSmallestNormalDeterminant) {
+  const float a = std::ldexp(1.0f, -63);
+  glm::mat4 m(0.0f);
+  m[0][0] = a;
+  m[1][1] = a;
+  m[2][2] = -1.0f;
+  m[2][3] = -1.0f;
+  m[3][2] = -0.2f;
+  const SnellViewPoint r = snellUvZToView(m, glm::vec2(0.75f, 0.25f), -1.0f);
+  EXPECT_TRUE(r.valid);
+  EXPECT_EQ(r.position, glm::vec3(std::ldexp(1.0f, 62), -std::ldexp(1.0f, 62), -1.0f));
+}
+
+// A projection whose NDC z = 1/2 plane lies behind the eye: viewFromClip maps
+// (x, y, z, 1) to (x, y, -1, z + w3), so the unprojected point has z = -1 / (1/2
+// + w3) > 0 for w3 < -1/2: no distance puts a point of that ray in front,
+// also when that z is as small as 2^-127 (w3 = -2^127).
+TEST(CameraProjection, UvDistanceToViewRejectsAnUnprojectionBehindTheEye) {
+  for (float w3 : {-2.0f, std::ldexp(-1.0f, 127)}) {
+    const glm::mat4 inv(glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, -1, w3));
+    const SnellViewPoint r = snellUvDistanceToView(glm::vec2(0.5f), 1.0f, inv);
+    EXPECT_FALSE(r.valid) << w3;
+    EXPECT_EQ(r.position, glm::vec3(0.0f)) << w3;
+  }
 }
 
 }  // namespace

@@ -190,4 +190,52 @@ TEST(CameraTexRay, DegenerateAndHostileInputs) {
   }
 }
 
+constexpr float kFltMin = std::numeric_limits<float>::min();
+constexpr float kFltMax = std::numeric_limits<float>::max();
+
+// The smallest normal |T1.z| still reaches the planes: along the optical axis
+// S and E are P1 moved to the two planes, (zFarthest - P1.z) / T1.z = 2^126 is finite.
+TEST(CameraTexRay, SmallestNormalT1zReachesThePlanes) {
+  const glm::mat4 m = snellPerspective(1.0f, 1.0f, 0.1f, 100.0f);
+  const SnellTexRay r = snellTexRaySetup(glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(0.0f, 0.0f, -kFltMin), -1.0f, -2.0f, m);
+  EXPECT_TRUE(r.valid);
+  EXPECT_EQ(r.s, glm::vec3(0.0f, 0.0f, -1.0f));
+  EXPECT_EQ(r.e, glm::vec3(0.0f, 0.0f, -2.0f));
+  EXPECT_EQ(r.ts, glm::vec2(0.5f));
+}
+
+// Planes at the smallest normal z, -FLT_MIN, are in front of the eye (only
+// denormal z counts as 0); there clip w = -z = FLT_MIN. On the optical axis,
+// from eq. 9, alpha = (1/pz - 1/S.z) S.z E.z / (S.z - E.z) is 0 at S.z and 1 at
+// E.z, whichever of the two is the tiny one (k2 is then +-FLT_MIN).
+TEST(CameraTexRay, PlanesAtTheSmallestNormalZ) {
+  const glm::mat4 m = snellPerspective(1.0f, 1.0f, 0.1f, 100.0f);
+  const glm::vec3 p1(0.0f, 0.0f, -0.5f), t1(0.0f, 0.0f, -1.0f);
+  const SnellTexRay fromEye = snellTexRaySetup(p1, t1, -kFltMin, -1.0f, m);
+  ASSERT_TRUE(fromEye.valid);
+  EXPECT_EQ(fromEye.s, glm::vec3(0.0f, 0.0f, -kFltMin));
+  EXPECT_EQ(fromEye.ts, glm::vec2(0.5f));
+  EXPECT_EQ(fromEye.k2, kFltMin);
+  EXPECT_EQ(snellTexRayAlpha(fromEye, -kFltMin), 0.0f);
+  EXPECT_EQ(snellTexRayAlpha(fromEye, -1.0f), 1.0f);
+  const SnellTexRay toEye = snellTexRaySetup(p1, t1, -1.0f, -kFltMin, m);
+  ASSERT_TRUE(toEye.valid);
+  EXPECT_EQ(toEye.e, glm::vec3(0.0f, 0.0f, -kFltMin));
+  EXPECT_EQ(toEye.dt, glm::vec2(0.0f));
+  EXPECT_EQ(snellTexRayAlpha(toEye, -1.0f), 0.0f);
+  EXPECT_EQ(snellTexRayAlpha(toEye, -kFltMin), 1.0f);
+}
+
+// A point segment on the farthest finite plane, z = -FLT_MAX: clip w = FLT_MAX
+// is finite, so the segment is valid (k2 = 0, alpha 0).
+TEST(CameraTexRay, PointSegmentAtTheLargestFiniteDepth) {
+  const glm::mat4 m = snellPerspective(1.0f, 1.0f, 0.1f, 100.0f);
+  const SnellTexRay r = snellTexRaySetup(glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(0.0f, 0.0f, -1.0f), -kFltMax, -kFltMax, m);
+  ASSERT_TRUE(r.valid);
+  EXPECT_EQ(r.s, glm::vec3(0.0f, 0.0f, -kFltMax));
+  EXPECT_EQ(r.e, r.s);
+  EXPECT_EQ(r.ts, glm::vec2(0.5f));
+  EXPECT_EQ(r.k2, 0.0f);
+}
+
 }  // namespace
