@@ -663,6 +663,30 @@ TEST(IntersectMarch, LinearMarchEarlyMissesCostNoFetchAndTinyRaysMarch) {
   EXPECT_EQ(many.position.z, kWallZ);
 }
 
+// A ray that turns towards the camera by a normal float too small for the near plane's distance along it
+// to be a float (tNear overflows to +inf) never reaches that plane: it is marched as if parallel to it.
+// Both marches start behind the wall at z = -6, so their first step already crosses, in the origin's pixel.
+TEST(IntersectMarch, ANearPlaneTooFarForAFloatDoesNotCutTheMarch) {
+  const FlatWall fw = flatWall(64, 64);
+  const vec3 o(-0.5f, 0.25f, -6.0f);
+  for (const float dz : {0.0f, 1e-38f}) {
+    const vec3 d(1.0f, 0.0f, dz);
+    ASSERT_TRUE(std::isinf((-fw.surface.zNear - o.z) / dz) || dz == 0.0f);
+    const SnellHit lin = snellLinearMarch(o, d, fw.depth, fw.surface, 4.0f, 4, 0);
+    ASSERT_TRUE(lin.valid) << dz;
+    EXPECT_EQ(lin.fetches, 1) << dz;
+    EXPECT_EQ(lin.position, vec3(0.5f, 0.25f, -6.0f)) << dz;
+    const SnellHit dda = snellDdaMarch(o, d, fw.depth, fw.surface, 4.0f, FLT_MAX, 1.0f, 64);
+    ASSERT_TRUE(dda.valid) << dz;
+    EXPECT_EQ(dda.fetches, 1) << dz;
+    // On the ray within its first step, one pixel wide (12 / 64 view units at z = -6).
+    EXPECT_GE(dda.position.x, o.x) << dz;
+    EXPECT_LE(dda.position.x, o.x + 12.0f / 64.0f) << dz;
+    EXPECT_NEAR(dda.position.y, o.y, 1e-6f) << dz;
+    EXPECT_NEAR(dda.position.z, o.z, 1e-5f) << dz;
+  }
+}
+
 // Rays towards the camera are marched up to the near plane: t_i = i tMax / steps with tMax cut there, the
 // contract's walk replayed in double (linearReference) from origins behind the slanted plane.
 TEST(IntersectMarch, LinearMarchTowardsTheCameraStopsAtTheNearPlane) {
