@@ -382,6 +382,35 @@ constexpr float kFltMin = std::numeric_limits<float>::min();
 // matrix): infinite reversed Z has D = zNear, so zNear = FLT_MIN gives D =
 // FLT_MIN and the inverse's 1 / D = 2^126; aspect 2^126 at fovy = 2 float(pi/4)
 // has A = 1 / (2^126 tanf(pi/4)) = FLT_MIN in glm::perspective (tanf rounds to 1).
+// Normal parameters whose matrix or inverse would hold a denormal (a GPU that flushes denormals sees 0
+// there): each gives the zero matrix, as a denormal parameter does. The doubles show each case is one.
+TEST(CameraProjection, ADenormalEntryOrIntermediateGivesTheZeroMatrix) {
+  const double fltMin = double(kFltMin);
+  // fovy = FLT_MIN: tan(fovy / 2) is denormal.
+  ASSERT_LT(std::tan(0.5 * fltMin), fltMin);
+  // aspect = FLT_MIN, fovy = 1: aspect tan(fovy / 2), the inverse's first entry, is denormal.
+  ASSERT_LT(fltMin * std::tan(0.5), fltMin);
+  for (int conv : kAll) {
+    SCOPED_TRACE(conv);
+    EXPECT_TRUE(isZero(snellPerspectiveWithDepth(kFltMin, 1.0f, 0.1f, 10.0f, conv)));
+    EXPECT_TRUE(isZero(snellPerspectiveInverse(kFltMin, 1.0f, 0.1f, 10.0f, conv)));
+    EXPECT_TRUE(isZero(snellPerspectiveWithDepth(1.0f, kFltMin, 0.1f, 10.0f, conv)));
+    EXPECT_TRUE(isZero(snellPerspectiveInverse(1.0f, kFltMin, 0.1f, 10.0f, conv)));
+  }
+  // INFINITE_REVERSED with zNear = 2e38: D = n is a normal float, the inverse's 1 / D is not.
+  ASSERT_LT(1.0 / 2e38, fltMin);
+  const glm::mat4 far = snellPerspectiveWithDepth(1.0f, 1.0f, 2e38f, 0.0f, SNELL_DEPTH_INFINITE_REVERSED);
+  EXPECT_EQ(far[3][2], 2e38f);
+  EXPECT_TRUE(isZero(snellPerspectiveInverse(1.0f, 1.0f, 2e38f, 0.0f, SNELL_DEPTH_INFINITE_REVERSED)));
+  // REVERSED with zFar = 2e38 zNear: C = n / (f - n) is denormal.
+  ASSERT_LT(1.0 / (2e38 - 1.0), fltMin);
+  EXPECT_TRUE(isZero(snellPerspectiveWithDepth(1.0f, 1.0f, 1.0f, 2e38f, SNELL_DEPTH_REVERSED)));
+  EXPECT_TRUE(isZero(snellPerspectiveInverse(1.0f, 1.0f, 1.0f, 2e38f, SNELL_DEPTH_REVERSED)));
+  // Just inside: zFar = 1e37 zNear keeps C = 1e-37 and its inverse entries normal.
+  EXPECT_FALSE(isZero(snellPerspectiveWithDepth(1.0f, 1.0f, 1.0f, 1e37f, SNELL_DEPTH_REVERSED)));
+  EXPECT_FALSE(isZero(snellPerspectiveInverse(1.0f, 1.0f, 1.0f, 1e37f, SNELL_DEPTH_REVERSED)));
+}
+
 TEST(CameraProjection, EntriesAtTheSmallestNormalFloatAreKept) {
   const glm::mat4 m = snellPerspectiveWithDepth(1.0f, 1.0f, kFltMin, 10.0f, SNELL_DEPTH_INFINITE_REVERSED);
   EXPECT_EQ(m[3][2], kFltMin);
