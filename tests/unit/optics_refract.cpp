@@ -73,6 +73,46 @@ TEST(OpticsRefract, SnellsLawThroughAngles) {
   EXPECT_GT(checked, 9000);
 }
 
+// A huge eta (leaving a medium thousands of times denser; snellIorToEta's range reaches 1e6, the
+// contract all finite normal floats): at normal incidence the ray goes straight through, however huge;
+// slightly off it Snell's law still holds (here i's tangent part is its x, exact in float, so sin_t is
+// within rounding), and past sin_i = 1 / eta it reflects totally.
+TEST(OpticsRefract, HugeEtaKeepsSnellsLaw) {
+  for (const float eta : {4097.0f, 5000.0f, 1e6f, 1e19f, 1e30f, 3e38f}) {
+    SCOPED_TRACE(eta);
+    const snell::SnellRefraction res = snell::snellRefract(vec3(0.0f, 0.0f, -1.0f), vec3(0.0f, 0.0f, 1.0f), eta, SNELL_TIR_ZERO);
+    ASSERT_TRUE(res.valid);
+    EXPECT_FALSE(res.tir);
+    EXPECT_EQ(res.direction, vec3(0.0f, 0.0f, -1.0f));
+  }
+  Rng r;
+  int refracted = 0, reflected = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const float eta = std::pow(10.0f, r.uniform(3.7f, 6.0f));
+    const float sinI = r.uniform(0.0f, 2.0f) / eta;
+    vec3 i(sinI, 0.0f, -std::sqrt(1.0f - sinI * sinI));
+    const Incidence g = incidence(i, vec3(0.0f, 0.0f, 1.0f));
+    const double sinT = double(eta) * g.sinI;
+    if (std::abs(sinT - 1.0) < 0.05) continue;  // the float input cannot tell which side of the critical angle
+    const snell::SnellRefraction res = snell::snellRefract(i, vec3(0.0f, 0.0f, 1.0f), eta, SNELL_TIR_ZERO);
+    ASSERT_TRUE(res.valid);
+    ASSERT_EQ(res.tir, sinT > 1.0) << "eta " << eta << " sin_t " << sinT;
+    if (res.tir) {
+      EXPECT_EQ(res.direction, vec3(0.0f));
+      ++reflected;
+      continue;
+    }
+    ++refracted;
+    const dvec3 t = d(res.direction);
+    EXPECT_NEAR(glm::length(t), 1.0, 1e-6);
+    EXPECT_LT(t.z, 0.0);
+    EXPECT_NEAR(t.x, sinT, 2e-6) << "eta " << eta;
+    EXPECT_NEAR(t.y, 0.0, 1e-6);
+  }
+  EXPECT_GT(refracted, 500);
+  EXPECT_GT(reflected, 500);
+}
+
 TEST(OpticsRefract, NormalFacingAwayIsFlipped) {
   vec3 i(0.6f, -0.8f, 0.0f), n(0.0f, 1.0f, 0.0f);
   snell::SnellRefraction a = snell::snellRefract(i, n, 1.0f / 1.5f, SNELL_TIR_ZERO);
