@@ -329,3 +329,21 @@ TEST(IntersectDepthSurface, AnUnreadableBilinearSampleIsNotInterpolated) {
     EXPECT_EQ(x.viewZ, 0.0f);
   }
 }
+
+// Above 2^23 texels (SNELL_PIXEL_ON_SCREEN's domain reaches 2^24) floats are a whole texel apart, and
+// at uv = 1 the texel coordinate uv W - 0.5 is a tie that rounds to the even W itself: the first
+// texel is still clamped into the level, so the read is the last texel's depth, as at any smaller size.
+TEST(IntersectDepthSurface, BilinearAtTheFarEdgeOfAVeryWideLevel) {
+  const int wide = (1 << 23) + 2;
+  ASSERT_EQ(static_cast<float>(wide) - 0.5f, static_cast<float>(wide));  // the tie this test is about
+  const float n = 0.5f, f = 20.0f;
+  SnellDepthSurface s = snellDepthSurface(glm::perspective(1.0f, 1.0f, n, f), n, f, SNELL_DEPTH_GL, 1.0f);
+  s.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  const double want = -glDistance(0.5, n, f);
+  for (const glm::ivec2 size : {glm::ivec2(wide, 1), glm::ivec2(1, wide)}) {
+    const Texture2D depth(Image(size.x, size.y, glm::vec4(0.5f)));
+    const SnellSurfaceSample x = snellSampleSurface(depth, glm::vec2(1.0f), s);
+    ASSERT_TRUE(x.valid) << size.x << "x" << size.y;
+    EXPECT_NEAR(x.viewZ, want, 2e-6 * -want) << size.x << "x" << size.y;
+  }
+}
