@@ -245,3 +245,105 @@ TEST(IntersectDepthSurface, BoundariesAreWhereTheContractsPutThem) {
   p[1][1] = FLT_MIN / 2.0f;
   EXPECT_EQ(snellDepthSurface(p, 0.5f, 20.0f, SNELL_DEPTH_GL, 1.0f).perspectiveDet, 0.0f);
 }
+
+namespace {
+
+// The GL convention's view distance in double, from its equation
+// (camera/linearize_depth.glsl): v = n / ((1 - d) + d n / f).
+double glDistance(double d, double n, double f) { return n / ((1.0 - d) + d * n / f); }
+
+}  // namespace
+
+// BILINEAR's four texels are clamped to the edge: within half a texel of a border the read is the
+// edge texels' own depth along that axis, never a blend with a texel past the border (which would
+// be none, or the texel on the far side). Window depth affine in the texel index (a plane) is what
+// bilinear filtering reproduces exactly, so the expected depth is that plane at the texel
+// coordinate clamped into [0, W-1] x [0, H-1].
+TEST(IntersectDepthSurface, BilinearReadsClampToTheEdgeTexels) {
+  const int W = 5, H = 4;
+  auto planeDepth = [](double x, double y) { return 0.30 + 0.06 * x + 0.035 * y; };
+  Image img(W, H);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) img.at(x, y) = glm::vec4(static_cast<float>(planeDepth(x, y)));
+  const Texture2D depth(std::move(img));
+  const float n = 0.5f, f = 20.0f;
+  SnellDepthSurface s = snellDepthSurface(glm::perspective(1.0f, 1.0f, n, f), n, f, SNELL_DEPTH_GL, 1.0f);
+  s.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  // Every edge band (and the corners), the borders themselves, and an interior point for reference.
+  const float us[] = {0.0f, 0.03f, 0.09f, 0.5f, 0.93f, 0.97f, 1.0f};
+  const float vs[] = {0.0f, 0.04f, 0.11f, 0.5f, 0.9f, 0.96f, 1.0f};
+  for (float u : us)
+    for (float v : vs) {
+      const double tx = std::min(std::max(static_cast<double>(u) * W - 0.5, 0.0), W - 1.0);
+      const double ty = std::min(std::max(static_cast<double>(v) * H - 0.5, 0.0), H - 1.0);
+      const double want = -glDistance(planeDepth(tx, ty), n, f);
+      const SnellSurfaceSample x = snellSampleSurface(depth, glm::vec2(u, v), s);
+      ASSERT_TRUE(x.valid) << u << "," << v;
+      EXPECT_TRUE(x.interpolated) << u << "," << v;
+      EXPECT_NEAR(x.viewZ, want, 2e-6 * -want) << u << "," << v;
+    }
+}
+
+// A level one texel wide or tall (the top of a mip chain, a 1-pixel strip) is a level like any
+// other: its texels read.
+TEST(IntersectDepthSurface, OneTexelWideOrTallLevelsRead) {
+  const float n = 0.5f, f = 20.0f;
+  const SnellDepthSurface s = snellDepthSurface(glm::perspective(1.0f, 1.0f, n, f), n, f, SNELL_DEPTH_GL, 1.0f);
+  for (const glm::ivec2 size : {glm::ivec2(1, 4), glm::ivec2(4, 1), glm::ivec2(1, 1)}) {
+    Image img(size.x, size.y);
+    for (int y = 0; y < size.y; ++y)
+      for (int x = 0; x < size.x; ++x) img.at(x, y) = glm::vec4(0.2f + 0.1f * static_cast<float>(x + y));
+    const Texture2D depth(std::move(img));
+    for (int y = 0; y < size.y; ++y)
+      for (int x = 0; x < size.x; ++x) {
+        const glm::vec2 uv((static_cast<float>(x) + 0.5f) / static_cast<float>(size.x),
+                           (static_cast<float>(y) + 0.5f) / static_cast<float>(size.y));
+        const double want = -glDistance(0.2f + 0.1f * static_cast<float>(x + y), n, f);
+        const SnellSurfaceSample r = snellSampleSurface(depth, uv, s);
+        ASSERT_TRUE(r.valid) << size.x << "x" << size.y << " texel " << x << "," << y;
+        EXPECT_NEAR(r.viewZ, want, 2e-6 * -want);
+      }
+  }
+}
+
+// The smallest distance a surface can hold, zNear = FLT_MIN at depth 0 (GL: depth 0 is the near
+// plane), is a surface like any other: a valid read at -FLT_MIN.
+TEST(IntersectDepthSurface, ASurfaceAtTheSmallestNearPlaneReads) {
+  const Texture2D depth(Image(2, 2, glm::vec4(0.0f)));
+  const SnellDepthSurface s = snellDepthSurface(glm::mat4(1.0f), FLT_MIN, 1.0f, SNELL_DEPTH_GL, 1.0f);
+  const SnellSurfaceSample x = snellSampleSurface(depth, glm::vec2(0.3f, 0.7f), s);
+  EXPECT_TRUE(x.valid);
+  EXPECT_EQ(x.viewZ, -FLT_MIN);
+}
+
+// On a surface that cannot linearize (zNear 0), four surface texels are still no read: the sample
+// is invalid and, as every invalid sample, not interpolated.
+TEST(IntersectDepthSurface, AnUnreadableBilinearSampleIsNotInterpolated) {
+  const Texture2D depth(Image(4, 4, glm::vec4(0.5f)));
+  SnellDepthSurface s = snellDepthSurface(glm::perspective(1.0f, 1.0f, 0.5f, 20.0f), 0.0f, 20.0f, SNELL_DEPTH_GL, 1.0f);
+  s.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  for (const glm::vec2 uv : {glm::vec2(0.5f), glm::vec2(0.3f, 0.6f), glm::vec2(0.0f), glm::vec2(1.0f)}) {
+    const SnellSurfaceSample x = snellSampleSurface(depth, uv, s);
+    EXPECT_FALSE(x.valid);
+    EXPECT_FALSE(x.interpolated);
+    EXPECT_EQ(x.viewZ, 0.0f);
+  }
+}
+
+// Above 2^23 texels (SNELL_PIXEL_ON_SCREEN's domain reaches 2^24) floats are a whole texel apart, and
+// at uv = 1 the texel coordinate uv W - 0.5 is a tie that rounds to the even W itself: the first
+// texel is still clamped into the level, so the read is the last texel's depth, as at any smaller size.
+TEST(IntersectDepthSurface, BilinearAtTheFarEdgeOfAVeryWideLevel) {
+  const int wide = (1 << 23) + 2;
+  ASSERT_EQ(static_cast<float>(wide) - 0.5f, static_cast<float>(wide));  // the tie this test is about
+  const float n = 0.5f, f = 20.0f;
+  SnellDepthSurface s = snellDepthSurface(glm::perspective(1.0f, 1.0f, n, f), n, f, SNELL_DEPTH_GL, 1.0f);
+  s.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  const double want = -glDistance(0.5, n, f);
+  for (const glm::ivec2 size : {glm::ivec2(wide, 1), glm::ivec2(1, wide)}) {
+    const Texture2D depth(Image(size.x, size.y, glm::vec4(0.5f)));
+    const SnellSurfaceSample x = snellSampleSurface(depth, glm::vec2(1.0f), s);
+    ASSERT_TRUE(x.valid) << size.x << "x" << size.y;
+    EXPECT_NEAR(x.viewZ, want, 2e-6 * -want) << size.x << "x" << size.y;
+  }
+}

@@ -143,6 +143,8 @@ TEST(IntersectForeground, BadInputs) {
     EXPECT_TRUE(snellRejectForeground(onStep, origin, sc.depth, s, t).valid) << t;
   // An origin at or behind the camera plane: the ray reaches the camera, nothing is in front of all of it.
   EXPECT_TRUE(snellRejectForeground(onStep, glm::vec3(0.0f, 0.0f, 1.0f), sc.depth, s, 0.01f).valid);
+  // The same with a tolerance above 1, which counts as 1 (dNear = -50 times 1 - t = 0: the step at 3 is not nearer).
+  EXPECT_TRUE(snellRejectForeground(onStep, glm::vec3(0.0f, 0.0f, 50.0f), sc.depth, s, 3.0f).valid);
   // An empty texel or a uv off the buffer holds no foreground: kept, the read counted.
   DepthScene empty = sc;
   for (glm::vec4& t : empty.depth.level(0).texels) t.x = sc.emptyDepth;
@@ -154,6 +156,42 @@ TEST(IntersectForeground, BadInputs) {
   EXPECT_TRUE(snellRejectForeground(off, origin, sc.depth, s, 0.01f).valid);
   off.uv = glm::vec2(kNaN, 0.5f);
   EXPECT_TRUE(snellRejectForeground(off, origin, sc.depth, s, 0.01f).valid);
+}
+
+// The default tolerance is the documented 1 %: a surface 1.05 % nearer than the ray's nearest point is
+// refused, one 0.95 % nearer is kept (the step at distance 3; dNear = 3 / (1 - share)).
+TEST(IntersectForeground, TheDefaultToleranceIsOnePercent) {
+  const DepthScene sc = snell_test::stepEdge(kW, kH);
+  const SnellDepthSurface s = sc.surface();
+  ASSERT_LT(std::abs(sc.sampleAt(texelCentre({0.3, 0.5})).s - 3.0), 1e-6);
+  const glm::vec3 refusedFrom(0.0f, 0.0f, float(-3.0 / (1.0 - 0.0105)));
+  const glm::vec3 keptFrom(0.0f, 0.0f, float(-3.0 / (1.0 - 0.0095)));
+  EXPECT_FALSE(snellRejectForeground(hitAt(sc, {0.3, 0.5}, 6.0, 0), refusedFrom, sc.depth, s, SNELL_FOREGROUND_TOLERANCE).valid);
+  EXPECT_TRUE(snellRejectForeground(hitAt(sc, {0.3, 0.5}, 6.0, 0), keptFrom, sc.depth, s, SNELL_FOREGROUND_TOLERANCE).valid);
+}
+
+// Refused only when strictly nearer: a surface exactly at dNear (1 - t) is kept. GL depth 1 with
+// zNear 1, zFar 2 is exactly distance 2 (v = n / (0 + 1 n / f)), and 2 = 2 (1 - 0) = 4 (1 - 0.5) exactly.
+TEST(IntersectForeground, ASurfaceExactlyAtTheThresholdIsKept) {
+  const Texture2D depth(Image(2, 2, glm::vec4(1.0f)));
+  const SnellDepthSurface s = snellDepthSurface(glm::mat4(1.0f), 1.0f, 2.0f, SNELL_DEPTH_GL, 0.0f);
+  SnellHit h;
+  h.uv = glm::vec2(0.25f, 0.75f);
+  h.valid = true;
+  h.fetches = 0;
+  struct Case {
+    float originZ, hitZ, tolerance;
+  };
+  for (const Case c : {Case{-2.0f, -3.0f, 0.0f}, Case{-3.0f, -2.0f, 0.0f}, Case{-4.0f, -6.0f, 0.5f}}) {
+    h.position = glm::vec3(0.1f, 0.2f, c.hitZ);
+    const SnellHit r = snellRejectForeground(h, glm::vec3(0.0f, 0.0f, c.originZ), depth, s, c.tolerance);
+    EXPECT_TRUE(r.valid) << c.originZ << " " << c.hitZ << " " << c.tolerance;
+    EXPECT_EQ(r.fetches, 1);
+    // One ulp further from the camera and the surface is nearer than the whole ray: refused.
+    const float further = std::nextafter(c.originZ, -10.0f);
+    h.position.z = std::nextafter(c.hitZ, -10.0f);
+    EXPECT_FALSE(snellRejectForeground(h, glm::vec3(0.0f, 0.0f, further), depth, s, c.tolerance).valid);
+  }
 }
 
 }  // namespace

@@ -614,3 +614,33 @@ TEST(IntersectSearch, SegmentEdgesAndInvalidSegmentsCostNoFetch) {
   EXPECT_FALSE(snellSearchSegment(vec3(0.3f, 0.2f, -6.0f), vec3(0.0f, 0.0f, -1.0f), -2.0f, -6.0f,
                                   w.surface.clipFromView).valid);
 }
+
+// A range whose nearest plane is z = -FLT_MIN, the nearest plane a segment may start on: with
+// zFarthest = -4 the segment's k2 = S.z E.z / (S.z - E.z) is FLT_MIN itself, not the underflowed 0,
+// so the texture-space parameter still moves along the ray. From S = (0, 0, -FLT_MIN) (uv 0.5) towards
+// E = (-2, 0, -4) (uv 0.25) every point but S projects to uv 0.25 (the ray leaves from the eye's
+// plane), where a wall stands at z = -2; the texels under S are empty. CBS (5 steps) then ends on the
+// last of the points beta = k / 32 in front of the wall (z = -4 beta): beta = 15 / 32.
+TEST(IntersectSearch, ASegmentFromTheSmallestNearPlaneStillWalks) {
+  mat4 m(0.0f);
+  m[0][0] = 1.0f;
+  m[1][1] = 1.0f;
+  m[2][2] = -1.0f;
+  m[2][3] = -1.0f;
+  m[3][2] = -1.0f;
+  const SnellDepthSurface s = snellDepthSurface(m, 0.5f, 100.0f, SNELL_DEPTH_INFINITE_REVERSED, 0.0f);
+  Image img(64, 64);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 32; ++x) img.at(x, y) = glm::vec4(0.25f);  // z = -2: zNear / 0.25
+  const Texture2D wall(std::move(img));
+  const glm::vec3 origin(0.0f, 0.0f, -FLT_MIN), dir(-2.0f, 0.0f, -4.0f);
+  const SnellTexRay r = snellSearchSegment(origin, dir, -FLT_MIN, -4.0f, m);
+  ASSERT_TRUE(r.valid);
+  ASSERT_EQ(r.k2, FLT_MIN);
+  const SnellHit h = snellConservativeBinarySearch(origin, dir, wall, s, -FLT_MIN, -4.0f, 5);
+  ASSERT_TRUE(h.valid);
+  EXPECT_NEAR(h.position.z, -4.0 * 15.0 / 32.0, 1e-6);
+  EXPECT_NEAR(h.position.x, -2.0 * 15.0 / 32.0, 1e-6);
+  EXPECT_NEAR(h.uv.x, 0.25, 1e-6);
+  EXPECT_EQ(h.fetches, 5);
+}

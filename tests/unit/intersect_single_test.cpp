@@ -231,3 +231,43 @@ TEST(IntersectSingle, DirectionLengthThresholdAndTheScreensEdge) {
     EXPECT_EQ(o.fetches, 1);
   }
 }
+
+// The position's screen test is the closed [0,1]^2, to the float: a position projecting exactly onto
+// an edge (uv 0 or 1) is a hit, one projecting one float past 1 is not. An exact scene: a wall at
+// z = -2 (INFINITE_REVERSED depth 0.25 = zNear / 2) seen through clip = (a x, b y, -z - 1, -z) on a
+// 63 x 63 buffer, whose middle texel's centre is uv 0.5: from W = (0, 0, -1), B = (0, 0, -2), d = 1,
+// and the position W + dir for a unit dir along x or y projects to uv 0.5 +- 0.5 a (or b).
+TEST(IntersectSingle, PositionsExactlyOnTheScreensEdgesAreHits) {
+  const snell::Texture2D wall(snell::Image(63, 63, glm::vec4(0.25f, 0.0f, 0.0f, 0.0f)));
+  auto surfaceWithScales = [](float a, float b) {
+    mat4 m(0.0f);
+    m[0][0] = a;
+    m[1][1] = b;
+    m[2][2] = -1.0f;
+    m[2][3] = -1.0f;
+    m[3][2] = -1.0f;
+    return snell::snellDepthSurface(m, 0.5f, 100.0f, SNELL_DEPTH_INFINITE_REVERSED, 0.0f);
+  };
+  const glm::vec3 w(0.0f, 0.0f, -1.0f);
+  const snell::SnellDepthSurface unit = surfaceWithScales(1.0f, 1.0f);
+  struct Edge {
+    glm::vec3 dir;
+    glm::vec2 uv;
+  };
+  for (const Edge e : {Edge{{1.0f, 0.0f, 0.0f}, {1.0f, 0.5f}}, Edge{{-1.0f, 0.0f, 0.0f}, {0.0f, 0.5f}},
+                       Edge{{0.0f, 1.0f, 0.0f}, {0.5f, 1.0f}}, Edge{{0.0f, -1.0f, 0.0f}, {0.5f, 0.0f}}}) {
+    const snell::SnellHit h = snell::snellIntersectSingleSample(w, e.dir, wall, unit);
+    EXPECT_TRUE(h.valid) << e.dir.x << "," << e.dir.y;
+    EXPECT_EQ(h.uv, e.uv) << e.dir.x << "," << e.dir.y;
+    EXPECT_EQ(h.position, w + e.dir);
+    EXPECT_EQ(h.fetches, 1);
+  }
+  // A scale of 1 + 2^-22 puts the same positions at uv 1 + 2^-23, the float after 1: off screen.
+  const float wider = 1.0f + std::ldexp(1.0f, -22);
+  for (const Edge e : {Edge{{1.0f, 0.0f, 0.0f}, {}}, Edge{{0.0f, 1.0f, 0.0f}, {}}}) {
+    const snell::SnellDepthSurface s = e.dir.x > 0.0f ? surfaceWithScales(wider, 1.0f) : surfaceWithScales(1.0f, wider);
+    const snell::SnellHit h = snell::snellIntersectSingleSample(w, e.dir, wall, s);
+    EXPECT_FALSE(h.valid) << e.dir.x << "," << e.dir.y;
+    EXPECT_EQ(h.fetches, 1);
+  }
+}

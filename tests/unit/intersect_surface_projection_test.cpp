@@ -9,6 +9,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -207,6 +208,41 @@ TEST(SurfaceProjection, ClearedFlagRunsTheGeneralPath) {
   ASSERT_TRUE(c.valid);
   EXPECT_NEAR(c.position.x, p.x, 1e-5f);
   EXPECT_NEAR(c.position.y, p.y, 1e-5f);
+}
+
+// The ends of the valid depth range are inclusive, as on the general path: a point at z = -FLT_MIN or
+// -FLT_MAX projects, a reconstruction at z = -FLT_MIN is a point, and a determinant of exactly FLT_MIN
+// (the smallest perspectiveDet kept) reconstructs. Expected: the general path bit for bit, and the
+// projection in double (x = -z nx / a, y = -z ny / b).
+TEST(SurfaceProjection, TheEndsOfTheValidRangesAreInside) {
+  const glm::mat4 m = glm::perspective(1.0f, 1.3f, 0.1f, 100.0f);
+  const SnellDepthSurface surf = snellDepthSurface(m, 0.1f, 100.0f, SNELL_DEPTH_GL, 0.0f);
+  ASSERT_TRUE(surf.perspective);
+  const float fmax = std::numeric_limits<float>::max();
+  for (const glm::vec3 p : {glm::vec3(0.0f, 0.0f, -FLT_MIN), glm::vec3(0.0f, 0.0f, -fmax)}) {
+    const SnellScreenPoint a = snellSurfaceViewToUv(surf, p), b = snellViewToUv(m, p);
+    EXPECT_TRUE(a.valid) << p.z;
+    EXPECT_TRUE(b.valid) << p.z;
+    EXPECT_EQ(a.uv, glm::vec2(0.5f)) << p.z;  // on the axis of a symmetric frustum
+    EXPECT_TRUE(sameBits(a.ndcZ, b.ndcZ)) << p.z;
+  }
+  const glm::vec2 uv(0.6f, 0.7f);
+  const SnellViewPoint c = snellSurfaceUvZToView(surf, uv, -FLT_MIN), d = snellUvZToView(m, uv, -FLT_MIN);
+  EXPECT_TRUE(c.valid);
+  EXPECT_TRUE(d.valid);
+  EXPECT_EQ(c.position.z, -FLT_MIN);
+  EXPECT_TRUE(sameBits(c.position.x, d.position.x) && sameBits(c.position.y, d.position.y));
+  glm::mat4 tiny = m;
+  tiny[0][0] = 1.0f;
+  tiny[1][1] = FLT_MIN;
+  const SnellDepthSurface edge = snellDepthSurface(tiny, 0.1f, 100.0f, SNELL_DEPTH_GL, 0.0f);
+  ASSERT_EQ(edge.perspectiveDet, FLT_MIN);
+  const SnellViewPoint e = snellSurfaceUvZToView(edge, uv, -2.0f);
+  ASSERT_TRUE(e.valid);
+  const double nx = 2.0 * double(uv.x) - 1.0, ny = 2.0 * double(uv.y) - 1.0;
+  EXPECT_NEAR(e.position.x, 2.0 * nx / 1.0, 1e-6);
+  EXPECT_NEAR(double(e.position.y) / (2.0 * ny / double(FLT_MIN)), 1.0, 1e-6);
+  EXPECT_EQ(e.position.z, -2.0f);
 }
 
 }  // namespace

@@ -508,6 +508,7 @@ TEST(TechniqueTwoInterface, DispatcherMatchesTheStrategies) {
   const SnellDepthSurface b = s.backSurface();
   const SnellDepthRange range = snellDepthRangeFromPyramid(s.backPyramid);
   ASSERT_TRUE(range.valid);
+  int lod0Differs = 0;
   for (int k = 0; k < 200; ++k) {
     const glm::dvec2 uv(0.3 + 0.4 * (k % 20) / 20.0, 0.3 + 0.4 * (k / 20) / 10.0);
     const Exact e = technique_test::exactTrace(s.front, uv, kIor);
@@ -542,8 +543,17 @@ TEST(TechniqueTwoInterface, DispatcherMatchesTheStrategies) {
     EXPECT_TRUE(same(snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid, b,
                                         snellIntersectOptions(SNELL_STRATEGY_DDA)),
                      snellDdaMarch(o, d, s.back.depth, b), 0));
-    EXPECT_FALSE(snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid, b,
-                                    snellIntersectOptions(42)).valid);
+    const SnellHit unknown = snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid, b,
+                                                snellIntersectOptions(42));
+    EXPECT_FALSE(unknown.valid);
+    EXPECT_EQ(unknown.fetches, 0);
+    // planeMaxLod 0 is a level like any other (only a negative one means the top level).
+    SnellIntersectOptions depth0 = snellIntersectOptions(SNELL_STRATEGY_PLANE_DEPTH);
+    depth0.planeMaxLod = 0;
+    const SnellHit at0 = snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid, b, depth0);
+    EXPECT_TRUE(same(at0, snellIntersectPlaneDepth(o, d, s.backPyramid, b, 0, SNELL_PLANE_ITERATIONS, true), 0));
+    lod0Differs += !same(at0, snellIntersectPlaneDepth(o, d, s.backPyramid, b, s.backPyramid.levelCount() - 1,
+                                                       SNELL_PLANE_ITERATIONS, true), 0);
     // Each count is the field named after its strategy, and the explicit range is read as given.
     SnellIntersectOptions cbs = snellIntersectOptions(SNELL_STRATEGY_CBS);
     cbs.cbsSteps = 9;
@@ -577,6 +587,32 @@ TEST(TechniqueTwoInterface, DispatcherMatchesTheStrategies) {
     const SnellHit none = snellIntersectWith(o, d, s.back.depth, s.backNormalMips, s.backPyramid, b, cbs);
     EXPECT_FALSE(none.valid);
     EXPECT_EQ(none.fetches, 0);
+  }
+  EXPECT_GT(lod0Differs, 0);  // level 0 and the top level give different hits on some rays: the choice shows
+}
+
+// snellIntersectOptions: the strategy as given and every field's documented default.
+TEST(TechniqueTwoInterface, IntersectOptionsHaveTheDocumentedDefaults) {
+  for (int strategy : {SNELL_STRATEGY_SINGLE, SNELL_STRATEGY_PLANE_DEPTH, SNELL_STRATEGY_DDA, -1, 42}) {
+    const SnellIntersectOptions o = snellIntersectOptions(strategy);
+    EXPECT_EQ(o.strategy, strategy);
+    EXPECT_EQ(o.depthFilter, SNELL_DEPTH_FILTER_NEAREST);
+    EXPECT_EQ(o.planeIterations, SNELL_PLANE_ITERATIONS);
+    EXPECT_EQ(o.planeNormalLod, 0.0f);
+    EXPECT_EQ(o.planeFarStart, SNELL_PLANE_FAR_START != 0);
+    EXPECT_EQ(o.planeMaxLod, -1);
+    EXPECT_EQ(o.cbsSteps, SNELL_CBS_STEPS);
+    EXPECT_EQ(o.binarySteps, SNELL_BINARY_SEARCH_STEPS);
+    EXPECT_EQ(o.linearSteps, SNELL_LINEAR_SEARCH_STEPS);
+    EXPECT_EQ(o.rangeSource, SNELL_RANGE_PYRAMID);
+    EXPECT_FALSE(o.range.valid);
+    EXPECT_EQ(o.marchSteps, SNELL_LINEAR_MARCH_STEPS);
+    EXPECT_EQ(o.marchBisections, SNELL_LINEAR_MARCH_REFINE_STEPS);
+    EXPECT_EQ(o.marchMaxDistance, SNELL_LINEAR_MARCH_MAX_DISTANCE);
+    EXPECT_EQ(o.ddaSteps, SNELL_DDA_STEPS);
+    EXPECT_EQ(o.ddaMaxDistance, SNELL_DDA_MAX_DISTANCE);
+    EXPECT_EQ(o.ddaThickness, SNELL_DDA_THICKNESS);
+    EXPECT_EQ(o.ddaStride, SNELL_DDA_STRIDE);
   }
 }
 
