@@ -221,7 +221,8 @@ contract:
   - r.direction is unit length, or (0,0,0) exactly when r.valid is false or
     (TIR and SNELL_TIR_ZERO);
   - r.tir is true when eta^2 (1 - cos_i^2) > 1, evaluated as
-    (1 - eta^2) + eta^2 cos_i^2 < 0;
+    (1 - eta^2) + eta^2 cos_i^2 < 0, or, for eta^2 > 2^24 (where 1 - eta^2
+    rounds), as eta |i + cos_i n| > 1 (so normal incidence never reflects);
   - eta = 1 returns the normalized incident direction (up to rounding);
   - r.valid is false (direction 0, tir false) when incident or normal is zero,
     denormal-small, NaN or infinite, or eta is not a finite positive normal
@@ -270,6 +271,15 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
   // 1 - cos_i^2 would round away the small cos_i^2.
   float eta2 = eta * eta;
   float cos2T = (1.0f - eta2) + eta2 * (cosI * cosI);
+  // Above eta^2 = 2^24 (eta > 4096) 1 - eta^2 rounds, and at normal incidence cos_t^2 came out 0 and the
+  // direction below cancelled to zero: there sin_t = eta |i_t| from i's tangent part i_t = i + cos_i n
+  // (exactly 0 at normal incidence), and t = eta i_t - cos_t n.
+  vec3 tangent = i + cosI * n;
+  bool huge = eta2 > 16777216.0f;
+  if (huge) {
+    float sinT = eta * length(tangent);
+    cos2T = (1.0f - sinT) * (1.0f + sinT);
+  }
   if (cos2T < 0.0f) {
     r.tir = true;
     if (policy == SNELL_TIR_REFLECT) {
@@ -281,7 +291,7 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
     return r;
   }
   float cosT = sqrt(cos2T);
-  r.direction = snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
+  r.direction = huge ? snellSafeNormalize(eta * tangent - cosT * n) : snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
   return r;
 }
 
@@ -1120,8 +1130,9 @@ contract: with A = 1 / (aspect tan(fovy/2)), B = 1 / tan(fovy/2), the matrix map
   snellClipToNdc and friends report valid = false) when fovy is not in (0, pi),
   tan(fovy/2) is not finite positive, aspect or zNear are not finite positive,
   zFar is not finite or not > zNear (finite conventions), the convention is
-  unknown, or an entry would overflow or be denormal (a GPU may flush it to 0);
-  a denormal fovy or aspect counts as 0.
+  unknown, or an entry of the matrix returned (for the inverse, of the
+  inverse), tan(fovy/2) or aspect tan(fovy/2) would overflow or be denormal (a
+  GPU may flush it to 0); a denormal fovy or aspect counts as 0.
   GL is the convention of the paper's equations (Oliveira & Brauwers 2007, sec.
   3.2.1: "the projection matrix used by OpenGL", clip w = -z).
 source: GLM 0.9.9 ext/matrix_clip_space.inl (perspectiveRH_NO, perspectiveRH_ZO,
@@ -1158,7 +1169,9 @@ SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, f
   float tanR = ((((((9.38540185543e-3f * r2 + 3.11992232697e-3f) * r2 + 2.44301354525e-2f) * r2 +
                    5.34112807005e-2f) * r2 + 1.33387994085e-1f) * r2 + 3.33331568548e-1f) * r2) * r + r;
   float tanHalfFovy = upper ? 1.0f / tanR : tanR;
-  if (!SNELL_FINITE(tanHalfFovy) || !(tanHalfFovy > 0.0f)) {
+  // A denormal tan(fovy/2) (fovy near FLT_MIN, halved) or aspect tan(fovy/2) is 0 on a GPU that flushes
+  // denormals: the zero matrix there, so here too.
+  if (!SNELL_FINITE(tanHalfFovy) || !(tanHalfFovy >= SNELL_FLT_MIN) || !(aspect * tanHalfFovy >= SNELL_FLT_MIN)) {
     return zero;
   }
   // Same operation order as glm::perspective: the GL matrix matches it within tan's error.
@@ -1182,9 +1195,10 @@ SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, f
     c = 0.0f;
     d = zNear;
   }
+  // C is 0 exactly for INFINITE_REVERSED; REVERSED's n / (f - n) is denormal for a far plane past 1e38 n.
   if (!SNELL_FINITE(a) || !SNELL_FINITE(b) || !SNELL_FINITE(c) ||
       !SNELL_FINITE(d) || !(a >= SNELL_FLT_MIN) || !(b >= SNELL_FLT_MIN) ||
-      !(abs(d) >= SNELL_FLT_MIN)) {
+      !(abs(d) >= SNELL_FLT_MIN) || (c != 0.0f && !(abs(c) >= SNELL_FLT_MIN))) {
     return zero;
   }
   return SNELL_CAMERA_MAT4_COLUMNS(vec4(a, 0.0f, 0.0f, 0.0f), vec4(0.0f, b, 0.0f, 0.0f),
@@ -1210,8 +1224,11 @@ SNELL_FN mat4 snellPerspectiveInverse(float fovy, float aspect, float zNear, flo
   float ib = 1.0f / b;
   float id = 1.0f / d;
   float cd = c / d;
-  if (!SNELL_FINITE(ia) || !SNELL_FINITE(ib) || !SNELL_FINITE(id) ||
-      !SNELL_FINITE(cd)) {
+  // The inverse's own entries may be denormal where the matrix's are not (A near FLT_MAX): zero there, as
+  // the contract says for every entry; C / D is 0 exactly for INFINITE_REVERSED.
+  if (!SNELL_FINITE(ia) || !SNELL_FINITE(ib) || !SNELL_FINITE(id) || !SNELL_FINITE(cd) ||
+      !(ia >= SNELL_FLT_MIN) || !(ib >= SNELL_FLT_MIN) || !(abs(id) >= SNELL_FLT_MIN) ||
+      (cd != 0.0f && !(abs(cd) >= SNELL_FLT_MIN))) {
     return SNELL_CAMERA_MAT4_COLUMNS(zero4, zero4, zero4, zero4);
   }
   return SNELL_CAMERA_MAT4_COLUMNS(vec4(ia, 0.0f, 0.0f, 0.0f), vec4(0.0f, ib, 0.0f, 0.0f),
@@ -3628,7 +3645,9 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
   float tMax = maxDistance / len;
   if (dir.z > 0.0f) {
     float tNear = (-surface.zNear - origin.z) / dir.z;
-    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+    // tNear is finite or +-inf here (a finite numerator over dir.z > 0): +inf is a near plane too far along
+    // the ray for a float, never reached, and leaves tMax; -inf (the origin is before the plane) ends it.
+    tMax = isnan(tNear) ? 0.0f : min(tMax, tNear);
   }
   if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
     return snellHitMiss(0);
@@ -4219,7 +4238,9 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
   float tMax = min(maxDistance, 1e30f) / len;
   if (dir.z > 0.0f) {
     float tNear = (-surface.zNear - origin.z) / dir.z;
-    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+    // tNear is finite or +-inf here (a finite numerator over dir.z > 0): +inf is a near plane too far along
+    // the ray for a float, never reached, and leaves tMax; -inf (the origin is before the plane) ends it.
+    tMax = isnan(tNear) ? 0.0f : min(tMax, tNear);
   }
   if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
     return snellHitMiss(0);

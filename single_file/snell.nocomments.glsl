@@ -156,6 +156,12 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
   cosI = min(cosI, 1.0f);
   float eta2 = eta * eta;
   float cos2T = (1.0f - eta2) + eta2 * (cosI * cosI);
+  vec3 tangent = i + cosI * n;
+  bool huge = eta2 > 16777216.0f;
+  if (huge) {
+    float sinT = eta * length(tangent);
+    cos2T = (1.0f - sinT) * (1.0f + sinT);
+  }
   if (cos2T < 0.0f) {
     r.tir = true;
     if (policy == SNELL_TIR_REFLECT) {
@@ -166,7 +172,7 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
     return r;
   }
   float cosT = sqrt(cos2T);
-  r.direction = snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
+  r.direction = huge ? snellSafeNormalize(eta * tangent - cosT * n) : snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
   return r;
 }
 
@@ -586,7 +592,7 @@ SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, f
   float tanR = ((((((9.38540185543e-3f * r2 + 3.11992232697e-3f) * r2 + 2.44301354525e-2f) * r2 +
                    5.34112807005e-2f) * r2 + 1.33387994085e-1f) * r2 + 3.33331568548e-1f) * r2) * r + r;
   float tanHalfFovy = upper ? 1.0f / tanR : tanR;
-  if (!SNELL_FINITE(tanHalfFovy) || !(tanHalfFovy > 0.0f)) {
+  if (!SNELL_FINITE(tanHalfFovy) || !(tanHalfFovy >= SNELL_FLT_MIN) || !(aspect * tanHalfFovy >= SNELL_FLT_MIN)) {
     return zero;
   }
   float a = 1.0f / (aspect * tanHalfFovy);
@@ -611,7 +617,7 @@ SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, f
   }
   if (!SNELL_FINITE(a) || !SNELL_FINITE(b) || !SNELL_FINITE(c) ||
       !SNELL_FINITE(d) || !(a >= SNELL_FLT_MIN) || !(b >= SNELL_FLT_MIN) ||
-      !(abs(d) >= SNELL_FLT_MIN)) {
+      !(abs(d) >= SNELL_FLT_MIN) || (c != 0.0f && !(abs(c) >= SNELL_FLT_MIN))) {
     return zero;
   }
   return SNELL_CAMERA_MAT4_COLUMNS(vec4(a, 0.0f, 0.0f, 0.0f), vec4(0.0f, b, 0.0f, 0.0f),
@@ -636,8 +642,9 @@ SNELL_FN mat4 snellPerspectiveInverse(float fovy, float aspect, float zNear, flo
   float ib = 1.0f / b;
   float id = 1.0f / d;
   float cd = c / d;
-  if (!SNELL_FINITE(ia) || !SNELL_FINITE(ib) || !SNELL_FINITE(id) ||
-      !SNELL_FINITE(cd)) {
+  if (!SNELL_FINITE(ia) || !SNELL_FINITE(ib) || !SNELL_FINITE(id) || !SNELL_FINITE(cd) ||
+      !(ia >= SNELL_FLT_MIN) || !(ib >= SNELL_FLT_MIN) || !(abs(id) >= SNELL_FLT_MIN) ||
+      (cd != 0.0f && !(abs(cd) >= SNELL_FLT_MIN))) {
     return SNELL_CAMERA_MAT4_COLUMNS(zero4, zero4, zero4, zero4);
   }
   return SNELL_CAMERA_MAT4_COLUMNS(vec4(ia, 0.0f, 0.0f, 0.0f), vec4(0.0f, ib, 0.0f, 0.0f),
@@ -1951,7 +1958,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
   float tMax = maxDistance / len;
   if (dir.z > 0.0f) {
     float tNear = (-surface.zNear - origin.z) / dir.z;
-    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+    tMax = isnan(tNear) ? 0.0f : min(tMax, tNear);
   }
   if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
     return snellHitMiss(0);
@@ -2309,7 +2316,7 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
   float tMax = min(maxDistance, 1e30f) / len;
   if (dir.z > 0.0f) {
     float tNear = (-surface.zNear - origin.z) / dir.z;
-    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+    tMax = isnan(tNear) ? 0.0f : min(tMax, tNear);
   }
   if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
     return snellHitMiss(0);

@@ -414,8 +414,9 @@ contract: with A = 1 / (aspect tan(fovy/2)), B = 1 / tan(fovy/2), the matrix map
   snellClipToNdc and friends report valid = false) when fovy is not in (0, pi),
   tan(fovy/2) is not finite positive, aspect or zNear are not finite positive,
   zFar is not finite or not > zNear (finite conventions), the convention is
-  unknown, or an entry would overflow or be denormal (a GPU may flush it to 0);
-  a denormal fovy or aspect counts as 0.
+  unknown, or an entry of the matrix returned (for the inverse, of the
+  inverse), tan(fovy/2) or aspect tan(fovy/2) would overflow or be denormal (a
+  GPU may flush it to 0); a denormal fovy or aspect counts as 0.
   GL is the convention of the paper's equations (Oliveira & Brauwers 2007, sec.
   3.2.1: "the projection matrix used by OpenGL", clip w = -z).
 source: GLM 0.9.9 ext/matrix_clip_space.inl (perspectiveRH_NO, perspectiveRH_ZO,
@@ -452,7 +453,9 @@ SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, f
   float tanR = ((((((9.38540185543e-3f * r2 + 3.11992232697e-3f) * r2 + 2.44301354525e-2f) * r2 +
                    5.34112807005e-2f) * r2 + 1.33387994085e-1f) * r2 + 3.33331568548e-1f) * r2) * r + r;
   float tanHalfFovy = upper ? 1.0f / tanR : tanR;
-  if (!SNELL_FINITE(tanHalfFovy) || !(tanHalfFovy > 0.0f)) {
+  // A denormal tan(fovy/2) (fovy near FLT_MIN, halved) or aspect tan(fovy/2) is 0 on a GPU that flushes
+  // denormals: the zero matrix there, so here too.
+  if (!SNELL_FINITE(tanHalfFovy) || !(tanHalfFovy >= SNELL_FLT_MIN) || !(aspect * tanHalfFovy >= SNELL_FLT_MIN)) {
     return zero;
   }
   // Same operation order as glm::perspective: the GL matrix matches it within tan's error.
@@ -476,9 +479,10 @@ SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, f
     c = 0.0f;
     d = zNear;
   }
+  // C is 0 exactly for INFINITE_REVERSED; REVERSED's n / (f - n) is denormal for a far plane past 1e38 n.
   if (!SNELL_FINITE(a) || !SNELL_FINITE(b) || !SNELL_FINITE(c) ||
       !SNELL_FINITE(d) || !(a >= SNELL_FLT_MIN) || !(b >= SNELL_FLT_MIN) ||
-      !(abs(d) >= SNELL_FLT_MIN)) {
+      !(abs(d) >= SNELL_FLT_MIN) || (c != 0.0f && !(abs(c) >= SNELL_FLT_MIN))) {
     return zero;
   }
   return SNELL_CAMERA_MAT4_COLUMNS(vec4(a, 0.0f, 0.0f, 0.0f), vec4(0.0f, b, 0.0f, 0.0f),
@@ -504,8 +508,11 @@ SNELL_FN mat4 snellPerspectiveInverse(float fovy, float aspect, float zNear, flo
   float ib = 1.0f / b;
   float id = 1.0f / d;
   float cd = c / d;
-  if (!SNELL_FINITE(ia) || !SNELL_FINITE(ib) || !SNELL_FINITE(id) ||
-      !SNELL_FINITE(cd)) {
+  // The inverse's own entries may be denormal where the matrix's are not (A near FLT_MAX): zero there, as
+  // the contract says for every entry; C / D is 0 exactly for INFINITE_REVERSED.
+  if (!SNELL_FINITE(ia) || !SNELL_FINITE(ib) || !SNELL_FINITE(id) || !SNELL_FINITE(cd) ||
+      !(ia >= SNELL_FLT_MIN) || !(ib >= SNELL_FLT_MIN) || !(abs(id) >= SNELL_FLT_MIN) ||
+      (cd != 0.0f && !(abs(cd) >= SNELL_FLT_MIN))) {
     return SNELL_CAMERA_MAT4_COLUMNS(zero4, zero4, zero4, zero4);
   }
   return SNELL_CAMERA_MAT4_COLUMNS(vec4(ia, 0.0f, 0.0f, 0.0f), vec4(0.0f, ib, 0.0f, 0.0f),

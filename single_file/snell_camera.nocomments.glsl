@@ -243,7 +243,7 @@ SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, f
   float tanR = ((((((9.38540185543e-3f * r2 + 3.11992232697e-3f) * r2 + 2.44301354525e-2f) * r2 +
                    5.34112807005e-2f) * r2 + 1.33387994085e-1f) * r2 + 3.33331568548e-1f) * r2) * r + r;
   float tanHalfFovy = upper ? 1.0f / tanR : tanR;
-  if (!SNELL_FINITE(tanHalfFovy) || !(tanHalfFovy > 0.0f)) {
+  if (!SNELL_FINITE(tanHalfFovy) || !(tanHalfFovy >= SNELL_FLT_MIN) || !(aspect * tanHalfFovy >= SNELL_FLT_MIN)) {
     return zero;
   }
   float a = 1.0f / (aspect * tanHalfFovy);
@@ -268,7 +268,7 @@ SNELL_FN mat4 snellPerspectiveWithDepth(float fovy, float aspect, float zNear, f
   }
   if (!SNELL_FINITE(a) || !SNELL_FINITE(b) || !SNELL_FINITE(c) ||
       !SNELL_FINITE(d) || !(a >= SNELL_FLT_MIN) || !(b >= SNELL_FLT_MIN) ||
-      !(abs(d) >= SNELL_FLT_MIN)) {
+      !(abs(d) >= SNELL_FLT_MIN) || (c != 0.0f && !(abs(c) >= SNELL_FLT_MIN))) {
     return zero;
   }
   return SNELL_CAMERA_MAT4_COLUMNS(vec4(a, 0.0f, 0.0f, 0.0f), vec4(0.0f, b, 0.0f, 0.0f),
@@ -293,8 +293,9 @@ SNELL_FN mat4 snellPerspectiveInverse(float fovy, float aspect, float zNear, flo
   float ib = 1.0f / b;
   float id = 1.0f / d;
   float cd = c / d;
-  if (!SNELL_FINITE(ia) || !SNELL_FINITE(ib) || !SNELL_FINITE(id) ||
-      !SNELL_FINITE(cd)) {
+  if (!SNELL_FINITE(ia) || !SNELL_FINITE(ib) || !SNELL_FINITE(id) || !SNELL_FINITE(cd) ||
+      !(ia >= SNELL_FLT_MIN) || !(ib >= SNELL_FLT_MIN) || !(abs(id) >= SNELL_FLT_MIN) ||
+      (cd != 0.0f && !(abs(cd) >= SNELL_FLT_MIN))) {
     return SNELL_CAMERA_MAT4_COLUMNS(zero4, zero4, zero4, zero4);
   }
   return SNELL_CAMERA_MAT4_COLUMNS(vec4(ia, 0.0f, 0.0f, 0.0f), vec4(0.0f, ib, 0.0f, 0.0f),

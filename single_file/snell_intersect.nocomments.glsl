@@ -1580,7 +1580,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
   float tMax = maxDistance / len;
   if (dir.z > 0.0f) {
     float tNear = (-surface.zNear - origin.z) / dir.z;
-    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+    tMax = isnan(tNear) ? 0.0f : min(tMax, tNear);
   }
   if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
     return snellHitMiss(0);
@@ -1938,7 +1938,7 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
   float tMax = min(maxDistance, 1e30f) / len;
   if (dir.z > 0.0f) {
     float tNear = (-surface.zNear - origin.z) / dir.z;
-    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+    tMax = isnan(tNear) ? 0.0f : min(tMax, tNear);
   }
   if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
     return snellHitMiss(0);

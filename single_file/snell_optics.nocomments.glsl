@@ -154,6 +154,12 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
   cosI = min(cosI, 1.0f);
   float eta2 = eta * eta;
   float cos2T = (1.0f - eta2) + eta2 * (cosI * cosI);
+  vec3 tangent = i + cosI * n;
+  bool huge = eta2 > 16777216.0f;
+  if (huge) {
+    float sinT = eta * length(tangent);
+    cos2T = (1.0f - sinT) * (1.0f + sinT);
+  }
   if (cos2T < 0.0f) {
     r.tir = true;
     if (policy == SNELL_TIR_REFLECT) {
@@ -164,7 +170,7 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
     return r;
   }
   float cosT = sqrt(cos2T);
-  r.direction = snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
+  r.direction = huge ? snellSafeNormalize(eta * tangent - cosT * n) : snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
   return r;
 }
 

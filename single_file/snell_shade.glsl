@@ -818,7 +818,8 @@ contract:
   - r.direction is unit length, or (0,0,0) exactly when r.valid is false or
     (TIR and SNELL_TIR_ZERO);
   - r.tir is true when eta^2 (1 - cos_i^2) > 1, evaluated as
-    (1 - eta^2) + eta^2 cos_i^2 < 0;
+    (1 - eta^2) + eta^2 cos_i^2 < 0, or, for eta^2 > 2^24 (where 1 - eta^2
+    rounds), as eta |i + cos_i n| > 1 (so normal incidence never reflects);
   - eta = 1 returns the normalized incident direction (up to rounding);
   - r.valid is false (direction 0, tir false) when incident or normal is zero,
     denormal-small, NaN or infinite, or eta is not a finite positive normal
@@ -867,6 +868,15 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
   // 1 - cos_i^2 would round away the small cos_i^2.
   float eta2 = eta * eta;
   float cos2T = (1.0f - eta2) + eta2 * (cosI * cosI);
+  // Above eta^2 = 2^24 (eta > 4096) 1 - eta^2 rounds, and at normal incidence cos_t^2 came out 0 and the
+  // direction below cancelled to zero: there sin_t = eta |i_t| from i's tangent part i_t = i + cos_i n
+  // (exactly 0 at normal incidence), and t = eta i_t - cos_t n.
+  vec3 tangent = i + cosI * n;
+  bool huge = eta2 > 16777216.0f;
+  if (huge) {
+    float sinT = eta * length(tangent);
+    cos2T = (1.0f - sinT) * (1.0f + sinT);
+  }
   if (cos2T < 0.0f) {
     r.tir = true;
     if (policy == SNELL_TIR_REFLECT) {
@@ -878,7 +888,7 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
     return r;
   }
   float cosT = sqrt(cos2T);
-  r.direction = snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
+  r.direction = huge ? snellSafeNormalize(eta * tangent - cosT * n) : snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
   return r;
 }
 
@@ -4202,7 +4212,9 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
   float tMax = maxDistance / len;
   if (dir.z > 0.0f) {
     float tNear = (-surface.zNear - origin.z) / dir.z;
-    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+    // tNear is finite or +-inf here (a finite numerator over dir.z > 0): +inf is a near plane too far along
+    // the ray for a float, never reached, and leaves tMax; -inf (the origin is before the plane) ends it.
+    tMax = isnan(tNear) ? 0.0f : min(tMax, tNear);
   }
   if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
     return snellHitMiss(0);
@@ -4378,7 +4390,9 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
   float tMax = min(maxDistance, 1e30f) / len;
   if (dir.z > 0.0f) {
     float tNear = (-surface.zNear - origin.z) / dir.z;
-    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+    // tNear is finite or +-inf here (a finite numerator over dir.z > 0): +inf is a near plane too far along
+    // the ray for a float, never reached, and leaves tMax; -inf (the origin is before the plane) ends it.
+    tMax = isnan(tNear) ? 0.0f : min(tMax, tNear);
   }
   if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
     return snellHitMiss(0);

@@ -422,6 +422,12 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
   cosI = min(cosI, 1.0f);
   float eta2 = eta * eta;
   float cos2T = (1.0f - eta2) + eta2 * (cosI * cosI);
+  vec3 tangent = i + cosI * n;
+  bool huge = eta2 > 16777216.0f;
+  if (huge) {
+    float sinT = eta * length(tangent);
+    cos2T = (1.0f - sinT) * (1.0f + sinT);
+  }
   if (cos2T < 0.0f) {
     r.tir = true;
     if (policy == SNELL_TIR_REFLECT) {
@@ -432,7 +438,7 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
     return r;
   }
   float cosT = sqrt(cos2T);
-  r.direction = snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
+  r.direction = huge ? snellSafeNormalize(eta * tangent - cosT * n) : snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
   return r;
 }
 
@@ -2130,7 +2136,7 @@ SNELL_FN SnellHit snellLinearMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, 
   float tMax = maxDistance / len;
   if (dir.z > 0.0f) {
     float tNear = (-surface.zNear - origin.z) / dir.z;
-    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+    tMax = isnan(tNear) ? 0.0f : min(tMax, tNear);
   }
   if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
     return snellHitMiss(0);
@@ -2235,7 +2241,7 @@ SNELL_FN SnellHit snellDdaMarch(vec3 origin, vec3 dir, SNELL_TEX2D depthTex, Sne
   float tMax = min(maxDistance, 1e30f) / len;
   if (dir.z > 0.0f) {
     float tNear = (-surface.zNear - origin.z) / dir.z;
-    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+    tMax = isnan(tNear) ? 0.0f : min(tMax, tNear);
   }
   if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
     return snellHitMiss(0);
