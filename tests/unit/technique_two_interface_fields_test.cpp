@@ -20,6 +20,7 @@
 #include <new>
 
 #include "support/technique_scene.hpp"
+#include "support/texel_density.hpp"
 
 namespace {
 
@@ -248,7 +249,8 @@ TEST(TwoInterfaceShadeFields, UndefinedReflectionAddsNothing) {
   }
 }
 
-// Without the reflection the reflect slot is never run: its hit is a miss with no fetch, F = 0.
+// Without the reflection the reflect slot is never run: its hit is a miss with no fetch, F = 0. Built in
+// poisoned storage, so that every field must have been written.
 TEST(TwoInterfaceShadeFields, WithoutReflectionTheReflectionHitIsAMiss) {
   Scene s = technique_test::makeScene(32, 32);
   s.env = twoHalvesEnvironment();
@@ -266,9 +268,182 @@ TEST(TwoInterfaceShadeFields, WithoutReflectionTheReflectionHitIsAMiss) {
   EXPECT_EQ(r.reflectionHit.fetches, 0);
   EXPECT_EQ(r.fresnel, 0.0f);
   EXPECT_EQ(r.fetches, 1);
+  // The path's own fields: the thin-surface fallback, no back hit, no tir, no bounce, nothing inside.
+  EXPECT_TRUE(storedFalse(r.backHit));
+  EXPECT_TRUE(storedFalse(r.tir));
+  EXPECT_TRUE(storedFalse(r.insideHit));
+  EXPECT_EQ(r.bounces, 0);
+  EXPECT_TRUE(r.fellBack);
   EXPECT_LT(glm::length(r.color - kAhead), 1e-6f);
 }
 
+
+// ---------------------------------------------------------------------------------------------------------
+// snellTwoInterfaceRefraction: an opaque surface inside the object (t.insideScene)
+
+// The card of technique_two_interface_test.cpp's OpaqueCardInsideTheSphere, inside the sphere near its back.
+const dvec3 kCardNormal = glm::normalize(dvec3(0.1, -0.05, 1.0));
+const dvec3 kCardPoint = technique_test::kCentre + dvec3(0.0, 0.0, -1.8);
+
+const Scene& cardScene() {
+  static const Scene s = technique_test::makeScene(64, 64, kCardPoint, kCardNormal);
+  return s;
+}
+
+// Distance along T1 from P1 to the card (closed-form ray-plane), and whether it lies before the back face.
+double cardDistance(const technique_test::Exact& e) {
+  return glm::dot(kCardPoint - e.p1, kCardNormal) / glm::dot(e.t1, kCardNormal);
+}
+
+SnellTechnique cardTechnique() {
+  SnellTechnique t = snellPresetPlaneNormal(2);
+  t.exit.source = SNELL_SOURCE_BUFFERS;
+  t.insideScene = true;
+  return t;
+}
+
+const glm::dvec2 kCardPixels[] = {glm::dvec2(0.5, 0.5), glm::dvec2(0.45, 0.53), glm::dvec2(0.55, 0.47)};
+
+// The path ends on the card: its colour absorbed over the chord to it, the card's hit as the exit, T1 unbent,
+// no tir, no bounce, no fallback; the counts add the scene search, its foreground read and the colour read.
+TEST(TwoInterfaceInsideScene, CardBeforeTheBackFaceEndsThePathOnIt) {
+  const Scene& s = cardScene();
+  const SnellTechnique t = cardTechnique();
+  SnellMaterial m = snellMaterial();
+  m.reflection = false;
+  m.absorption = glm::vec3(0.3f, 0.1f, 0.2f);
+  const SnellView v = snellView();
+  for (const glm::dvec2 uv : kCardPixels) {
+    SCOPED_TRACE(testing::Message() << uv.x << ", " << uv.y);
+    const technique_test::Exact e = technique_test::exactTrace(s.front, uv, kIor);
+    ASSERT_TRUE(e.hitsSphere);
+    const double tCard = cardDistance(e);
+    ASSERT_GT(tCard, 0.0);
+    ASSERT_LT(tCard, glm::length(e.p2 - e.p1) - 0.1);
+    const dvec3 card = e.p1 + tCard * e.t1;
+    const SnellTwoInterfaceResult r =
+        snellTwoInterfaceRefraction(glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, TECH_OBJECT_ARGS(s), TECH_SCENE_ARGS(s), t, m, v);
+    EXPECT_TRUE(r.insideHit);
+    EXPECT_TRUE(r.backHit);
+    EXPECT_FALSE(r.fellBack);
+    EXPECT_FALSE(r.tir);
+    EXPECT_EQ(r.bounces, 0);
+    EXPECT_LT(glm::length(dvec3(r.exitDirection) - e.t1), 1e-5);
+    EXPECT_LT(glm::length(dvec3(r.exitPoint) - card), 0.01);
+    EXPECT_TRUE(r.exitHit.valid);
+    EXPECT_EQ(r.exitHit.position, r.exitPoint);
+    EXPECT_NEAR(r.pathLength, tCard, 0.01);
+    const dvec3 expected = dvec3(technique_test::paintingColor(card)) * glm::exp(-dvec3(m.absorption) * tCard);
+    EXPECT_LT(glm::length(dvec3(r.color) - expected), 0.01);
+    const SnellTwoInterfacePath path = traceIn(s, glm::vec3(e.p1), glm::vec3(e.n1), snellIorToEta(1.0f, 1.5f), t,
+                                               m.tirPolicy);
+    const SnellHit ih = snellIntersectWith(glm::vec3(e.p1), path.entryDirection, s.plane.depth, s.sceneNormalMips,
+                                           s.scenePyramid, s.sceneSurface(), t.exit.intersect);
+    ASSERT_TRUE(ih.valid);
+    EXPECT_EQ(r.fetches, path.fetches + ih.fetches + 2);
+  }
+}
+
+// Rough glass: the card is seen through the entry lobe alone, at the width it has reached there: radius
+// s (1 - eta) |card - P1| (shade/rough_cone.glsl), at the card's texel density; a colour whose level k reads k.
+TEST(TwoInterfaceInsideScene, RoughGlassReadsTheCardAtTheEntryLobesWidth) {
+  Scene s = cardScene();
+  Texture2D levels(Image(s.width, s.height, glm::vec4(0.0f)), Filter::Linear, MipFilter::Linear);
+  for (int k = 1, w = s.width / 2; w >= 1; ++k, w /= 2) levels.addLevel(Image(w, w, glm::vec4(float(k))));
+  s.sceneColor = levels;
+  const SnellTechnique t = cardTechnique();
+  SnellMaterial m = snellMaterial();
+  m.reflection = false;
+  m.roughness = 0.5f;
+  SnellView v = snellView();
+  v.sceneColorLevels = levels.levelCount();
+  for (const glm::dvec2 uv : kCardPixels) {
+    const technique_test::Exact e = technique_test::exactTrace(s.front, uv, kIor);
+    const double tCard = cardDistance(e);
+    const dvec3 card = e.p1 + tCard * e.t1;
+    const double a = 0.25 * (1.0 - 1.0 / kIor);
+    const double lod = std::clamp(std::log2(double(SNELL_ROUGH_CONE_LOD_SCALE) * a * tCard *
+                                            snell_test::texelsPerUnit(s.sceneSurface().clipFromView, card, s.width, s.height)),
+                                  0.0, double(levels.levelCount() - 1));
+    ASSERT_GT(lod, 1.0);
+    const SnellTwoInterfaceResult r =
+        snellTwoInterfaceRefraction(glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, TECH_OBJECT_ARGS(s), TECH_SCENE_ARGS(s), t, m, v);
+    ASSERT_TRUE(r.insideHit);
+    EXPECT_NEAR(r.color.x, lod, 0.02) << uv.x << ", " << uv.y;
+  }
+}
+
+// Whatever the path did at the back face (here its stored normals, tilted 60 deg from T1, reflect it totally,
+// and an inside slot that cannot follow the bounce makes it a fallback), the card before the back face ends
+// it: no tir, no bounce, no fallback.
+TEST(TwoInterfaceInsideScene, CardEndsAPathThatReflectedAtTheBack) {
+  const Scene& s = cardScene();
+  const Texture2D tilted(Image(s.width, s.height, glm::vec4(std::sqrt(0.75f), 0.0f, -0.5f, 0.0f)));
+  SnellTechnique t = cardTechnique();
+  t.bounces = 1;
+  t.inside.source = SNELL_SOURCE_ENVIRONMENT;
+  SnellMaterial m = snellMaterial();
+  m.reflection = false;
+  const SnellView v = snellView();
+  const technique_test::Exact e = technique_test::exactTrace(s.front, glm::dvec2(0.5, 0.5), kIor);
+  const SnellTwoInterfacePath path =
+      snellTwoInterfaceTrace(glm::vec3(e.p1), glm::vec3(e.n1), snellIorToEta(1.0f, 1.5f), 0.0f, s.back.depth, tilted,
+                             s.backPyramid, s.backSurface(), s.front.depth, s.front.normals, s.frontSurface(), t,
+                             m.tirPolicy);
+  ASSERT_TRUE(path.hit && path.tir && path.fellBack);
+  ASSERT_EQ(path.bounces, 1);
+  const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
+      glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, s.back.depth, tilted, s.backPyramid, s.backSurface(), s.front.depth,
+      s.front.normals, s.frontSurface(), TECH_SCENE_ARGS(s), t, m, v);
+  EXPECT_TRUE(r.insideHit);
+  EXPECT_FALSE(r.tir);
+  EXPECT_EQ(r.bounces, 0);
+  EXPECT_FALSE(r.fellBack);
+  EXPECT_LT(glm::length(dvec3(r.exitDirection) - e.t1), 1e-5);
+}
+
+// A scene surface that is the back face itself (the scene buffers are the back buffers, searched the same
+// way) is met exactly where the back hit is: not nearer, so the path goes on through the back face.
+TEST(TwoInterfaceInsideScene, SurfaceOnTheBackFaceIsNotInside) {
+  const Scene& s = cardScene();
+  SnellTechnique t = cardTechnique();
+  t.exit.intersect = t.back.intersect;
+  SnellMaterial m = snellMaterial();
+  m.reflection = false;
+  const SnellView v = snellView();
+  for (const glm::dvec2 uv : kCardPixels) {
+    const technique_test::Exact e = technique_test::exactTrace(s.front, uv, kIor);
+    const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
+        glm::vec3(e.p1), glm::vec3(e.n1), 0.0f, TECH_OBJECT_ARGS(s), s.back.depth, s.backNormalMips, s.backPyramid,
+        s.sceneColor, s.backSurface(), s.env, t, m, v);
+    EXPECT_TRUE(r.backHit);
+    EXPECT_FALSE(r.insideHit) << uv.x << ", " << uv.y;
+    EXPECT_LT(glm::length(dvec3(r.exitDirection) - e.t2), 0.05);
+  }
+}
+
+// A surface in front of the whole object (a pillar between it and the camera) is what a march along T1 meets
+// first in the scene buffer; it is a foreground, not a surface inside the object.
+TEST(TwoInterfaceInsideScene, ForegroundInFrontOfTheObjectIsNotInside) {
+  const Scene pillar = technique_test::makeScene(64, 64, dvec3(0.0, 0.0, -3.0), dvec3(0.0, 0.0, 1.0));
+  SnellTechnique t = cardTechnique();
+  t.exit.intersect = snellIntersectOptions(SNELL_STRATEGY_LINEAR_MARCH);
+  SnellMaterial m = snellMaterial();
+  m.reflection = false;
+  const SnellView v = snellView();
+  int marchedOntoIt = 0;
+  for (const glm::dvec2 uv : kCardPixels) {
+    const technique_test::Exact e = technique_test::exactTrace(pillar.front, uv, kIor);
+    const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(glm::vec3(e.p1), glm::vec3(e.n1), 0.0f,
+                                                                  TECH_OBJECT_ARGS(pillar), TECH_SCENE_ARGS(pillar), t, m, v);
+    EXPECT_TRUE(r.backHit);
+    EXPECT_FALSE(r.insideHit) << uv.x << ", " << uv.y;
+    marchedOntoIt += snellIntersectWith(glm::vec3(e.p1), glm::vec3(e.t1), pillar.plane.depth, pillar.sceneNormalMips,
+                                        pillar.scenePyramid, pillar.sceneSurface(), t.exit.intersect)
+                         .valid;
+  }
+  EXPECT_GT(marchedOntoIt, 0);
+}
 
 // ---------------------------------------------------------------------------------------------------------
 // snellTwoInterfaceExitRough: one slot
