@@ -194,6 +194,26 @@ TEST(TwoInterfaceTraceFields, BackHitNormalFacesT1AndTheCountAddsTheNormalRead) 
   EXPECT_EQ(checked, 3);
 }
 
+// N2 faces T1 after the turn: a stored normal tilted towards T1 by as little as a denormal is negated; one
+// exactly perpendicular to T1 (dot 0: it faces neither way) is kept as stored. On the view axis at normal
+// incidence T1 is exactly (0, 0, -1), so both dot products are exact.
+TEST(TwoInterfaceTraceFields, NormalAtTheBackIsTurnedToFaceT1ByAnyTilt) {
+  const Scene& s = smallScene();
+  const SnellTechnique t = snellPresetPlaneDepth(3);
+  const float tiny = 1e-39f;
+  ASSERT_GT(tiny, 0.0f);
+  for (const glm::vec3 stored : {glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(1.0f, 0.0f, -tiny)}) {
+    const Texture2D normals(Image(s.width, s.height, glm::vec4(stored, 0.0f)));
+    const SnellTwoInterfacePath p = snellTwoInterfaceTrace(
+        glm::vec3(0.0f, 0.0f, -4.0f), glm::vec3(0.0f, 0.0f, 1.0f), snellIorToEta(1.0f, 1.5f), 0.0f, s.back.depth,
+        normals, s.backPyramid, s.backSurface(), s.front.depth, s.front.normals, s.frontSurface(), t, SNELL_TIR_CRITICAL);
+    ASSERT_TRUE(p.hit);
+    ASSERT_EQ(p.entryDirection, glm::vec3(0.0f, 0.0f, -1.0f));
+    EXPECT_LE(glm::dot(p.exitNormal, p.entryDirection), 0.0f) << stored.z;
+    EXPECT_EQ(p.exitNormal, stored.z == 0.0f ? stored : -stored);
+  }
+}
+
 // ---------------------------------------------------------------------------------------------------------
 // snellTwoInterfaceRefraction: the reflection at the first interface
 
@@ -277,6 +297,36 @@ TEST(TwoInterfaceShadeFields, WithoutReflectionTheReflectionHitIsAMiss) {
   EXPECT_LT(glm::length(r.color - kAhead), 1e-6f);
 }
 
+
+// Dispersion: fellBack covers every channel's trace. On the view axis at normal incidence T1 is the same for
+// all three; stored back normals tilted 42 deg from it reflect red (IOR 1.56, critical angle 39.9 deg) totally,
+// under SNELL_TIR_ZERO a fallback, and let green (1.45, 43.6 deg) and blue (1.40) out.
+TEST(TwoInterfaceShadeFields, DispersionFallsBackWhenAnyChannelDoes) {
+  const Scene& s = smallScene();
+  const double tilt = 42.0 * M_PI / 180.0;
+  ASSERT_GT(1.56 * std::sin(tilt), 1.0);
+  ASSERT_LT(1.45 * std::sin(tilt), 1.0);
+  const Texture2D tilted(
+      Image(s.width, s.height, glm::vec4(float(std::sin(tilt)), 0.0f, -float(std::cos(tilt)), 0.0f)));
+  SnellTechnique t = snellPresetPlaneDepth(3);
+  SnellMaterial m = snellMaterial();
+  m.reflection = false;
+  m.tirPolicy = SNELL_TIR_ZERO;
+  m.dispersion = 3;
+  m.iors = glm::vec3(1.56f, 1.45f, 1.40f);
+  const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
+      glm::vec3(0.0f, 0.0f, -4.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, s.back.depth, tilted, s.backPyramid,
+      s.backSurface(), s.front.depth, s.front.normals, s.frontSurface(), TECH_SCENE_ARGS(s), t, m, snellView());
+  EXPECT_TRUE(r.backHit);
+  EXPECT_FALSE(r.tir);  // green's
+  EXPECT_TRUE(r.fellBack);
+  // With red at green's IOR no channel falls back.
+  m.iors = glm::vec3(1.45f, 1.45f, 1.40f);
+  EXPECT_FALSE(snellTwoInterfaceRefraction(glm::vec3(0.0f, 0.0f, -4.0f), glm::vec3(0.0f, 0.0f, 1.0f), 0.0f,
+                                           s.back.depth, tilted, s.backPyramid, s.backSurface(), s.front.depth,
+                                           s.front.normals, s.frontSurface(), TECH_SCENE_ARGS(s), t, m, snellView())
+                   .fellBack);
+}
 
 // ---------------------------------------------------------------------------------------------------------
 // snellTwoInterfaceRefraction: an opaque surface inside the object (t.insideScene)
