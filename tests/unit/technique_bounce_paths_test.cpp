@@ -142,7 +142,8 @@ TEST(TechniqueBouncePaths, LightGuideLeavesThroughTheBackAfterTwoToFourReflectio
 // normal there is the front layer's, and the composed technique resolves the exit ray with the reflect slot
 // (here the environment: one read; the exit slot would search the scene buffers first). The same paths
 // show the first interface's other outcomes: no bounce allowed under SNELL_TIR_ZERO (a fallback along T1
-// from there), and a bounce the inside slot cannot follow (a fallback along the reflection).
+// from there), and a bounce the inside slot cannot follow or that leaves where no normal is stored (a
+// fallback along the reflection).
 TEST(TechniqueBouncePaths, WedgeLeavesThroughTheFrontAfterOneReflection) {
   const BounceShape& shape = snell_test::frontExitWedge();
   const int size = 128;
@@ -163,6 +164,7 @@ TEST(TechniqueBouncePaths, WedgeLeavesThroughTheFrontAfterOneReflection) {
   const Texture2D emptyScene(Image(size, size, glm::vec4(1.0f, 0.0f, 0.0f, 0.0f)));
   const Texture2D emptyPyramid = snellBuildDepthPyramid(emptyScene, b.front.surface());
   const Texture2D env(Image(16, 8, glm::vec4(0.5f)));
+  const Texture2D noNormals(Image(size, size, glm::vec4(0.0f)));
   const auto layerNormalAt = [&](dvec2 uv, bool frontLayer) -> std::optional<dvec3> {
     const snell_test::AnalyticSample a = (frontLayer ? b.front : b.back).sampleAt(uv);
     if (!a.valid) return std::nullopt;
@@ -207,6 +209,17 @@ TEST(TechniqueBouncePaths, WedgeLeavesThroughTheFrontAfterOneReflection) {
       EXPECT_EQ(stopped.fetches, zero.fetches);
       EXPECT_LT(glm::length(uvOf(dvec3(stopped.exitPoint)) - uvOf(first.point)), snell_test::kBounceExitPx * px);
       EXPECT_LT(glm::length(dvec3(stopped.exitDirection) - glm::reflect(p->t1, first.normal)), 1e-5);
+      // A zero normal where the bounce leaves (the front layer's normals cleared): the path stops there as a
+      // fallback along the reflection, and the last interface it took is still the total reflection.
+      const SnellTwoInterfacePath blind =
+          snellTwoInterfaceTrace(glm::vec3(p->entry), glm::vec3(p->entryNormal), float(eta), 0.0f, b.back.depth,
+                                 b.back.normals, b.backPyramid, back, b.front.depth, noNormals, front, t,
+                                 SNELL_TIR_CRITICAL);
+      EXPECT_TRUE(blind.fellBack);
+      EXPECT_TRUE(blind.tir);
+      EXPECT_EQ(blind.bounces, 1);
+      EXPECT_LT(glm::length(dvec3(blind.exitNormal) + first.normal), 1e-5);
+      EXPECT_LT(glm::length(dvec3(blind.exitDirection) - glm::reflect(p->t1, first.normal)), 1e-5);
       // The composed technique: the front exit goes to the reflect slot (one environment read, its miss).
       const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
           glm::vec3(p->entry), glm::vec3(p->entryNormal), 0.0f, b.back.depth, b.back.normals, b.backPyramid, back,
