@@ -49,6 +49,16 @@ inline const BounceShape& lightGuide() {
   return s;
 }
 
+// A wedge whose right face is steep enough (43 deg off the view axis, crown glass: critical angle 42
+// deg) to reflect totally a ray entering the top face z = -3 left of its middle, which then runs left,
+// nearly level, and leaves through the left face, turned towards the camera (a front face): one
+// reflection and out through the front layer.
+inline const BounceShape& frontExitWedge() {
+  static const BounceShape s{"front-exit wedge", Prism{{{-1.0, -3.0}, {1.0, -3.0}, {-0.462, -4.364}, {-1.9, -3.9}}, 1.2},
+                             1.5, std::sqrt(2.9 * 2.9 + 1.364 * 1.364 + 2.4 * 2.4)};
+  return s;
+}
+
 // Whether a face point lies on the front layer (its face turned towards the camera) or the back layer.
 inline bool onFrontLayer(const Prism::Face& f) { return glm::dot(f.normal, f.point) < 0.0; }
 

@@ -138,4 +138,102 @@ TEST(TechniqueBouncePaths, LightGuideLeavesThroughTheBackAfterTwoToFourReflectio
   for (int k : {2, 3, 4}) EXPECT_GE(n.at(k), 20) << k << " reflections";
 }
 
+// One reflection, then out through a front face (the wedge), followed with exactly one bounce allowed: the
+// normal there is the front layer's, and the composed technique resolves the exit ray with the reflect slot
+// (here the environment: one read; the exit slot would search the scene buffers first). The same paths
+// show the first interface's other outcomes: no bounce allowed under SNELL_TIR_ZERO (a fallback along T1
+// from there), and a bounce the inside slot cannot follow or that leaves where no normal is stored (a
+// fallback along the reflection).
+TEST(TechniqueBouncePaths, WedgeLeavesThroughTheFrontAfterOneReflection) {
+  const BounceShape& shape = snell_test::frontExitWedge();
+  const int size = 128;
+  const ShapeBuffers b = shapeBuffers(shape, size);
+  const double eta = 1.0 / shape.ior, px = 1.0 / size;
+  SnellDepthSurface back = b.back.surface(), front = b.front.surface();
+  back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  front.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  SnellTechnique t = snellPresetImageSpaceBoundBounces();
+  t.back.intersect.marchMaxDistance = float(shape.extent);
+  t.inside.intersect.marchMaxDistance = float(shape.extent);
+  t.bounces = 1;
+  t.exit.source = SNELL_SOURCE_BUFFERS;
+  t.reflect.source = SNELL_SOURCE_ENVIRONMENT;
+  SnellMaterial m = snellMaterial();
+  m.ior = float(shape.ior);
+  m.reflection = false;
+  const Texture2D emptyScene(Image(size, size, glm::vec4(1.0f, 0.0f, 0.0f, 0.0f)));
+  const Texture2D emptyPyramid = snellBuildDepthPyramid(emptyScene, b.front.surface());
+  const Texture2D env(Image(16, 8, glm::vec4(0.5f)));
+  const Texture2D noNormals(Image(size, size, glm::vec4(0.0f)));
+  const auto layerNormalAt = [&](dvec2 uv, bool frontLayer) -> std::optional<dvec3> {
+    const snell_test::AnalyticSample a = (frontLayer ? b.front : b.back).sampleAt(uv);
+    if (!a.valid) return std::nullopt;
+    return a.normal;
+  };
+  const auto uvOf = [&](dvec3 p) { return b.front.project(p); };
+  int n = 0;
+  for (int j = 1; j < size; j += 2)
+    for (int i = 1; i < size; i += 2) {
+      const std::optional<PixelPath> p = snell_test::pixelPath(shape, b.front.pixelRay(dvec2(i + 0.5, j + 0.5) * px));
+      if (!p || p->inside.reflections() != 1 || !snell_test::onFrontLayer(p->inside.faces.back())) continue;
+      if (!snell_test::buffersHoldPath(*p, uvOf, layerNormalAt, px)) continue;
+      if (snell_test::shortestChord(*p) < shape.extent / SNELL_LINEAR_MARCH_MAX_STEPS) continue;
+      SCOPED_TRACE(testing::Message() << "pixel " << i << " " << j);
+      const auto trace = [&](const SnellTechnique& with, int bounces, int tirPolicy) {
+        SnellTechnique tb = with;
+        tb.bounces = bounces;
+        return snellTwoInterfaceTrace(glm::vec3(p->entry), glm::vec3(p->entryNormal), float(eta), 0.0f, b.back.depth,
+                                      b.back.normals, b.backPyramid, back, b.front.depth, b.front.normals, front, tb,
+                                      tirPolicy);
+      };
+      const SnellTwoInterfacePath one = snell_test::expectTracedPath(
+          *p, 1, [&](int bounces) { return trace(t, bounces, SNELL_TIR_CRITICAL); }, uvOf, px, kLengthRel);
+      ASSERT_TRUE(one.exitFront);
+      const snell_test::Prism::Face& first = p->inside.faces.front();
+      // The bounce adds its march's reads (at least one) and the normal read at the exit.
+      const SnellTwoInterfacePath zero = trace(t, 0, SNELL_TIR_CRITICAL);
+      EXPECT_GE(one.fetches, zero.fetches + 2);
+      // No bounce allowed, SNELL_TIR_ZERO: the ray leaves the first face unbent, along T1.
+      const SnellTwoInterfacePath clamped = trace(t, 0, SNELL_TIR_ZERO);
+      EXPECT_TRUE(clamped.fellBack);
+      EXPECT_TRUE(clamped.tir);
+      EXPECT_LT(glm::length(uvOf(dvec3(clamped.exitPoint)) - uvOf(first.point)), snell_test::kBounceExitPx * px);
+      EXPECT_LT(glm::length(dvec3(clamped.exitDirection) - p->t1), 1e-5);
+      // An inside slot that cannot follow the bounce: a fallback along the reflection from the first face.
+      SnellTechnique unfollowed = t;
+      unfollowed.inside.source = SNELL_SOURCE_ENVIRONMENT;
+      const SnellTwoInterfacePath stopped = trace(unfollowed, 1, SNELL_TIR_CRITICAL);
+      EXPECT_TRUE(stopped.fellBack);
+      EXPECT_TRUE(stopped.tir);
+      EXPECT_EQ(stopped.bounces, 1);
+      EXPECT_EQ(stopped.fetches, zero.fetches);
+      EXPECT_LT(glm::length(uvOf(dvec3(stopped.exitPoint)) - uvOf(first.point)), snell_test::kBounceExitPx * px);
+      EXPECT_LT(glm::length(dvec3(stopped.exitDirection) - glm::reflect(p->t1, first.normal)), 1e-5);
+      // A zero normal where the bounce leaves (the front layer's normals cleared): the path stops there as a
+      // fallback along the reflection, and the last interface it took is still the total reflection.
+      const SnellTwoInterfacePath blind =
+          snellTwoInterfaceTrace(glm::vec3(p->entry), glm::vec3(p->entryNormal), float(eta), 0.0f, b.back.depth,
+                                 b.back.normals, b.backPyramid, back, b.front.depth, noNormals, front, t,
+                                 SNELL_TIR_CRITICAL);
+      EXPECT_TRUE(blind.fellBack);
+      EXPECT_TRUE(blind.tir);
+      EXPECT_EQ(blind.bounces, 1);
+      EXPECT_LT(glm::length(dvec3(blind.exitNormal) + first.normal), 1e-5);
+      EXPECT_LT(glm::length(dvec3(blind.exitDirection) - glm::reflect(p->t1, first.normal)), 1e-5);
+      // The composed technique: the front exit goes to the reflect slot (one environment read, its miss).
+      const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
+          glm::vec3(p->entry), glm::vec3(p->entryNormal), 0.0f, b.back.depth, b.back.normals, b.backPyramid, back,
+          b.front.depth, b.front.normals, front, emptyScene, b.front.normals, emptyPyramid, env, b.front.surface(), env,
+          t, m, snellView());
+      EXPECT_EQ(r.bounces, 1);
+      EXPECT_FALSE(r.fellBack);
+      EXPECT_FALSE(r.tir);
+      EXPECT_EQ(r.fetches, one.fetches + 1);
+      EXPECT_EQ(r.exitHit.fetches, 0);
+      ++n;
+    }
+  std::printf("[bounce paths] %s: %d paths with one reflection out through the front\n", shape.name.c_str(), n);
+  EXPECT_GE(n, 20);
+}
+
 }  // namespace
