@@ -258,4 +258,16 @@ TEST(ScreenEdge, InsidePlaneKeepsAPlaneHitOnTheEdge) {
   }
 }
 
+// With the most steps there are, the last of them is read too: straight back from view distance 4 to
+// 6.002, 512 samples, the last one (t 2.002) behind the back face at distance 6.
+TEST(ScreenEdge, TheLastOfTheMostStepsIsRead) {
+  const Slab slab(32);
+  const SnellInsideBracket b =
+      slab.bracket(glm::vec3(0.0f, 0.0f, -4.0f), glm::vec3(0.0f, 0.0f, -1.0f), 2.002f, SNELL_LINEAR_MARCH_MAX_STEPS);
+  ASSERT_TRUE(b.valid);
+  EXPECT_NEAR(b.hi, 2.002f, 1e-5f);
+  EXPECT_NEAR(b.lo, 2.002f * 511.0f / 512.0f, 1e-5f);
+  EXPECT_EQ(b.fetches, 2 * 512);
+}
+
 }  // namespace
