@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -170,6 +171,28 @@ TEST(IntersectPlane, NormalMethodFetchCount) {
     }
 }
 
+// Every plane read in full (B0 at level 0 of a one-level read, C and D beside it on the plane), so the
+// depth method's count is exact: 3 per plane and the final lookup, plus the far start's 2 reads when it is
+// asked for (the pyramid's level 0 is the depth, read with maxLod 0). The normal method: 2 per plane.
+TEST(IntersectPlane, ExactFetchCountsOnAFullPlane) {
+  const DepthScene sc = snell_test::slantedPlane(64, 64);
+  const Texture2D pyramid = snellBuildDepthPyramid(sc.depth, sc.surface());
+  const std::vector<TestRay> rays = planeRays(sc, 100, 4);
+  for (int it = -2; it <= 10; ++it)
+    for (const TestRay& r : rays) {
+      const int n = std::min(std::max(it, 0), SNELL_PLANE_MAX_ITERATIONS);
+      const glm::vec3 o(r.o), d(r.d);
+      const SnellHit depth = snellIntersectPlaneDepth(o, d, sc.depth, sc.surface(), 0, it, false);
+      const SnellHit depthFar = snellIntersectPlaneDepth(o, d, pyramid, sc.surface(), 0, it, true);
+      const SnellHit normalFar =
+          snellIntersectPlaneNormal(o, d, sc.depth, sc.normals, pyramid, sc.surface(), 0.0f, it, true);
+      ASSERT_TRUE(depth.valid && depthFar.valid && normalFar.valid);
+      EXPECT_EQ(depth.fetches, 3 * (n + 1) + 1) << it;
+      EXPECT_EQ(depthFar.fetches, 3 * (n + 1) + 1 + 2) << it;
+      EXPECT_EQ(normalFar.fetches, 2 * (n + 1) + 1 + 2) << it;
+    }
+}
+
 TEST(IntersectPlane, DepthMethodFetchCountWithinDocumentedBounds) {
   const DepthScene sc = snell_test::sphereBack(128, 128);
   const Texture2D pyramid = snellBuildDepthPyramid(sc.depth, sc.surface());
@@ -267,6 +290,56 @@ TEST(IntersectPlane, BadInputsAreInvalidAndFinite) {
   both(o, d, empty.depth, snellBuildDepthPyramid(empty.depth, s), 1);
 }
 
+// |dir|^2 at exactly 1e-30 is not "below 1e-30": the methods read the surface (and then find no plane:
+// snellRayPlane takes only |dir|^2 above 1e-30), and a little above it the hit is the unit ray's.
+TEST(IntersectPlane, DirectionsAtTheLengthThreshold) {
+  const DepthScene sc = snell_test::slantedPlane(64, 64);
+  const SnellDepthSurface s = sc.surface();
+  const glm::dvec3 o = sc.pixelRay({0.5, 0.5}) * 2.0;
+  // A direction whose float square is exactly 1e-30f (searched among the floats near 1e-15, along -z).
+  float x = 1e-15f;
+  for (int k = 0; k < 1000 && x * x != 1e-30f; ++k) x = std::nextafter(x, x * x < 1e-30f ? 1.0f : 0.0f);
+  float y = 0.0f;
+  if (x * x != 1e-30f) {  // no single float: two components, the second taking up the rest
+    x = 7e-16f;
+    y = std::sqrt(1e-30f - x * x);
+    for (int k = 0; k < 1000 && x * x + y * y != 1e-30f; ++k)
+      y = std::nextafter(y, x * x + y * y < 1e-30f ? 1.0f : 0.0f);
+  }
+  const glm::vec3 atThreshold(y, 0.0f, -x);
+  ASSERT_EQ(glm::dot(atThreshold, atThreshold), 1e-30f);
+  const SnellHit n0 = snellIntersectPlaneNormal(glm::vec3(o), atThreshold, sc.depth, sc.normals, sc.depth, s, 0.0f, 1, false);
+  const SnellHit d0 = snellIntersectPlaneDepth(glm::vec3(o), atThreshold, sc.depth, s, 0, 1, false);
+  expectMiss(n0);
+  expectMiss(d0);
+  EXPECT_GT(n0.fetches, 0);
+  EXPECT_GT(d0.fetches, 0);
+  const auto ref = sc.referenceHit(o, glm::dvec3(0.0, 0.0, -1.0));
+  ASSERT_TRUE(ref.has_value());
+  const glm::vec3 small(0.0f, 0.0f, -1.02e-15f);  // |dir|^2 = 1.04e-30
+  const SnellHit n1 = snellIntersectPlaneNormal(glm::vec3(o), small, sc.depth, sc.normals, sc.depth, s, 0.0f, 1, false);
+  const SnellHit d1 = snellIntersectPlaneDepth(glm::vec3(o), small, sc.depth, s, 0, 1, false);
+  ASSERT_TRUE(n1.valid && d1.valid);
+  EXPECT_LT(glm::length(glm::dvec3(n1.position) - *ref), 1e-4);
+  EXPECT_LT(glm::length(glm::dvec3(d1.position) - *ref), 1e-4);
+}
+
+// The far start needs B0: over an empty texel of a closed surface (beside the sphere) a ray heading for
+// the sphere misses after that one read, far start asked for or not.
+TEST(IntersectPlane, NoFarStartWithoutB0) {
+  const DepthScene sc = snell_test::sphereBack(64, 64);
+  const Texture2D pyramid = snellBuildDepthPyramid(sc.depth, sc.surface());
+  const glm::vec3 o(-2.6f, -0.2f, -4.0f), d(glm::normalize(glm::vec3(0.6f, 0.0f, -1.0f)));
+  ASSERT_FALSE(sc.sampleAt(sc.project(glm::dvec3(o))).valid);
+  for (bool farStart : {false, true}) {
+    const SnellHit h = snellIntersectPlaneDepth(o, d, pyramid, sc.surface(), pyramid.levelCount() - 1, 2, farStart);
+    expectMiss(h);
+    EXPECT_EQ(h.fetches, 1) << farStart;
+  }
+  // The far start itself would have met the sphere's farthest depth: it is B0 that is missing.
+  EXPECT_TRUE(snellPlaneFarStart(o, d, snellSurfaceViewToUv(sc.surface(), o).uv, pyramid, sc.surface()).valid);
+}
+
 TEST(IntersectPlane, RaysTowardsTheCameraUseThePlaneAhead) {
   // A plane facing the camera, origin in front of it, ray pointing partly towards
   // the camera but still reaching the (tilted) plane: valid, on the ray, exact.
@@ -292,6 +365,169 @@ TEST(IntersectPlane, NormalMipLevelsAreUsable) {
     EXPECT_EQ(st.valid, st.total);
     EXPECT_LT(st.maxErr, 1e-4 * depthRange(sc)) << lod;
   }
+}
+
+// snellDepthPlaneAt's contract in double, from the texels of the texture it is given (its level images,
+// read here directly; a texel's point is the pixel ray through its centre at the view distance its window
+// depth gives): B0, the level, the texels pB, pC, pD and their fallbacks, the normal, the fetches. Cases
+// where float may decide otherwise (a uv within 1e-3 texels of a texel edge, a span within 1e-3 of a power
+// of two, Q within 1e-4 of B0's depth) are left out.
+struct DepthPlaneWant {
+  bool ambiguous = false, valid = false;
+  glm::dvec2 uv{0.0};
+  glm::dvec3 position{0.0}, normal{0.0};
+  int fetches = 0, level = 0;
+  bool fallback = false;  // C or D read on the other side
+};
+
+double viewDistance(double d, const DepthScene& sc) {  // GL: the inverse of snell_test::windowDepth
+  return double(sc.zFar) * double(sc.zNear) / (double(sc.zFar) - d * (double(sc.zFar) - double(sc.zNear)));
+}
+
+DepthPlaneWant depthPlaneWant(const DepthScene& sc, const Texture2D& mips, int maxLod, glm::dvec3 q, glm::dvec3 dirN) {
+  DepthPlaneWant w;
+  auto edgy = [&](glm::dvec2 uv, int level) {
+    const Image& im = mips.level(level);
+    const glm::dvec2 x = uv * glm::dvec2(im.width, im.height), f = glm::abs(x - glm::round(x));
+    return std::min(f.x, f.y) < 1e-3;
+  };
+  // The point of texel px at `level`, or nullopt where empty or outside the level.
+  auto point = [&](int level, glm::ivec2 px) -> std::optional<glm::dvec3> {
+    const Image& im = mips.level(level);
+    if (px.x < 0 || px.y < 0 || px.x >= im.width || px.y >= im.height) return std::nullopt;
+    const float d = im.at(px.x, px.y).x;
+    if (d == sc.emptyDepth) return std::nullopt;
+    const glm::dvec2 centre((px.x + 0.5) / im.width, (px.y + 0.5) / im.height);
+    return sc.pixelRay(centre) * viewDistance(double(d), sc);
+  };
+  auto texel = [&](glm::dvec2 uv, int level) {
+    const Image& im = mips.level(level);
+    return glm::clamp(glm::ivec2(glm::floor(uv * glm::dvec2(im.width, im.height))), glm::ivec2(0),
+                      glm::ivec2(im.width - 1, im.height - 1));
+  };
+  if (!(q.z < 0.0)) return w;
+  const glm::dvec2 uvQ = sc.project(q);
+  if (edgy(uvQ, 0)) {
+    w.ambiguous = true;
+    return w;
+  }
+  w.fetches = 1;
+  if (uvQ.x < 0.0 || uvQ.x > 1.0 || uvQ.y < 0.0 || uvQ.y > 1.0) return w;
+  const glm::ivec2 p0 = texel(uvQ, 0);
+  const auto b0 = point(0, p0);
+  if (!b0) return w;
+  w.uv = (glm::dvec2(p0) + 0.5) / glm::dvec2(mips.level(0).width, mips.level(0).height);
+  if (std::abs(q.z - b0->z) < 1e-4) {
+    w.ambiguous = true;
+    return w;
+  }
+  const double d = glm::length(*b0 - q);
+  const glm::dvec3 q2 = q.z < b0->z ? q - d * dirN : q + d * dirN;
+  const glm::dvec2 uv2 = q2.z < 0.0 ? sc.project(q2) : uvQ;
+  const glm::dvec2 size0(mips.level(0).width, mips.level(0).height);
+  const glm::dvec2 way = glm::abs(uv2 - uvQ) * size0;
+  const double span = std::max(way.x, way.y);
+  const int top = std::min(maxLod, SNELL_PLANE_DEPTH_MAX_SPAN_LOD);
+  int level = 0;
+  if (span > 1.0) {
+    const double l2 = std::log2(span);
+    if (std::abs(l2 - std::round(l2)) < 1e-3) {
+      w.ambiguous = true;
+      return w;
+    }
+    level = int(std::ceil(l2));
+  }
+  level = std::max(0, std::min(level, top));
+  w.level = level;
+  if (edgy(uvQ, level) || edgy(uv2, level)) {
+    w.ambiguous = true;
+    return w;
+  }
+  const glm::ivec2 pb = texel(uvQ, level);
+  glm::ivec2 pc = texel(uv2, level);
+  const glm::ivec2 dpc = pc - pb;
+  glm::ivec2 a(1, 0);
+  if (std::abs(dpc.y) > std::abs(dpc.x)) a = glm::ivec2(0, dpc.y > 0 ? 1 : -1);
+  else if (dpc.x != 0) a = glm::ivec2(dpc.x > 0 ? 1 : -1, 0);
+  if (dpc == glm::ivec2(0)) pc = pb + a;
+  const glm::ivec2 b = a.x != 0 ? glm::ivec2(0, 1) : glm::ivec2(1, 0);
+  glm::dvec3 B = *b0;
+  if (level != 0) {
+    ++w.fetches;
+    const auto bl = point(level, pb);
+    if (!bl) return w;
+    B = *bl;
+  }
+  w.position = B;
+  ++w.fetches;
+  auto C = point(level, pc);
+  if (!C) {
+    ++w.fetches;
+    w.fallback = true;
+    C = point(level, pb - a);
+    if (!C) return w;
+  }
+  ++w.fetches;
+  auto D = point(level, pb + b);
+  if (!D) {
+    ++w.fetches;
+    w.fallback = true;
+    D = point(level, pb - b);
+    if (!D) return w;
+  }
+  w.normal = glm::cross(*C - B, *D - B);
+  w.valid = true;
+  return w;
+}
+
+// Reference points around the two surfaces (in front of them and behind), directions in every quadrant,
+// on the mean pyramid (levels up to the top or a lower maxLod) and on the one-level texture.
+TEST(IntersectPlane, DepthPlaneReadsThePointsTheContractNames) {
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int checked = 0, leveled = 0, fallbacks = 0, invalid = 0, behind = 0;
+  for (const DepthScene& sc : {snell_test::sphereBack(128, 128), snell_test::slantedPlane(128, 96)}) {
+    const SnellDepthSurface s = sc.surface();
+    const Texture2D pyramid = snellBuildDepthPyramid(sc.depth, s);
+    for (int i = 0; i < 3000; ++i) {
+      const bool one = i % 4 == 0;
+      const Texture2D& mips = one ? sc.depth : pyramid;
+      const int maxLod = one ? 0 : i % 4 == 1 ? 2 : pyramid.levelCount() - 1;
+      const glm::dvec2 uv(u(rng), u(rng));
+      const double depth = 3.0 + 8.0 * u(rng);
+      const glm::vec3 q(sc.pixelRay(uv) * depth);
+      const double phi = 6.283185307179586 * u(rng), lat = 0.2 + 1.2 * u(rng);
+      const glm::vec3 dirN(glm::normalize(glm::dvec3(std::cos(phi) * std::cos(lat), std::sin(phi) * std::cos(lat),
+                                                     -std::sin(lat))));
+      const DepthPlaneWant want = depthPlaneWant(sc, mips, maxLod, glm::dvec3(q), glm::dvec3(dirN));
+      if (want.ambiguous) continue;
+      const SnellDepthPlane got = snellDepthPlaneAt(q, dirN, mips, s, maxLod);
+      ASSERT_EQ(got.valid, want.valid) << sc.name << " " << i;
+      EXPECT_EQ(got.fetches, want.fetches) << sc.name << " " << i;
+      EXPECT_NEAR(got.uv.x, want.uv.x, 1e-6) << sc.name << " " << i;
+      EXPECT_NEAR(got.uv.y, want.uv.y, 1e-6) << sc.name << " " << i;
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(got.position[k], want.position[k], 1e-4 * 12.0) << sc.name << " " << i;
+      if (want.valid) {
+        const double n = glm::length(want.normal);
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(got.normal[k], want.normal[k], 2e-3 * n) << sc.name << " " << i;
+      } else {
+        EXPECT_EQ(got.normal, glm::vec3(0.0f));
+      }
+      if (::testing::Test::HasFailure()) return;
+      ++checked;
+      leveled += want.level > 0;
+      fallbacks += want.fallback;
+      invalid += !want.valid;
+      behind += want.position != glm::dvec3(0.0) && double(q.z) < want.position.z;
+    }
+  }
+  std::printf("[depth plane] %d checked, %d above level 0, %d with a fallback texel, %d invalid, %d from behind the "
+              "surface\n", checked, leveled, fallbacks, invalid, behind);
+  EXPECT_GT(checked, 4000);
+  EXPECT_GT(leveled, 1000);
+  EXPECT_GT(fallbacks, 50);
+  EXPECT_GT(invalid, 200);
+  EXPECT_GT(behind, 500);
 }
 
 }  // namespace
