@@ -340,6 +340,127 @@ TEST(IntersectPlane, NoFarStartWithoutB0) {
   EXPECT_TRUE(snellPlaneFarStart(o, d, snellSurfaceViewToUv(sc.surface(), o).uv, pyramid, sc.surface()).valid);
 }
 
+// A ray moving away from the slanted plane (dot(dir, n) > 0) but deeper never meets it: plane 0 is the
+// plane through B0 (W's texel centre point) facing the camera, met where the ray reaches B0's depth along
+// the line of sight. One plane (N = 0), no far start; the point is in front of the surface, on screen.
+TEST(IntersectPlane, FacingPlaneWhenTheRayDoesNotMeetTheSurfacesPlane) {
+  const DepthScene sc = snell_test::slantedPlane(64, 64);
+  const glm::dvec3 w = sc.pixelRay({0.5, 0.5}) * 5.9, d(1.0, 1.0, -0.5);
+  const glm::dvec2 uvW = sc.project(w);
+  const glm::dvec2 centre = (glm::floor(uvW * 64.0) + 0.5) / 64.0;
+  const glm::dvec3 b = sc.pixelRay(centre) * sc.sampleAt(centre).s;
+  const glm::dvec3 want = w + glm::dot(b - w, b) / glm::dot(d, b) * d;
+  const SnellHit hn = snellIntersectPlaneNormal(glm::vec3(w), glm::vec3(d), sc.depth, sc.normals, sc.depth,
+                                                sc.surface(), 0.0f, 0, false);
+  const SnellHit hd = snellIntersectPlaneDepth(glm::vec3(w), glm::vec3(d), sc.depth, sc.surface(), 0, 0, false);
+  for (const SnellHit& h : {hn, hd}) {
+    ASSERT_TRUE(h.valid);
+    EXPECT_LT(glm::length(glm::dvec3(h.position) - want), 1e-3);
+  }
+}
+
+// W behind the slanted plane, heading deeper: neither the surface's plane nor the facing one lies ahead, so
+// without the far start both methods miss; with it plane 0 is the far start's plane (F.position), where
+// the final lookup finds the surface.
+TEST(IntersectPlane, FarStartWhenNoPlaneAtB0IsAhead) {
+  const DepthScene sc = snell_test::slantedPlane(64, 64);
+  const SnellDepthSurface s = sc.surface();
+  const Texture2D pyramid = snellBuildDepthPyramid(sc.depth, s);
+  const glm::vec3 w(sc.pixelRay({0.5, 0.5}) * 6.5), d(1.0f, 1.0f, -1.0f);
+  const int top = pyramid.levelCount() - 1;
+  expectMiss(snellIntersectPlaneNormal(w, d, sc.depth, sc.normals, pyramid, s, 0.0f, 0, false));
+  expectMiss(snellIntersectPlaneDepth(w, d, pyramid, s, top, 0, false));
+  const SnellFarPlane f = snellPlaneFarStart(w, d, snellSurfaceViewToUv(s, w).uv, pyramid, s);
+  ASSERT_TRUE(f.valid);
+  for (const SnellHit& h : {snellIntersectPlaneNormal(w, d, sc.depth, sc.normals, pyramid, s, 0.0f, 0, true),
+                            snellIntersectPlaneDepth(w, d, pyramid, s, top, 0, true)}) {
+    ASSERT_TRUE(h.valid);
+    EXPECT_LT(glm::length(h.position - f.position), 1e-4f);
+  }
+}
+
+// A refinement that cannot build its plane keeps P_(k-1): on the annulus, a ray from in front of its ring
+// aimed at a point of its plane inside the hole; plane 0 is the annulus' plane (exact), plane 1 would be
+// read in the hole (empty). The final lookup is empty too, so the closed surface holds the hit on plane 0:
+// at the target, uv = W's texel centre.
+TEST(IntersectPlane, RefinementStopsOnAnEmptyTexelAndHoldsThePreviousPlane) {
+  const DepthScene sc = snell_test::silhouette(128, 128);
+  const glm::dvec3 c(-0.2, 0.1, -7.0), n = glm::normalize(glm::dvec3(0.2, 0.75, 0.6));
+  const glm::dvec3 e1 = glm::normalize(glm::cross(n, glm::dvec3(0.0, 0.0, 1.0))), e2 = glm::cross(n, e1);
+  int checked = 0;
+  for (int k = 0; k < 12; ++k) {
+    const double a = 0.5236 * k;
+    const glm::dvec3 ring = c + 1.7 * (std::cos(a) * e1 + std::sin(a) * e2);
+    const glm::dvec3 target = c + 0.4 * (std::cos(a + 2.0) * e1 + std::sin(a + 2.0) * e2);
+    const glm::dvec3 w = ring * 0.85;  // on the line of sight through the ring point, in front of it
+    const glm::dvec2 uvW = sc.project(w);
+    const glm::dvec2 centre = (glm::floor(uvW * 128.0) + 0.5) / 128.0;
+    if (!sc.sampleAt(centre).valid || sc.sampleAt(sc.project(target)).valid) continue;
+    const glm::vec3 wf(w), df(target - w);
+    const SnellHit hn = snellIntersectPlaneNormal(wf, df, sc.depth, sc.normals, sc.depth, sc.surface(), 0.0f, 2, false);
+    const SnellHit hd = snellIntersectPlaneDepth(wf, df, sc.depth, sc.surface(), 0, 2, false);
+    EXPECT_EQ(hn.fetches, 2 + 1 + 1);  // plane 0, plane 1's empty depth read, the final lookup
+    for (const SnellHit& h : {hn, hd}) {
+      ASSERT_TRUE(h.valid) << k;
+      EXPECT_LT(glm::length(glm::dvec3(h.position) - target), 1e-3) << k;
+      EXPECT_NEAR(h.uv.x, centre.x, 1e-6) << k;
+      EXPECT_NEAR(h.uv.y, centre.y, 1e-6) << k;
+    }
+    ++checked;
+  }
+  EXPECT_GE(checked, 8);
+}
+
+// A refinement whose plane is behind W keeps P_(k-1) (the normal method): W at z = -4 over the step's far
+// plane, heading left and deeper; plane 0 is the far plane (exact), hit at a point seen through the near
+// half-plane (z = -3), whose plane and facing plane lie behind W. The hit stays on the far plane there.
+TEST(IntersectPlane, RefinementStopsWhenThePlaneIsBehindW) {
+  const DepthScene sc = snell_test::stepEdge(128, 128);
+  const glm::dvec3 p(0.0, 0.0, -8.0), n = glm::normalize(glm::dvec3(-0.1, 0.2, 1.0));
+  for (double y : {-0.5, 0.0, 0.4}) {
+    const glm::dvec3 w(1.0, y, -4.0), d(-1.0, 0.1, -1.0);
+    const glm::dvec3 want = w + glm::dot(p - w, n) / glm::dot(d, n) * d;
+    ASSERT_LT(3.0 * sc.pixelRay(sc.project(want)).x, 0.25);  // seen through the near half-plane
+    ASSERT_GT(3.0 * sc.pixelRay(sc.project(w)).x, 0.25);     // W over the far plane
+    const SnellHit h = snellIntersectPlaneNormal(glm::vec3(w), glm::vec3(d), sc.depth, sc.normals, sc.depth,
+                                                 sc.surface(), 0.0f, 1, false);
+    ASSERT_TRUE(h.valid) << y;
+    EXPECT_LT(glm::length(glm::dvec3(h.position) - want), 1e-3) << y;
+    EXPECT_EQ(h.fetches, 2 + 2 + 1);
+  }
+}
+
+// The hold keeps the texel of the last plane built: fronto-parallel texels (normals (0, 0, 1)) at view
+// distances 3 (W's column 4), 6 (column 6), nothing in column 7, a 90 degree camera. The ray from
+// (0, 0, -1) along (1, 0, -1) meets plane 0 at z = -3 (x = 2, uv.x 0.83: column 6), plane 1 at z = -6
+// (x = 5, uv.x 0.92: column 7), where plane 2 cannot be read: the hit stays on plane 1, uv column 6's centre.
+TEST(IntersectPlane, HeldHitTakesTheTexelOfTheLastPlaneBuilt) {
+  const glm::mat4 proj = snellPerspectiveWithDepth(1.5707964f, 1.0f, 0.5f, 40.0f, SNELL_DEPTH_GL);
+  const SnellDepthSurface s = snellDepthSurface(proj, 0.5f, 40.0f, SNELL_DEPTH_GL, 0.0f);
+  Image depth(8, 8, glm::vec4(0.0f)), normals(8, 8, glm::vec4(0.0f, 0.0f, 1.0f, 1.0f));
+  for (int j = 0; j < 8; ++j) {
+    for (int i = 0; i <= 5; ++i) depth.at(i, j).x = float(snell_test::windowDepth(3.0, 0.5, 40.0, SNELL_DEPTH_GL));
+    depth.at(6, j).x = float(snell_test::windowDepth(6.0, 0.5, 40.0, SNELL_DEPTH_GL));
+  }
+  const Texture2D depthTex(depth), normalTex(normals);
+  const SnellHit h = snellIntersectPlaneNormal(glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(1.0f, 0.0f, -1.0f), depthTex,
+                                               normalTex, depthTex, s, 0.0f, 2, false);
+  ASSERT_TRUE(h.valid);
+  EXPECT_LT(glm::length(h.position - glm::vec3(5.0f, 0.0f, -6.0f)), 1e-4f);
+  EXPECT_EQ(h.uv, glm::vec2(6.5f / 8.0f, 4.5f / 8.0f));
+  EXPECT_EQ(h.fetches, 2 + 2 + 1 + 1);
+}
+
+// Plane 0 met behind the camera (a ray towards it, the slanted plane's extension): the refinement cannot
+// project P_0 and stops; the hit is a miss after plane 0's two reads.
+TEST(IntersectPlane, PlaneHitBehindTheCameraIsAMissAfterItsReads) {
+  const DepthScene sc = snell_test::slantedPlane(64, 64);
+  const glm::vec3 w(0.0f, 0.0f, -1.0f), d(-1.0f, -1.0f, 0.3f);
+  const SnellHit h = snellIntersectPlaneNormal(w, d, sc.depth, sc.normals, sc.depth, sc.surface(), 0.0f, 2, false);
+  expectMiss(h);
+  EXPECT_EQ(h.fetches, 2);
+}
+
 TEST(IntersectPlane, RaysTowardsTheCameraUseThePlaneAhead) {
   // A plane facing the camera, origin in front of it, ray pointing partly towards
   // the camera but still reaching the (tilted) plane: valid, on the ray, exact.
