@@ -223,6 +223,12 @@ TEST(IntersectPlaneFarStart, MidpointOffScreenReadsTheEdgeTexel) {
   const SnellFarPlane f = p.run(glm::vec3(-6.0f, 0.0f, -4.0f), glm::vec3(-1.0f, 0.0f, -1.0f));  // G (-10, 0, -8)
   ASSERT_TRUE(f.valid);
   EXPECT_FLOAT_EQ(f.position.z, -9.5f);
+  // An origin near the camera plane far right (uv.x 5e9) and G (uv.x 6.25e5): a midpoint of 2.5e9, past
+  // any int, clamped to 1: the top level's texel (the way is longer than the screen).
+  p.at(3, 0, 0).z = 8.0f;
+  const SnellFarPlane g = p.run(glm::vec3(1e7f, 0.0f, -1e-3f), glm::vec3(0.0f, 0.0f, -1.0f));
+  ASSERT_TRUE(g.valid);
+  EXPECT_FLOAT_EQ(g.position.z, -8.0f);
 }
 
 // "Empty (w <= 0) or z not finite and positive": a texel with no coverage is empty whatever its z, and

@@ -642,6 +642,14 @@ TEST(IntersectPlane, DepthPlaneReadsThePointsTheContractNames) {
       behind += want.position != glm::dvec3(0.0) && double(q.z) < want.position.z;
     }
   }
+  // No plane around a point that does not project (at or behind the eye): nothing read.
+  const DepthScene sc = snell_test::slantedPlane(64, 64);
+  for (const glm::vec3 q : {glm::vec3(0.0f), glm::vec3(0.2f, 0.1f, 1.0f)}) {
+    const SnellDepthPlane none = snellDepthPlaneAt(q, glm::vec3(0.0f, 0.0f, -1.0f), sc.depth, sc.surface(), 0);
+    EXPECT_FALSE(none.valid);
+    EXPECT_EQ(none.fetches, 0);
+    EXPECT_EQ(none.position, glm::vec3(0.0f));
+  }
   std::printf("[depth plane] %d checked, %d above level 0, %d with a fallback texel, %d invalid, %d from behind the "
               "surface\n", checked, leveled, fallbacks, invalid, behind);
   EXPECT_GT(checked, 4000);

@@ -6,7 +6,8 @@
 // such points exact: (x, y, z) with x = z projects to uv.x = 0, x = -z to 1,
 // and x = -(1 + 2^-22) z to the first float past 1, with no rounding on the
 // way (ndc = x / -z, uv = ndc / 2 + 1 / 2). The expected values below follow
-// from the analytic layers and the contracts' sample positions.
+// from the analytic layers and the contracts' sample positions. The same
+// camera also puts a sample and a plane hit exactly on a layer (the last test).
 #include <snell/snell.hpp>
 
 #include <gtest/gtest.h>
@@ -37,13 +38,14 @@ SnellDepthSurface squareSurface(float emptyDepth) {
   return snellDepthSurface(squareCamera(), kNear, kFar, SNELL_DEPTH_GL, emptyDepth);
 }
 
-// A depth texture of a fronto-parallel face at view distance `dist` over the texels `covered` accepts.
-Texture2D faceDepth(int size, double dist, float emptyDepth, const std::function<bool(int, int)>& covered) {
+// A depth texture of fronto-parallel texels at view distance dist(i, j) over the texels `covered` accepts.
+Texture2D faceDepth(int size, const std::function<double(int, int)>& dist, float emptyDepth,
+                    const std::function<bool(int, int)>& covered) {
   Image im(size, size, glm::vec4(emptyDepth, 0.0f, 0.0f, 0.0f));
-  const float d = float(snell_test::windowDepth(dist, double(kNear), double(kFar), SNELL_DEPTH_GL));
   for (int j = 0; j < size; ++j)
     for (int i = 0; i < size; ++i)
-      if (covered(i, j)) im.at(i, j) = glm::vec4(d, 0.0f, 0.0f, 0.0f);
+      if (covered(i, j))
+        im.at(i, j).x = float(snell_test::windowDepth(dist(i, j), double(kNear), double(kFar), SNELL_DEPTH_GL));
   return Texture2D(std::move(im));
 }
 
@@ -52,8 +54,10 @@ Texture2D faceDepth(int size, double dist, float emptyDepth, const std::function
 struct Slab {
   Texture2D back, front;
   SnellDepthSurface backS = squareSurface(0.0f), frontS = squareSurface(1.0f);
-  Slab(int size, const std::function<bool(int, int)>& covered)
-      : back(faceDepth(size, 6.0, 0.0f, covered)), front(faceDepth(size, 2.0, 1.0f, covered)) {}
+  Slab(int size, const std::function<bool(int, int)>& covered,
+       const std::function<double(int, int)>& backDist = [](int, int) { return 6.0; })
+      : back(faceDepth(size, backDist, 0.0f, covered)),
+        front(faceDepth(size, [](int, int) { return 2.0; }, 1.0f, covered)) {}
   explicit Slab(int size) : Slab(size, [](int, int) { return true; }) {}
 
   SnellInsideBracket bracket(glm::vec3 o, glm::vec3 d, float maxDistance, int steps) const {
@@ -268,6 +272,56 @@ TEST(ScreenEdge, TheLastOfTheMostStepsIsRead) {
   EXPECT_NEAR(b.hi, 2.002f, 1e-5f);
   EXPECT_NEAR(b.lo, 2.002f * 511.0f / 512.0f, 1e-5f);
   EXPECT_EQ(b.fetches, 2 * 512);
+}
+
+// A plane met exactly at the bracket's outside sample is kept (lo <= t <= hi): straight back from view
+// distance 4, two steps whose second ends exactly on the back layer's depth as its read gives it (the
+// differences with 4 are exact in float), the plane there (normal (0, 0, 1)) met at that same t. Both
+// planes are kept, 2 reads each, and the hit is on the layer.
+TEST(ScreenEdge, InsidePlaneKeepsAPlaneMetExactlyAtTheOutsideSample) {
+  const Slab slab(32);
+  const Texture2D normals(Image(32, 32, glm::vec4(0.0f, 0.0f, 1.0f, 1.0f)));
+  const glm::vec3 o(0.1f, 0.1f, -4.0f), d(0.0f, 0.0f, -1.0f);
+  const SnellSurfaceSample layer = snellSampleSurface(slab.back, snellSurfaceViewToUv(slab.backS, o).uv, slab.backS);
+  ASSERT_TRUE(layer.valid);
+  const float maxDistance = -4.0f - layer.viewZ;
+  ASSERT_EQ(-4.0f - maxDistance, layer.viewZ);
+  const SnellInsideBracket b = slab.bracket(o, d, maxDistance, 2);
+  ASSERT_TRUE(b.valid);
+  ASSERT_EQ(b.hi, maxDistance);
+  const SnellInsideHit h = snellInsidePlane(o, d, slab.back, normals, slab.backS, slab.front, normals, slab.frontS,
+                                            maxDistance, 2, 2);
+  ASSERT_TRUE(h.hit.valid);
+  EXPECT_FALSE(h.front);
+  EXPECT_EQ(h.hit.position.z, layer.viewZ);
+  EXPECT_EQ(h.hit.fetches, 4 + 2 + 2);
+}
+
+// And at the last inside sample (lo): the back face at distance 7 up to column 20, 5 from column 21. From
+// view distance 4 along (1, 0, -1), the first of two steps ends at distance 5 exactly as column 21's read
+// gives it (in column 19: inside), the second in column 21 behind its face. Column 21's plane is met at
+// t = lo exactly: kept. Plane 2, read in column 19 (distance 7), is met past hi: the hit stays at lo.
+TEST(ScreenEdge, InsidePlaneKeepsAPlaneMetExactlyAtTheInsideSample) {
+  const Slab slab(32, [](int, int) { return true; }, [](int i, int) { return i <= 20 ? 7.0 : 5.0; });
+  const Texture2D normals(Image(32, 32, glm::vec4(0.0f, 0.0f, 1.0f, 1.0f)));
+  const glm::vec3 o(0.1f, 0.1f, -4.0f), d(1.0f, 0.0f, -1.0f);
+  const SnellSurfaceSample face = snellSampleSurface(slab.back, glm::vec2(21.5f / 32.0f, 0.5f), slab.backS);
+  ASSERT_TRUE(face.valid);
+  const float lo = -4.0f - face.viewZ;  // exact: the step that ends on the face
+  float maxDistance = 2.0f * lo * glm::length(d);
+  for (int k = 0; k < 8 && maxDistance / glm::length(d) / 2.0f != lo; ++k)
+    maxDistance = std::nextafter(maxDistance, maxDistance / glm::length(d) / 2.0f < lo ? 10.0f : 0.0f);
+  const SnellInsideBracket b = slab.bracket(o, d, maxDistance, 2);
+  ASSERT_TRUE(b.valid);
+  ASSERT_EQ(b.lo, lo);
+  ASSERT_EQ(int(b.loUv.x * 32.0f), 19);
+  ASSERT_EQ(int(b.uv.x * 32.0f), 21);
+  const SnellInsideHit h = snellInsidePlane(o, d, slab.back, normals, slab.backS, slab.front, normals, slab.frontS,
+                                            maxDistance, 2, 2);
+  ASSERT_TRUE(h.hit.valid);
+  EXPECT_FALSE(h.front);
+  EXPECT_EQ(h.hit.position.z, face.viewZ);
+  EXPECT_EQ(h.hit.fetches, 4 + 2 + 2);
 }
 
 }  // namespace
