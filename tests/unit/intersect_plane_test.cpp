@@ -461,6 +461,35 @@ TEST(IntersectPlane, PlaneHitBehindTheCameraIsAMissAfterItsReads) {
   EXPECT_EQ(h.fetches, 2);
 }
 
+// Q exactly at B0's depth is not deeper than it: Q2 = Q + d dir. On the sphere (one level, 16 texels),
+// Q sits 0.4 texel right of and above B0's texel centre at its depth and heads diagonally within the
+// image plane: Q2 lands in the texel up and right (0.8, 0.8), which C is read at; D is the texel above.
+// (Q - d dir would land in B's own texel and read C to its right: another plane on the curved surface.)
+TEST(IntersectPlane, DepthPlaneAtQLevelWithB0StepsForward) {
+  const DepthScene sc = snell_test::sphereBack(16, 16);
+  const SnellDepthSurface s = sc.surface();
+  const glm::ivec2 pb(5, 9);
+  const glm::vec2 centre((float(pb.x) + 0.5f) / 16.0f, (float(pb.y) + 0.5f) / 16.0f);
+  const SnellSurfacePoint b0 = snellSurfacePoint(sc.depth, centre, s);
+  ASSERT_TRUE(b0.valid);
+  const float h = -b0.position.z * float(2.0 * sc.tanHalfX) / 16.0f;  // a texel's width at B0's depth
+  const glm::vec3 q = b0.position + glm::vec3(0.4f * h, 0.4f * h, 0.0f);
+  const glm::vec3 dirN(0.70710677f, 0.70710677f, 0.0f);
+  auto point = [&](glm::ivec2 px) {
+    const glm::dvec2 uv((px.x + 0.5) / 16.0, (px.y + 0.5) / 16.0);
+    return sc.pixelRay(uv) * sc.sampleAt(uv).s;
+  };
+  const glm::dvec3 B = point(pb), C = point(pb + glm::ivec2(1, 1)), D = point(pb + glm::ivec2(0, 1));
+  const glm::dvec3 want = glm::cross(C - B, D - B);
+  const SnellDepthPlane got = snellDepthPlaneAt(q, dirN, sc.depth, s, 0);
+  ASSERT_TRUE(got.valid);
+  EXPECT_EQ(got.fetches, 3);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(got.normal[k], want[k], 2e-3 * glm::length(want)) << k;
+  // The other plane (C to the right) is far outside that tolerance here.
+  const glm::dvec3 other = glm::cross(point(pb + glm::ivec2(1, 0)) - B, D - B);
+  EXPECT_GT(glm::length(other - want), 0.05 * glm::length(want));
+}
+
 TEST(IntersectPlane, RaysTowardsTheCameraUseThePlaneAhead) {
   // A plane facing the camera, origin in front of it, ray pointing partly towards
   // the camera but still reaching the (tilted) plane: valid, on the ray, exact.
