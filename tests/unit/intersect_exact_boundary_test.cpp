@@ -7,7 +7,8 @@
 // and x = -(1 + 2^-22) z to the first float past 1, with no rounding on the
 // way (ndc = x / -z, uv = ndc / 2 + 1 / 2). The expected values below follow
 // from the analytic layers and the contracts' sample positions. The same
-// camera also puts a sample and a plane hit exactly on a layer (the last test).
+// camera also puts a march sample, and a tangent plane's hit, exactly on a
+// layer or a bracket's end (InsideExactBoundary).
 #include <snell/snell.hpp>
 
 #include <gtest/gtest.h>
@@ -264,7 +265,7 @@ TEST(ScreenEdge, InsidePlaneKeepsAPlaneHitOnTheEdge) {
 
 // With the most steps there are, the last of them is read too: straight back from view distance 4 to
 // 6.002, 512 samples, the last one (t 2.002) behind the back face at distance 6.
-TEST(ScreenEdge, TheLastOfTheMostStepsIsRead) {
+TEST(InsideExactBoundary, TheLastOfTheMostStepsIsRead) {
   const Slab slab(32);
   const SnellInsideBracket b =
       slab.bracket(glm::vec3(0.0f, 0.0f, -4.0f), glm::vec3(0.0f, 0.0f, -1.0f), 2.002f, SNELL_LINEAR_MARCH_MAX_STEPS);
@@ -278,7 +279,7 @@ TEST(ScreenEdge, TheLastOfTheMostStepsIsRead) {
 // distance 4, two steps whose second ends exactly on the back layer's depth as its read gives it (the
 // differences with 4 are exact in float), the plane there (normal (0, 0, 1)) met at that same t. Both
 // planes are kept, 2 reads each, and the hit is on the layer.
-TEST(ScreenEdge, InsidePlaneKeepsAPlaneMetExactlyAtTheOutsideSample) {
+TEST(InsideExactBoundary, InsidePlaneKeepsAPlaneMetExactlyAtTheOutsideSample) {
   const Slab slab(32);
   const Texture2D normals(Image(32, 32, glm::vec4(0.0f, 0.0f, 1.0f, 1.0f)));
   const glm::vec3 o(0.1f, 0.1f, -4.0f), d(0.0f, 0.0f, -1.0f);
@@ -301,7 +302,7 @@ TEST(ScreenEdge, InsidePlaneKeepsAPlaneMetExactlyAtTheOutsideSample) {
 // view distance 4 along (1, 0, -1), the first of two steps ends at distance 5 exactly as column 21's read
 // gives it (in column 19: inside), the second in column 21 behind its face. Column 21's plane is met at
 // t = lo exactly: kept. Plane 2, read in column 19 (distance 7), is met past hi: the hit stays at lo.
-TEST(ScreenEdge, InsidePlaneKeepsAPlaneMetExactlyAtTheInsideSample) {
+TEST(InsideExactBoundary, InsidePlaneKeepsAPlaneMetExactlyAtTheInsideSample) {
   const Slab slab(32, [](int, int) { return true; }, [](int i, int) { return i <= 20 ? 7.0 : 5.0; });
   const Texture2D normals(Image(32, 32, glm::vec4(0.0f, 0.0f, 1.0f, 1.0f)));
   const glm::vec3 o(0.1f, 0.1f, -4.0f), d(1.0f, 0.0f, -1.0f);
