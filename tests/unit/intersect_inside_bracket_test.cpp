@@ -4,6 +4,9 @@
 // nearest read picks (support/inside_layers.hpp). A ray with a sample within
 // rounding of a layer or of a texel edge is left out (float may read either
 // side there); the rest must give the bracket exactly, its fetches included.
+// The two searches built on the bracket, snellInsideMarch (bisection) and
+// snellInsidePlane (tangent planes of the crossed layer, analytic normals at
+// the texel centres), are run the same way from their contracts.
 #include <snell/snell.hpp>
 
 #include <gtest/gtest.h>
@@ -175,6 +178,202 @@ TEST(InsideBracket, MatchesTheContractsSamplesOnTheSpheresLayers) {
   EXPECT_GT(misses, 100);
 }
 
+// snellInsideMarch's contract in double: the bracket above, then refineSteps bisections (a midpoint outside
+// moves hi and names the side, any other moves lo; 2 fetches per midpoint on screen); the hit is hi.
+struct MarchHit {
+  bool valid = false, ambiguous = false, front = false;
+  dvec3 position{0.0};
+  dvec2 uv{0.0};
+  int fetches = 0;
+  int planes = 0, misses = 0;  // bruteForcePlane: planes kept, plane 1 reads not kept
+};
+
+MarchHit bruteForceMarch(const inside_test::Layers& l, const dvec3& o, const dvec3& d, double maxDistance, int steps,
+                         int refineSteps) {
+  MarchHit m;
+  const Bracket b = bruteForce(l, o, d, maxDistance, steps);
+  m.ambiguous = b.ambiguous;
+  m.fetches = b.fetches;
+  if (b.ambiguous || !b.valid) return m;
+  double lo = b.lo, hi = b.hi;
+  dvec2 uv = b.uv;
+  int side = b.side;
+  for (int j = 0; j < std::clamp(refineSteps, 0, SNELL_LINEAR_MARCH_MAX_REFINE_STEPS); ++j) {
+    const double mid = 0.5 * (lo + hi);
+    dvec2 at;
+    const int s = readAt(l, o + mid * d, d.z, &at);
+    if (s == kAmbiguous) {
+      m.ambiguous = true;
+      return m;
+    }
+    if (s != kOffScreen) m.fetches += 2;
+    if (s > 0) {
+      hi = mid;
+      uv = at;
+      side = s;
+    } else {
+      lo = mid;
+    }
+  }
+  m.valid = true;
+  m.position = o + hi * d;
+  m.uv = uv;
+  m.front = side == 2;
+  return m;
+}
+
+// snellInsidePlane's contract in double: plane k on the crossed layer at the texel of uv_(k-1), B_k its
+// texel-centre point and n_k the analytic normal there, kept when met within [lo, hi] at a point on screen;
+// plane 1 read again at loUv, then on the other layer there, when not kept.
+MarchHit bruteForcePlane(const inside_test::Layers& l, const dvec3& o, const dvec3& d, double maxDistance, int steps,
+                         int iterations) {
+  MarchHit m;
+  const Bracket b = bruteForce(l, o, d, maxDistance, steps);
+  m.ambiguous = b.ambiguous;
+  m.fetches = b.fetches;
+  if (b.ambiguous || !b.valid) return m;
+  bool onFront = b.side == 2, readFront = onFront;
+  const int n = std::clamp(iterations, 0, SNELL_PLANE_MAX_ITERATIONS);
+  double t = b.hi;
+  dvec2 uv = b.uv, readUv = b.uv;
+  int planes = 0, misses = 0;
+  for (int k = 1; n > 0 && k <= SNELL_PLANE_MAX_ITERATIONS + 2; ++k) {
+    if (inside_test::nearTexelEdge(l, readUv, kTexelMargin)) {
+      m.ambiguous = true;
+      return m;
+    }
+    const glm::ivec2 texel = inside_test::texelOf(l, readUv);
+    const dvec2 centre((texel.x + 0.5) / l.size, (texel.y + 0.5) / l.size);
+    const snell_test::DepthScene& layer = readFront ? l.front : l.back;
+    const snell_test::AnalyticSample a = layer.sampleAt(centre);
+    ++m.fetches;
+    bool kept = false;
+    if (a.valid) {
+      ++m.fetches;
+      const dvec3 B = layer.pixelRay(centre) * a.s;
+      const double den = glm::dot(d, a.normal), tk = glm::dot(B - o, a.normal) / den;
+      if (std::abs(den) < 1e-3 * glm::length(d) || std::abs(tk - b.lo) < 1e-4 || std::abs(tk - b.hi) < 1e-4) {
+        m.ambiguous = true;  // nearly parallel, or met within rounding of the bracket's ends
+        return m;
+      }
+      if (tk >= b.lo && tk <= b.hi) {
+        const dvec2 at = l.front.project(o + tk * d);
+        if (at.x >= 0.0 && at.x <= 1.0 && at.y >= 0.0 && at.y <= 1.0) {
+          t = tk;
+          uv = readUv = at;
+          onFront = readFront;
+          ++planes;
+          kept = true;
+        }
+      }
+    }
+    if (!kept) {
+      if (planes > 0 || misses >= 2) break;
+      ++misses;
+      readUv = b.loUv;
+      readFront = misses == 1 ? onFront : !onFront;
+    }
+    if (planes >= n) break;
+  }
+  m.valid = true;
+  m.position = o + t * d;
+  m.uv = uv;
+  m.front = onFront;
+  m.planes = planes;
+  m.misses = misses;
+  return m;
+}
+
+void expectHit(const SnellInsideHit& got, const MarchHit& want, int ray) {
+  ASSERT_EQ(got.hit.valid, want.valid) << "ray " << ray;
+  EXPECT_EQ(got.hit.fetches, want.fetches) << "ray " << ray;
+  if (!want.valid) return;
+  EXPECT_EQ(got.front, want.front) << "ray " << ray;
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(got.hit.position[k], want.position[k], 2e-4) << "ray " << ray;
+  for (int k = 0; k < 2; ++k) EXPECT_NEAR(got.hit.uv[k], want.uv[k], 2e-5) << "ray " << ray;
+}
+
+// The rays of the bracket test (a coarser march, so the bisection has room), refinement counts from
+// below 0 to above the bound: hits through either layer, refined or not.
+TEST(InsideMarch, BisectsTheBracketAsTheContractSays) {
+  const int size = 128;
+  const inside_test::Layers l = inside_test::sphereLayers(size);
+  const dvec3 c = technique_test::kCentre;
+  const double R = technique_test::kRadius;
+  snell_test::Rng g(8332);
+  int checked = 0, front = 0, back = 0, misses = 0;
+  for (int ray = 0; ray < 3000; ++ray) {
+    const dvec3 u(g.unit());
+    const glm::vec3 o(c + R * double(g.uniform(0.0f, 0.95f)) * u), d(g.unit());
+    const double maxDistance = g.uniform(0.5f, 6.0f);
+    const int steps = ray % 7 == 3 ? 600 : int(g.uniform(1.0f, 12.0f));  // 600: clamped to the bound
+    const int refine = ray % 5 == 0 ? int(g.uniform(-3.0f, 1.0f)) : ray % 5 == 1 ? 30 : int(g.uniform(1.0f, 7.0f));
+    const MarchHit want = bruteForceMarch(l, dvec3(o), dvec3(d), maxDistance, steps, refine);
+    if (want.ambiguous) continue;
+    const SnellInsideHit got = snellInsideMarch(o, d, l.back.depth, l.back.surface(), l.front.depth, l.front.surface(),
+                                                float(maxDistance), steps, refine);
+    expectHit(got, want, ray);
+    if (::testing::Test::HasFailure()) return;
+    ++checked;
+    if (!want.valid) ++misses;
+    else (want.front ? front : back)++;
+  }
+  std::printf("[inside march] %d rays checked: %d through the front, %d through the back, %d misses\n", checked, front,
+              back, misses);
+  EXPECT_GT(checked, 1000);
+  EXPECT_GT(front, 200);
+  EXPECT_GT(back, 200);
+  EXPECT_GT(misses, 50);
+}
+
+TEST(InsidePlane, IntersectsTheCrossedLayersTangentPlanesAsTheContractSays) {
+  const int size = 128;
+  const inside_test::Layers l = inside_test::sphereLayers(size);
+  const dvec3 c = technique_test::kCentre;
+  const double R = technique_test::kRadius;
+  snell_test::Rng g(8333);
+  int checked = 0, front = 0, back = 0, misses = 0, noPlane = 0, reread = 0, otherLayer = 0, several = 0;
+  for (int ray = 0; ray < 3000; ++ray) {
+    const dvec3 u(g.unit());
+    glm::vec3 o, d(g.unit());
+    if (ray % 2 == 0) {
+      o = glm::vec3(c + R * double(g.uniform(0.0f, 0.95f)) * u);
+    } else {
+      o = glm::vec3(c + R * u);
+      if (glm::dot(dvec3(d), u) > 0.0) d = -d;
+    }
+    const double maxDistance = g.uniform(0.5f, 6.0f);
+    const int steps = int(g.uniform(1.0f, 24.0f));
+    const int iterations = ray % 5 == 0 ? int(g.uniform(-3.0f, 1.0f)) : ray % 5 == 1 ? 12 : int(g.uniform(1.0f, 5.0f));
+    const MarchHit want = bruteForcePlane(l, dvec3(o), dvec3(d), maxDistance, steps, iterations);
+    if (want.ambiguous) continue;
+    const SnellInsideHit got = snellInsidePlane(o, d, l.back.depth, l.back.normals, l.back.surface(), l.front.depth,
+                                                l.front.normals, l.front.surface(), float(maxDistance), steps,
+                                                iterations);
+    expectHit(got, want, ray);
+    if (::testing::Test::HasFailure()) return;
+    ++checked;
+    if (!want.valid) ++misses;
+    else (want.front ? front : back)++;
+    if (!want.valid) continue;
+    noPlane += want.planes == 0;
+    reread += want.planes > 0 && want.misses == 1;
+    otherLayer += want.planes > 0 && want.misses == 2;
+    several += want.planes >= 3;
+  }
+  std::printf("[inside plane] %d rays checked: %d through the front, %d through the back, %d misses; no plane kept "
+              "%d, plane 1 kept at loUv %d, on the other layer %d, three planes or more %d\n", checked, front, back,
+              misses, noPlane, reread, otherLayer, several);
+  EXPECT_GT(checked, 1000);
+  EXPECT_GT(front, 200);
+  EXPECT_GT(back, 200);
+  EXPECT_GT(misses, 50);
+  EXPECT_GT(noPlane, 20);
+  EXPECT_GT(reread, 20);
+  EXPECT_GT(otherLayer, 5);
+  EXPECT_GT(several, 200);
+}
+
 // Bad input: the miss with nothing read.
 TEST(InsideBracket, BadInputIsAMissWithoutFetches) {
   const inside_test::Layers l = inside_test::sphereLayers(32);
@@ -195,6 +394,14 @@ TEST(InsideBracket, BadInputIsAMissWithoutFetches) {
     EXPECT_EQ(b.uv, glm::vec2(0.0f));
     EXPECT_EQ(b.loUv, glm::vec2(0.0f));
   }
+  // The ray from a point on the near plane towards the camera lies in front of it: nothing to march.
+  const SnellInsideBracket nearPlane = run(glm::vec3(0.0f, 0.0f, -snell_test::kSceneNear), glm::vec3(0, 0, 1), 3.0f);
+  EXPECT_FALSE(nearPlane.valid);
+  EXPECT_EQ(nearPlane.fetches, 0);
+  // Any positive maxDistance is marched, a denormal one too: its 16 samples round to the centre, inside.
+  const SnellInsideBracket tiny = run(o, d, 1e-40f);
+  EXPECT_FALSE(tiny.valid);
+  EXPECT_EQ(tiny.fetches, 2 * 16);
   // The sphere's centre, heading straight back: leaves through the back layer, hi - lo one step of 3 / 16.
   const SnellInsideBracket b = run(o, d, 3.0f);
   ASSERT_TRUE(b.valid);

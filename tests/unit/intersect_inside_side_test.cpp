@@ -62,10 +62,28 @@ TEST(InsideSide, OffScreenReadsAsBesideTheSilhouette) {
     EXPECT_EQ(snellInsideSide(p, uv, l.back.depth, l.back.surface(), l.front.depth, l.front.surface(), 0.5f), 2);
     EXPECT_EQ(snellInsideSide(p, uv, l.back.depth, l.back.surface(), l.front.depth, l.front.surface(), -0.5f), 1);
     EXPECT_EQ(snellInsideSide(p, uv, l.back.depth, l.back.surface(), l.front.depth, l.front.surface(), 0.0f), 1);
+    // Any positive dir.z heads towards the camera, the smallest (denormal) one too.
+    EXPECT_EQ(snellInsideSide(p, uv, l.back.depth, l.back.surface(), l.front.depth, l.front.surface(), 1e-40f), 2);
   }
   // At the sphere's centre pixel the same point is inside.
   const glm::vec2 centre = glm::vec2(l.front.project(glm::dvec3(p)));
   EXPECT_EQ(snellInsideSide(p, centre, l.back.depth, l.back.surface(), l.front.depth, l.front.surface(), 0.5f), 0);
+}
+
+// "On or behind the back layer", "on or in front of the front layer": a point at exactly the depth a layer's
+// read gives has left through that layer.
+TEST(InsideSide, APointExactlyOnALayerHasLeftThroughIt) {
+  const inside_test::Layers l = inside_test::sphereLayers(32);
+  const glm::vec2 uv(0.5f + 0.5f / 32.0f, 0.5f + 0.5f / 32.0f);
+  const SnellSurfaceSample b = snellSampleSurface(l.back.depth, uv, l.back.surface());
+  const SnellSurfaceSample f = snellSampleSurface(l.front.depth, uv, l.front.surface());
+  ASSERT_TRUE(b.valid && f.valid);
+  for (float dirZ : {-1.0f, 1.0f}) {
+    EXPECT_EQ(snellInsideSide(glm::vec3(0.0f, 0.0f, b.viewZ), uv, l.back.depth, l.back.surface(), l.front.depth,
+                              l.front.surface(), dirZ), 1);
+    EXPECT_EQ(snellInsideSide(glm::vec3(0.0f, 0.0f, f.viewZ), uv, l.back.depth, l.back.surface(), l.front.depth,
+                              l.front.surface(), dirZ), 2);
+  }
 }
 
 // Layers passed the wrong way round (the back one nearer the camera): a point between them is behind one and

@@ -174,4 +174,98 @@ TEST(IntersectPlaneFarStart, InvalidCasesAreFiniteWithTheirFetches) {
   expectMiss(snellPlaneFarStart(o, d, uv0, pyramid, s), 0);
 }
 
+// A hand-made 8x8 pyramid (levels 8, 4, 2, 1; z = farthest distance, w = coverage) seen by a 90 degree
+// camera whose focal terms are exactly 1, so uv = x / -z / 2 + 1 / 2 without rounding: the level and the
+// texel the contract names are then exact, and each case gives them a depth of their own.
+struct HandPyramid {
+  Texture2D tex;
+  SnellDepthSurface s;
+  HandPyramid() : tex(Image(8, 8, glm::vec4(0.0f, 2.0f, 8.0f, 1.0f)), Filter::Nearest, MipFilter::Nearest) {
+    for (int size = 4; size >= 1; size /= 2) tex.addLevel(Image(size, size, glm::vec4(0.0f, 2.0f, 8.0f, 1.0f)));
+    glm::mat4 m = snellPerspectiveWithDepth(1.5707964f, 1.0f, 0.5f, 40.0f, SNELL_DEPTH_GL);
+    m[0][0] = 1.0f;
+    m[1][1] = 1.0f;
+    s = snellDepthSurface(m, 0.5f, 40.0f, SNELL_DEPTH_GL, 0.0f);
+  }
+  glm::vec4& at(int level, int x, int y) { return tex.level(level).at(x, y); }
+  SnellFarPlane run(glm::vec3 o, glm::vec3 d) const {
+    return snellPlaneFarStart(o, d, snellSurfaceViewToUv(s, o).uv, tex, s);
+  }
+};
+
+// The level is the least L with 2^L >= D: D = 0 (along the line of sight) reads level 0, D = 2 exactly
+// (from uv 0.5 to G at uv 0.75, 8 texels wide) level 1, a way longer than the screen the top level.
+TEST(IntersectPlaneFarStart, LevelIsTheLeastWithAPowerOfTwoAtLeastTheWay) {
+  HandPyramid p;
+  p.at(0, 4, 4).z = 8.5f;  // level 0 under uv (0.5, 0.5)
+  p.at(1, 2, 2).z = 9.0f;  // level 1 under the midpoint (0.625, 0.5) and under (0.5, 0.5)
+  p.at(3, 0, 0).z = 8.0f;  // the whole buffer: G at z = -8
+  const SnellFarPlane along = p.run(glm::vec3(0.0f, 0.0f, -4.0f), glm::vec3(0.0f, 0.0f, -1.0f));
+  ASSERT_TRUE(along.valid);
+  EXPECT_EQ(along.position.z, -8.5f);
+  EXPECT_EQ(along.fetches, 2);
+  // G = (4, 0, -8): uv 0.75, D = 0.25 * 8 = 2.
+  const SnellFarPlane two = p.run(glm::vec3(0.0f, 0.0f, -4.0f), glm::vec3(1.0f, 0.0f, -1.0f));
+  ASSERT_TRUE(two.valid);
+  EXPECT_FLOAT_EQ(two.position.z, -9.0f);
+  EXPECT_FLOAT_EQ(two.t, 5.0f);
+  // G far off screen (uv.x 4.5: D = 32 > 8 = 2^top): the top level, z_all itself.
+  const SnellFarPlane wide = p.run(glm::vec3(0.0f, 0.0f, -4.0f), glm::vec3(16.0f, 0.0f, -1.0f));
+  ASSERT_TRUE(wide.valid);
+  EXPECT_FLOAT_EQ(wide.position.z, -8.0f);
+}
+
+// The midpoint is clamped to the screen: an origin off screen left (uv.x -0.25) heading deeper, G at uv.x
+// -0.125 (D = 1: level 0), the midpoint at uv.x -0.1875 is read at column 0.
+TEST(IntersectPlaneFarStart, MidpointOffScreenReadsTheEdgeTexel) {
+  HandPyramid p;
+  p.at(0, 0, 4).z = 9.5f;  // level 0, column 0, the row of uv.y 0.5
+  const SnellFarPlane f = p.run(glm::vec3(-6.0f, 0.0f, -4.0f), glm::vec3(-1.0f, 0.0f, -1.0f));  // G (-10, 0, -8)
+  ASSERT_TRUE(f.valid);
+  EXPECT_FLOAT_EQ(f.position.z, -9.5f);
+  // An origin near the camera plane far right (uv.x 5e9) and G (uv.x 6.25e5): a midpoint of 2.5e9, past
+  // any int, clamped to 1: the top level's texel (the way is longer than the screen).
+  p.at(3, 0, 0).z = 8.0f;
+  const SnellFarPlane g = p.run(glm::vec3(1e7f, 0.0f, -1e-3f), glm::vec3(0.0f, 0.0f, -1.0f));
+  ASSERT_TRUE(g.valid);
+  EXPECT_FLOAT_EQ(g.position.z, -8.0f);
+}
+
+// "Empty (w <= 0) or z not finite and positive": a texel with no coverage is empty whatever its z, and
+// any coverage above 0, a denormal one too, is not; z = 0 is not positive, a denormal z is.
+TEST(IntersectPlaneFarStart, CoverageAndDepthOfTheTexelsRead) {
+  const glm::vec3 o(0.0f, 0.0f, -4.0f), deeper(0.0f, 0.0f, -1.0f);
+  {
+    HandPyramid p;
+    p.at(3, 0, 0).w = 0.0f;
+    const SnellFarPlane f = p.run(o, deeper);
+    EXPECT_FALSE(f.valid);
+    EXPECT_EQ(f.fetches, 1);
+    p.at(3, 0, 0).w = 1e-40f;
+    EXPECT_TRUE(p.run(o, deeper).valid);
+  }
+  {
+    HandPyramid p;
+    p.at(0, 4, 4).w = 0.0f;
+    const SnellFarPlane f = p.run(o, deeper);
+    EXPECT_FALSE(f.valid);
+    EXPECT_EQ(f.fetches, 2);
+    p.at(0, 4, 4).w = 1e-40f;
+    EXPECT_TRUE(p.run(o, deeper).valid);
+  }
+  {
+    // From beyond the buffer towards the camera (G at z = -8 ahead), the level texel's plane near the eye.
+    HandPyramid p;
+    const glm::vec3 beyond(0.0f, 0.0f, -20.0f), towards(0.0f, 0.0f, 1.0f);
+    p.at(0, 4, 4).z = 0.0f;
+    const SnellFarPlane f = p.run(beyond, towards);
+    EXPECT_FALSE(f.valid);
+    EXPECT_EQ(f.fetches, 2);
+    p.at(0, 4, 4).z = 1e-40f;
+    const SnellFarPlane g = p.run(beyond, towards);
+    EXPECT_TRUE(g.valid);
+    EXPECT_FLOAT_EQ(g.t, 20.0f);
+  }
+}
+
 }  // namespace
