@@ -375,6 +375,21 @@ TEST(InsidePlane, IntersectsTheCrossedLayersTangentPlanesAsTheContractSays) {
 }
 
 // Bad input: the miss with nothing read.
+// A ray turning towards the camera by a dir.z too small for the near plane's distance along it to be a
+// float (+inf, from 1e-38 on; in double it is about 6e38) never reaches that plane: marched in full.
+TEST(InsideBracket, ANearPlaneTooFarForAFloatDoesNotCutTheMarch) {
+  const inside_test::Layers l = inside_test::sphereLayers(64);
+  const glm::vec3 o(0.3f, -0.2f, -6.0f);
+  for (const float dz : {1e-30f, 1e-38f, 1e-40f}) {
+    const glm::vec3 d(1.0f, 0.0f, dz);
+    const Bracket want = bruteForce(l, dvec3(o), dvec3(d), 4.0, 16);
+    ASSERT_FALSE(want.ambiguous) << dz;
+    ASSERT_TRUE(want.valid) << dz;
+    expectBracket(snellInsideBracket(o, d, l.back.depth, l.back.surface(), l.front.depth, l.front.surface(), 4.0f, 16),
+                  want, 0);
+  }
+}
+
 TEST(InsideBracket, BadInputIsAMissWithoutFetches) {
   const inside_test::Layers l = inside_test::sphereLayers(32);
   const glm::vec3 o(0.3f, -0.2f, -6.0f), d(0.0f, 0.0f, -1.0f);

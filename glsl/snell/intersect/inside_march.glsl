@@ -152,7 +152,8 @@ SNELL_FN SnellInsideBracket snellInsideBracket(vec3 origin, vec3 dir, SNELL_TEX2
   float tMax = maxDistance / len;
   if (dir.z > 0.0f) {
     float tNear = (-back.zNear - origin.z) / dir.z;
-    tMax = SNELL_FINITE(tNear) ? min(tMax, tNear) : 0.0f;
+    // As in the linear march: +inf is a near plane never reached in float and leaves tMax; -inf ends it.
+    tMax = isnan(tNear) ? 0.0f : min(tMax, tNear);
   }
   if (!SNELL_FINITE(tMax) || !(tMax > 0.0f)) {
     return b;
