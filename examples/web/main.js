@@ -15,7 +15,8 @@
 // Colour: every buffer and the frame hold linear RGB in float targets; only the canvas pass encodes.
 // ?technique=<name> picks the technique; ?buffers=lab runs it on the lab's own buffers and front-face inputs
 // (in the bundle: per object, its scene layer as the lab drew it) instead of the page's, which sets snell's
-// code apart from the two rasterizers; ?test=1 renders once and posts the canvas to serve.mjs.
+// code apart from the two rasterizers; ?test=1 renders once and posts the canvas to serve.mjs, which answers
+// with the next check's query: the page loads it, or draws again itself when only ?fault= differs.
 // A bundle of a glTF scene (bundle.asset: the asset, as snell-lab read it) can also be drawn with three.js's
 // OWN renderer: ?renderer=threejs (or the page's renderer picker) loads bundle/asset.glb with GLTFLoader and
 // renders it with MeshPhysicalMaterial transmission, set up as the lab's row "three.js (its renderer)"
@@ -26,17 +27,20 @@ import * as THREE from "three";
 import { bytes, floatTexture, labObjectBuffers, loadBundle, matrix, objectGeometry, paintingGeometry, text, vector } from "./bundle.js";
 import { layerTarget, Pyramids, rawMaterial, setFilter } from "./targets.js";
 
-const query = new URLSearchParams(location.search);
+let query = new URLSearchParams(location.search);
 const testMode = query.has("test");
 // A deliberately wrong page for the tests that show the checks can fail (serve.mjs --fault=ior): every IOR
-// 0.2 % higher.
-const iorScale = testMode && query.get("fault") === "ior" ? 1.002 : 1;
+// 0.2 % higher. A uniform, so a test's next check may change it without compiling anything again.
+const faultIorScale = (q) => (testMode && q.get("fault") === "ior" ? 1.002 : 1);
+let iorScale = faultIorScale(query);
 const labBuffers = query.get("buffers") === "lab";
 const drawWith = query.get("renderer") ?? "snell";
 const statusLine = document.getElementById("status");
 
+// Posts to serve.mjs, naming the check this page draws; serve.mjs's answer.
 async function report(what, body) {
-  if (testMode) await fetch(`/report/${what}`, { method: "POST", body });
+  if (!testMode) return "";
+  return (await fetch(`/report/${what}?check=${query.get("check") ?? ""}`, { method: "POST", body })).text();
 }
 
 function fail(error) {
@@ -335,7 +339,7 @@ async function main() {
   let firstDrawMs = await compile();
   statusLine.textContent = `${current.label}: ` +
     timingsText(firstDrawMs, `first draw (compile) ${(firstDrawMs / 1000).toFixed(1)} s; static passes ${staticMs.toFixed(0)} ms`);
-  if (testMode) return reportCanvas(renderer, canvas, W, H, { firstDrawMs, staticMs });
+  if (testMode) return reportCanvas(renderer, canvas, W, H, { firstDrawMs, staticMs }, () => renderFrame(current));
   // The frame time: one frame (the opaque scene's colour, per object its scene layer when there are several,
   // and its refraction pass; the canvas pass), waited for, the median of the
   // last 31 frames of the technique picked.
@@ -379,8 +383,10 @@ function timingsText(firstDrawMs, text) {
 }
 
 // Test mode: the canvas (its screenshot and its pixels, row 0 at the bottom as the bundle's) and a log line,
-// posted to serve.mjs.
-async function reportCanvas(renderer, canvas, W, H, log) {
+// posted to serve.mjs. Its answer is the next check's query, or nothing after the last. A check that differs
+// from this one only in its fault (or not at all) is drawn here again by redraw(), with the programs this
+// page compiled, which on SwiftShader are most of a check's time; any other is a page load of its own.
+async function reportCanvas(renderer, canvas, W, H, log, redraw) {
   const gl = renderer.getContext();
   const pixels = new Uint8Array(W * H * 4);
   renderer.setRenderTarget(null);
@@ -388,7 +394,25 @@ async function reportCanvas(renderer, canvas, W, H, log) {
   const png = await new Promise((resolve) => canvas.toBlob(resolve, "image/png"));
   await report("screenshot", png);
   await report("log", JSON.stringify({ renderer: rendererName(gl), subpixelBits: gl.getParameter(gl.SUBPIXEL_BITS), ...log }));
-  await report("pixels", pixels);
+  const next = new URLSearchParams(await report("pixels", pixels));
+  if (!next.has("test")) return;
+  const page = (q) => {
+    const p = new URLSearchParams(q);
+    p.delete("check");
+    p.delete("fault");
+    p.sort();
+    return p.toString();
+  };
+  if (page(next) !== page(query)) {
+    location.search = next.toString();
+    return;
+  }
+  query = next;
+  history.replaceState(null, "", `?${next}`);
+  iorScale = faultIorScale(query);
+  const d0 = performance.now();
+  redraw();
+  return reportCanvas(renderer, canvas, W, H, { ...log, redrawMs: performance.now() - d0 }, redraw);
 }
 
 // The bundle's glTF asset with three.js's own renderer (?renderer=threejs): the scene as the lab's row
@@ -444,7 +468,7 @@ async function threejsMain(bundle) {
   const firstDrawMs = performance.now() - c0;
   const timings = `first draw (compile, cube map, PMREM) ${(firstDrawMs / 1000).toFixed(1)} s; loading ${staticMs.toFixed(0)} ms`;
   statusLine.textContent = `three.js's own renderer: ${timingsText(firstDrawMs, timings)}`;
-  if (testMode) return reportCanvas(renderer, canvas, W, H, { firstDrawMs, staticMs });
+  if (testMode) return reportCanvas(renderer, canvas, W, H, { firstDrawMs, staticMs }, renderFrame);
   // The frame time, as for snell's technique: one frame (three.js's render, the canvas pass), waited for,
   // the median of the last 31.
   const times = [];

@@ -4,23 +4,33 @@
 //
 //   node examples/web/serve.mjs BUNDLE_DIR [--port=8080]
 //       then open the printed address in a browser with WebGL 2
-//   node examples/web/serve.mjs BUNDLE_DIR --test [--technique=plane-normal-2] [--buffers=page|lab]
-//       [--renderer=snell|threejs] [--min-share=0.99] [--max-diff=255] [--fault=ior] [--screenshot=FILE]
-//       [--report=FILE] [--chromium=PATH]
+//   node examples/web/serve.mjs BUNDLE_DIR --test CHECK [--then CHECK]... [--chromium=PATH]
+//       a CHECK: [--technique=plane-normal-2] [--buffers=page|lab] [--renderer=snell|threejs]
+//       [--min-share=0.99] [--max-diff=255] [--fault=ior] [--must-fail] [--screenshot=FILE] [--report=FILE]
 //
 // --test opens the page in headless Chromium (SwiftShader), which renders the technique once and posts the
 // canvas; the canvas is compared with the lab's picture of the same technique in the bundle, over the ray
 // tracer's object pixels, both as 8-bit sRGB. It passes when at least --min-share of those pixels (99 % by
 // default) are within 2/255 in every channel, and no pixel differs by more than --max-diff levels (255 by
 // default: no bound). --fault=ior draws a deliberately wrong page (every IOR 0.2 % higher), for a test that
-// shows the check can fail. --buffers=lab runs the technique on the lab's own buffers
-// and front-face inputs (in the bundle) instead of the page's: what is left is snell's code in three.js
-// against the lab's llvmpipe render, without the two rasterizers' differences (SwiftShader snaps vertices to
-// 1/16 pixel, llvmpipe to 1/256). --renderer=threejs (a bundle of a glTF scene, with bundle.asset) draws the
-// asset with three.js's own renderer instead (the page's ?renderer=threejs) and compares the canvas with the
-// lab's render of it with three.js's own renderer (bundle.asset.labThreejsImage: the same three.js on the same
-// SwiftShader), over the same object pixels. Exit status: 0 pass, 1 failure (a page error, no Chromium, no lab
-// picture in the bundle, a timeout, or the agreement below --min-share), 2 usage.
+// shows the check can fail: with --must-fail the check passes when its agreement falls short of what it
+// asks, and fails when it does not (the check cannot fail). --buffers=lab runs the technique on the lab's
+// own buffers and front-face inputs (in the bundle) instead of the page's: what is left is snell's code in
+// three.js against the lab's llvmpipe render, without the two rasterizers' differences (SwiftShader snaps
+// vertices to 1/16 pixel, llvmpipe to 1/256). --renderer=threejs (a bundle of a glTF scene, with
+// bundle.asset) draws the asset with three.js's own renderer instead (the page's ?renderer=threejs) and
+// compares the canvas with the lab's render of it with three.js's own renderer (bundle.asset.labThreejsImage:
+// the same three.js on the same SwiftShader), over the same object pixels.
+//
+// --then starts another check, with options of its own (nothing carries over from the check before). The
+// checks run one after the other in one Chromium, started once: each loads the page again, except a check
+// that differs from the one before only in --fault, which the page draws again with the program that one
+// compiled (the IOR is a uniform), without the compile that is most of a check's time on SwiftShader. Each
+// check prints its line and writes its report and screenshot; a check whose agreement fails does not stop
+// the ones after it. Every check's lab picture is looked up before Chromium starts. Exit status: 0 every check
+// passes, 1 a failure (the agreement below what is asked, or a page error, no Chromium, no lab picture in
+// the bundle, or a check's page silent for SNELL_BROWSER_TIMEOUT_MS: these end the run, naming the check),
+// 2 usage.
 import fs from "node:fs";
 import http from "node:http";
 import path from "node:path";
@@ -30,41 +40,74 @@ import { launchChromium } from "../../tools/browser/chromium.mjs";
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const root = path.resolve(here, "..", "..");
-const args = process.argv.slice(2);
-let usageLater = "";
-const option = (name, fallback) => {
-  const a = args.find((x) => x.startsWith(`--${name}=`));
+// The arguments before the first --then, then each check's after it.
+const groups = [[]];
+for (const a of process.argv.slice(2)) {
+  if (a === "--then") groups.push([]);
+  else groups.at(-1).push(a);
+}
+const optionIn = (group, name, fallback) => {
+  const a = group.find((x) => x.startsWith(`--${name}=`));
   return a ? a.slice(name.length + 3) : fallback;
 };
-const positional = args.filter((a) => !a.startsWith("--"));
-const known = ["test", "technique", "buffers", "renderer", "min-share", "max-diff", "fault", "screenshot", "report",
-  "chromium", "port"];
-for (const a of args.filter((x) => x.startsWith("--")))
-  if (!known.includes(a.slice(2).split("=")[0])) usageLater = `unknown option ${a}`;
-const test = args.includes("--test");
-const technique = option("technique", "plane-normal-2");
-const buffers = option("buffers", "page");
-const drawWith = option("renderer", "snell");
-const chromium = option("chromium", "chromium");
-const screenshot = option("screenshot", "");
-const reportFile = option("report", "");
-const port = Number(option("port", test ? "0" : "8080"));
+const runOptions = ["test", "chromium", "port"];
+const checkOptions = ["technique", "buffers", "renderer", "min-share", "max-diff", "fault", "must-fail", "screenshot",
+  "report"];
+let usageLater = "";
+for (const [i, group] of groups.entries())
+  for (const a of group.filter((x) => x.startsWith("--"))) {
+    const name = a.slice(2).split("=")[0];
+    if (i > 0 && runOptions.includes(name)) usageLater = `${a} is the run's, not a check's: give it before the first --then`;
+    else if (!runOptions.includes(name) && !checkOptions.includes(name)) usageLater = `unknown option ${a}`;
+  }
+const positional = groups[0].filter((a) => !a.startsWith("--"));
+const test = groups[0].includes("--test");
+const chromium = optionIn(groups[0], "chromium", "chromium");
+const port = Number(optionIn(groups[0], "port", test ? "0" : "8080"));
 const tolerance = 2;      // 8-bit sRGB levels, every channel
-const targetShare = Number(option("min-share", "0.99"));  // of the object pixels
-const maxDiffAllowed = Number(option("max-diff", "255"));  // 8-bit levels, any pixel
-const fault = option("fault", "");
 // SwiftShader compiles and draws a technique in 10-40 s on 2 cores; a page silent this long is stuck.
 const timeoutMs = Number(process.env.SNELL_BROWSER_TIMEOUT_MS ?? 600000);
 
 function usage(message) {
   console.error(`serve.mjs: ${message}\nusage: node examples/web/serve.mjs BUNDLE_DIR [--port=N] | ` +
-    "BUNDLE_DIR --test [--technique=NAME] [--buffers=page|lab] [--renderer=snell|threejs] [--min-share=F] " +
-    "[--max-diff=N] [--fault=ior] [--screenshot=FILE] [--report=FILE] " +
-    "[--chromium=PATH]");
+    "BUNDLE_DIR --test CHECK [--then CHECK]... [--chromium=PATH], a CHECK: [--technique=NAME] [--buffers=page|lab] " +
+    "[--renderer=snell|threejs] [--min-share=F] [--max-diff=N] [--fault=ior] [--must-fail] [--screenshot=FILE] " +
+    "[--report=FILE]");
   process.exit(2);
 }
 if (usageLater) usage(usageLater);
-if (positional.length !== 1) usage("give exactly one bundle directory (snell-lab --web-bundle DIR writes one)");
+if (groups.length > 1 && !test) usage("--then starts another check of --test");
+if (positional.length !== 1 || groups.slice(1).some((g) => g.some((a) => !a.startsWith("--"))))
+  usage("give exactly one bundle directory (snell-lab --web-bundle DIR writes one), before the first --then");
+
+// One check: what the page draws and how its canvas must agree with the lab's picture.
+function parseCheck(group, n) {
+  const option = (name, fallback) => optionIn(group, name, fallback);
+  const c = {
+    n, technique: option("technique", "plane-normal-2"), buffers: option("buffers", "page"),
+    drawWith: option("renderer", "snell"),
+    targetShare: Number(option("min-share", "0.99")),  // of the object pixels
+    maxDiffAllowed: Number(option("max-diff", "255")),  // 8-bit levels, any pixel
+    fault: option("fault", ""), mustFail: group.includes("--must-fail"),
+    screenshot: option("screenshot", ""), reportFile: option("report", ""),
+    // For the interactive page's address: only what was given.
+    given: { technique: option("technique"), buffers: option("buffers"), renderer: option("renderer") },
+  };
+  const bad = (message) => usage(groups.length > 1 ? `check ${n}: ${message}` : message);
+  if (!["page", "lab"].includes(c.buffers)) bad(`--buffers: page or lab, not ${c.buffers}`);
+  if (!["snell", "threejs"].includes(c.drawWith)) bad(`--renderer: snell or threejs, not ${c.drawWith}`);
+  if (c.drawWith === "threejs" && (c.given.buffers || c.given.technique))
+    bad("--renderer=threejs draws with three.js's own renderer: --buffers and --technique are snell's");
+  if (!(c.targetShare >= 0 && c.targetShare <= 1)) bad(`--min-share: a share in [0, 1], not ${option("min-share")}`);
+  if (!(Number.isInteger(c.maxDiffAllowed) && c.maxDiffAllowed >= 0 && c.maxDiffAllowed <= 255))
+    bad(`--max-diff: a whole number of 8-bit levels in [0, 255], not ${option("max-diff")}`);
+  if (!["", "ior"].includes(c.fault)) bad(`--fault: ior, not ${c.fault}`);
+  if (c.fault && c.drawWith === "threejs") bad("--fault=ior is a fault of snell's technique, not of three.js's renderer");
+  if (group.some((a) => a.startsWith("--must-fail="))) bad("--must-fail takes no value");
+  return c;
+}
+const checks = groups.map((group, i) => parseCheck(group, i + 1));
+if (!Number.isInteger(port) || port < 0 || port > 65535) usage(`--port: not a port number: ${optionIn(groups[0], "port")}`);
 const bundleDir = path.resolve(positional[0]);
 if (!fs.existsSync(path.join(bundleDir, "bundle.json")))
   usage(`no bundle.json in ${bundleDir} (write one with snell-lab SCENE --web-bundle ${positional[0]})`);
@@ -73,16 +116,6 @@ const addons = path.join(here, "node_modules", "three", "examples", "jsm");
 if (!fs.existsSync(path.join(three, "three.module.js")) || !fs.existsSync(path.join(addons, "loaders", "GLTFLoader.js")))
   usage(`three.js is not installed in ${path.join(here, "node_modules")}: run npm ci --prefix examples/web ` +
     "(or scripts/install-deps.sh)");
-if (!["page", "lab"].includes(buffers)) usage(`--buffers: page or lab, not ${buffers}`);
-if (!["snell", "threejs"].includes(drawWith)) usage(`--renderer: snell or threejs, not ${drawWith}`);
-if (drawWith === "threejs" && (option("buffers") || option("technique")))
-  usage("--renderer=threejs draws with three.js's own renderer: --buffers and --technique are snell's");
-if (!(targetShare >= 0 && targetShare <= 1)) usage(`--min-share: a share in [0, 1], not ${option("min-share")}`);
-if (!(Number.isInteger(maxDiffAllowed) && maxDiffAllowed >= 0 && maxDiffAllowed <= 255))
-  usage(`--max-diff: a whole number of 8-bit levels in [0, 255], not ${option("max-diff")}`);
-if (!["", "ior"].includes(fault)) usage(`--fault: ior, not ${fault}`);
-if (fault && drawWith === "threejs") usage("--fault=ior is a fault of snell's technique, not of three.js's renderer");
-if (!Number.isInteger(port) || port < 0 || port > 65535) usage(`--port: not a port number: ${option("port")}`);
 
 // Served files: a fixed map of names, so nothing outside these folders can be read.
 const files = new Map([
@@ -115,14 +148,31 @@ function finish(status, message) {
   browser.close().then(() => process.exit(status));
 }
 
+// A check as the messages name it; with one check, nothing (the messages read as before --then).
+function checkName(c) {
+  if (checks.length === 1) return "";
+  const what = c.drawWith === "threejs" ? "three.js's own renderer"
+    : `${c.technique}, ${c.buffers === "lab" ? "the lab's buffers" : "the page's buffers"}${c.fault ? `, fault ${c.fault}` : ""}`;
+  return `check ${c.n} of ${checks.length} (${what}): `;
+}
+// A failure that ends the run: the checks after it are not run, and the message says so.
+function abort(c, message) {
+  const left = checks.length - c.n;
+  finish(1, `serve.mjs: ${checkName(c)}${message}${left ? ` (${left} check${left > 1 ? "s" : ""} after it not run)` : ""}`);
+}
+
 // Only a test's reports keep a request body, and none longer than the largest one the page posts (its
 // canvas's pixels, RGBA8; an error message is shorter): any web page open in the same browser can post to
 // a loopback port, and a body kept whole would hold its memory until the server exits.
 const bundleSize = JSON.parse(fs.readFileSync(path.join(bundleDir, "bundle.json"), "utf8"));
 const maxReportBytes = Math.max(1 << 20, 4 * (bundleSize.width | 0) * (bundleSize.height | 0));
-const reports = {};
+// The check the page draws now, its reports so far, and how many checks failed.
+let current = checks[0];
+let reports = {};
+let failed = 0;
+let timer = null;
 const server = http.createServer((req, res) => {
-  const url = req.url.split("?")[0];
+  const [url, search] = req.url.split("?");
   const reporting = test && req.method === "POST" && url.startsWith("/report/");
   const body = [];
   let bodyBytes = 0;
@@ -151,10 +201,27 @@ const server = http.createServer((req, res) => {
       res.writeHead(200, { "content-type": type }).end(data);
     } else if (reporting) {
       const what = url.slice("/report/".length);
-      res.end();
+      // The page names the check it draws: an error names it too, and a report of another is dropped.
+      const from = checks[Number(new URLSearchParams(search ?? "").get("check")) - 1] ?? current;
+      if (what === "error") {
+        res.end();
+        return abort(from, `the page failed: ${Buffer.concat(body).toString()}`);
+      }
+      if (from !== current) return res.end();
       reports[what] = Buffer.concat(body);
-      if (what === "error") finish(1, `serve.mjs: the page failed: ${reports.error.toString()}`);
-      else if (what === "pixels") compare();
+      if (what !== "pixels") return res.end();
+      // The answer to the pixels: the next check's page, which the page loads, or draws again itself when
+      // only the fault differs (a uniform: the program it compiled serves it); nothing after the last.
+      const status = compare(current);
+      if (status === undefined) return res.end();  // the run is over
+      failed += status;
+      const next = checks[current.n];
+      res.end(next ? pageQuery(next) : "");
+      if (!next) return finish(failed ? 1 : 0, checks.length > 1 && failed
+        ? `serve.mjs: ${failed} of ${checks.length} checks failed` : "");
+      current = next;
+      reports = {};
+      timer.refresh();
     } else {
       res.writeHead(404).end();
     }
@@ -168,64 +235,88 @@ function srgb8(v) {
   return Math.round(255 * e);
 }
 
-// The lab's picture the canvas is compared with: of the technique (snell's), or the lab's render with three.js's
-// own renderer (--renderer=threejs); a message when the bundle lacks it.
-function labPicture(bundle) {
-  if (drawWith === "threejs") {
+// The lab's picture a check's canvas is compared with: of the technique (snell's), or the lab's render with
+// three.js's own renderer (--renderer=threejs); a message when the bundle lacks it.
+function labPicture(bundle, c) {
+  if (c.drawWith === "threejs") {
     if (!bundle.asset) return { missing: "the bundle has no glTF asset (snell-lab writes one for a glTF scene)" };
     if (!bundle.asset.labThreejsImage)
       return { missing: "the bundle has no lab render with three.js's own renderer (snell-lab skipped that row: " +
         "run it without --no-threejs, with Node.js, three.js and Chromium installed)" };
     return { image: bundle.asset.labThreejsImage };
   }
-  const t = bundle.techniques.find((x) => x.name === technique);
-  if (!t || !t.labImage) return { missing: `the bundle has no lab picture of ${technique} (run snell-lab with -t ${technique})` };
+  const t = bundle.techniques.find((x) => x.name === c.technique);
+  if (!t || !t.labImage) return { missing: `the bundle has no lab picture of ${c.technique} (run snell-lab with -t ${c.technique})` };
   return { image: t.labImage };
 }
 
-function compare() {
+// What the page is asked to draw for a check.
+function pageQuery(c) {
+  const q = new URLSearchParams({ test: 1, check: c.n });
+  if (c.drawWith === "threejs") q.set("renderer", "threejs");
+  else {
+    q.set("buffers", c.buffers);
+    q.set("technique", c.technique);
+    if (c.fault) q.set("fault", c.fault);
+  }
+  return q.toString();
+}
+
+// Compares the check's canvas with the lab's picture, prints its line and writes its report and screenshot:
+// its status (0 pass, 1 fail), or undefined when the run ended here.
+function compare(c) {
   const bundle = JSON.parse(fs.readFileSync(path.join(bundleDir, "bundle.json"), "utf8"));
-  const picture = labPicture(bundle);
-  if (picture.missing) return finish(1, `serve.mjs: ${picture.missing}`);
+  const picture = labPicture(bundle, c);
+  if (picture.missing) return abort(c, picture.missing);
   const W = bundle.width, H = bundle.height;
   if (picture.image.width !== W || picture.image.height !== H || (picture.image.channels ?? 4) !== 4)
-    return finish(1, `serve.mjs: the lab's picture ${picture.image.texels} is not ${W}x${H} RGBA`);
+    return abort(c, `the lab's picture ${picture.image.texels} is not ${W}x${H} RGBA`);
   const lab = new Float32Array(fs.readFileSync(path.join(bundleDir, picture.image.texels)).buffer.slice(0));
   const mask = fs.readFileSync(path.join(bundleDir, bundle.objectMask.bits));
   const page = reports.pixels;
   if (page.length !== W * H * 4 || lab.length !== W * H * 4 || mask.length !== W * H)
-    return finish(1, `serve.mjs: sizes differ: page ${page.length} bytes, lab ${lab.length} floats, mask ${mask.length}`);
+    return abort(c, `sizes differ: page ${page.length} bytes, lab ${lab.length} floats, mask ${mask.length}`);
   let object = 0, within = 0, maxDiff = 0, sumDiff = 0;
   const histogram = new Array(256).fill(0);
   for (let i = 0; i < W * H; ++i) {
     if (!mask[i]) continue;
     ++object;
     let d = 0;
-    for (let c = 0; c < 3; ++c) d = Math.max(d, Math.abs(page[4 * i + c] - srgb8(lab[4 * i + c])));
+    for (let ch = 0; ch < 3; ++ch) d = Math.max(d, Math.abs(page[4 * i + ch] - srgb8(lab[4 * i + ch])));
     ++histogram[d];
     if (d <= tolerance) ++within;
     maxDiff = Math.max(maxDiff, d);
     sumDiff += d;
   }
-  const share = object ? within / object : 0;
+  if (object === 0) return abort(c, "the bundle's object mask is empty: nothing to compare");
+  const share = within / object;
   const log = reports.log ? JSON.parse(reports.log.toString()) : {};
+  // A check the page drew again with the program an earlier check compiled: its draw, not that compile.
+  const redrawn = log.redrawMs !== undefined;
   const result = {
-    scene: bundle.scene, drawnWith: drawWith, ...(drawWith === "snell" ? { technique, buffers } : {}),
-    objectPixels: object, tolerance, withinShare: share, target: targetShare,
-    maxDiff, maxDiffAllowed, ...(fault ? { fault } : {}), meanMaxChannelDiff: object ? sumDiff / object : 0,
+    scene: bundle.scene, drawnWith: c.drawWith, ...(c.drawWith === "snell" ? { technique: c.technique, buffers: c.buffers } : {}),
+    objectPixels: object, tolerance, withinShare: share, target: c.targetShare,
+    maxDiff, maxDiffAllowed: c.maxDiffAllowed, ...(c.fault ? { fault: c.fault } : {}), meanMaxChannelDiff: sumDiff / object,
     diffHistogram: Object.fromEntries(histogram.map((n, d) => [d, n]).filter(([, n]) => n > 0)),
-    renderer: log.renderer, subpixelBits: log.subpixelBits, firstDrawMs: log.firstDrawMs, staticPassesMs: log.staticMs,
+    renderer: log.renderer, subpixelBits: log.subpixelBits,
+    ...(redrawn ? { redrawMs: log.redrawMs } : { firstDrawMs: log.firstDrawMs }), staticPassesMs: log.staticMs,
   };
-  if (reportFile) fs.writeFileSync(reportFile, JSON.stringify(result, null, 1) + "\n");
-  if (screenshot && reports.screenshot) fs.writeFileSync(screenshot, reports.screenshot);
-  const what = drawWith === "threejs" ? "three.js's own renderer"
-    : `${technique}, ${buffers === "lab" ? "the lab's buffers" : "the page's buffers"}`;
+  if (c.reportFile) fs.writeFileSync(c.reportFile, JSON.stringify(result, null, 1) + "\n");
+  if (c.screenshot && reports.screenshot) fs.writeFileSync(c.screenshot, reports.screenshot);
+  const what = c.drawWith === "threejs" ? "three.js's own renderer"
+    : `${c.technique}, ${c.buffers === "lab" ? "the lab's buffers" : "the page's buffers"}`;
+  const agrees = share >= c.targetShare && maxDiff <= c.maxDiffAllowed;
+  // --must-fail: a deliberately wrong page, which shows the check can fail.
+  const status = agrees === c.mustFail ? 1 : 0;
+  const verdict = !c.mustFail ? "" : agrees ? "; it passes, and it must fail (--must-fail): the check cannot fail"
+    : "; it fails, as it must (--must-fail)";
+  const draw = redrawn ? `drawn again in ${(log.redrawMs / 1000).toFixed(1)} s on ${log.renderer}, with the program ` +
+    "the check before compiled" : `first draw ${(log.firstDrawMs / 1000).toFixed(1)} s on ${log.renderer}`;
   const line = `serve.mjs: ${bundle.scene}, ${what}: ${(100 * share).toFixed(2)} % of ${object} object pixels ` +
-    `within ${tolerance}/255 of the lab's (at least ${100 * targetShare} % asked), largest difference ${maxDiff}/255 ` +
-    `(at most ${maxDiffAllowed} asked)${fault ? `, with the fault ${fault}` : ""}; ` +
-    `first draw ${(log.firstDrawMs / 1000).toFixed(1)} s on ${log.renderer}`;
-  if (object === 0) finish(1, "serve.mjs: the bundle's object mask is empty: nothing to compare");
-  else finish(share >= targetShare && maxDiff <= maxDiffAllowed ? 0 : 1, line);
+    `within ${tolerance}/255 of the lab's (at least ${100 * c.targetShare} % asked), largest difference ${maxDiff}/255 ` +
+    `(at most ${c.maxDiffAllowed} asked)${c.fault ? `, with the fault ${c.fault}` : ""}; ${draw}${verdict}`;
+  (status === 0 ? console.log : console.error)(line);
+  return status;
 }
 
 server.on("error", (e) =>
@@ -235,24 +326,28 @@ server.listen(port, "127.0.0.1", () => {
   const base = `http://127.0.0.1:${server.address().port}/`;
   if (!test) {
     const q = new URLSearchParams();
-    if (option("technique")) q.set("technique", technique);
-    if (option("buffers")) q.set("buffers", buffers);
-    if (option("renderer")) q.set("renderer", drawWith);
+    const given = checks[0].given;
+    if (given.technique) q.set("technique", given.technique);
+    if (given.buffers) q.set("buffers", given.buffers);
+    if (given.renderer) q.set("renderer", given.renderer);
     console.log(`serve.mjs: the page for ${bundleDir} at ${base}${q.size ? `?${q}` : ""} (Ctrl-C stops)`);
     return;
   }
+  // Every check's picture before Chromium starts: a run that would stop at a later check stops here.
   // With several objects each scene layer in the bundle holds the frame as one row of the lab drew it: the
   // page matches the lab's picture on those buffers with that row's technique only.
   const bundle = JSON.parse(fs.readFileSync(path.join(bundleDir, "bundle.json"), "utf8"));
-  if (buffers === "lab" && (bundle.objects?.length ?? 0) > 1 && bundle.labBuffersRow !== technique)
-    return finish(1, `serve.mjs: the bundle's lab buffers hold the scene layers ${bundle.labBuffersRow} drew, not ` +
-      `${technique}'s: test ${bundle.labBuffersRow} on them, or write the bundle with -t ${technique}`);
-  const picture = labPicture(bundle);
-  if (picture.missing) return finish(1, `serve.mjs: ${picture.missing}`);
-  const page = drawWith === "threejs" ? `${base}?test=1&renderer=threejs`
-    : `${base}?test=1&buffers=${buffers}&technique=${encodeURIComponent(technique)}${fault ? `&fault=${fault}` : ""}`;
-  browser = launchChromium(page,
-    { chromium, onFailure: (message) => finish(1, `serve.mjs: ${message}`) });
-  setTimeout(() => finish(1, `serve.mjs: no picture from the page after ${timeoutMs / 1000} s (SNELL_BROWSER_TIMEOUT_MS)`),
+  for (const c of checks) {
+    if (c.drawWith === "snell" && c.buffers === "lab" && (bundle.objects?.length ?? 0) > 1 && bundle.labBuffersRow !== c.technique)
+      return finish(1, `serve.mjs: ${checkName(c)}the bundle's lab buffers hold the scene layers ${bundle.labBuffersRow} ` +
+        `drew, not ${c.technique}'s: test ${bundle.labBuffersRow} on them, or write the bundle with -t ${c.technique}`);
+    const picture = labPicture(bundle, c);
+    if (picture.missing) return finish(1, `serve.mjs: ${checkName(c)}${picture.missing}`);
+  }
+  // One Chromium for every check: each starts it again otherwise (a few seconds), and a check that differs
+  // from the one before only in its fault does not compile the technique again (most of a check's time).
+  browser = launchChromium(`${base}?${pageQuery(checks[0])}`,
+    { chromium, onFailure: (message) => abort(current, message) });
+  timer = setTimeout(() => abort(current, `no picture from the page after ${timeoutMs / 1000} s (SNELL_BROWSER_TIMEOUT_MS)`),
     timeoutMs).unref();
 });
