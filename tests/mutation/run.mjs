@@ -370,7 +370,8 @@ if (fs.existsSync(explainedFile))
     if (!line.trim() || line.startsWith("#")) continue;
     const [file, op, text, original, mutated, why] = line.split("\t");
     if (!why) throw new Error(`${explainedFile}: a line needs 6 tab-separated fields: ${line}`);
-    explained.set([file, op, text, original, mutated].join("\t"), why);
+    // A dropped statement has no mutated code: "(dropped)" there, as mutants.tsv writes it.
+    explained.set([file, op, text, original, mutated === "(dropped)" ? "" : mutated].join("\t"), why);
   }
 const sourceLines = new Map();
 const lineText = (r) => {
@@ -397,7 +398,13 @@ const folderOf = (f) => f.split("/")[0];
   const lines = [`Mutants of glsl/snell, commit ${must("git", ["-C", root, "rev-parse", "--short", "HEAD"]).stdout.trim()}, ` +
   `${new Date().toISOString().slice(0, 16).replace("T", " ")} UTC (tests/mutation/run.mjs). Score: killed / all; ` +
   "an explained survivor is one tests/mutation/explained.tsv says why no test can or should kill; the last " +
-  "column leaves those out (killed / (all - explained)).", "",
+  "column leaves those out (killed / (all - explained)).",
+  ...(() => {
+    const kept = all.filter((r) => / \(at \w+\)$/.test(r.by ?? "")).length;
+    return kept ? ["", `${kept} of the kills were kept, not run again, from a run of an earlier one body ` +
+      "(--carry-from: the same mutants; sound while no test that killed one has been weakened since); every " +
+      "other mutant ran on this tree."] : [];
+  })(), "",
 ...header("folder")];
 for (const folder of [...new Set(files.map(folderOf))]) lines.push(row(`${folder}/`, all.filter((r) => folderOf(r.file) === folder)));
 lines.push(row("all", all), "", ...header("file"));
