@@ -406,6 +406,15 @@ TEST(CameraProjection, ADenormalEntryOrIntermediateGivesTheZeroMatrix) {
   ASSERT_LT(1.0 / (2e38 - 1.0), fltMin);
   EXPECT_TRUE(isZero(snellPerspectiveWithDepth(1.0f, 1.0f, 1.0f, 2e38f, SNELL_DEPTH_REVERSED)));
   EXPECT_TRUE(isZero(snellPerspectiveInverse(1.0f, 1.0f, 1.0f, 2e38f, SNELL_DEPTH_REVERSED)));
+  // Exactly the smallest normal float is kept: REVERSED with zFar = 2^126 + 1 (2^126 in float) over zNear = 1
+  // has C = 1 / 2^126 = FLT_MIN and C / D = FLT_MIN; INFINITE_REVERSED with zNear = 2^126 has 1 / D = FLT_MIN.
+  const float p126 = std::ldexp(1.0f, 126);
+  const glm::mat4 cMin = snellPerspectiveWithDepth(1.0f, 1.0f, 1.0f, p126 + 1.0f, SNELL_DEPTH_REVERSED);
+  EXPECT_EQ(cMin[2][2], kFltMin);
+  const glm::mat4 cMinInverse = snellPerspectiveInverse(1.0f, 1.0f, 1.0f, p126 + 1.0f, SNELL_DEPTH_REVERSED);
+  EXPECT_EQ(cMinInverse[3][3], kFltMin);
+  const glm::mat4 dMaxInverse = snellPerspectiveInverse(1.0f, 1.0f, p126, 0.0f, SNELL_DEPTH_INFINITE_REVERSED);
+  EXPECT_EQ(dMaxInverse[2][3], kFltMin);
   // Just inside: zFar = 1e37 zNear keeps C = 1e-37 and its inverse entries normal.
   EXPECT_FALSE(isZero(snellPerspectiveWithDepth(1.0f, 1.0f, 1.0f, 1e37f, SNELL_DEPTH_REVERSED)));
   EXPECT_FALSE(isZero(snellPerspectiveInverse(1.0f, 1.0f, 1.0f, 1e37f, SNELL_DEPTH_REVERSED)));
