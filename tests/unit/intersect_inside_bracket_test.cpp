@@ -390,6 +390,21 @@ TEST(InsideBracket, ANearPlaneTooFarForAFloatDoesNotCutTheMarch) {
   }
 }
 
+// The near-plane cut is for rays towards the camera: one parallel to the image plane from a point before
+// the near plane (z = -0.3, the scene's zNear 0.5) or on it is marched in full, outside the object: a miss
+// after its samples' fetches, as the brute force in double has it.
+TEST(InsideBracket, ARayAlongTheImagePlaneIsNotCutByTheNearPlane) {
+  const inside_test::Layers l = inside_test::sphereLayers(32);
+  for (const float z : {-0.3f, -snell_test::kSceneNear}) {
+    const glm::vec3 o(0.0031f, 0.0047f, z), d(1.0f, 0.0f, 0.0f);  // samples away from texel edges
+    const Bracket want = bruteForce(l, dvec3(o), dvec3(d), 0.1, 4);
+    ASSERT_FALSE(want.ambiguous) << z;
+    ASSERT_GT(want.fetches, 0) << z;
+    expectBracket(snellInsideBracket(o, d, l.back.depth, l.back.surface(), l.front.depth, l.front.surface(), 0.1f, 4),
+                  want, 0);
+  }
+}
+
 TEST(InsideBracket, BadInputIsAMissWithoutFetches) {
   const inside_test::Layers l = inside_test::sphereLayers(32);
   const glm::vec3 o(0.3f, -0.2f, -6.0f), d(0.0f, 0.0f, -1.0f);

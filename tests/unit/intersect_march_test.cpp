@@ -687,6 +687,18 @@ TEST(IntersectMarch, ANearPlaneTooFarForAFloatDoesNotCutTheMarch) {
   }
 }
 
+// The near-plane cut is for rays towards the camera (dir.z > 0): one parallel to the image plane, even from a
+// point before the near plane (z = -0.3, zNear 0.5) or on it, is marched over its whole length. Its four
+// samples, x = 0.025 .. 0.1 at that depth, project on screen in front of the wall: a miss after 4 fetches.
+TEST(IntersectMarch, ARayAlongTheImagePlaneIsNotCutByTheNearPlane) {
+  const FlatWall fw = flatWall(64, 64);
+  for (const float z : {-0.3f, -0.5f}) {
+    const SnellHit h = snellLinearMarch(vec3(0.0f, 0.0f, z), vec3(1.0f, 0.0f, 0.0f), fw.depth, fw.surface, 0.1f, 4, 0);
+    EXPECT_FALSE(h.valid) << z;
+    EXPECT_EQ(h.fetches, 4) << z;
+  }
+}
+
 // Rays towards the camera are marched up to the near plane: t_i = i tMax / steps with tMax cut there, the
 // contract's walk replayed in double (linearReference) from origins behind the slanted plane.
 TEST(IntersectMarch, LinearMarchTowardsTheCameraStopsAtTheNearPlane) {
