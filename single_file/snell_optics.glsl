@@ -283,7 +283,7 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
       r.direction = snellSafeNormalize(i + (2.0f * cosI) * n);
     } else if (policy == SNELL_TIR_CRITICAL) {
       // sin_t = 1: the transmitted ray grazes the surface along i's tangent part.
-      r.direction = snellSafeNormalize(i + cosI * n);
+      r.direction = snellSafeNormalize(tangent);
     }
     return r;
   }

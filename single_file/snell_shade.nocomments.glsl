@@ -433,7 +433,7 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
     if (policy == SNELL_TIR_REFLECT) {
       r.direction = snellSafeNormalize(i + (2.0f * cosI) * n);
     } else if (policy == SNELL_TIR_CRITICAL) {
-      r.direction = snellSafeNormalize(i + cosI * n);
+      r.direction = snellSafeNormalize(tangent);
     }
     return r;
   }
