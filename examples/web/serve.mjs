@@ -30,13 +30,15 @@
 // the ones after it. Every check's lab picture is looked up before Chromium starts. Exit status: 0 every check
 // passes, 1 a failure (the agreement below what is asked, or a page error, no Chromium, no lab picture in
 // the bundle, or a check's page silent for SNELL_BROWSER_TIMEOUT_MS: these end the run, naming the check),
-// 2 usage.
+// 2 usage. When Chromium itself crashes (a signal, or its GPU process), the check is drawn again in a new
+// Chromium, once per run; a second crash ends the run.
 import fs from "node:fs";
 import http from "node:http";
 import path from "node:path";
 import { fileURLToPath } from "node:url";
 
 import { launchChromium } from "../../tools/browser/chromium.mjs";
+import { floatsOf } from "../../tools/browser/floats.mjs";
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const root = path.resolve(here, "..", "..");
@@ -139,6 +141,7 @@ for (const f of fs.readdirSync(bundleDir))
   files.set(`/bundle/${f}`, [path.join(bundleDir, f), f.endsWith(".json") ? "application/json" : "application/octet-stream"]);
 
 let browser = null;
+let relaunched = false;
 let finishing = false;
 function finish(status, message) {
   if (finishing) return;
@@ -271,7 +274,7 @@ function compare(c) {
   const W = bundle.width, H = bundle.height;
   if (picture.image.width !== W || picture.image.height !== H || (picture.image.channels ?? 4) !== 4)
     return abort(c, `the lab's picture ${picture.image.texels} is not ${W}x${H} RGBA`);
-  const lab = new Float32Array(fs.readFileSync(path.join(bundleDir, picture.image.texels)).buffer.slice(0));
+  const lab = floatsOf(fs.readFileSync(path.join(bundleDir, picture.image.texels)));
   const mask = fs.readFileSync(path.join(bundleDir, bundle.objectMask.bits));
   const page = reports.pixels;
   if (page.length !== W * H * 4 || lab.length !== W * H * 4 || mask.length !== W * H)
@@ -346,8 +349,20 @@ server.listen(port, "127.0.0.1", () => {
   }
   // One Chromium for every check: each starts it again otherwise (a few seconds), and a check that differs
   // from the one before only in its fault does not compile the technique again (most of a check's time).
-  browser = launchChromium(`${base}?${pageQuery(checks[0])}`,
-    { chromium, onFailure: (message) => abort(current, message) });
+  const launch = () => {
+    browser = launchChromium(`${base}?${pageQuery(current)}`, { chromium, onFailure: (message, { crashed }) => {
+      if (!crashed || relaunched || finishing) return abort(current, message);
+      // Chromium itself crashed (seen once in CI, two seconds after start-up): the check is drawn again in
+      // a new one, once per run. A crash that the page's own work causes happens again and ends the run.
+      relaunched = true;
+      console.error(`serve.mjs: ${checkName(current)}${message.split(/;|\n/)[0]}: drawing the check again in a new ` +
+        "Chromium (once per run)");
+      reports = {};
+      timer.refresh();
+      browser.close().then(() => { if (!finishing) launch(); });
+    } });
+  };
+  launch();
   timer = setTimeout(() => abort(current, `no picture from the page after ${timeoutMs / 1000} s (SNELL_BROWSER_TIMEOUT_MS)`),
     timeoutMs).unref();
 });

@@ -6,7 +6,8 @@
 //   await browser.close();  // kills its whole process group, waits, removes its profile folder
 //
 // onFailure is called once, with a message naming the cause, when Chromium cannot start, exits by itself
-// or its GPU process crashes (a page may not learn of that before it reads back).
+// or its GPU process crashes (a page may not learn of that before it reads back); its second argument,
+// { crashed: true }, says the cause was a crash (a signal, or the GPU process), not a refusal to start.
 import { spawn } from "node:child_process";
 import fs from "node:fs";
 import os from "node:os";
@@ -22,26 +23,31 @@ export function chromiumFlags(profile, webgpu) {
   return flags;
 }
 
+// Chromium's complaints that there is no D-Bus (none in a container) hide what went wrong.
+const withoutDbus = (log) => log.split("\n").filter((l) => !/dbus/.test(l)).join("\n");
+
 export function launchChromium(url, { chromium = "chromium", webgpu = false, onFailure = () => {} } = {}) {
   const profile = fs.mkdtempSync(path.join(os.tmpdir(), "snell-chromium-"));
   const flags = chromiumFlags(profile, webgpu);
   let log = "";
   let closing = false;
   let failed = false;
-  const failure = (message) => {
+  const failure = (message, crashed = false) => {
     if (closing || failed) return;
     failed = true;
-    onFailure(message);
+    onFailure(message, { crashed });
   };
   const browser = spawn(chromium, [...flags, url], { stdio: ["ignore", "ignore", "pipe"], detached: true });
   browser.stderr.on("data", (d) => {
     log = (log + d).slice(-4000);
     if (/GPU process exited unexpectedly/.test(log))
-      failure(`Chromium's GPU process crashed; its last output:\n${log.split("\n").filter((l) => !/dbus/.test(l)).join("\n")}`);
+      failure(`Chromium's GPU process crashed; its last output:\n${withoutDbus(log)}`, true);
   });
   browser.on("error", (e) =>
     failure(`cannot start ${chromium}: ${e.message} (install Debian's chromium: apt-get install chromium)`));
-  browser.on("exit", (code, signal) => failure(`Chromium exited (${signal ?? code}) before the page was done; its last output:\n${log}`));
+  browser.on("exit", (code, signal) =>
+    failure(`Chromium exited (${signal ?? code}) before the page was done; its last output:\n${withoutDbus(log)}`,
+      signal !== null));
 
   // Chromium is killed and waited for before its profile folder is removed (its helper processes still
   // write there while they go down).

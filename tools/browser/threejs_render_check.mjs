@@ -28,6 +28,7 @@ import path from "node:path";
 import { fileURLToPath } from "node:url";
 
 import { decodePng, floatImageToPng, srgbDecode } from "./png.mjs";
+import { floatsOf } from "./floats.mjs";
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const root = path.resolve(here, "..", "..");
@@ -273,7 +274,7 @@ function render(name, cam, W, H, envFile, envW, envH) {
   const t = Date.now();
   const r = spawnSync(process.execPath, cli, { stdio: ["ignore", "inherit", "inherit"] });
   if (r.status !== 0) die(`the render "${name}" failed (exit ${r.status}); see above`);
-  const img = new Float32Array(fs.readFileSync(out).buffer.slice(0));
+  const img = floatsOf(fs.readFileSync(out));
   fs.writeFileSync(path.join(work, `${name}.png`), floatImageToPng(W, H, img));
   console.log(`  ${name}: rendered in ${((Date.now() - t) / 1000).toFixed(1)} s`);
   return img;
@@ -286,7 +287,7 @@ function main() {
     const b = JSON.parse(fs.readFileSync(path.join(bundleDir, "bundle.json"), "utf8"));
     [envW, envH] = [b.environment.width, b.environment.height];
     envFile = path.join(bundleDir, b.environment.texels);
-    env = new Float32Array(fs.readFileSync(envFile).buffer.slice(0));
+    env = floatsOf(fs.readFileSync(envFile));
   } else {
     [envW, envH] = [1024, 512];
     env = bakeSky(envW, envH);
