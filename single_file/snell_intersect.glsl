@@ -1472,7 +1472,8 @@ contract:
   - h.valid is false, with h.t = 0 and h.position = (0,0,0) (finite, never NaN),
     when: the ray is parallel to the plane (within the epsilon above, also when
     it lies in it), the hit is behind the origin (t < 0), dir or planeNormal is
-    zero, denormal-small, NaN or infinite, origin or planePoint has a NaN or
+    zero, denormal-small, NaN or infinite, dir's squared length overflows a
+    float (|dir| above about 1.8e19), origin or planePoint has a NaN or
     infinite component, or t or the point overflows.
 source: the parametric line p = o + t d (G. Oliveira 2000, Equations 9-10)
   substituted into the plane equation dot(p - p0, n) = 0.
@@ -1522,7 +1523,8 @@ SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, 
   h.valid = false;
   vec3 n = snellSafeNormalize(planeNormal);
   float dirLen2 = dot(dir, dir);
-  if (dot(n, n) == 0.0f || !(dirLen2 > 1e-30f) || !(dirLen2 < SNELL_FLT_MAX)) {
+  // dirLen2 = +inf is a dir too long to square; FLT_MAX itself is a finite length, sqrt and all.
+  if (dot(n, n) == 0.0f || !(dirLen2 > 1e-30f) || !(dirLen2 <= SNELL_FLT_MAX)) {
     return h;
   }
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
@@ -3418,7 +3420,8 @@ contract:
     no step hits within steps; with 0 fetches when: an input is NaN or Inf
     (a NaN thickness uses the default, a NaN stride 1), |dir| is 0 or
     denormal-small, maxDistance <= 0, the origin is in front of the near plane
-    (z > -surface.zNear), an end does not project to a normal 1/w (clip w <= 0,
+    (z > -surface.zNear) or on it with dir.z > 0 (no part of the ray is inside
+    the frustum), an end does not project to a normal 1/w (clip w <= 0,
     below FLT_MIN or above 1/FLT_MIN) or to a finite Q, or the level has no
     texels. thickness < 0 counts as 0, stride < 1 as 1.
 source: M. McGuire, M. Mara, "Efficient GPU Screen-Space Ray Tracing", JCGT

@@ -801,7 +801,7 @@ SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, 
   h.valid = false;
   vec3 n = snellSafeNormalize(planeNormal);
   float dirLen2 = dot(dir, dir);
-  if (dot(n, n) == 0.0f || !(dirLen2 > 1e-30f) || !(dirLen2 < SNELL_FLT_MAX)) {
+  if (dot(n, n) == 0.0f || !(dirLen2 > 1e-30f) || !(dirLen2 <= SNELL_FLT_MAX)) {
     return h;
   }
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||

@@ -818,8 +818,10 @@ contract:
   - r.direction is unit length, or (0,0,0) exactly when r.valid is false or
     (TIR and SNELL_TIR_ZERO);
   - r.tir is true when eta^2 (1 - cos_i^2) > 1, evaluated as
-    (1 - eta^2) + eta^2 cos_i^2 < 0, or, for eta^2 > 2^24 (where 1 - eta^2
-    rounds), as eta |i + cos_i n| > 1 (so normal incidence never reflects);
+    (1 - eta^2) + eta^2 cos_i^2 < 0 for eta < 8 (every pair of real
+    materials), and as eta |i + cos_i n| > 1 from 8 up (so normal incidence
+    never reflects): there the first form loses about eta^2 2^-23 of
+    cos_t^2 to the rounding of cos_i, and past 4096 1 - eta^2 itself rounds;
   - eta = 1 returns the normalized incident direction (up to rounding);
   - r.valid is false (direction 0, tir false) when incident or normal is zero,
     denormal-small, NaN or infinite, or eta is not a finite positive normal
@@ -852,8 +854,8 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
   r.valid = false;
   vec3 i = snellSafeNormalize(incident);
   vec3 n = snellSafeNormalize(normal);
-  // eta >= FLT_MIN is false for NaN, 0 and denormals; eta < FLT_MAX is false for +Inf.
-  if (dot(i, i) == 0.0f || dot(n, n) == 0.0f || !(eta >= SNELL_FLT_MIN) || !(eta < SNELL_FLT_MAX)) {
+  // eta >= FLT_MIN is false for NaN, 0 and denormals; eta <= FLT_MAX is false for +Inf.
+  if (dot(i, i) == 0.0f || dot(n, n) == 0.0f || !(eta >= SNELL_FLT_MIN) || !(eta <= SNELL_FLT_MAX)) {
     return r;
   }
   r.valid = true;
@@ -866,16 +868,19 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
   // cos_t^2 = 1 - eta^2 (1 - cos_i^2), written as (1 - eta^2) + eta^2 cos_i^2: the
   // same value, but exact for eta = 1 and accurate near grazing incidence, where
   // 1 - cos_i^2 would round away the small cos_i^2.
-  float eta2 = eta * eta;
-  float cos2T = (1.0f - eta2) + eta2 * (cosI * cosI);
-  // Above eta^2 = 2^24 (eta > 4096) 1 - eta^2 rounds, and at normal incidence cos_t^2 came out 0 and the
-  // direction below cancelled to zero: there sin_t = eta |i_t| from i's tangent part i_t = i + cos_i n
-  // (exactly 0 at normal incidence), and t = eta i_t - cos_t n.
+  // From eta = 8 up the float cos_i near 1 (its ulp 2^-24, and the rounding before) costs about eta^2 2^-23
+  // of cos_t^2, and above 4096 1 - eta^2 rounds (at normal incidence cos_t^2 came out 0 and the direction
+  // cancelled to zero): there sin_t = eta |i_t| from i's tangent part i_t = i + cos_i n (exactly 0 at
+  // normal incidence), and t = eta i_t - cos_t n. eta^2 is not formed there: it overflows from 1.8e19.
   vec3 tangent = i + cosI * n;
-  bool huge = eta2 > 16777216.0f;
-  if (huge) {
+  bool large = eta >= 8.0f;
+  float cos2T = 0.0f;
+  if (large) {
     float sinT = eta * length(tangent);
     cos2T = (1.0f - sinT) * (1.0f + sinT);
+  } else {
+    float eta2 = eta * eta;
+    cos2T = (1.0f - eta2) + eta2 * (cosI * cosI);
   }
   if (cos2T < 0.0f) {
     r.tir = true;
@@ -888,7 +893,7 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
     return r;
   }
   float cosT = sqrt(cos2T);
-  r.direction = huge ? snellSafeNormalize(eta * tangent - cosT * n) : snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
+  r.direction = large ? snellSafeNormalize(eta * tangent - cosT * n) : snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
   return r;
 }
 
@@ -1221,7 +1226,8 @@ contract:
   - h.valid is false, with h.t = 0 and h.position = (0,0,0) (finite, never NaN),
     when: the ray is parallel to the plane (within the epsilon above, also when
     it lies in it), the hit is behind the origin (t < 0), dir or planeNormal is
-    zero, denormal-small, NaN or infinite, origin or planePoint has a NaN or
+    zero, denormal-small, NaN or infinite, dir's squared length overflows a
+    float (|dir| above about 1.8e19), origin or planePoint has a NaN or
     infinite component, or t or the point overflows.
 source: the parametric line p = o + t d (G. Oliveira 2000, Equations 9-10)
   substituted into the plane equation dot(p - p0, n) = 0.
@@ -1248,7 +1254,8 @@ SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, 
   h.valid = false;
   vec3 n = snellSafeNormalize(planeNormal);
   float dirLen2 = dot(dir, dir);
-  if (dot(n, n) == 0.0f || !(dirLen2 > 1e-30f) || !(dirLen2 < SNELL_FLT_MAX)) {
+  // dirLen2 = +inf is a dir too long to square; FLT_MAX itself is a finite length, sqrt and all.
+  if (dot(n, n) == 0.0f || !(dirLen2 > 1e-30f) || !(dirLen2 <= SNELL_FLT_MAX)) {
     return h;
   }
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||
@@ -4338,7 +4345,8 @@ contract:
     no step hits within steps; with 0 fetches when: an input is NaN or Inf
     (a NaN thickness uses the default, a NaN stride 1), |dir| is 0 or
     denormal-small, maxDistance <= 0, the origin is in front of the near plane
-    (z > -surface.zNear), an end does not project to a normal 1/w (clip w <= 0,
+    (z > -surface.zNear) or on it with dir.z > 0 (no part of the ray is inside
+    the frustum), an end does not project to a normal 1/w (clip w <= 0,
     below FLT_MIN or above 1/FLT_MIN) or to a finite Q, or the level has no
     texels. thickness < 0 counts as 0, stride < 1 as 1.
 source: M. McGuire, M. Mara, "Efficient GPU Screen-Space Ray Tracing", JCGT

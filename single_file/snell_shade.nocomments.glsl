@@ -410,7 +410,7 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
   r.valid = false;
   vec3 i = snellSafeNormalize(incident);
   vec3 n = snellSafeNormalize(normal);
-  if (dot(i, i) == 0.0f || dot(n, n) == 0.0f || !(eta >= SNELL_FLT_MIN) || !(eta < SNELL_FLT_MAX)) {
+  if (dot(i, i) == 0.0f || dot(n, n) == 0.0f || !(eta >= SNELL_FLT_MIN) || !(eta <= SNELL_FLT_MAX)) {
     return r;
   }
   r.valid = true;
@@ -420,13 +420,15 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
     cosI = -cosI;
   }
   cosI = min(cosI, 1.0f);
-  float eta2 = eta * eta;
-  float cos2T = (1.0f - eta2) + eta2 * (cosI * cosI);
   vec3 tangent = i + cosI * n;
-  bool huge = eta2 > 16777216.0f;
-  if (huge) {
+  bool large = eta >= 8.0f;
+  float cos2T = 0.0f;
+  if (large) {
     float sinT = eta * length(tangent);
     cos2T = (1.0f - sinT) * (1.0f + sinT);
+  } else {
+    float eta2 = eta * eta;
+    cos2T = (1.0f - eta2) + eta2 * (cosI * cosI);
   }
   if (cos2T < 0.0f) {
     r.tir = true;
@@ -438,7 +440,7 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
     return r;
   }
   float cosT = sqrt(cos2T);
-  r.direction = huge ? snellSafeNormalize(eta * tangent - cosT * n) : snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
+  r.direction = large ? snellSafeNormalize(eta * tangent - cosT * n) : snellSafeNormalize(eta * i + (eta * cosI - cosT) * n);
   return r;
 }
 
@@ -603,7 +605,7 @@ SNELL_FN SnellRayPlaneHit snellRayPlane(vec3 origin, vec3 dir, vec3 planePoint, 
   h.valid = false;
   vec3 n = snellSafeNormalize(planeNormal);
   float dirLen2 = dot(dir, dir);
-  if (dot(n, n) == 0.0f || !(dirLen2 > 1e-30f) || !(dirLen2 < SNELL_FLT_MAX)) {
+  if (dot(n, n) == 0.0f || !(dirLen2 > 1e-30f) || !(dirLen2 <= SNELL_FLT_MAX)) {
     return h;
   }
   if (!SNELL_FINITE(origin.x) || !SNELL_FINITE(origin.y) || !SNELL_FINITE(origin.z) ||

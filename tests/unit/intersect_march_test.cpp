@@ -841,6 +841,25 @@ TEST(IntersectMarch, DdaReadsALevelOneTexelWide) {
   }
 }
 
+// From the near plane itself towards the camera (an ulp of dir.z, or a whole one) no part of the ray is in
+// the frustum: a miss with no fetch.
+TEST(IntersectMarch, DdaFromTheNearPlaneTowardsTheCameraCostsNoFetch) {
+  const FlatWall fw = flatWall(64, 64);
+  ASSERT_EQ(fw.surface.zNear, 0.5f);
+  for (const float dz : {1e-40f, 1e-30f, 1.0f}) {
+    const SnellHit h = snellDdaMarch(vec3(0.3f, 0.2f, -0.5f), vec3(0.1f, 0.0f, dz), fw.depth, fw.surface, 0.1f,
+                                     FLT_MAX, 1.0f, 8);
+    EXPECT_FALSE(h.valid) << dz;
+    EXPECT_EQ(h.fetches, 0) << dz;
+  }
+  // Along the image plane the same origin is marched: 6.4 pixels in front of the wall (uv.x 0.8 to 0.9), a
+  // miss after 7 steps (ds = 1 / 6.4: step 6 owns s = 1).
+  const SnellHit along = snellDdaMarch(vec3(0.3f, 0.2f, -0.5f), vec3(0.1f, 0.0f, 0.0f), fw.depth, fw.surface, 0.1f,
+                                       FLT_MAX, 1.0f, 8);
+  EXPECT_FALSE(along.valid);
+  EXPECT_EQ(along.fetches, 7);
+}
+
 // Rays towards the camera are cut at the near plane: the contract's walk replayed (ddaReference) from
 // origins behind the slanted plane, with thicknesses that let the first steps pass behind it.
 TEST(IntersectMarch, DdaTowardsTheCameraStopsAtTheNearPlane) {

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cfloat>
 #include <cmath>
 #include <limits>
 
@@ -112,6 +113,24 @@ TEST(OpticsRayPlane, BadInputs) {
   expectInvalid(snell::snellRayPlane(o, vec3(0, 0, -1e-20f), p0, n));
   // Overflowing t or point.
   expectInvalid(snell::snellRayPlane(vec3(0, 0, 3e38f), vec3(1e-3f, 0, -1e-3f), vec3(0, 0, -3e38f), n));
+}
+
+// A dir whose squared length rounds to FLT_MAX itself is a finite ray, hit where double precision puts it;
+// one ulp longer, its square overflows and the ray is refused.
+TEST(OpticsRayPlane, ADirSquaringToTheLargestFloatStillHits) {
+  const float a = 0x1.000002p+63f, b = 0x1.bb67acp+63f;
+  ASSERT_EQ(a * a + b * b, FLT_MAX);
+  const vec3 o(0.0f, 0.0f, -1.0f), p0(100.0f, 0.0f, 0.0f), nx(1.0f, 0.0f, 0.0f);
+  const snell::SnellRayPlaneHit h = snell::snellRayPlane(o, vec3(a, b, 0.0f), p0, nx);
+  ASSERT_TRUE(h.valid);
+  const double t = 100.0 / double(a);
+  EXPECT_NEAR(h.t, t, 1e-6 * t);
+  EXPECT_NEAR(h.position.x, 100.0, 1e-4);
+  EXPECT_NEAR(h.position.y, t * double(b), 1e-4);
+  EXPECT_EQ(h.position.z, -1.0f);
+  const float longer = std::nextafter(b, kInf);
+  ASSERT_TRUE(std::isinf(a * a + longer * longer));
+  EXPECT_FALSE(snell::snellRayPlane(o, vec3(a, longer, 0.0f), p0, nx).valid);
 }
 
 // --- angle between ------------------------------------------------------------

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cfloat>
 #include <cmath>
 #include <limits>
 
@@ -78,7 +79,7 @@ TEST(OpticsRefract, SnellsLawThroughAngles) {
 // slightly off it Snell's law still holds (here i's tangent part is its x, exact in float, so sin_t is
 // within rounding), and past sin_i = 1 / eta it reflects totally.
 TEST(OpticsRefract, HugeEtaKeepsSnellsLaw) {
-  for (const float eta : {4097.0f, 5000.0f, 1e6f, 1e19f, 1e30f, 3e38f}) {
+  for (const float eta : {4097.0f, 5000.0f, 1e6f, 1e19f, 1e30f, 3e38f, FLT_MAX}) {
     SCOPED_TRACE(eta);
     const snell::SnellRefraction res = snell::snellRefract(vec3(0.0f, 0.0f, -1.0f), vec3(0.0f, 0.0f, 1.0f), eta, SNELL_TIR_ZERO);
     ASSERT_TRUE(res.valid);
@@ -111,6 +112,38 @@ TEST(OpticsRefract, HugeEtaKeepsSnellsLaw) {
   }
   EXPECT_GT(refracted, 500);
   EXPECT_GT(reflected, 500);
+}
+
+// From eta = 8 to 4096 (no real pair of materials, but snellIorToEta's range) the float cos_i near 1 is
+// quantized finely enough for glass and too coarsely for eta^2 cos_i^2: rays against Snell's law in double,
+// whose tangent part is exact (i in the xz-plane, x the sine). At eta = 8 itself, sin_i 0x1.fee35p-4 is where
+// (1 - eta^2) + eta^2 cos_i^2 is furthest off (1.3e-5 of the direction).
+TEST(OpticsRefract, LargeEtaKeepsSnellsLaw) {
+  Rng r;
+  int refracted = 0, reflected = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const float eta = k == 0 ? 8.0f : k == 1 ? 4096.0f : std::pow(10.0f, r.uniform(0.91f, 3.61f));
+    const float sinI = k == 0 ? 0x1.fee35p-4f : k == 1 ? 0.5f / eta : r.uniform(0.0f, 2.0f) / eta;
+    vec3 i(sinI, 0.0f, -std::sqrt(1.0f - sinI * sinI));
+    const Incidence g = incidence(i, vec3(0.0f, 0.0f, 1.0f));
+    const double sinT = double(eta) * g.sinI;
+    // Within 2^-20 of sin_t = 1 (times eta, the float input's own resolution) the side is a matter of rounding.
+    if (std::abs(sinT - 1.0) < double(eta) * 1e-6) continue;
+    const snell::SnellRefraction res = snell::snellRefract(i, vec3(0.0f, 0.0f, 1.0f), eta, SNELL_TIR_ZERO);
+    ASSERT_TRUE(res.valid);
+    ASSERT_EQ(res.tir, sinT > 1.0) << "eta " << eta << " sin_t " << sinT;
+    if (res.tir) {
+      ++reflected;
+      continue;
+    }
+    ++refracted;
+    const dvec3 t = d(res.direction);
+    EXPECT_NEAR(glm::length(t), 1.0, 1e-6);
+    EXPECT_NEAR(t.x, sinT, 2e-6) << "eta " << eta;
+    EXPECT_NEAR(t.z, -std::sqrt(1.0 - sinT * sinT), 2e-6 + 2e-6 * sinT / std::sqrt(1.0 - sinT * sinT)) << "eta " << eta;
+  }
+  EXPECT_GT(refracted, 1500);
+  EXPECT_GT(reflected, 1500);
 }
 
 TEST(OpticsRefract, NormalFacingAwayIsFlipped) {

@@ -51,7 +51,8 @@ contract:
     no step hits within steps; with 0 fetches when: an input is NaN or Inf
     (a NaN thickness uses the default, a NaN stride 1), |dir| is 0 or
     denormal-small, maxDistance <= 0, the origin is in front of the near plane
-    (z > -surface.zNear), an end does not project to a normal 1/w (clip w <= 0,
+    (z > -surface.zNear) or on it with dir.z > 0 (no part of the ray is inside
+    the frustum), an end does not project to a normal 1/w (clip w <= 0,
     below FLT_MIN or above 1/FLT_MIN) or to a finite Q, or the level has no
     texels. thickness < 0 counts as 0, stride < 1 as 1.
 source: M. McGuire, M. Mara, "Efficient GPU Screen-Space Ray Tracing", JCGT
