@@ -13,9 +13,9 @@
 // tests/mutation/explained.tsv).
 //
 // Each mutant runs the tests that evaluate its site (recorded once per test on the unmutated build): the
-// C++ unit tests (snell_unit_tests, snell_perspective_only_tests), the CPU property test
-// (snell_property_tests) and the parity cases on OSMesa (snell_parity_tests, Parity_osmesa.*), which compile
-// the mutated GLSL beside the mutated C++. Killed: any of them fails, crashes or runs past its time limit
+// C++ unit tests (snell_unit_tests, snell_perspective_only_tests, snell_normal_fetch_tests), the CPU
+// property test (snell_property_tests) and the parity cases on OSMesa (snell_parity_tests, Parity_osmesa.*),
+// which compile the mutated GLSL beside the mutated C++. Killed: any of them fails, crashes or runs past its time limit
 // (ten times the unmutated run, at least 30 s). Survived: all pass. Unreached: no test evaluates the site.
 // To keep a run near two hours on 2 cores: the property test draws 100,000 hostile inputs per function
 // (SNELL_PROPERTY_INPUTS), and the parity step runs the cases of the functions the mutated file defines.
@@ -220,13 +220,14 @@ const build = path.join(work, "build");
 const binaries = {
   unit: path.join(build, "tests", "snell_unit_tests"),
   perspective: path.join(build, "tests", "snell_perspective_only_tests"),
+  normalFetch: path.join(build, "tests", "snell_normal_fetch_tests"),
   property: path.join(build, "tests", "property", "snell_property_tests"),
   parity: path.join(build, "tests", "snell_parity_tests"),
 };
 log(`building ${build} (the first build takes about 10 minutes on 2 cores)`);
 must("cmake", ["-S", src, "-B", build, "-DCMAKE_BUILD_TYPE=Release", "-DCMAKE_CXX_FLAGS=-include cstdlib -include cstdio"]);
 must("cmake", ["--build", build, "-j", String(os.cpus().length), "--target", "snell_unit_tests",
-  "snell_perspective_only_tests", "snell_property_tests", "snell_parity_tests"], { stdio: ["ignore", "ignore", "pipe"] });
+  "snell_perspective_only_tests", "snell_normal_fetch_tests", "snell_property_tests", "snell_parity_tests"], { stdio: ["ignore", "ignore", "pipe"] });
 
 // 3. The tests, and which sites each evaluates (on the unmutated build).
 function listTests(binary, keep) {
@@ -243,6 +244,7 @@ function listTests(binary, keep) {
 const suites = {
   unit: listTests(binaries.unit, () => true),
   perspective: listTests(binaries.perspective, () => true),
+  normalFetch: listTests(binaries.normalFetch, () => true),
   property: listTests(binaries.property, () => true),
   parity: listTests(binaries.parity, (t) => t.startsWith("Parity_osmesa.")),
 };
@@ -318,7 +320,7 @@ const startedAt = Date.now();
 await pool(todo, async (m) => {
   const tests = reachedBy.get(m.id) ?? [];
   let status = tests.length ? "survived" : "unreached", by = "";
-  for (const kind of ["unit", "perspective", "property", "parity"]) {
+  for (const kind of ["unit", "perspective", "normalFetch", "property", "parity"]) {
     let mine = tests.filter((t) => t.kind === kind);
     // Parity: the cases of the functions the file defines (each reaches most sites below it); a file with
     // none, the three quickest cases that reach the site.

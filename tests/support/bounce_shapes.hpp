@@ -1,9 +1,10 @@
-// Two convex glass shapes inside which a ray entering the face towards the camera reflects totally
-// two, three or four times before it leaves (tests/unit/technique_bounce_paths_test.cpp in analytic
-// buffers, tests/lab/bounce_paths_buffers_test.cpp in the lab's GL buffers), and the textbook path
-// through them in double precision (Prism::inside: glm::refract / glm::reflect and ray-plane
-// intersections, independent of snell). Both are convex, so every face point lies on the front
-// layer or the back layer as the camera sees them: the two layers hold the whole path.
+// Convex glass shapes inside which a ray entering the face towards the camera reflects totally
+// before it leaves: two, three or four times (tests/unit/technique_bounce_paths_test.cpp in analytic
+// buffers, tests/lab/bounce_paths_buffers_test.cpp in the lab's GL buffers), once (the wedge) or five
+// to seven times (the tilted plate, in analytic buffers); and the textbook path through them in double
+// precision (Prism::inside: glm::refract / glm::reflect and ray-plane intersections, independent of
+// snell). All are convex, so every face point lies on the front layer or the back layer as the camera
+// sees them: the two layers hold the whole path.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -56,6 +57,24 @@ inline const BounceShape& lightGuide() {
 inline const BounceShape& frontExitWedge() {
   static const BounceShape s{"front-exit wedge", Prism{{{-1.0, -3.0}, {1.0, -3.0}, {-0.462, -4.364}, {-1.9, -3.9}}, 1.2},
                              1.5, std::sqrt(2.9 * 2.9 + 1.364 * 1.364 + 2.4 * 2.4)};
+  return s;
+}
+
+// A plate 3 long and 0.4 thick, crown glass (IOR 1.5), its faces turned 30 deg from the camera (its near
+// top corner at (0, -4), running down to the right), extruded over y in [-1.2, 1.2]. A ray entering its
+// near end (the short face at the left, turned 60 deg from the camera) meets the back face and the
+// front face in turn, now and then a cap, the first five of them 54 deg or more from their normals
+// (critical angle 42 deg): five to seven total reflections before it leaves through the far end (a
+// back face). More than SNELL_MAX_BOUNCES (4), each on a face the camera sees broadside, where the
+// light guide's last ones lie on its sides near the far end, too foreshortened for the buffers to hold.
+inline const BounceShape& tiltedPlate() {
+  static const BounceShape s = [] {
+    const double c = std::sqrt(3.0) / 2.0;  // cos 30 deg
+    const dvec2 top(0.0, -4.0), along(c, -0.5), in(-0.5, -c);  // in: from the top face into the plate
+    const dvec2 far = top + 3.0 * along;
+    return BounceShape{"tilted plate", Prism{{top, far, far + 0.4 * in, top + 0.4 * in}, 1.2}, 1.5,
+                       std::sqrt(2.8 * 2.8 + 1.85 * 1.85 + 2.4 * 2.4)};
+  }();
   return s;
 }
 

@@ -5,7 +5,8 @@
 // at its limits) and with the normal plane inside (snellInsidePlane) against the textbook path in
 // double precision (tests/support/bounce_shapes.hpp). Each path is also followed with fewer bounces
 // allowed, b = 0 .. k - 1: it must stop at its (b + 1)-th face, totally reflected there, so every
-// interface of the path is checked, not only the last.
+// interface of the path is checked, not only the last. Paths through a tilted plate, with five total
+// reflections or more, check that more bounces than SNELL_MAX_BOUNCES are not followed.
 #include <snell/snell.hpp>
 
 #include <gtest/gtest.h>
@@ -136,6 +137,73 @@ TEST(TechniqueBouncePaths, PorroPrismLeavesThroughTheFrontAfterTwoToFourReflecti
 TEST(TechniqueBouncePaths, LightGuideLeavesThroughTheBackAfterTwoToFourReflections) {
   const std::map<int, int> n = checkPaths(snell_test::lightGuide());
   for (int k : {2, 3, 4}) EXPECT_GE(n.at(k), 20) << k << " reflections";
+}
+
+// More bounces asked than SNELL_MAX_BOUNCES (4) allow: the count is clamped, so a path through the tilted
+// plate, which reflects totally at its first five faces, stops at its fifth as with four allowed, that
+// interface taking the material's policy (SNELL_TIR_REFLECT here: the mirror, as the textbook path does).
+// An unclamped count would follow the fifth reflection as a bounce too.
+TEST(TechniqueBouncePaths, TiltedPlateStopsAtTheFifthFaceWhenMoreBouncesAreAsked) {
+  const BounceShape& shape = snell_test::tiltedPlate();
+  const int size = 256;
+  const ShapeBuffers b = shapeBuffers(shape, size);
+  const double eta = 1.0 / shape.ior, px = 1.0 / size;
+  SnellDepthSurface back = b.back.surface(), front = b.front.surface();
+  back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  front.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
+  SnellTechnique t = snellPresetImageSpaceBoundBounces();
+  t.back.intersect.marchMaxDistance = float(shape.extent);
+  t.inside.intersect.marchMaxDistance = float(shape.extent);
+  const auto layerNormalAt = [&](dvec2 uv, bool frontLayer) -> std::optional<dvec3> {
+    const snell_test::AnalyticSample a = (frontLayer ? b.front : b.back).sampleAt(uv);
+    if (!a.valid) return std::nullopt;
+    return a.normal;
+  };
+  const auto uvOf = [&](dvec3 p) { return b.front.project(p); };
+  const int faces = SNELL_MAX_BOUNCES + 1;
+  int n = 0;
+  for (int j = 1; j < size; j += 2)
+    for (int i = 1; i < size; i += 2) {
+      const dvec3 q = b.front.pixelRay(dvec2(i + 0.5, j + 0.5) * px);
+      const auto entry = shape.prism.entry(q);
+      if (!entry) continue;
+      // The path's first five faces only: the clamped trace reads no further.
+      PixelPath p;
+      p.entry = entry->first * q;
+      p.entryNormal = entry->second;
+      p.t1 = glm::refract(glm::normalize(q), p.entryNormal, eta);
+      p.inside = shape.prism.inside(p.entry, p.t1, eta, faces);
+      if (int(p.inside.faces.size()) != faces || p.inside.leaves) continue;
+      if (!snell_test::buffersHoldPath(p, uvOf, layerNormalAt, px)) continue;
+      if (snell_test::shortestChord(p) < shape.extent / SNELL_LINEAR_MARCH_MAX_STEPS) continue;
+      SCOPED_TRACE(testing::Message() << "pixel " << i << " " << j);
+      const snell_test::Prism::Face& last = p.inside.faces.back();
+      const dvec3 towards = glm::normalize(last.point - p.inside.faces[faces - 2].point);
+      const double length = snell_test::insideLength(p);
+      for (int asked : {SNELL_MAX_BOUNCES, SNELL_MAX_BOUNCES + 1, 1000}) {
+        SCOPED_TRACE(testing::Message() << asked << " bounces asked");
+        SnellTechnique tb = t;
+        tb.bounces = asked;
+        const SnellTwoInterfacePath r =
+            snellTwoInterfaceTrace(glm::vec3(p.entry), glm::vec3(p.entryNormal), float(eta), 0.0f, b.back.depth,
+                                   b.back.normals, b.backPyramid, back, b.front.depth, b.front.normals, front, tb,
+                                   SNELL_TIR_REFLECT);
+        EXPECT_TRUE(r.valid);
+        EXPECT_TRUE(r.hit);
+        EXPECT_EQ(r.bounces, SNELL_MAX_BOUNCES);
+        EXPECT_TRUE(r.tir);
+        EXPECT_FALSE(r.fellBack);
+        EXPECT_EQ(r.exitFront, snell_test::onFrontLayer(last));
+        EXPECT_LT(glm::length(uvOf(dvec3(r.exitPoint)) - uvOf(last.point)), snell_test::kBounceExitPx * px);
+        EXPECT_LT(glm::length(dvec3(r.exitNormal) + last.normal), 1e-5);
+        EXPECT_GT(glm::dot(glm::normalize(dvec3(r.exitDirection)), glm::reflect(towards, last.normal)),
+                  std::cos(snell_test::kBounceDirectionRad));
+        EXPECT_NEAR(r.pathLength, length, kLengthRel * length);
+      }
+      ++n;
+    }
+  std::printf("[bounce paths] %s: %d paths with five total reflections\n", shape.name.c_str(), n);
+  EXPECT_GE(n, 100);
 }
 
 // One reflection, then out through a front face (the wedge), followed with exactly one bounce allowed: the
