@@ -15,6 +15,7 @@
 #include <optional>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "support/search_rays.hpp"
 #include "support/depth_scenes.hpp"
@@ -766,6 +767,74 @@ TEST(IntersectMarch, DdaDepthIntervalIncludesItsEnds) {
   ASSERT_TRUE(ends.valid);
   EXPECT_EQ(ends.fetches, 3);
   EXPECT_LT(glm::length(ends.position - vec3(0.3f, 0.2f, kWallZ)), 1e-5f);
+}
+
+// A ray starting on a fronto-parallel wall (at the wall's depth as its read gives it) hits at the first
+// step, whose depth interval [zFar, zNear] holds origin.z; the hit is a point of that step: on the ray with
+// t in [0, t_B], t_B the ray parameter at the step's end s = ds / 2 (the contract's step, in double). In
+// the wall's plane every point of the step has the wall's depth; tilted by a few ulps of depth over the
+// step, the contract's point is the origin up to that much depth. In float the step's start is recomputed
+// (origin.z k0 / k0: origin.z or the next float, two floats off when origin k0 is a denormal, under a
+// projection whose clip w nears 1 / FLT_MIN) and its end's depth rounds an ulp or two to either side, so the
+// ratio that places the hit in the step can fall outside [0, 1]: the hit must stay in the step regardless.
+// 4096 walls (one a texel), 28 directions each (4 axes, dir.z 0, +-1e-6, +-3e-6, +-1e-5), through the
+// square projection (walls at 3.8 to 8, zNear 0.3, so that the distances are not all quotients of a power
+// of two) and through it scaled by 1.7 * 2^126 (walls at 0.3 to 0.55: clip w 0.5 to 0.94 * 2^126, inside
+// the normal range of 1 / w the contract accepts).
+TEST(IntersectMarch, DdaHitAtTheFirstStepIsAPointOfThatStep) {
+  constexpr int kSize = 64;
+  const auto walk = [](float scale, float zNear, float nearest, float farthest, float stride, float maxDistance) {
+    Image im(kSize, kSize, vec4(0.0f));
+    for (int j = 0; j < kSize; ++j)
+      for (int i = 0; i < kSize; ++i)
+        im.at(i, j).x = zNear / (nearest + (farthest - nearest) * float(i + kSize * j) / float(kSize * kSize));
+    const Texture2D depth(std::move(im));
+    const FlatWall fw = flatWall(kSize, kSize, scale);
+    const SnellDepthSurface s =
+        snellDepthSurface(fw.surface.clipFromView, zNear, 100.0f, SNELL_DEPTH_INFINITE_REVERSED, 0.0f);
+    std::vector<vec3> dirs;
+    for (const float dz : {0.0f, 1e-6f, -1e-6f, 3e-6f, -3e-6f, 1e-5f, -1e-5f})
+      for (const vec2 xy : {vec2(1.0f, 0.0f), vec2(-1.0f, 0.0f), vec2(0.0f, 1.0f), vec2(0.0f, -1.0f)})
+        dirs.push_back(vec3(xy, dz));
+    int checked = 0;
+    for (int j = 0; j < kSize; ++j)
+      for (int i = 0; i < kSize; ++i) {
+        const vec2 centre((float(i) + 0.5f) / kSize, (float(j) + 0.5f) / kSize);
+        const SnellSurfaceSample wall = snellSampleSurface(depth, centre, s);
+        EXPECT_TRUE(wall.valid);
+        const float z = wall.viewZ;
+        const vec3 o((2.0f * centre.x - 1.0f) * -z, (2.0f * centre.y - 1.0f) * -z, z);  // on the centre's pixel ray
+        for (const vec3& d : dirs) {
+          const SnellHit h = snellDdaMarch(o, d, depth, s, maxDistance, FLT_MAX, stride, 64);
+          const auto what = [&] {  // streamed on failure only
+            return "scale " + std::to_string(scale) + " texel " + std::to_string(i) + "," + std::to_string(j) +
+                   " dir " + std::to_string(d.x) + "," + std::to_string(d.y) + "," + std::to_string(d.z);
+          };
+          EXPECT_TRUE(h.valid) << what();
+          EXPECT_EQ(h.fetches, 1) << what();
+          // The contract's first step in double: the segment's ends (the near plane is far beyond them),
+          // uv = 0.5 (x, y) / -z + 0.5 (the scale cancels), ds = stride / the major axis's length in pixels,
+          // the view point at s = ds / 2 with k = 1 / -z linear in s.
+          const glm::dvec3 od(o), dd = glm::normalize(glm::dvec3(d)), e = od + double(maxDistance) * dd;
+          const glm::dvec2 duv = 0.5 * glm::dvec2(e) / -e.z - 0.5 * glm::dvec2(od) / -od.z;
+          const double major = std::max(std::fabs(duv.x), std::fabs(duv.y)) * kSize;
+          const double sB = 0.5 * (major > double(stride) ? double(stride) / major : 1.0);
+          const double k0 = 1.0 / -od.z, k1 = 1.0 / -e.z;
+          const glm::dvec3 pB = (od * k0 * (1.0 - sB) + e * k1 * sB) / (k0 * (1.0 - sB) + k1 * sB);
+          const double tB = glm::dot(pB - od, dd);
+          const glm::dvec3 p(h.position);
+          const double t = glm::dot(p - od, dd);
+          EXPECT_GE(t, -1e-4 * tB) << what();
+          EXPECT_LE(t, tB * (1.0 + 1e-4)) << what();
+          EXPECT_LT(glm::length(p - (od + t * dd)), 1e-6 * glm::length(od)) << what();  // on the ray
+          if (::testing::Test::HasFailure()) return checked;
+          ++checked;
+        }
+      }
+    return checked;
+  };
+  EXPECT_EQ(walk(1.0f, 0.3f, 3.8f, 8.0f, 8.0f, 4.0f), 28 * kSize * kSize);
+  EXPECT_EQ(walk(1.7f * std::ldexp(1.0f, 126), 0.2f, 0.3f, 0.55f, 4.0f, 0.2f), 28 * kSize * kSize);
 }
 
 // A segment within one pixel (a ray along the line of sight) is two steps, s in [0, 1/2] and [1/2, 1]:
