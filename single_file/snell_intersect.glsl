@@ -2103,9 +2103,11 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
     SnellDepthPlane plk = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
     fetches += plk.fetches;
     // An unbuilt plane has a zero normal, so the ray misses it; its facing plane exists
-    // only when B was read (position 0, the camera, gives no plane either).
+    // only when B was read (position 0, the camera, gives no plane either). B read has
+    // z = viewZ <= -zNear <= -FLT_MIN, which no runtime flushes; its squared length
+    // underflows to 0 for a surface within 2^-75 of the eye, which zNear allows.
     SnellRayPlaneHit hk = snellRayPlane(origin, dir, plk.position, plk.normal);
-    if (k == 0 && farStart && dot(plk.position, plk.position) > 0.0f) {
+    if (k == 0 && farStart && plk.position.z < 0.0f) {
       SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, depthMips, s);
       fetches += f.fetches;
       if (f.valid && (!hk.valid || f.t < hk.t)) {

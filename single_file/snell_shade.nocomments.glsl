@@ -1776,7 +1776,7 @@ SNELL_FN SnellHit snellIntersectPlaneDepth(vec3 origin, vec3 dir, SNELL_TEX2D de
     SnellDepthPlane plk = snellDepthPlaneAt(p, dirN, depthMips, s, maxLod);
     fetches += plk.fetches;
     SnellRayPlaneHit hk = snellRayPlane(origin, dir, plk.position, plk.normal);
-    if (k == 0 && farStart && dot(plk.position, plk.position) > 0.0f) {
+    if (k == 0 && farStart && plk.position.z < 0.0f) {
       SnellFarPlane f = snellPlaneFarStart(origin, dir, w.uv, depthMips, s);
       fetches += f.fetches;
       if (f.valid && (!hk.valid || f.t < hk.t)) {

@@ -343,39 +343,41 @@ TEST(IntersectPlane, NoFarStartWithoutB0) {
 
 // B0 read counts however close to the eye it lies: a valid surface may have zNear down to FLT_MIN, and a
 // wall at view distance 2^-64 (zNear 2^-67) puts B0 within 2^-63 of the eye, |B0|^2 below FLT_MIN (a
-// denormal). The far start still runs for the first plane. At that scale the plane of B, C, D (its normal
+// denormal), at 2^-78 below the smallest denormal (0 in float). The far start still runs for the first plane. At that scale the plane of B, C, D (its normal
 // is a cross product of texel-sized vectors, about 2^-138) and the facing plane (normal B0) are too small
 // to normalize (|n|^2 above 1e-30), so the far start's plane, the wall itself (farthest distance 2^-64), is
 // plane 0: a ray along W's pixel ray (span 0, level 0) reads B0, C, D, the far start's top texel and
 // level-0 texel, then the final lookup, and hits the wall at twice W.
 TEST(IntersectPlane, FarStartRunsForAB0WithinADenormalSquaredDistanceOfTheEye) {
-  constexpr int kScale = -66;
-  glm::mat4 m(0.0f);  // the square perspective, INFINITE_REVERSED: clip = (x, y, zNear, -z)
-  const float zNear = std::ldexp(1.0f, kScale - 1);
-  m[0][0] = 1.0f;
-  m[1][1] = 1.0f;
-  m[2][3] = -1.0f;
-  m[3][2] = zNear;
-  const SnellDepthSurface s = snellDepthSurface(m, zNear, 1.0f, SNELL_DEPTH_INFINITE_REVERSED, 0.0f);
-  ASSERT_TRUE(s.perspective && s.linearizable && s.closed);
-  const Texture2D wall(Image(64, 64, glm::vec4(0.125f, 0.0f, 0.0f, 0.0f)));  // distance zNear / 0.125 = 2^-64
-  const Texture2D pyramid = snellBuildDepthPyramid(wall, s);
-  const double scale = std::ldexp(1.0, kScale);
-  const glm::dvec3 unit(0.3, -0.2, -2.0);
-  const glm::vec3 w(unit * scale), d(unit);
-  const glm::dvec3 want = 2.0 * unit * scale;  // the wall at z = -2^-64
-  const glm::dvec2 centre = (glm::floor((0.5 * glm::dvec2(unit) / 2.0 + 0.5) * 64.0) + 0.5) / 64.0;  // W's texel
-  const glm::dvec3 b0 = 4.0 * scale * glm::dvec3(2.0 * centre - 1.0, -1.0);
-  ASSERT_GT(glm::dot(b0, b0), 0.0);
-  ASSERT_LT(glm::dot(b0, b0), double(FLT_MIN));
-  const SnellHit h = snellIntersectPlaneDepth(w, d, pyramid, s, pyramid.levelCount() - 1, 0, true);
-  ASSERT_TRUE(h.valid);
-  EXPECT_EQ(h.fetches, 3 + 2 + 1);
-  EXPECT_LT(glm::length(glm::dvec3(h.position) - want), 1e-5 * glm::length(want));
-  // Without the far start nothing at this scale builds a plane: the miss after B0, C and D.
-  const SnellHit poster = snellIntersectPlaneDepth(w, d, pyramid, s, pyramid.levelCount() - 1, 0, false);
-  EXPECT_FALSE(poster.valid);
-  EXPECT_EQ(poster.fetches, 3);
+  for (const int kScale : {-66, -80}) {
+    SCOPED_TRACE(kScale);
+    glm::mat4 m(0.0f);  // the square perspective, INFINITE_REVERSED: clip = (x, y, zNear, -z)
+    const float zNear = std::ldexp(1.0f, kScale - 1);
+    m[0][0] = 1.0f;
+    m[1][1] = 1.0f;
+    m[2][3] = -1.0f;
+    m[3][2] = zNear;
+    const SnellDepthSurface s = snellDepthSurface(m, zNear, 1.0f, SNELL_DEPTH_INFINITE_REVERSED, 0.0f);
+    ASSERT_TRUE(s.perspective && s.linearizable && s.closed);
+    const Texture2D wall(Image(64, 64, glm::vec4(0.125f, 0.0f, 0.0f, 0.0f)));  // distance zNear / 0.125
+    const Texture2D pyramid = snellBuildDepthPyramid(wall, s);
+    const double scale = std::ldexp(1.0, kScale);
+    const glm::dvec3 unit(0.3, -0.2, -2.0);
+    const glm::vec3 w(unit * scale), d(unit);
+    const glm::dvec3 want = 2.0 * unit * scale;  // on the wall, at z = -2^(kScale + 2)
+    const glm::dvec2 centre = (glm::floor((0.5 * glm::dvec2(unit) / 2.0 + 0.5) * 64.0) + 0.5) / 64.0;  // W's texel
+    const glm::dvec3 b0 = 4.0 * scale * glm::dvec3(2.0 * centre - 1.0, -1.0);
+    ASSERT_GT(glm::dot(b0, b0), 0.0);
+    ASSERT_LT(glm::dot(b0, b0), double(FLT_MIN));
+    const SnellHit h = snellIntersectPlaneDepth(w, d, pyramid, s, pyramid.levelCount() - 1, 0, true);
+    ASSERT_TRUE(h.valid);
+    EXPECT_EQ(h.fetches, 3 + 2 + 1);
+    EXPECT_LT(glm::length(glm::dvec3(h.position) - want), 1e-5 * glm::length(want));
+    // Without the far start nothing at this scale builds a plane: the miss after B0, C and D.
+    const SnellHit poster = snellIntersectPlaneDepth(w, d, pyramid, s, pyramid.levelCount() - 1, 0, false);
+    EXPECT_FALSE(poster.valid);
+    EXPECT_EQ(poster.fetches, 3);
+  }
 }
 
 // A ray moving away from the slanted plane (dot(dir, n) > 0) but deeper never meets it: plane 0 is the
