@@ -104,9 +104,27 @@ const lineOf = (text) => { const lines = text.split("\n"); return (m) => (lines[
 // other mutant runs. Sound while no test that killed one has been weakened since; a full run settles it.
 const carryFrom = option("carry-from", "");
 const carried = new Map();
+// The last results of COMMIT's one body: DIR/results.json when it holds them, else the report written from
+// them (--report's file, docs/mutation.md by default), which lists every survivor and unreached mutant by id:
+// the others were killed. A fresh checkout has only the report.
+function lastResultsAt(commit, oldMutants, oldHash) {
+  const last = fs.existsSync(resultsFile) ? JSON.parse(fs.readFileSync(resultsFile, "utf8")) : null;
+  if (last?.schemaHash === oldHash) return last.results;
+  const reportFile = path.resolve(option("report", path.join(root, "docs", "mutation.md")));
+  const text = fs.existsSync(reportFile) ? fs.readFileSync(reportFile, "utf8") : "";
+  const of = /^Mutants of glsl\/snell, commit (\w+),/.exec(text)?.[1];
+  const same = (a, b) => run("git", ["-C", root, "rev-parse", `${a}^{commit}`]).stdout === run("git", ["-C", root, "rev-parse", `${b}^{commit}`]).stdout;
+  if (!of || !same(of, commit))
+    usage(`--carry-from=${commit}: ${last ? `${resultsFile} holds another one body's results` : `no results in ${resultsFile}`}, ` +
+      `and ${reportFile} is ${of ? `of commit ${of}` : "no report of a run"}`);
+  const listed = new Set([...text.matchAll(/^- (\d+) /gm)].map((m) => Number(m[1])));
+  const all = /^\| all \| (\d+) \| (\d+) \|/m.exec(text);
+  if (!all || Number(all[1]) !== oldMutants.length || Number(all[2]) !== oldMutants.length - listed.size)
+    throw new Error(`--carry-from=${commit}: ${reportFile}'s counts do not fit commit ${commit}'s ${oldMutants.length} mutants`);
+  log(`--carry-from=${commit}: the kills from ${path.relative(root, reportFile)} (no results of that run in ${resultsFile})`);
+  return oldMutants.filter((m) => !listed.has(m.id)).map((m) => ({ id: m.id, status: "killed", by: path.relative(root, reportFile) }));
+}
 if (carryFrom) {
-  if (!fs.existsSync(resultsFile)) usage(`--carry-from: no results in ${resultsFile}`);
-  const last = JSON.parse(fs.readFileSync(resultsFile, "utf8"));
   const oldMutants = [], oldText = new Map();
   let id = 0;
   for (const f of files) {
@@ -118,11 +136,10 @@ if (carryFrom) {
     oldText.set(f, lineOf(r.stdout));
   }
   const oldHash = crypto.createHash("sha256").update(JSON.stringify(oldMutants)).digest("hex").slice(0, 16);
-  if (oldHash !== last.schemaHash)
-    throw new Error(`--carry-from=${carryFrom}: the one body there does not give the mutants of ${resultsFile}`);
+  const lastResults = lastResultsAt(carryFrom, oldMutants, oldHash);
   const newText = new Map(files.map((f) => [f, lineOf(fs.readFileSync(path.join(glslRoot, f), "utf8"))]));
   const byKey = new Map(identities(mutants, (m) => newText.get(m.file)(m)).map((k, i) => [k, mutants[i]]));
-  const lastById = new Map(last.results.map((r) => [r.id, r]));
+  const lastById = new Map(lastResults.map((r) => [r.id, r]));
   identities(oldMutants, (m) => oldText.get(m.file)(m)).forEach((k, i) => {
     const was = lastById.get(oldMutants[i].id), now = byKey.get(k);
     if (was?.status === "killed" && now) carried.set(now.id, { ...now, status: "killed", by: `${was.by} (at ${carryFrom})`, tests: was.tests });
