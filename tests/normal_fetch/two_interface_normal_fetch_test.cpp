@@ -22,6 +22,7 @@
 #include "support/bounce_path_checks.hpp"
 #include "support/bounce_shapes.hpp"
 #include "support/depth_scenes.hpp"
+#include "support/shape_buffers.hpp"
 
 namespace {
 
@@ -119,53 +120,20 @@ TEST(TwoInterfaceNormalFetch, BackNormalIsTheTexelContainingTheHit) {
   EXPECT_GE(unlikeSample, n * 9 / 10);
 }
 
-// The analytic front and back layers of a bounce shape; the normals bilinear with a mip chain, as a
-// normal buffer is bound (snellBuildNormalMips).
-struct ShapeBuffers {
-  snell_test::DepthScene front, back;
-  Texture2D frontNormals, backNormals, backPyramid;
-};
-ShapeBuffers shapeBuffers(const snell_test::BounceShape& shape, int size) {
-  const auto layer = [&shape](bool back) {
-    return [&shape, back](dvec3 q) {
-      snell_test::AnalyticSample r;
-      const auto hit = shape.prism.entry(q, back);
-      if (!hit) return r;
-      r.s = hit->first;
-      r.normal = hit->second;
-      r.valid = true;
-      return r;
-    };
-  };
-  ShapeBuffers b;
-  b.front = snell_test::detail::makeScene("front", size, size, SNELL_DEPTH_GL, false, snell_test::kScenePlane, layer(false));
-  b.back = snell_test::detail::makeScene("back", size, size, SNELL_DEPTH_GL, true, snell_test::kScenePlane, layer(true));
-  b.frontNormals = snellBuildNormalMips(b.front.normals);
-  b.backNormals = snellBuildNormalMips(b.back.normals);
-  b.backPyramid = snellBuildDepthPyramid(b.back.depth, b.back.surface());
-  return b;
-}
-
 // After a bounce the path leaves through a front face, whose normal is fetched from the front layer's
 // normals: one reflection in the wedge and out through its left face, against the textbook path (and
 // with no bounce allowed, the total reflection at its first face, a back face).
 TEST(TwoInterfaceNormalFetch, FrontExitAfterABounceReadsTheFrontLayersTexel) {
   const snell_test::BounceShape& shape = snell_test::frontExitWedge();
   const int size = 128;
-  const ShapeBuffers b = shapeBuffers(shape, size);
+  const snell_test::ShapeBuffers b = snell_test::shapeBuffers(shape, size);
+  // The normals bilinear with a mip chain, as a normal buffer is bound (snellBuildNormalMips).
+  const Texture2D frontNormals = snellBuildNormalMips(b.front.normals);
+  const Texture2D backNormals = snellBuildNormalMips(b.back.normals);
   const double eta = 1.0 / shape.ior, px = 1.0 / size;
-  SnellDepthSurface back = b.back.surface(), front = b.front.surface();
-  back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-  front.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-  SnellTechnique t = snellPresetImageSpaceBoundBounces();
-  t.back.intersect.marchMaxDistance = float(shape.extent);
-  t.inside.intersect.marchMaxDistance = float(shape.extent);
-  const auto layerNormalAt = [&](dvec2 uv, bool frontLayer) -> std::optional<dvec3> {
-    const snell_test::AnalyticSample a = (frontLayer ? b.front : b.back).sampleAt(uv);
-    if (!a.valid) return std::nullopt;
-    return a.normal;
-  };
-  const auto uvOf = [&](dvec3 p) { return b.front.project(p); };
+  const SnellTechnique t = snell_test::shapeTechnique(shape);
+  const auto layerNormalAt = [&b](dvec2 uv, bool frontLayer) { return b.layerNormalAt(uv, frontLayer); };
+  const auto uvOf = [&b](dvec3 p) { return b.uvOf(p); };
   int n = 0;
   for (int j = 1; j < size; j += 2)
     for (int i = 1; i < size; i += 2) {
@@ -181,8 +149,8 @@ TEST(TwoInterfaceNormalFetch, FrontExitAfterABounceReadsTheFrontLayersTexel) {
             SnellTechnique tb = t;
             tb.bounces = bounces;
             return snellTwoInterfaceTrace(glm::vec3(p->entry), glm::vec3(p->entryNormal), float(eta), 0.0f,
-                                          b.back.depth, b.backNormals, b.backPyramid, back, b.front.depth,
-                                          b.frontNormals, front, tb, SNELL_TIR_CRITICAL);
+                                          b.back.depth, backNormals, b.backPyramid, b.backSurface, b.front.depth,
+                                          frontNormals, b.frontSurface, tb, SNELL_TIR_CRITICAL);
           },
           uvOf, px, 1e-5);
       EXPECT_TRUE(one.exitFront);

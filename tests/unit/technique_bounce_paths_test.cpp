@@ -21,6 +21,7 @@
 #include "support/bounce_path_checks.hpp"
 #include "support/bounce_shapes.hpp"
 #include "support/depth_scenes.hpp"
+#include "support/shape_buffers.hpp"
 
 namespace {
 
@@ -30,30 +31,8 @@ using glm::dvec3;
 using snell_test::BounceShape;
 using snell_test::PixelPath;
 
-struct ShapeBuffers {
-  snell_test::DepthScene front, back;
-  Texture2D backPyramid;
-};
-
-// The shape's front and back layers: depth and outward normals at every texel centre, in double.
-ShapeBuffers shapeBuffers(const BounceShape& shape, int size) {
-  const auto layer = [&shape](bool back) {
-    return [&shape, back](dvec3 q) {
-      snell_test::AnalyticSample r;
-      const auto hit = shape.prism.entry(q, back);
-      if (!hit) return r;
-      r.s = hit->first;
-      r.normal = hit->second;
-      r.valid = true;
-      return r;
-    };
-  };
-  ShapeBuffers b;
-  b.front = snell_test::detail::makeScene("front", size, size, SNELL_DEPTH_GL, false, snell_test::kScenePlane, layer(false));
-  b.back = snell_test::detail::makeScene("back", size, size, SNELL_DEPTH_GL, true, snell_test::kScenePlane, layer(true));
-  b.backPyramid = snellBuildDepthPyramid(b.back.depth, b.back.surface());
-  return b;
-}
+using snell_test::ShapeBuffers;
+using snell_test::shapeBuffers;
 
 // A technique to follow the paths with, and the shortest chord inside (face to face) it is asked to
 // find: a march finds where a ray leaves to within its step, and a chord shorter than a step only
@@ -75,15 +54,7 @@ std::map<int, int> checkPaths(const BounceShape& shape) {
   const int size = 256;
   const ShapeBuffers b = shapeBuffers(shape, size);
   const double eta = 1.0 / shape.ior, px = 1.0 / size;
-  // Bilinear depth reads: exact on a plane between texel centres, as the textbook path is.
-  SnellDepthSurface back = b.back.surface(), front = b.front.surface();
-  back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-  front.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-  // The shipped image-space bound with bounces: the linear march at its limits in the back and inside
-  // slots (steps of the extent / 512), 4 bounces.
-  SnellTechnique march = snellPresetImageSpaceBoundBounces();
-  march.back.intersect.marchMaxDistance = float(shape.extent);
-  march.inside.intersect.marchMaxDistance = float(shape.extent);
+  const SnellTechnique march = snell_test::shapeTechnique(shape);
   EXPECT_EQ(march.bounces, 4);
   // The normal plane inside after a march of 32 steps.
   SnellTechnique plane = march;
@@ -92,12 +63,8 @@ std::map<int, int> checkPaths(const BounceShape& shape) {
   plane.inside.intersect.planeIterations = 2;
   const Follower followers[] = {{"inside march", march, shape.extent / SNELL_LINEAR_MARCH_MAX_STEPS},
                                 {"inside plane", plane, shape.extent / 32.0}};
-  const auto layerNormalAt = [&](dvec2 uv, bool frontLayer) -> std::optional<dvec3> {
-    const snell_test::AnalyticSample s = (frontLayer ? b.front : b.back).sampleAt(uv);
-    if (!s.valid) return std::nullopt;
-    return s.normal;
-  };
-  const auto uvOf = [&](dvec3 p) { return b.front.project(p); };
+  const auto layerNormalAt = [&b](dvec2 uv, bool frontLayer) { return b.layerNormalAt(uv, frontLayer); };
+  const auto uvOf = [&b](dvec3 p) { return b.uvOf(p); };
   std::map<int, int> fewest;
   for (const Follower& with : followers) {
     SCOPED_TRACE(with.name);
@@ -116,8 +83,8 @@ std::map<int, int> checkPaths(const BounceShape& shape) {
               SnellTechnique t = with.technique;
               t.bounces = bounces;
               return snellTwoInterfaceTrace(glm::vec3(p->entry), glm::vec3(p->entryNormal), float(eta), 0.0f,
-                                            b.back.depth, b.back.normals, b.backPyramid, back, b.front.depth,
-                                            b.front.normals, front, t, SNELL_TIR_CRITICAL);
+                                            b.back.depth, b.back.normals, b.backPyramid, b.backSurface, b.front.depth,
+                                            b.front.normals, b.frontSurface, t, SNELL_TIR_CRITICAL);
             },
             uvOf, px, kLengthRel);
         ++paths[k];
@@ -148,18 +115,9 @@ TEST(TechniqueBouncePaths, TiltedPlateStopsAtTheFifthFaceWhenMoreBouncesAreAsked
   const int size = 256;
   const ShapeBuffers b = shapeBuffers(shape, size);
   const double eta = 1.0 / shape.ior, px = 1.0 / size;
-  SnellDepthSurface back = b.back.surface(), front = b.front.surface();
-  back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-  front.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-  SnellTechnique t = snellPresetImageSpaceBoundBounces();
-  t.back.intersect.marchMaxDistance = float(shape.extent);
-  t.inside.intersect.marchMaxDistance = float(shape.extent);
-  const auto layerNormalAt = [&](dvec2 uv, bool frontLayer) -> std::optional<dvec3> {
-    const snell_test::AnalyticSample a = (frontLayer ? b.front : b.back).sampleAt(uv);
-    if (!a.valid) return std::nullopt;
-    return a.normal;
-  };
-  const auto uvOf = [&](dvec3 p) { return b.front.project(p); };
+  SnellTechnique t = snell_test::shapeTechnique(shape);
+  const auto layerNormalAt = [&b](dvec2 uv, bool frontLayer) { return b.layerNormalAt(uv, frontLayer); };
+  const auto uvOf = [&b](dvec3 p) { return b.uvOf(p); };
   const int faces = SNELL_MAX_BOUNCES + 1;
   int n = 0;
   for (int j = 1; j < size; j += 2)
@@ -186,8 +144,8 @@ TEST(TechniqueBouncePaths, TiltedPlateStopsAtTheFifthFaceWhenMoreBouncesAreAsked
         tb.bounces = asked;
         const SnellTwoInterfacePath r =
             snellTwoInterfaceTrace(glm::vec3(p.entry), glm::vec3(p.entryNormal), float(eta), 0.0f, b.back.depth,
-                                   b.back.normals, b.backPyramid, back, b.front.depth, b.front.normals, front, tb,
-                                   SNELL_TIR_REFLECT);
+                                   b.back.normals, b.backPyramid, b.backSurface, b.front.depth, b.front.normals,
+                                   b.frontSurface, tb, SNELL_TIR_REFLECT);
         EXPECT_TRUE(r.valid);
         EXPECT_TRUE(r.hit);
         EXPECT_EQ(r.bounces, SNELL_MAX_BOUNCES);
@@ -217,12 +175,7 @@ TEST(TechniqueBouncePaths, WedgeLeavesThroughTheFrontAfterOneReflection) {
   const int size = 128;
   const ShapeBuffers b = shapeBuffers(shape, size);
   const double eta = 1.0 / shape.ior, px = 1.0 / size;
-  SnellDepthSurface back = b.back.surface(), front = b.front.surface();
-  back.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-  front.depthFilter = SNELL_DEPTH_FILTER_BILINEAR;
-  SnellTechnique t = snellPresetImageSpaceBoundBounces();
-  t.back.intersect.marchMaxDistance = float(shape.extent);
-  t.inside.intersect.marchMaxDistance = float(shape.extent);
+  SnellTechnique t = snell_test::shapeTechnique(shape);
   t.bounces = 1;
   t.exit.source = SNELL_SOURCE_BUFFERS;
   t.reflect.source = SNELL_SOURCE_ENVIRONMENT;
@@ -233,12 +186,8 @@ TEST(TechniqueBouncePaths, WedgeLeavesThroughTheFrontAfterOneReflection) {
   const Texture2D emptyPyramid = snellBuildDepthPyramid(emptyScene, b.front.surface());
   const Texture2D env(Image(16, 8, glm::vec4(0.5f)));
   const Texture2D noNormals(Image(size, size, glm::vec4(0.0f)));
-  const auto layerNormalAt = [&](dvec2 uv, bool frontLayer) -> std::optional<dvec3> {
-    const snell_test::AnalyticSample a = (frontLayer ? b.front : b.back).sampleAt(uv);
-    if (!a.valid) return std::nullopt;
-    return a.normal;
-  };
-  const auto uvOf = [&](dvec3 p) { return b.front.project(p); };
+  const auto layerNormalAt = [&b](dvec2 uv, bool frontLayer) { return b.layerNormalAt(uv, frontLayer); };
+  const auto uvOf = [&b](dvec3 p) { return b.uvOf(p); };
   int n = 0;
   for (int j = 1; j < size; j += 2)
     for (int i = 1; i < size; i += 2) {
@@ -251,8 +200,8 @@ TEST(TechniqueBouncePaths, WedgeLeavesThroughTheFrontAfterOneReflection) {
         SnellTechnique tb = with;
         tb.bounces = bounces;
         return snellTwoInterfaceTrace(glm::vec3(p->entry), glm::vec3(p->entryNormal), float(eta), 0.0f, b.back.depth,
-                                      b.back.normals, b.backPyramid, back, b.front.depth, b.front.normals, front, tb,
-                                      tirPolicy);
+                                      b.back.normals, b.backPyramid, b.backSurface, b.front.depth, b.front.normals,
+                                      b.frontSurface, tb, tirPolicy);
       };
       const SnellTwoInterfacePath one = snell_test::expectTracedPath(
           *p, 1, [&](int bounces) { return trace(t, bounces, SNELL_TIR_CRITICAL); }, uvOf, px, kLengthRel);
@@ -281,8 +230,8 @@ TEST(TechniqueBouncePaths, WedgeLeavesThroughTheFrontAfterOneReflection) {
       // fallback along the reflection, and the last interface it took is still the total reflection.
       const SnellTwoInterfacePath blind =
           snellTwoInterfaceTrace(glm::vec3(p->entry), glm::vec3(p->entryNormal), float(eta), 0.0f, b.back.depth,
-                                 b.back.normals, b.backPyramid, back, b.front.depth, noNormals, front, t,
-                                 SNELL_TIR_CRITICAL);
+                                 b.back.normals, b.backPyramid, b.backSurface, b.front.depth, noNormals,
+                                 b.frontSurface, t, SNELL_TIR_CRITICAL);
       EXPECT_TRUE(blind.fellBack);
       EXPECT_TRUE(blind.tir);
       EXPECT_EQ(blind.bounces, 1);
@@ -290,9 +239,9 @@ TEST(TechniqueBouncePaths, WedgeLeavesThroughTheFrontAfterOneReflection) {
       EXPECT_LT(glm::length(dvec3(blind.exitDirection) - glm::reflect(p->t1, first.normal)), 1e-5);
       // The composed technique: the front exit goes to the reflect slot (one environment read, its miss).
       const SnellTwoInterfaceResult r = snellTwoInterfaceRefraction(
-          glm::vec3(p->entry), glm::vec3(p->entryNormal), 0.0f, b.back.depth, b.back.normals, b.backPyramid, back,
-          b.front.depth, b.front.normals, front, emptyScene, b.front.normals, emptyPyramid, env, b.front.surface(), env,
-          t, m, snellView());
+          glm::vec3(p->entry), glm::vec3(p->entryNormal), 0.0f, b.back.depth, b.back.normals, b.backPyramid,
+          b.backSurface, b.front.depth, b.front.normals, b.frontSurface, emptyScene, b.front.normals, emptyPyramid, env,
+          b.front.surface(), env, t, m, snellView());
       EXPECT_EQ(r.bounces, 1);
       EXPECT_FALSE(r.fellBack);
       EXPECT_FALSE(r.tir);
