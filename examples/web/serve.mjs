@@ -151,12 +151,15 @@ function finish(status, message) {
   browser.close().then(() => process.exit(status));
 }
 
+// What a check draws, as its result line names it.
+function drawnBy(c) {
+  return c.drawWith === "threejs" ? "three.js's own renderer"
+    : `${c.technique}, ${c.buffers === "lab" ? "the lab's buffers" : "the page's buffers"}`;
+}
 // A check as the messages name it; with one check, nothing (the messages read as before --then).
 function checkName(c) {
   if (checks.length === 1) return "";
-  const what = c.drawWith === "threejs" ? "three.js's own renderer"
-    : `${c.technique}, ${c.buffers === "lab" ? "the lab's buffers" : "the page's buffers"}${c.fault ? `, fault ${c.fault}` : ""}`;
-  return `check ${c.n} of ${checks.length} (${what}): `;
+  return `check ${c.n} of ${checks.length} (${drawnBy(c)}${c.fault ? `, fault ${c.fault}` : ""}): `;
 }
 // A failure that ends the run: the checks after it are not run, and the message says so.
 function abort(c, message) {
@@ -167,8 +170,8 @@ function abort(c, message) {
 // Only a test's reports keep a request body, and none longer than the largest one the page posts (its
 // canvas's pixels, RGBA8; an error message is shorter): any web page open in the same browser can post to
 // a loopback port, and a body kept whole would hold its memory until the server exits.
-const bundleSize = JSON.parse(fs.readFileSync(path.join(bundleDir, "bundle.json"), "utf8"));
-const maxReportBytes = Math.max(1 << 20, 4 * (bundleSize.width | 0) * (bundleSize.height | 0));
+const bundle = JSON.parse(fs.readFileSync(path.join(bundleDir, "bundle.json"), "utf8"));
+const maxReportBytes = Math.max(1 << 20, 4 * (bundle.width | 0) * (bundle.height | 0));
 // The check the page draws now, its reports so far, and how many checks failed.
 let current = checks[0];
 let reports = {};
@@ -268,7 +271,6 @@ function pageQuery(c) {
 // Compares the check's canvas with the lab's picture, prints its line and writes its report and screenshot:
 // its status (0 pass, 1 fail), or undefined when the run ended here.
 function compare(c) {
-  const bundle = JSON.parse(fs.readFileSync(path.join(bundleDir, "bundle.json"), "utf8"));
   const picture = labPicture(bundle, c);
   if (picture.missing) return abort(c, picture.missing);
   const W = bundle.width, H = bundle.height;
@@ -306,8 +308,6 @@ function compare(c) {
   };
   if (c.reportFile) fs.writeFileSync(c.reportFile, JSON.stringify(result, null, 1) + "\n");
   if (c.screenshot && reports.screenshot) fs.writeFileSync(c.screenshot, reports.screenshot);
-  const what = c.drawWith === "threejs" ? "three.js's own renderer"
-    : `${c.technique}, ${c.buffers === "lab" ? "the lab's buffers" : "the page's buffers"}`;
   const agrees = share >= c.targetShare && maxDiff <= c.maxDiffAllowed;
   // --must-fail: a deliberately wrong page, which shows the check can fail.
   const status = agrees === c.mustFail ? 1 : 0;
@@ -315,7 +315,7 @@ function compare(c) {
     : "; it fails, as it must (--must-fail)";
   const draw = redrawn ? `drawn again in ${(log.redrawMs / 1000).toFixed(1)} s on ${log.renderer}, with the program ` +
     "the check before compiled" : `first draw ${(log.firstDrawMs / 1000).toFixed(1)} s on ${log.renderer}`;
-  const line = `serve.mjs: ${bundle.scene}, ${what}: ${(100 * share).toFixed(2)} % of ${object} object pixels ` +
+  const line = `serve.mjs: ${bundle.scene}, ${drawnBy(c)}: ${(100 * share).toFixed(2)} % of ${object} object pixels ` +
     `within ${tolerance}/255 of the lab's (at least ${100 * c.targetShare} % asked), largest difference ${maxDiff}/255 ` +
     `(at most ${c.maxDiffAllowed} asked)${c.fault ? `, with the fault ${c.fault}` : ""}; ${draw}${verdict}`;
   (status === 0 ? console.log : console.error)(line);
@@ -339,7 +339,6 @@ server.listen(port, "127.0.0.1", () => {
   // Every check's picture before Chromium starts: a run that would stop at a later check stops here.
   // With several objects each scene layer in the bundle holds the frame as one row of the lab drew it: the
   // page matches the lab's picture on those buffers with that row's technique only.
-  const bundle = JSON.parse(fs.readFileSync(path.join(bundleDir, "bundle.json"), "utf8"));
   for (const c of checks) {
     if (c.drawWith === "snell" && c.buffers === "lab" && (bundle.objects?.length ?? 0) > 1 && bundle.labBuffersRow !== c.technique)
       return finish(1, `serve.mjs: ${checkName(c)}the bundle's lab buffers hold the scene layers ${bundle.labBuffersRow} ` +
