@@ -29,6 +29,14 @@ struct ShapeBuffers {
     return a.normal;
   }
   glm::dvec2 uvOf(glm::dvec3 p) const { return front.project(p); }
+  // The technique's path from p's entry on these buffers, with `bounces` allowed; eta = n_outside / n_glass.
+  snell::SnellTwoInterfacePath trace(const PixelPath& p, double eta, snell::SnellTechnique t, int bounces,
+                                     int tirPolicy) const {
+    t.bounces = bounces;
+    return snell::snellTwoInterfaceTrace(glm::vec3(p.entry), glm::vec3(p.entryNormal), float(eta), 0.0f, back.depth,
+                                         back.normals, backPyramid, backSurface, front.depth, front.normals,
+                                         frontSurface, t, tirPolicy);
+  }
 };
 
 inline ShapeBuffers shapeBuffers(const BounceShape& shape, int size) {

@@ -79,13 +79,7 @@ std::map<int, int> checkPaths(const BounceShape& shape) {
         SCOPED_TRACE(testing::Message() << shape.name << ", pixel " << i << " " << j << ", " << k << " reflections");
         snell_test::expectTracedPath(
             *p, with.technique.bounces,
-            [&](int bounces) {
-              SnellTechnique t = with.technique;
-              t.bounces = bounces;
-              return snellTwoInterfaceTrace(glm::vec3(p->entry), glm::vec3(p->entryNormal), float(eta), 0.0f,
-                                            b.back.depth, b.back.normals, b.backPyramid, b.backSurface, b.front.depth,
-                                            b.front.normals, b.frontSurface, t, SNELL_TIR_CRITICAL);
-            },
+            [&](int bounces) { return b.trace(*p, eta, with.technique, bounces, SNELL_TIR_CRITICAL); },
             uvOf, px, kLengthRel);
         ++paths[k];
       }
@@ -115,7 +109,7 @@ TEST(TechniqueBouncePaths, TiltedPlateStopsAtTheFifthFaceWhenMoreBouncesAreAsked
   const int size = 256;
   const ShapeBuffers b = shapeBuffers(shape, size);
   const double eta = 1.0 / shape.ior, px = 1.0 / size;
-  SnellTechnique t = snell_test::shapeTechnique(shape);
+  const SnellTechnique t = snell_test::shapeTechnique(shape);
   const auto layerNormalAt = [&b](dvec2 uv, bool frontLayer) { return b.layerNormalAt(uv, frontLayer); };
   const auto uvOf = [&b](dvec3 p) { return b.uvOf(p); };
   const int faces = SNELL_MAX_BOUNCES + 1;
@@ -140,12 +134,7 @@ TEST(TechniqueBouncePaths, TiltedPlateStopsAtTheFifthFaceWhenMoreBouncesAreAsked
       const double length = snell_test::insideLength(p);
       for (int asked : {SNELL_MAX_BOUNCES, SNELL_MAX_BOUNCES + 1, 1000}) {
         SCOPED_TRACE(testing::Message() << asked << " bounces asked");
-        SnellTechnique tb = t;
-        tb.bounces = asked;
-        const SnellTwoInterfacePath r =
-            snellTwoInterfaceTrace(glm::vec3(p.entry), glm::vec3(p.entryNormal), float(eta), 0.0f, b.back.depth,
-                                   b.back.normals, b.backPyramid, b.backSurface, b.front.depth, b.front.normals,
-                                   b.frontSurface, tb, SNELL_TIR_REFLECT);
+        const SnellTwoInterfacePath r = b.trace(p, eta, t, asked, SNELL_TIR_REFLECT);
         EXPECT_TRUE(r.valid);
         EXPECT_TRUE(r.hit);
         EXPECT_EQ(r.bounces, SNELL_MAX_BOUNCES);
@@ -196,22 +185,15 @@ TEST(TechniqueBouncePaths, WedgeLeavesThroughTheFrontAfterOneReflection) {
       if (!snell_test::buffersHoldPath(*p, uvOf, layerNormalAt, px)) continue;
       if (snell_test::shortestChord(*p) < shape.extent / SNELL_LINEAR_MARCH_MAX_STEPS) continue;
       SCOPED_TRACE(testing::Message() << "pixel " << i << " " << j);
-      const auto trace = [&](const SnellTechnique& with, int bounces, int tirPolicy) {
-        SnellTechnique tb = with;
-        tb.bounces = bounces;
-        return snellTwoInterfaceTrace(glm::vec3(p->entry), glm::vec3(p->entryNormal), float(eta), 0.0f, b.back.depth,
-                                      b.back.normals, b.backPyramid, b.backSurface, b.front.depth, b.front.normals,
-                                      b.frontSurface, tb, tirPolicy);
-      };
       const SnellTwoInterfacePath one = snell_test::expectTracedPath(
-          *p, 1, [&](int bounces) { return trace(t, bounces, SNELL_TIR_CRITICAL); }, uvOf, px, kLengthRel);
+          *p, 1, [&](int bounces) { return b.trace(*p, eta, t, bounces, SNELL_TIR_CRITICAL); }, uvOf, px, kLengthRel);
       ASSERT_TRUE(one.exitFront);
       const snell_test::Prism::Face& first = p->inside.faces.front();
       // The bounce adds its march's reads (at least one) and the normal read at the exit.
-      const SnellTwoInterfacePath zero = trace(t, 0, SNELL_TIR_CRITICAL);
+      const SnellTwoInterfacePath zero = b.trace(*p, eta, t, 0, SNELL_TIR_CRITICAL);
       EXPECT_GE(one.fetches, zero.fetches + 2);
       // No bounce allowed, SNELL_TIR_ZERO: the ray leaves the first face unbent, along T1.
-      const SnellTwoInterfacePath clamped = trace(t, 0, SNELL_TIR_ZERO);
+      const SnellTwoInterfacePath clamped = b.trace(*p, eta, t, 0, SNELL_TIR_ZERO);
       EXPECT_TRUE(clamped.fellBack);
       EXPECT_TRUE(clamped.tir);
       EXPECT_LT(glm::length(uvOf(dvec3(clamped.exitPoint)) - uvOf(first.point)), snell_test::kBounceExitPx * px);
@@ -219,7 +201,7 @@ TEST(TechniqueBouncePaths, WedgeLeavesThroughTheFrontAfterOneReflection) {
       // An inside slot that cannot follow the bounce: a fallback along the reflection from the first face.
       SnellTechnique unfollowed = t;
       unfollowed.inside.source = SNELL_SOURCE_ENVIRONMENT;
-      const SnellTwoInterfacePath stopped = trace(unfollowed, 1, SNELL_TIR_CRITICAL);
+      const SnellTwoInterfacePath stopped = b.trace(*p, eta, unfollowed, 1, SNELL_TIR_CRITICAL);
       EXPECT_TRUE(stopped.fellBack);
       EXPECT_TRUE(stopped.tir);
       EXPECT_EQ(stopped.bounces, 1);
