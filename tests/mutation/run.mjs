@@ -15,8 +15,8 @@
 // Each mutant runs the tests that evaluate its site (recorded once per test on the unmutated build): the
 // C++ unit tests (snell_unit_tests, snell_perspective_only_tests, snell_normal_fetch_tests), the CPU
 // property test (snell_property_tests) and the parity cases on OSMesa (snell_parity_tests, Parity_osmesa.*),
-// which compile the mutated GLSL beside the mutated C++. Killed: any of them fails, crashes or runs past its time limit
-// (ten times the unmutated run, at least 30 s). Survived: all pass. Unreached: no test evaluates the site.
+// which compile the mutated GLSL beside the mutated C++. Killed: any of them fails, crashes or runs past its
+// time limit (ten times the unmutated run, at least 30 s). Survived: all pass. Unreached: no test evaluates the site.
 // To keep a run near two hours on 2 cores: the property test draws 100,000 hostile inputs per function
 // (SNELL_PROPERTY_INPUTS), and the parity step runs the cases of the functions the mutated file defines.
 import { spawn, spawnSync } from "node:child_process";
@@ -234,6 +234,7 @@ if (args.includes("--prepare")) {
 
 // 2. One build of the copy (the mutants are chosen at run time).
 const build = path.join(work, "build");
+// Each kind of test, in the order a mutant runs them (the quickest to fail first).
 const binaries = {
   unit: path.join(build, "tests", "snell_unit_tests"),
   perspective: path.join(build, "tests", "snell_perspective_only_tests"),
@@ -243,8 +244,8 @@ const binaries = {
 };
 log(`building ${build} (the first build takes about 10 minutes on 2 cores)`);
 must("cmake", ["-S", src, "-B", build, "-DCMAKE_BUILD_TYPE=Release", "-DCMAKE_CXX_FLAGS=-include cstdlib -include cstdio"]);
-must("cmake", ["--build", build, "-j", String(os.cpus().length), "--target", "snell_unit_tests",
-  "snell_perspective_only_tests", "snell_normal_fetch_tests", "snell_property_tests", "snell_parity_tests"], { stdio: ["ignore", "ignore", "pipe"] });
+must("cmake", ["--build", build, "-j", String(os.cpus().length), "--target",
+  ...Object.values(binaries).map((b) => path.basename(b))], { stdio: ["ignore", "ignore", "pipe"] });
 
 // 3. The tests, and which sites each evaluates (on the unmutated build).
 function listTests(binary, keep) {
@@ -258,13 +259,9 @@ function listTests(binary, keep) {
   }
   return tests.filter(keep);
 }
-const suites = {
-  unit: listTests(binaries.unit, () => true),
-  perspective: listTests(binaries.perspective, () => true),
-  normalFetch: listTests(binaries.normalFetch, () => true),
-  property: listTests(binaries.property, () => true),
-  parity: listTests(binaries.parity, (t) => t.startsWith("Parity_osmesa.")),
-};
+// Parity on one runtime, OSMesa.
+const suites = Object.fromEntries(Object.entries(binaries).map(([kind, binary]) =>
+  [kind, listTests(binary, kind === "parity" ? (t) => t.startsWith("Parity_osmesa.") : () => true)]));
 const reachFile = path.join(work, "reach.json");
 let reach = fs.existsSync(reachFile) ? JSON.parse(fs.readFileSync(reachFile, "utf8")) : null;
 const runOne = (binary, filter, env, timeoutMs, extra = []) => new Promise((resolve) => {
@@ -337,7 +334,7 @@ const startedAt = Date.now();
 await pool(todo, async (m) => {
   const tests = reachedBy.get(m.id) ?? [];
   let status = tests.length ? "survived" : "unreached", by = "";
-  for (const kind of ["unit", "perspective", "normalFetch", "property", "parity"]) {
+  for (const kind of Object.keys(binaries)) {
     let mine = tests.filter((t) => t.kind === kind);
     // Parity: the cases of the functions the file defines (each reaches most sites below it); a file with
     // none, the three quickest cases that reach the site.
