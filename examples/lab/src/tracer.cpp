@@ -57,14 +57,26 @@ std::uint64_t mix64(std::uint64_t z) {
   return z ^ (z >> 31);
 }
 
-// The random numbers of one pixel's paths (TraceOptions::seed); `used` tells whether a path drew any.
+// The random numbers of one event of one path. Each pixel's paths, and each event along a path, draw from
+// their own stream, keyed by where they stand in the pixel's tree of paths (the path's index, then the
+// branch taken at each event before). A path that meets one more or one fewer interface, which a camera
+// moved by a fraction of a pixel makes some paths do, changes no other path's numbers: the same seed keeps
+// the truth's noise of two nearby frames alike (common random numbers), so that it does not read as flicker.
 struct Sampler {
-  std::uint64_t state = 0;
-  std::uint64_t used = 0;
+  std::uint64_t key = 0;
+  std::uint64_t draws = 0;
+  std::uint64_t* used = nullptr;  // numbers drawn by the whole path (shared with the events after this one)
   double next() {  // uniform in [0, 1)
-    ++used;
-    state += 0x9E3779B97F4A7C15ull;
-    return static_cast<double>(mix64(state) >> 11) * 0x1.0p-53;
+    if (used) ++*used;
+    ++draws;
+    return static_cast<double>(mix64(key + draws * 0x9E3779B97F4A7C15ull) >> 11) * 0x1.0p-53;
+  }
+  // The stream of the event reached through `branch` (a path's index, a channel, or 0 to go on, 1 to reflect).
+  Sampler child(std::uint64_t branch) const {
+    Sampler c;
+    c.key = mix64(key ^ mix64(branch + 0x632BE59BD9B4E019ull));
+    c.used = used;
+    return c;
   }
 };
 
@@ -74,7 +86,7 @@ constexpr double kRefractUnlessTir = 1.0;
 
 Sampler pixelSampler(std::uint64_t seed, int x, int y) {
   Sampler s;
-  s.state = mix64(mix64(seed) ^ (static_cast<std::uint64_t>(static_cast<std::uint32_t>(y)) << 32 |
+  s.key = mix64(mix64(seed) ^ (static_cast<std::uint64_t>(static_cast<std::uint32_t>(y)) << 32 |
                                  static_cast<std::uint32_t>(x)));
   return s;
 }
@@ -370,11 +382,11 @@ struct ReferenceTracer::Impl {
 
   // ReferenceTracer::radiance with the pixel's random numbers.
   glm::dvec3 radiance(const Ray& ray, const TraceOptions& options, TraceStats* stats, bool* hitObject,
-                      Sampler& rng) const;
+                      Sampler rng) const;
 
   glm::dvec3 traceFull(const glm::dvec3& o, const glm::dvec3& d, double tNear, double tFar, int depth, double weight,
                        const Media& media, const TraceOptions& opt, TraceStats& stats, bool* firstHitObject,
-                       Sampler& rng) const {
+                       Sampler rng) const {
     const Hit h = intersect(full, true, o, d, tNear, tFar, stats);
     if (firstHitObject) *firstHitObject = h.kind == HitKind::Object;
     if (h.kind == HitKind::None) {
@@ -403,19 +415,20 @@ struct ReferenceTracer::Impl {
       if (!(rs.weight > 0.0)) return glm::dvec3(0.0);
       return atten * rs.weight *
              traceFull(spawn(s, rs.direction), rs.direction, 0.0, 1e30, depth + 1, w * rs.weight,
-                       rs.reflected ? c.reflected : c.refracted, opt, stats, nullptr, rng);
+                       rs.reflected ? c.reflected : c.refracted, opt, stats, nullptr, rng.child(0));
     }
     if (r.tir)
       return atten * traceFull(spawn(s, r.direction), r.direction, 0.0, 1e30, depth + 1, w, c.reflected, opt, stats,
-                               nullptr, rng);
+                               nullptr, rng.child(0));
     const double F = opt.fresnel ? fresnelExact(glm::dot(d, s.normal), c.eta) : 0.0;
     glm::dvec3 L(0.0);
     if (F > 0.0 && w * F >= opt.minWeight) {
       const glm::dvec3 refl = reflectExact(d, s.normal);
-      L += F * traceFull(spawn(s, refl), refl, 0.0, 1e30, depth + 1, w * F, c.reflected, opt, stats, nullptr, rng);
+      L += F * traceFull(spawn(s, refl), refl, 0.0, 1e30, depth + 1, w * F, c.reflected, opt, stats, nullptr,
+                         rng.child(1));
     }
     L += (1.0 - F) * traceFull(spawn(s, r.direction), r.direction, 0.0, 1e30, depth + 1, w * (1.0 - F), c.refracted,
-                               opt, stats, nullptr, rng);
+                               opt, stats, nullptr, rng.child(0));
     return atten * L;
   }
 
@@ -432,7 +445,7 @@ struct ReferenceTracer::Impl {
   using EventCounts = std::array<std::uint8_t, kMaxObjects>;
   glm::dvec3 tracePrincipal(const glm::dvec3& o, const glm::dvec3& d, double tNear, double tFar, const Media& media,
                             std::uint32_t done, EventCounts count, int events, const TraceOptions& opt,
-                            TraceStats& stats, bool* firstHitObject, Sampler& rng) const {
+                            TraceStats& stats, bool* firstHitObject, Sampler rng) const {
     const Hit h = intersectSkipping(done, o, d, tNear, tFar, stats);
     if (firstHitObject) *firstHitObject = h.kind == HitKind::Object;
     if (h.kind == HitKind::None) {
@@ -462,12 +475,12 @@ struct ReferenceTracer::Impl {
         const double wr = weight(refl, true);
         if (wr > 0.0)
           L += F * wr * tracePrincipal(spawn(s, refl), refl, 0.0, 1e30, c.reflected, done | (1u << b), count, events,
-                                       opt, stats, nullptr, rng);
+                                       opt, stats, nullptr, rng.child(1));
       }
       const double wt = weight(t.direction, false);
       if (wt > 0.0)
         L += (1.0 - F) * wt * tracePrincipal(spawn(s, t.direction), t.direction, 0.0, 1e30, c.refracted, done, count,
-                                             events, opt, stats, nullptr, rng);
+                                             events, opt, stats, nullptr, rng.child(0));
       return beer(c.before, h.t, opt) * L;
     }
     const bool last = n >= events;
@@ -480,7 +493,7 @@ struct ReferenceTracer::Impl {
     if (!(w > 0.0)) return glm::dvec3(0.0);
     return beer(c.before, h.t, opt) * w *
            tracePrincipal(spawn(s, t.direction), t.direction, 0.0, 1e30, out ? c.refracted : c.reflected,
-                          out ? done | (1u << b) : done, count, events, opt, stats, nullptr, rng);
+                          out ? done | (1u << b) : done, count, events, opt, stats, nullptr, rng.child(0));
   }
 
   // The frame so far as a picture (renderComposited): what an object drawn later sees of the ones before it.
@@ -612,12 +625,11 @@ double ReferenceTracer::offsetEpsilon() const { return impl_->eps; }
 
 glm::dvec3 ReferenceTracer::radiance(const Ray& ray, const TraceOptions& options, TraceStats* stats,
                                      bool* hitObject) const {
-  Sampler rng = pixelSampler(options.seed, 0, 0);
-  return impl_->radiance(ray, options, stats, hitObject, rng);
+  return impl_->radiance(ray, options, stats, hitObject, pixelSampler(options.seed, 0, 0).child(0));
 }
 
 glm::dvec3 ReferenceTracer::Impl::radiance(const Ray& ray, const TraceOptions& options, TraceStats* stats,
-                                           bool* hitObject, Sampler& rng) const {
+                                           bool* hitObject, Sampler rng) const {
   TraceStats local;
   TraceStats& s = stats ? *stats : local;
   if (options.channel < -1 || options.channel > 2)
@@ -630,7 +642,7 @@ glm::dvec3 ReferenceTracer::Impl::radiance(const Ray& ray, const TraceOptions& o
     glm::dvec3 c;
     for (int k = 0; k < 3; ++k) {
       one.channel = k;
-      c[k] = radiance(ray, one, &s, k == 1 ? hitObject : nullptr, rng)[k];
+      c[k] = radiance(ray, one, &s, k == 1 ? hitObject : nullptr, rng.child(static_cast<std::uint64_t>(k)))[k];
     }
     return c;
   }
@@ -669,17 +681,20 @@ TraceResult ReferenceTracer::render(const Camera& camera, const TraceOptions& op
       bool hitObject = false;
       const std::uint64_t tirBefore = local.tirEvents;
       const Ray ray = primaryRay(camera, x, y);
-      Sampler rng = pixelSampler(options.seed, x, y);
+      const Sampler pixel = pixelSampler(options.seed, x, y);
+      std::uint64_t used = 0;
       glm::dvec3 sum(0.0), sumSquares(0.0);
       int n = 0, tirPaths = 0;
       do {
         const std::uint64_t before = local.tirEvents;
-        const glm::dvec3 c = impl_->radiance(ray, options, &local, n == 0 ? &hitObject : nullptr, rng);
+        Sampler path = pixel.child(static_cast<std::uint64_t>(n));
+        path.used = &used;
+        const glm::dvec3 c = impl_->radiance(ray, options, &local, n == 0 ? &hitObject : nullptr, path);
         sum += c;
         sumSquares += c * c;
         if (local.tirEvents != before) ++tirPaths;
         ++n;
-      } while (rng.used > 0 && n < samples);  // a path with no rough interface is every path
+      } while (used > 0 && n < samples);  // a path with no rough interface is every path
       const glm::dvec3 mean = sum / static_cast<double>(n);
       result.color.at(x, y) = vec4(vec3(mean), 1.0f);
       result.mask.set(x, y, hitObject);

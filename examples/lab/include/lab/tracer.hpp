@@ -75,7 +75,9 @@ struct TraceOptions {
   // 2007, eq. 35-36); Full mode then reflects or refracts with probability F (eq. 41's weight), the
   // principal path refracts about it (reflecting on TIR as at a smooth interface), its entry's Fresnel
   // reflection about the same normal. The random numbers of pixel (x, y) come from (seed, x, y) alone: the
-  // same seed draws the same numbers at a pixel whatever the thread, the image or the frame.
+  // same seed draws the same numbers at a pixel whatever the thread, the image or the frame. Each path, and
+  // each event along it, has its own stream (keyed by the path's index and the branches before it), so a
+  // path that meets another number of interfaces in the next frame leaves every other path's numbers alone.
   int samples = 256;
   std::uint64_t seed = 0;
 };
