@@ -1538,13 +1538,18 @@ description: how wide rough (frosted) glass blurs what it shows, as a cone of
   light around the ray: from the roughness, the relative IOR and the path's
   lengths inside and behind the glass, its radius where the ray meets the
   scene, and the mip level of the scene colour (or the environment) whose
-  texels are that wide. The same glass blurs the same amount of the world at
-  every resolution and distance, and the blur grows with what lies behind.
+  texels are that wide, read twice (the lobe's narrow peak and its wide
+  tail). The same glass blurs the same amount of the world at every
+  resolution and distance, and the blur grows with what lies behind.
 use: SnellRoughCone c = snellRoughConeTransmit(m.roughness, eta, insideLength, bounces);
      float lod = snellRoughConeSceneLod(c, distanceBehind, hitPosition, scene.clipFromView,
                                         SNELL_TEXTURE_SIZE(sceneColor, 0), v.sceneColorLevels);
      float envLod = snellRoughConeEnvironmentLod(c, v.environmentLevels);
      SnellRoughCone r = snellRoughConeReflect(m.roughness);   // the first surface's reflection
+     SnellRoughTaps t = snellRoughConeTaps(lod, v.sceneColorLevels);  // the lobe as two reads
+     vec4 color = snellRoughConeSample(sceneColor, uv, t);   // snellRoughConeFetches(t) fetches
+     vec4 sky = snellRoughConeSampleEnvironment(environment, dirWorld,
+                                                snellRoughConeTaps(envLod, v.environmentLevels));
   roughness     perceptual roughness in [0, 1]; the GGX width is alpha = roughness^2
   eta           n_outside / n_inside at the entry (snellIorToEta(iorOutside, ior))
   insideLength  the path's length inside the glass (view units)
@@ -1557,6 +1562,10 @@ use: SnellRoughCone c = snellRoughConeTransmit(m.roughness, eta, insideLength, b
                 texels (an equirectangular map with a full chain)
 options: SNELL_ROUGH_CONE_LOD_SCALE (default 3.0): texels of the chosen level
   per unit of the cone's radius, fitted against the rough ray trace (below).
+  SNELL_ROUGH_CONE_TAIL_WEIGHT (default 0.34): the wide read's share of a rough
+  read; 0 reads once, at the cone's level (one fetch instead of two).
+  SNELL_ROUGH_CONE_CORE_OFFSET (default -0.52) and SNELL_ROUGH_CONE_TAIL_OFFSET
+  (default 1.14): the two reads' levels from the cone's (below).
 contract:
   - a cone is a radius at the surface it leaves and two angles (radians):
     radius(d) = sqrt((radius + angle d)^2 + (exitAngle d)^2) at distance d.
@@ -1592,6 +1601,28 @@ contract:
     exitAngle^2) radians at 2^(levels - 1) / (2 pi) texels per radian.
   - every result is finite; a cone of a smooth surface (roughness 0) gives
     level 0 exactly.
+  - snellRoughConeTaps(lod, levels): GGX's lobe is heavy-tailed (its slopes
+    are Student's t with 2 degrees of freedom: a narrow peak, and a fifth of
+    the light beyond twice its median), which one read, a bell, cannot be.
+    Two reads mixed stand for it: l = lod clamped to [0, levels - 1] (NaN: 0);
+    for l > 0 and a positive tail weight w, coreLod = clamp(l + CORE_OFFSET),
+    tailLod = clamp(l + TAIL_OFFSET) (both to [0, levels - 1]), tailWeight = w;
+    else (smooth glass, level 0, no chain) one read: coreLod = tailLod = l,
+    tailWeight 0. At the top level the tail is clamped to it and the core
+    still reads below (the mix stays the lobe's shape as far as the chain
+    allows).
+  - snellRoughConeSample(tex, uv, t): SNELL_SAMPLE_LOD at coreLod, mixed with
+    SNELL_SAMPLE_LOD at tailLod by tailWeight when it is positive;
+    snellRoughConeSampleEnvironment the same through SNELL_SAMPLE_ENVIRONMENT.
+    snellRoughConeFetches(t): 2 with a tail, else 1.
+  - the constants: with a read at level L taken as a Gaussian of standard
+    deviation proportional to 2^L, the mixture of two Gaussians nearest
+    to the t lobe (squared difference of their spectra, weighted as the
+    1 / f^2 power spectrum of natural images weighs it) against the single
+    Gaussian nearest to it: the core 0.70x its width (-0.52 levels) with
+    weight 0.66, the tail 2.2x (+1.14 levels) with 0.34. The single read's
+    level (SNELL_ROUGH_CONE_LOD_SCALE) stays the one fitted against the ray
+    trace; the two reads take their levels from it.
 source: the rough BTDF of B. Walter, S. Marschner, H. Li, K. Torrance,
   "Microfacet Models for Refraction through Rough Surfaces" (EGSR 2007): GGX
   (eq. 33) with width alpha, refraction about the microfacet normal (eq. 40);
@@ -1599,7 +1630,12 @@ source: the rough BTDF of B. Walter, S. Marschner, H. Li, K. Torrance,
   colour's mip chain, its radius growing with the distance behind the
   object and both interfaces' lobes combined: C. de Rousiers, A. Bousseau,
   K. Subr, N. Holzschuch, R. Ramamoorthi, "Real-Time Rendering of Rough
-  Refraction" (TVCG 2012), cone tracing at the exit interface. The scale was
+  Refraction" (TVCG 2012), cone tracing at the exit interface. GGX's slopes
+  as Student's t with 2 degrees of freedom: E. Heitz, "Understanding the
+  Masking-Shadowing Function in Microfacet-Based BRDFs" (JCGT 2014), its GGX
+  slope distribution P22; natural images' 1 / f^2 power
+  spectrum: D. J. Field, "Relations between the statistics of natural images
+  and the response properties of cortical cells" (JOSA A 1987). The scale was
   fitted on the rough sphere_painting scenes against the lab's GGX ray trace
   and checked on the rough bunny (docs/lab/rough/README.md).
 */
@@ -4687,9 +4723,214 @@ SNELL_FN SnellView snellView() {
 }
 
 #endif
+/*
+description: distant-environment lookups for the exit ray of a refraction
+  technique: equirectangular (latitude-longitude) maps in a plain 2D texture,
+  fully supported in every language, and cube maps through a hook. The
+  techniques read the environment only through SNELL_SAMPLE_ENVIRONMENT, so an
+  engine switches them to cube maps with two #defines.
+use: vec2 uv = snellEquirectUv(dirWorld);
+     vec4 c = snellSampleEquirect(envTex, dirWorld, lod);
+     float a = snellAtan2(y, x);
+  Cube maps (define before including snell, in GLSL or C++):
+     #define SNELL_ENVIRONMENT_TEX SNELL_TEXCUBE
+     #define SNELL_SAMPLE_ENVIRONMENT(tex, dir, lod) SNELL_SAMPLE_CUBE_LOD(tex, dir, lod)
+     (C++: include <snell/texture_cube.hpp> first; it defines snell::TextureCube.)
+options (hooks; define before this file to override):
+  SNELL_TEXCUBE                        cube texture parameter type (GLSL samplerCube,
+                                       C++ const snell::TextureCube&, HLSL TextureCube<float4>)
+  SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) vec4 of a cube map along dir at explicit lod
+  SNELL_ENVIRONMENT_TEX                the environment parameter type of the
+                                       techniques (default SNELL_TEX2D: equirectangular)
+  SNELL_SAMPLE_ENVIRONMENT(tex, dir, lod)  the techniques' environment read
+                                       (default snellSampleEquirect(tex, dir, lod))
+contract:
+  - snellAtan2(y, x): the angle of (x, y) in (-pi, pi], from an odd degree-9
+    polynomial of the octant-reduced ratio (max error ~1e-5 rad) using only
+    +, *, /, abs and comparisons, so every language computes the same value up
+    to rounding (the builtin atan(y, x) differs between GLSL and HLSL in
+    argument order and between drivers in precision). atan2(0, 0) = 0; y = 0,
+    x < 0 gives pi (also for y = -0); NaN input gives 0; infinities are
+    treated as the ratio 1 per octant.
+  - snellEquirectUv(d): u = 0.5 + atan2(d.x, -d.z) / (2 pi) (the -Z view
+    direction is the centre column, +X to the right, u increases clockwise seen
+    from above), v = 0.5 + atan2(d.y, |(d.x, d.z)|) / pi (v = 1 straight up,
+    +Y; GL row 0 is the bottom row = straight down). d need not be unit
+    length. Zero, NaN or Inf directions give (0.5, 0.5).
+  - snellSampleEquirect: SNELL_SAMPLE_LOD(env, snellEquirectUv(d), lod). The
+    seam at u = 0/1 is filtered with the texture's own wrap mode (clamp to edge
+    in snell::Texture2D: a one-texel seam; GL_REPEAT in s hides it on a GPU,
+    but then C++ and GL differ at the seam).
+source: equirectangular (plate carree) environment mapping, e.g. Pharr, Jakob
+  & Humphreys, PBRT 3rd ed., sec. 12.6 (InfiniteAreaLight, spherical
+  coordinates); atan polynomial: C. Hastings, "Approximations for Digital
+  Computers" (1955), sheet 11 (odd minimax polynomial on [0, 1]); cube maps:
+  environment_cube_face.glsl.
+*/
+#ifndef SNELL_SHADE_ENVIRONMENT_GLSL
+#define SNELL_SHADE_ENVIRONMENT_GLSL
+
+
+/*
+description: cube-map face selection: which face of a cube map a direction
+  reads, and the face coordinates (s, t) there, as the GL specification defines
+  it. The C++ snell::TextureCube (include/snell/texture_cube.hpp) samples
+  through this function, so its face choice and the GPU's cannot drift apart.
+use: SnellCubeFace f = snellCubeFaceUv(dir);  // f.face 0..5 = +X -X +Y -Y +Z -Z
+                                             // (GL_TEXTURE_CUBE_MAP_POSITIVE_X + f.face)
+  dir  direction (any length)
+options: -
+contract:
+  - the major axis is the component of largest magnitude; ties go to x over y
+    over z (|x| >= |y| and |x| >= |z| selects x; else |y| >= |z| selects y);
+    GL leaves ties to the implementation, so a texel exactly on a cube edge may
+    read the neighbouring face on a GPU;
+  - (sc, tc, ma) per face as the table below; s = 0.5 (sc / |ma| + 1),
+    t = 0.5 (tc / |ma| + 1), in [0, 1];
+      +X: (-z, -y, x)  -X: (+z, -y, x)  +Y: (+x, +z, y)
+      -Y: (+x, -z, y)  +Z: (+x, -y, z)  -Z: (-x, -y, z)
+  - valid = false, face 0, uv (0.5, 0.5) when dir is zero, denormal-small (every
+    component below the smallest normal float) or has a NaN/Inf component.
+source: OpenGL 4.5 core specification, sec. 8.13 "Cube Map Texture
+  Selection", table 8.19, equations 8.6-8.7.
+*/
+#ifndef SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
+#define SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
+
+
+
+struct SnellCubeFace {
+  int face;
+  vec2 uv;
+  bool valid;
+};
+
+/* GL 4.5 core, sec. 8.13, table 8.19 */
+SNELL_FN SnellCubeFace snellCubeFaceUv(vec3 dir) {
+  SnellCubeFace r;
+  r.face = 0;
+  r.uv = vec2(0.5f, 0.5f);
+  r.valid = false;
+  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
+    return r;
+  }
+  float ax = abs(dir.x);
+  float ay = abs(dir.y);
+  float az = abs(dir.z);
+  float sc = 0.0f;
+  float tc = 0.0f;
+  float ma = 0.0f;
+  if (ax >= ay && ax >= az) {
+    ma = ax;
+    r.face = dir.x >= 0.0f ? 0 : 1;
+    sc = dir.x >= 0.0f ? -dir.z : dir.z;
+    tc = -dir.y;
+  } else if (ay >= az) {
+    ma = ay;
+    r.face = dir.y >= 0.0f ? 2 : 3;
+    sc = dir.x;
+    tc = dir.y >= 0.0f ? dir.z : -dir.z;
+  } else {
+    ma = az;
+    r.face = dir.z >= 0.0f ? 4 : 5;
+    sc = dir.z >= 0.0f ? dir.x : -dir.x;
+    tc = -dir.y;
+  }
+  if (!(ma >= SNELL_FLT_MIN)) {
+    r.face = 0;
+    return r;
+  }
+  r.uv = vec2(0.5f * (sc / ma + 1.0f), 0.5f * (tc / ma + 1.0f));
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+#if defined(SNELL_LANG_GLSL)
+#  ifndef SNELL_TEXCUBE
+#    define SNELL_TEXCUBE samplerCube
+#  endif
+#  ifndef SNELL_SAMPLE_CUBE_LOD
+#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) textureLod(tex, dir, lod)
+#  endif
+#elif defined(SNELL_LANG_HLSL)
+#  ifndef SNELL_TEXCUBE
+#    define SNELL_TEXCUBE TextureCube<float4>
+#  endif
+#  ifndef SNELL_SAMPLE_CUBE_LOD
+#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) ((tex).SampleLevel(SNELL_HLSL_SAMPLER, dir, lod))
+#  endif
+#else
+#  ifndef SNELL_TEXCUBE
+#    define SNELL_TEXCUBE const ::snell::TextureCube&
+#  endif
+#  ifndef SNELL_SAMPLE_CUBE_LOD
+#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) ((tex).sampleLod(dir, lod))
+#  endif
+#endif
+
+#ifndef SNELL_ENVIRONMENT_TEX
+#  define SNELL_ENVIRONMENT_TEX SNELL_TEX2D
+#endif
+#ifndef SNELL_SAMPLE_ENVIRONMENT
+#  define SNELL_SAMPLE_ENVIRONMENT(tex, dir, lod) snellSampleEquirect(tex, dir, lod)
+#endif
+
+/* Hastings 1955: atan(a) ~ a (c1 + c3 a^2 + c5 a^4 + c7 a^6 + c9 a^8) on [0, 1] */
+SNELL_FN float snellAtan2(float y, float x) {
+  if (isnan(x) || isnan(y)) {
+    return 0.0f;
+  }
+  float ax = abs(x);
+  float ay = abs(y);
+  float hi = max(ax, ay);
+  float lo = min(ax, ay);
+  if (!(hi > 0.0f)) {
+    return 0.0f;
+  }
+  float a = isinf(hi) ? (isinf(lo) ? 1.0f : 0.0f) : lo / hi;
+  float s = a * a;
+  float r = a * (0.9998660f + s * (-0.3302995f + s * (0.1801410f + s * (-0.0851330f + s * 0.0208351f))));
+  if (ay > ax) {
+    r = 1.57079632679f - r;
+  }
+  if (x < 0.0f) {
+    r = 3.14159265359f - r;
+  }
+  if (y < 0.0f) {
+    r = -r;
+  }
+  return r;
+}
+
+SNELL_FN vec2 snellEquirectUv(vec3 dir) {
+  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
+    return vec2(0.5f, 0.5f);
+  }
+  float horizontal = sqrt(dir.x * dir.x + dir.z * dir.z);
+  float u = 0.5f + snellAtan2(dir.x, -dir.z) * (0.5f / SNELL_PI);
+  float v = 0.5f + snellAtan2(dir.y, horizontal) * (1.0f / SNELL_PI);
+  return vec2(u, v);
+}
+
+SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
+  return SNELL_SAMPLE_LOD(env, snellEquirectUv(dir), lod);
+}
+
+#endif
 
 #ifndef SNELL_ROUGH_CONE_LOD_SCALE
 #  define SNELL_ROUGH_CONE_LOD_SCALE 3.0f
+#endif
+#ifndef SNELL_ROUGH_CONE_TAIL_WEIGHT
+#  define SNELL_ROUGH_CONE_TAIL_WEIGHT 0.34f
+#endif
+#ifndef SNELL_ROUGH_CONE_CORE_OFFSET
+#  define SNELL_ROUGH_CONE_CORE_OFFSET (-0.52f)
+#endif
+#ifndef SNELL_ROUGH_CONE_TAIL_OFFSET
+#  define SNELL_ROUGH_CONE_TAIL_OFFSET 1.14f
 #endif
 
 struct SnellRoughCone {
@@ -4789,204 +5030,52 @@ SNELL_FN float snellRoughConeEnvironmentLod(SNELL_IN(SnellRoughCone) c, int leve
   return snellRoughConeLevel(snellRoughConeHypot(c.angle, c.exitAngle), texelsPerRadian, levels);
 }
 
-#endif
-/*
-description: cube-map face selection: which face of a cube map a direction
-  reads, and the face coordinates (s, t) there, as the GL specification defines
-  it. The C++ snell::TextureCube (include/snell/texture_cube.hpp) samples
-  through this function, so its face choice and the GPU's cannot drift apart.
-use: SnellCubeFace f = snellCubeFaceUv(dir);  // f.face 0..5 = +X -X +Y -Y +Z -Z
-                                             // (GL_TEXTURE_CUBE_MAP_POSITIVE_X + f.face)
-  dir  direction (any length)
-options: -
-contract:
-  - the major axis is the component of largest magnitude; ties go to x over y
-    over z (|x| >= |y| and |x| >= |z| selects x; else |y| >= |z| selects y);
-    GL leaves ties to the implementation, so a texel exactly on a cube edge may
-    read the neighbouring face on a GPU;
-  - (sc, tc, ma) per face as the table below; s = 0.5 (sc / |ma| + 1),
-    t = 0.5 (tc / |ma| + 1), in [0, 1];
-      +X: (-z, -y, x)  -X: (+z, -y, x)  +Y: (+x, +z, y)
-      -Y: (+x, -z, y)  +Z: (+x, -y, z)  -Z: (-x, -y, z)
-  - valid = false, face 0, uv (0.5, 0.5) when dir is zero, denormal-small (every
-    component below the smallest normal float) or has a NaN/Inf component.
-source: OpenGL 4.5 core specification, sec. 8.13 "Cube Map Texture
-  Selection", table 8.19, equations 8.6-8.7.
-*/
-#ifndef SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
-#define SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
-
-
-
-struct SnellCubeFace {
-  int face;
-  vec2 uv;
-  bool valid;
+/* The two reads a rough read takes at a cone's level (lod from snellRoughConeSceneLod or
+   snellRoughConeEnvironmentLod, levels: that texture's): the lobe's peak and its tail. */
+struct SnellRoughTaps {
+  float coreLod;
+  float tailLod;
+  float tailWeight;  // the tail read's share; 0: one read, at coreLod
 };
 
-/* GL 4.5 core, sec. 8.13, table 8.19 */
-SNELL_FN SnellCubeFace snellCubeFaceUv(vec3 dir) {
-  SnellCubeFace r;
-  r.face = 0;
-  r.uv = vec2(0.5f, 0.5f);
-  r.valid = false;
-  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
-    return r;
+SNELL_FN SnellRoughTaps snellRoughConeTaps(float lod, int levels) {
+  float top = float(max(levels - 1, 0));
+  float l = lod > 0.0f ? min(lod, top) : 0.0f;
+  SnellRoughTaps t;
+  t.coreLod = l;
+  t.tailLod = l;
+  t.tailWeight = 0.0f;
+  if (l > 0.0f && SNELL_ROUGH_CONE_TAIL_WEIGHT > 0.0f) {
+    t.coreLod = clamp(l + SNELL_ROUGH_CONE_CORE_OFFSET, 0.0f, top);
+    t.tailLod = clamp(l + SNELL_ROUGH_CONE_TAIL_OFFSET, 0.0f, top);
+    t.tailWeight = SNELL_ROUGH_CONE_TAIL_WEIGHT;
   }
-  float ax = abs(dir.x);
-  float ay = abs(dir.y);
-  float az = abs(dir.z);
-  float sc = 0.0f;
-  float tc = 0.0f;
-  float ma = 0.0f;
-  if (ax >= ay && ax >= az) {
-    ma = ax;
-    r.face = dir.x >= 0.0f ? 0 : 1;
-    sc = dir.x >= 0.0f ? -dir.z : dir.z;
-    tc = -dir.y;
-  } else if (ay >= az) {
-    ma = ay;
-    r.face = dir.y >= 0.0f ? 2 : 3;
-    sc = dir.x;
-    tc = dir.y >= 0.0f ? dir.z : -dir.z;
-  } else {
-    ma = az;
-    r.face = dir.z >= 0.0f ? 4 : 5;
-    sc = dir.z >= 0.0f ? dir.x : -dir.x;
-    tc = -dir.y;
+  return t;
+}
+
+SNELL_FN int snellRoughConeFetches(SNELL_IN(SnellRoughTaps) t) {
+  return t.tailWeight > 0.0f ? 2 : 1;
+}
+
+SNELL_FN vec4 snellRoughConeSample(SNELL_TEX2D tex, vec2 uv, SNELL_IN(SnellRoughTaps) t) {
+  vec4 c = SNELL_SAMPLE_LOD(tex, uv, t.coreLod);
+  if (t.tailWeight > 0.0f) {
+    c = mix(c, SNELL_SAMPLE_LOD(tex, uv, t.tailLod), t.tailWeight);
   }
-  if (!(ma >= SNELL_FLT_MIN)) {
-    r.face = 0;
-    return r;
+  return c;
+}
+
+SNELL_FN vec4 snellRoughConeSampleEnvironment(SNELL_ENVIRONMENT_TEX env, vec3 dir, SNELL_IN(SnellRoughTaps) t) {
+  vec4 c = SNELL_SAMPLE_ENVIRONMENT(env, dir, t.coreLod);
+  if (t.tailWeight > 0.0f) {
+    c = mix(c, SNELL_SAMPLE_ENVIRONMENT(env, dir, t.tailLod), t.tailWeight);
   }
-  r.uv = vec2(0.5f * (sc / ma + 1.0f), 0.5f * (tc / ma + 1.0f));
-  r.valid = true;
-  return r;
+  return c;
 }
 
 #endif
-/*
-description: distant-environment lookups for the exit ray of a refraction
-  technique: equirectangular (latitude-longitude) maps in a plain 2D texture,
-  fully supported in every language, and cube maps through a hook. The
-  techniques read the environment only through SNELL_SAMPLE_ENVIRONMENT, so an
-  engine switches them to cube maps with two #defines.
-use: vec2 uv = snellEquirectUv(dirWorld);
-     vec4 c = snellSampleEquirect(envTex, dirWorld, lod);
-     float a = snellAtan2(y, x);
-  Cube maps (define before including snell, in GLSL or C++):
-     #define SNELL_ENVIRONMENT_TEX SNELL_TEXCUBE
-     #define SNELL_SAMPLE_ENVIRONMENT(tex, dir, lod) SNELL_SAMPLE_CUBE_LOD(tex, dir, lod)
-     (C++: include <snell/texture_cube.hpp> first; it defines snell::TextureCube.)
-options (hooks; define before this file to override):
-  SNELL_TEXCUBE                        cube texture parameter type (GLSL samplerCube,
-                                       C++ const snell::TextureCube&, HLSL TextureCube<float4>)
-  SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) vec4 of a cube map along dir at explicit lod
-  SNELL_ENVIRONMENT_TEX                the environment parameter type of the
-                                       techniques (default SNELL_TEX2D: equirectangular)
-  SNELL_SAMPLE_ENVIRONMENT(tex, dir, lod)  the techniques' environment read
-                                       (default snellSampleEquirect(tex, dir, lod))
-contract:
-  - snellAtan2(y, x): the angle of (x, y) in (-pi, pi], from an odd degree-9
-    polynomial of the octant-reduced ratio (max error ~1e-5 rad) using only
-    +, *, /, abs and comparisons, so every language computes the same value up
-    to rounding (the builtin atan(y, x) differs between GLSL and HLSL in
-    argument order and between drivers in precision). atan2(0, 0) = 0; y = 0,
-    x < 0 gives pi (also for y = -0); NaN input gives 0; infinities are
-    treated as the ratio 1 per octant.
-  - snellEquirectUv(d): u = 0.5 + atan2(d.x, -d.z) / (2 pi) (the -Z view
-    direction is the centre column, +X to the right, u increases clockwise seen
-    from above), v = 0.5 + atan2(d.y, |(d.x, d.z)|) / pi (v = 1 straight up,
-    +Y; GL row 0 is the bottom row = straight down). d need not be unit
-    length. Zero, NaN or Inf directions give (0.5, 0.5).
-  - snellSampleEquirect: SNELL_SAMPLE_LOD(env, snellEquirectUv(d), lod). The
-    seam at u = 0/1 is filtered with the texture's own wrap mode (clamp to edge
-    in snell::Texture2D: a one-texel seam; GL_REPEAT in s hides it on a GPU,
-    but then C++ and GL differ at the seam).
-source: equirectangular (plate carree) environment mapping, e.g. Pharr, Jakob
-  & Humphreys, PBRT 3rd ed., sec. 12.6 (InfiniteAreaLight, spherical
-  coordinates); atan polynomial: C. Hastings, "Approximations for Digital
-  Computers" (1955), sheet 11 (odd minimax polynomial on [0, 1]); cube maps:
-  environment_cube_face.glsl.
-*/
-#ifndef SNELL_SHADE_ENVIRONMENT_GLSL
-#define SNELL_SHADE_ENVIRONMENT_GLSL
 
 
-
-
-#if defined(SNELL_LANG_GLSL)
-#  ifndef SNELL_TEXCUBE
-#    define SNELL_TEXCUBE samplerCube
-#  endif
-#  ifndef SNELL_SAMPLE_CUBE_LOD
-#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) textureLod(tex, dir, lod)
-#  endif
-#elif defined(SNELL_LANG_HLSL)
-#  ifndef SNELL_TEXCUBE
-#    define SNELL_TEXCUBE TextureCube<float4>
-#  endif
-#  ifndef SNELL_SAMPLE_CUBE_LOD
-#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) ((tex).SampleLevel(SNELL_HLSL_SAMPLER, dir, lod))
-#  endif
-#else
-#  ifndef SNELL_TEXCUBE
-#    define SNELL_TEXCUBE const ::snell::TextureCube&
-#  endif
-#  ifndef SNELL_SAMPLE_CUBE_LOD
-#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) ((tex).sampleLod(dir, lod))
-#  endif
-#endif
-
-#ifndef SNELL_ENVIRONMENT_TEX
-#  define SNELL_ENVIRONMENT_TEX SNELL_TEX2D
-#endif
-#ifndef SNELL_SAMPLE_ENVIRONMENT
-#  define SNELL_SAMPLE_ENVIRONMENT(tex, dir, lod) snellSampleEquirect(tex, dir, lod)
-#endif
-
-/* Hastings 1955: atan(a) ~ a (c1 + c3 a^2 + c5 a^4 + c7 a^6 + c9 a^8) on [0, 1] */
-SNELL_FN float snellAtan2(float y, float x) {
-  if (isnan(x) || isnan(y)) {
-    return 0.0f;
-  }
-  float ax = abs(x);
-  float ay = abs(y);
-  float hi = max(ax, ay);
-  float lo = min(ax, ay);
-  if (!(hi > 0.0f)) {
-    return 0.0f;
-  }
-  float a = isinf(hi) ? (isinf(lo) ? 1.0f : 0.0f) : lo / hi;
-  float s = a * a;
-  float r = a * (0.9998660f + s * (-0.3302995f + s * (0.1801410f + s * (-0.0851330f + s * 0.0208351f))));
-  if (ay > ax) {
-    r = 1.57079632679f - r;
-  }
-  if (x < 0.0f) {
-    r = 3.14159265359f - r;
-  }
-  if (y < 0.0f) {
-    r = -r;
-  }
-  return r;
-}
-
-SNELL_FN vec2 snellEquirectUv(vec3 dir) {
-  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
-    return vec2(0.5f, 0.5f);
-  }
-  float horizontal = sqrt(dir.x * dir.x + dir.z * dir.z);
-  float u = 0.5f + snellAtan2(dir.x, -dir.z) * (0.5f / SNELL_PI);
-  float v = 0.5f + snellAtan2(dir.y, horizontal) * (1.0f / SNELL_PI);
-  return vec2(u, v);
-}
-
-SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
-  return SNELL_SAMPLE_LOD(env, snellEquirectUv(dir), lod);
-}
-
-#endif
 
 /*
 description: the buffers a two-interface technique reads, as the parameter
@@ -6155,19 +6244,21 @@ contract (snellTwoInterfaceExitRough(origin, dir, cone, ..., slot, v)):
     snellRoughConeSceneLod(cone, |q - origin|, q, scene.clipFromView, its
     base size, v.sceneColorLevels): the cone's width where the ray meets
     the scene, in that buffer's texels. A cone of radius and angles 0 (smooth
-    glass) reads level 0.
+    glass) reads level 0. Each read is snellRoughConeSample (or
+    snellRoughConeSampleEnvironment) at snellRoughConeTaps(that level, the
+    texture's levels): at level 0 one SNELL_SAMPLE_LOD, above it two (the
+    lobe's peak and tail), each counted.
   - dir zero or not finite, or origin not finite: color 0, fellBack, 0 fetches.
-  - slot.source ENVIRONMENT: color = SNELL_SAMPLE_ENVIRONMENT(env,
-    world(dir / |dir|), envLod).xyz, 1 fetch, hit = snellHitMiss(0), fellBack
-    false.
+  - slot.source ENVIRONMENT: color = the environment read along
+    world(dir / |dir|) at envLod, hit = snellHitMiss(0), fellBack false.
   - any other source (BUFFERS; WYMAN reads as BUFFERS here): hit =
     snellIntersectWith(origin, dir, scene..., slot.intersect), then the
     foreground rule, snellRejectForeground(hit, origin, sceneDepth, scene,
     SNELL_FOREGROUND_TOLERANCE) (it reads the texel containing the hit)
     (intersect/foreground.glsl: 1 fetch when the strategy hit; a hit on a
     surface nearer the camera than the whole ray is refused, so a foreground
-    never shows through the object); valid: color =
-    SNELL_SAMPLE_LOD(sceneColor, hit.uv, sceneLod).xyz (+1 fetch). Invalid (ray
+    never shows through the object); valid: color = the scene colour read
+    at hit.uv and sceneLod. Invalid (ray
     leaves the screen, points towards the camera where a search cannot
     follow, lands on an empty texel): fellBack = true and slot.fallback
     ENVIRONMENT: the environment along dir; EDGE_FADE: q = origin +
@@ -6175,8 +6266,8 @@ contract (snellTwoInterfaceExitRough(origin, dir, cone, ..., slot, v)):
     slot.edgeFadeWidth) (0 when q does not project), color = mix(environment,
     sceneColor at the projection clamped to [0,1]^2, w) (the scene read only
     when w > 0). Never black unless the environment is.
-  - fetches: the strategy's, the foreground rule's read, and one per colour
-    or environment read.
+  - fetches: the strategy's, the foreground rule's read, and the colour and
+    environment reads' (snellRoughConeFetches: 1 on smooth glass, 2 on rough).
 contract (snellTwoInterfaceExit(origin, dir, ..., slot, m, v)): the above
   with the cone of a ray through a thin sheet of the material:
   snellRoughConeTransmit(m.roughness, snellIorToEta(m.iorOutside, m.ior), 0, 0).
@@ -6202,8 +6293,8 @@ contract (snellTwoInterfaceRefraction):
     that passed behind a surface's silhouette is not taken for a hit on it;
     its fetches added). A hit nearer than the back hit
     (|hit - P1| < the path's entryLength) ends the path on that surface:
-    colour = sceneColor at the hit (1 fetch; at the level of the entry
-    lobe's width there: the cone below with its angles set to 0, at
+    colour = sceneColor at the hit (read as above, at the level of the
+    entry lobe's width there: the cone below with its angles set to 0, at
     distance 0), exitPoint = the hit,
     exitDirection = T1, exitHit = the hit, pathLength = |hit - P1|, no tir,
     no bounces, no fallback, insideHit = true (the single / green trace's).
@@ -6476,7 +6567,8 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExitRough(vec3 origin, vec3 dir,
       !SNELL_FINITE(origin.z)) {
     return e;
   }
-  float envLod = snellRoughConeEnvironmentLod(cone, v.environmentLevels);
+  SnellRoughTaps envTaps = snellRoughConeTaps(snellRoughConeEnvironmentLod(cone, v.environmentLevels),
+                                              v.environmentLevels);
   ivec2 colorSize = SNELL_TEXTURE_SIZE(sceneColor, 0);
   vec3 world = d.x * v.envX + d.y * v.envY + d.z * v.envZ;
   if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
@@ -6486,14 +6578,15 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExitRough(vec3 origin, vec3 dir,
     if (e.hit.valid) {
       float lod = snellRoughConeSceneLod(cone, length(e.hit.position - origin), e.hit.position, scene.clipFromView,
                                          colorSize, v.sceneColorLevels);
-      vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, lod);
+      SnellRoughTaps taps = snellRoughConeTaps(lod, v.sceneColorLevels);
+      vec4 c = snellRoughConeSample(sceneColor, e.hit.uv, taps);
       e.color = vec3(c.x, c.y, c.z);
-      e.fetches = e.fetches + 1;
+      e.fetches = e.fetches + snellRoughConeFetches(taps);
       e.fellBack = false;
       return e;
     }
-    vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, envLod);
-    e.fetches = e.fetches + 1;
+    vec4 env = snellRoughConeSampleEnvironment(environment, world, envTaps);
+    e.fetches = e.fetches + snellRoughConeFetches(envTaps);
     e.color = vec3(env.x, env.y, env.z);
     if (slot.fallback == SNELL_FALLBACK_EDGE_FADE) {
       vec3 q = origin + slot.fallbackDistance * d;
@@ -6503,16 +6596,17 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExitRough(vec3 origin, vec3 dir,
         vec2 uv = clamp(sp.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
         float lod = snellRoughConeSceneLod(cone, slot.fallbackDistance, q, scene.clipFromView, colorSize,
                                            v.sceneColorLevels);
-        vec4 c = SNELL_SAMPLE_LOD(sceneColor, uv, lod);
-        e.fetches = e.fetches + 1;
+        SnellRoughTaps taps = snellRoughConeTaps(lod, v.sceneColorLevels);
+        vec4 c = snellRoughConeSample(sceneColor, uv, taps);
+        e.fetches = e.fetches + snellRoughConeFetches(taps);
         e.color = mix(e.color, vec3(c.x, c.y, c.z), w);
       }
     }
     return e;
   }
-  vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, envLod);
+  vec4 env = snellRoughConeSampleEnvironment(environment, world, envTaps);
   e.color = vec3(env.x, env.y, env.z);
-  e.fetches = 1;
+  e.fetches = snellRoughConeFetches(envTaps);
   e.fellBack = false;
   return e;
 }
@@ -6590,11 +6684,12 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
       entry.exitAngle = 0.0f;
       float lod = snellRoughConeSceneLod(entry, 0.0f, ih.position, scene.clipFromView,
                                          SNELL_TEXTURE_SIZE(sceneColor, 0), v.sceneColorLevels);
-      vec4 c = SNELL_SAMPLE_LOD(sceneColor, ih.uv, lod);
+      SnellRoughTaps taps = snellRoughConeTaps(lod, v.sceneColorLevels);
+      vec4 c = snellRoughConeSample(sceneColor, ih.uv, taps);
       e.color = vec3(c.x, c.y, c.z);
       e.hit = ih;
       e.fellBack = false;
-      e.fetches = 1;
+      e.fetches = snellRoughConeFetches(taps);
     } else {
       e = snellTwoInterfaceExitRough(p.exitPoint, p.exitDirection, cone, SNELL_SCENE_BUFFER_ARGS, leave, v);
     }

@@ -2522,8 +2522,142 @@ SNELL_FN SnellView snellView() {
 
 #endif
 
+#ifndef SNELL_SHADE_ENVIRONMENT_GLSL
+#define SNELL_SHADE_ENVIRONMENT_GLSL
+
+#ifndef SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
+#define SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
+
+struct SnellCubeFace {
+  int face;
+  vec2 uv;
+  bool valid;
+};
+
+SNELL_FN SnellCubeFace snellCubeFaceUv(vec3 dir) {
+  SnellCubeFace r;
+  r.face = 0;
+  r.uv = vec2(0.5f, 0.5f);
+  r.valid = false;
+  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
+    return r;
+  }
+  float ax = abs(dir.x);
+  float ay = abs(dir.y);
+  float az = abs(dir.z);
+  float sc = 0.0f;
+  float tc = 0.0f;
+  float ma = 0.0f;
+  if (ax >= ay && ax >= az) {
+    ma = ax;
+    r.face = dir.x >= 0.0f ? 0 : 1;
+    sc = dir.x >= 0.0f ? -dir.z : dir.z;
+    tc = -dir.y;
+  } else if (ay >= az) {
+    ma = ay;
+    r.face = dir.y >= 0.0f ? 2 : 3;
+    sc = dir.x;
+    tc = dir.y >= 0.0f ? dir.z : -dir.z;
+  } else {
+    ma = az;
+    r.face = dir.z >= 0.0f ? 4 : 5;
+    sc = dir.z >= 0.0f ? dir.x : -dir.x;
+    tc = -dir.y;
+  }
+  if (!(ma >= SNELL_FLT_MIN)) {
+    r.face = 0;
+    return r;
+  }
+  r.uv = vec2(0.5f * (sc / ma + 1.0f), 0.5f * (tc / ma + 1.0f));
+  r.valid = true;
+  return r;
+}
+
+#endif
+
+#if defined(SNELL_LANG_GLSL)
+#  ifndef SNELL_TEXCUBE
+#    define SNELL_TEXCUBE samplerCube
+#  endif
+#  ifndef SNELL_SAMPLE_CUBE_LOD
+#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) textureLod(tex, dir, lod)
+#  endif
+#elif defined(SNELL_LANG_HLSL)
+#  ifndef SNELL_TEXCUBE
+#    define SNELL_TEXCUBE TextureCube<float4>
+#  endif
+#  ifndef SNELL_SAMPLE_CUBE_LOD
+#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) ((tex).SampleLevel(SNELL_HLSL_SAMPLER, dir, lod))
+#  endif
+#else
+#  ifndef SNELL_TEXCUBE
+#    define SNELL_TEXCUBE const ::snell::TextureCube&
+#  endif
+#  ifndef SNELL_SAMPLE_CUBE_LOD
+#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) ((tex).sampleLod(dir, lod))
+#  endif
+#endif
+
+#ifndef SNELL_ENVIRONMENT_TEX
+#  define SNELL_ENVIRONMENT_TEX SNELL_TEX2D
+#endif
+#ifndef SNELL_SAMPLE_ENVIRONMENT
+#  define SNELL_SAMPLE_ENVIRONMENT(tex, dir, lod) snellSampleEquirect(tex, dir, lod)
+#endif
+
+SNELL_FN float snellAtan2(float y, float x) {
+  if (isnan(x) || isnan(y)) {
+    return 0.0f;
+  }
+  float ax = abs(x);
+  float ay = abs(y);
+  float hi = max(ax, ay);
+  float lo = min(ax, ay);
+  if (!(hi > 0.0f)) {
+    return 0.0f;
+  }
+  float a = isinf(hi) ? (isinf(lo) ? 1.0f : 0.0f) : lo / hi;
+  float s = a * a;
+  float r = a * (0.9998660f + s * (-0.3302995f + s * (0.1801410f + s * (-0.0851330f + s * 0.0208351f))));
+  if (ay > ax) {
+    r = 1.57079632679f - r;
+  }
+  if (x < 0.0f) {
+    r = 3.14159265359f - r;
+  }
+  if (y < 0.0f) {
+    r = -r;
+  }
+  return r;
+}
+
+SNELL_FN vec2 snellEquirectUv(vec3 dir) {
+  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
+    return vec2(0.5f, 0.5f);
+  }
+  float horizontal = sqrt(dir.x * dir.x + dir.z * dir.z);
+  float u = 0.5f + snellAtan2(dir.x, -dir.z) * (0.5f / SNELL_PI);
+  float v = 0.5f + snellAtan2(dir.y, horizontal) * (1.0f / SNELL_PI);
+  return vec2(u, v);
+}
+
+SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
+  return SNELL_SAMPLE_LOD(env, snellEquirectUv(dir), lod);
+}
+
+#endif
+
 #ifndef SNELL_ROUGH_CONE_LOD_SCALE
 #  define SNELL_ROUGH_CONE_LOD_SCALE 3.0f
+#endif
+#ifndef SNELL_ROUGH_CONE_TAIL_WEIGHT
+#  define SNELL_ROUGH_CONE_TAIL_WEIGHT 0.34f
+#endif
+#ifndef SNELL_ROUGH_CONE_CORE_OFFSET
+#  define SNELL_ROUGH_CONE_CORE_OFFSET (-0.52f)
+#endif
+#ifndef SNELL_ROUGH_CONE_TAIL_OFFSET
+#  define SNELL_ROUGH_CONE_TAIL_OFFSET 1.14f
 #endif
 
 struct SnellRoughCone {
@@ -2615,129 +2749,45 @@ SNELL_FN float snellRoughConeEnvironmentLod(SNELL_IN(SnellRoughCone) c, int leve
   return snellRoughConeLevel(snellRoughConeHypot(c.angle, c.exitAngle), texelsPerRadian, levels);
 }
 
-#endif
-
-#ifndef SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
-#define SNELL_SHADE_ENVIRONMENT_CUBE_FACE_GLSL
-
-struct SnellCubeFace {
-  int face;
-  vec2 uv;
-  bool valid;
+struct SnellRoughTaps {
+  float coreLod;
+  float tailLod;
+  float tailWeight;
 };
 
-SNELL_FN SnellCubeFace snellCubeFaceUv(vec3 dir) {
-  SnellCubeFace r;
-  r.face = 0;
-  r.uv = vec2(0.5f, 0.5f);
-  r.valid = false;
-  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
-    return r;
+SNELL_FN SnellRoughTaps snellRoughConeTaps(float lod, int levels) {
+  float top = float(max(levels - 1, 0));
+  float l = lod > 0.0f ? min(lod, top) : 0.0f;
+  SnellRoughTaps t;
+  t.coreLod = l;
+  t.tailLod = l;
+  t.tailWeight = 0.0f;
+  if (l > 0.0f && SNELL_ROUGH_CONE_TAIL_WEIGHT > 0.0f) {
+    t.coreLod = clamp(l + SNELL_ROUGH_CONE_CORE_OFFSET, 0.0f, top);
+    t.tailLod = clamp(l + SNELL_ROUGH_CONE_TAIL_OFFSET, 0.0f, top);
+    t.tailWeight = SNELL_ROUGH_CONE_TAIL_WEIGHT;
   }
-  float ax = abs(dir.x);
-  float ay = abs(dir.y);
-  float az = abs(dir.z);
-  float sc = 0.0f;
-  float tc = 0.0f;
-  float ma = 0.0f;
-  if (ax >= ay && ax >= az) {
-    ma = ax;
-    r.face = dir.x >= 0.0f ? 0 : 1;
-    sc = dir.x >= 0.0f ? -dir.z : dir.z;
-    tc = -dir.y;
-  } else if (ay >= az) {
-    ma = ay;
-    r.face = dir.y >= 0.0f ? 2 : 3;
-    sc = dir.x;
-    tc = dir.y >= 0.0f ? dir.z : -dir.z;
-  } else {
-    ma = az;
-    r.face = dir.z >= 0.0f ? 4 : 5;
-    sc = dir.z >= 0.0f ? dir.x : -dir.x;
-    tc = -dir.y;
-  }
-  if (!(ma >= SNELL_FLT_MIN)) {
-    r.face = 0;
-    return r;
-  }
-  r.uv = vec2(0.5f * (sc / ma + 1.0f), 0.5f * (tc / ma + 1.0f));
-  r.valid = true;
-  return r;
+  return t;
 }
 
-#endif
-
-#ifndef SNELL_SHADE_ENVIRONMENT_GLSL
-#define SNELL_SHADE_ENVIRONMENT_GLSL
-
-#if defined(SNELL_LANG_GLSL)
-#  ifndef SNELL_TEXCUBE
-#    define SNELL_TEXCUBE samplerCube
-#  endif
-#  ifndef SNELL_SAMPLE_CUBE_LOD
-#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) textureLod(tex, dir, lod)
-#  endif
-#elif defined(SNELL_LANG_HLSL)
-#  ifndef SNELL_TEXCUBE
-#    define SNELL_TEXCUBE TextureCube<float4>
-#  endif
-#  ifndef SNELL_SAMPLE_CUBE_LOD
-#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) ((tex).SampleLevel(SNELL_HLSL_SAMPLER, dir, lod))
-#  endif
-#else
-#  ifndef SNELL_TEXCUBE
-#    define SNELL_TEXCUBE const ::snell::TextureCube&
-#  endif
-#  ifndef SNELL_SAMPLE_CUBE_LOD
-#    define SNELL_SAMPLE_CUBE_LOD(tex, dir, lod) ((tex).sampleLod(dir, lod))
-#  endif
-#endif
-
-#ifndef SNELL_ENVIRONMENT_TEX
-#  define SNELL_ENVIRONMENT_TEX SNELL_TEX2D
-#endif
-#ifndef SNELL_SAMPLE_ENVIRONMENT
-#  define SNELL_SAMPLE_ENVIRONMENT(tex, dir, lod) snellSampleEquirect(tex, dir, lod)
-#endif
-
-SNELL_FN float snellAtan2(float y, float x) {
-  if (isnan(x) || isnan(y)) {
-    return 0.0f;
-  }
-  float ax = abs(x);
-  float ay = abs(y);
-  float hi = max(ax, ay);
-  float lo = min(ax, ay);
-  if (!(hi > 0.0f)) {
-    return 0.0f;
-  }
-  float a = isinf(hi) ? (isinf(lo) ? 1.0f : 0.0f) : lo / hi;
-  float s = a * a;
-  float r = a * (0.9998660f + s * (-0.3302995f + s * (0.1801410f + s * (-0.0851330f + s * 0.0208351f))));
-  if (ay > ax) {
-    r = 1.57079632679f - r;
-  }
-  if (x < 0.0f) {
-    r = 3.14159265359f - r;
-  }
-  if (y < 0.0f) {
-    r = -r;
-  }
-  return r;
+SNELL_FN int snellRoughConeFetches(SNELL_IN(SnellRoughTaps) t) {
+  return t.tailWeight > 0.0f ? 2 : 1;
 }
 
-SNELL_FN vec2 snellEquirectUv(vec3 dir) {
-  if (!SNELL_FINITE(dir.x) || !SNELL_FINITE(dir.y) || !SNELL_FINITE(dir.z)) {
-    return vec2(0.5f, 0.5f);
+SNELL_FN vec4 snellRoughConeSample(SNELL_TEX2D tex, vec2 uv, SNELL_IN(SnellRoughTaps) t) {
+  vec4 c = SNELL_SAMPLE_LOD(tex, uv, t.coreLod);
+  if (t.tailWeight > 0.0f) {
+    c = mix(c, SNELL_SAMPLE_LOD(tex, uv, t.tailLod), t.tailWeight);
   }
-  float horizontal = sqrt(dir.x * dir.x + dir.z * dir.z);
-  float u = 0.5f + snellAtan2(dir.x, -dir.z) * (0.5f / SNELL_PI);
-  float v = 0.5f + snellAtan2(dir.y, horizontal) * (1.0f / SNELL_PI);
-  return vec2(u, v);
+  return c;
 }
 
-SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
-  return SNELL_SAMPLE_LOD(env, snellEquirectUv(dir), lod);
+SNELL_FN vec4 snellRoughConeSampleEnvironment(SNELL_ENVIRONMENT_TEX env, vec3 dir, SNELL_IN(SnellRoughTaps) t) {
+  vec4 c = SNELL_SAMPLE_ENVIRONMENT(env, dir, t.coreLod);
+  if (t.tailWeight > 0.0f) {
+    c = mix(c, SNELL_SAMPLE_ENVIRONMENT(env, dir, t.tailLod), t.tailWeight);
+  }
+  return c;
 }
 
 #endif
@@ -3477,7 +3527,8 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExitRough(vec3 origin, vec3 dir,
       !SNELL_FINITE(origin.z)) {
     return e;
   }
-  float envLod = snellRoughConeEnvironmentLod(cone, v.environmentLevels);
+  SnellRoughTaps envTaps = snellRoughConeTaps(snellRoughConeEnvironmentLod(cone, v.environmentLevels),
+                                              v.environmentLevels);
   ivec2 colorSize = SNELL_TEXTURE_SIZE(sceneColor, 0);
   vec3 world = d.x * v.envX + d.y * v.envY + d.z * v.envZ;
   if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
@@ -3487,14 +3538,15 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExitRough(vec3 origin, vec3 dir,
     if (e.hit.valid) {
       float lod = snellRoughConeSceneLod(cone, length(e.hit.position - origin), e.hit.position, scene.clipFromView,
                                          colorSize, v.sceneColorLevels);
-      vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, lod);
+      SnellRoughTaps taps = snellRoughConeTaps(lod, v.sceneColorLevels);
+      vec4 c = snellRoughConeSample(sceneColor, e.hit.uv, taps);
       e.color = vec3(c.x, c.y, c.z);
-      e.fetches = e.fetches + 1;
+      e.fetches = e.fetches + snellRoughConeFetches(taps);
       e.fellBack = false;
       return e;
     }
-    vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, envLod);
-    e.fetches = e.fetches + 1;
+    vec4 env = snellRoughConeSampleEnvironment(environment, world, envTaps);
+    e.fetches = e.fetches + snellRoughConeFetches(envTaps);
     e.color = vec3(env.x, env.y, env.z);
     if (slot.fallback == SNELL_FALLBACK_EDGE_FADE) {
       vec3 q = origin + slot.fallbackDistance * d;
@@ -3504,16 +3556,17 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExitRough(vec3 origin, vec3 dir,
         vec2 uv = clamp(sp.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
         float lod = snellRoughConeSceneLod(cone, slot.fallbackDistance, q, scene.clipFromView, colorSize,
                                            v.sceneColorLevels);
-        vec4 c = SNELL_SAMPLE_LOD(sceneColor, uv, lod);
-        e.fetches = e.fetches + 1;
+        SnellRoughTaps taps = snellRoughConeTaps(lod, v.sceneColorLevels);
+        vec4 c = snellRoughConeSample(sceneColor, uv, taps);
+        e.fetches = e.fetches + snellRoughConeFetches(taps);
         e.color = mix(e.color, vec3(c.x, c.y, c.z), w);
       }
     }
     return e;
   }
-  vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, envLod);
+  vec4 env = snellRoughConeSampleEnvironment(environment, world, envTaps);
   e.color = vec3(env.x, env.y, env.z);
-  e.fetches = 1;
+  e.fetches = snellRoughConeFetches(envTaps);
   e.fellBack = false;
   return e;
 }
@@ -3577,11 +3630,12 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
       entry.exitAngle = 0.0f;
       float lod = snellRoughConeSceneLod(entry, 0.0f, ih.position, scene.clipFromView,
                                          SNELL_TEXTURE_SIZE(sceneColor, 0), v.sceneColorLevels);
-      vec4 c = SNELL_SAMPLE_LOD(sceneColor, ih.uv, lod);
+      SnellRoughTaps taps = snellRoughConeTaps(lod, v.sceneColorLevels);
+      vec4 c = snellRoughConeSample(sceneColor, ih.uv, taps);
       e.color = vec3(c.x, c.y, c.z);
       e.hit = ih;
       e.fellBack = false;
-      e.fetches = 1;
+      e.fetches = snellRoughConeFetches(taps);
     } else {
       e = snellTwoInterfaceExitRough(p.exitPoint, p.exitDirection, cone, SNELL_SCENE_BUFFER_ARGS, leave, v);
     }

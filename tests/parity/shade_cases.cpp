@@ -849,4 +849,21 @@ SNELL_PARITY_CASE(snellRoughConeEnvironmentLod, roughConeInputs,
                   c.exitAngle = coneExitAngle;
                   lod = snellRoughConeEnvironmentLod(c, levels);)
 
+// The two reads of a rough read at a level (x[3]: 0 to 20 and hostile) of a chain (x[11]: -1 to 14 levels).
+SNELL_PARITY_CASE(snellRoughConeTaps, roughConeInputs,
+                  (float, lod, 3)(int, levels, 11),
+                  (float, coreLod, 0, within(1e-6f, 1e-6f))(float, tailLod, 1, within(1e-6f, 1e-6f))
+                  (float, tailWeight, 2, exact),
+                  {},
+                  SnellRoughTaps t = snellRoughConeTaps(lod, levels);
+                  coreLod = t.coreLod;
+                  tailLod = t.tailLod;
+                  tailWeight = t.tailWeight;)
+
+SNELL_PARITY_CASE(snellRoughConeFetches, roughConeInputs,
+                  (float, lod, 3)(int, levels, 11),
+                  (int, fetches, 0, exact),
+                  {},
+                  fetches = snellRoughConeFetches(snellRoughConeTaps(lod, levels));)
+
 }  // namespace parity_shade

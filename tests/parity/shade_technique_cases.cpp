@@ -32,6 +32,33 @@ SNELL_PARITY_CASE(snellSampleEquirect, [] { return directionInputs(806, true); }
                   (vec4, color, 0, within(1e-4f, 1e-4f)),
                   techExtras(),
                   color = snellSampleEquirect(techEnv, direction, lod);)
+// A rough read of the technique's scene colour (7 levels) and environment: uv a little beyond [0, 1], the level
+// 0 (smooth glass) or up to beyond the top.
+inline std::vector<ParityIO> roughReadInputs() {
+  InputGen g(829);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    ParityIO in{};
+    in.v[0] = glm::vec4(g.uniform(-0.1f, 1.1f), g.uniform(-0.1f, 1.1f), g.chance(0.3f) ? 0.0f : g.uniform(0.0f, 9.0f),
+                        float(g.integer(1, 9)));
+    in.v[1] = glm::vec4(g.unitVector(), 0.0f);
+    v.push_back(in);
+  }
+  return v;
+}
+
+SNELL_PARITY_CASE(snellRoughConeSample, roughReadInputs,
+                  (vec2, uv, 0)(float, lod, 2)(int, levels, 3),
+                  (vec4, color, 0, within(1e-4f, 1e-4f)),
+                  techExtras(),
+                  color = snellRoughConeSample(techSceneColor, uv, snellRoughConeTaps(lod, levels));)
+
+SNELL_PARITY_CASE(snellRoughConeSampleEnvironment, roughReadInputs,
+                  (float, lod, 2)(int, levels, 3)(vec3, direction, 4),
+                  (vec4, color, 0, within(1e-4f, 1e-4f)),
+                  techExtras(),
+                  color = snellRoughConeSampleEnvironment(techEnv, direction, snellRoughConeTaps(lod, levels));)
+
 // The three defaults together: their outputs are the single options struct's before the split.
 SNELL_PARITY_CASE(snellTechnique, [] { return smallIntInputs(811, 0, 1); },
                   /* no inputs */,

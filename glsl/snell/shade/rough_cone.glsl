@@ -3,13 +3,18 @@ description: how wide rough (frosted) glass blurs what it shows, as a cone of
   light around the ray: from the roughness, the relative IOR and the path's
   lengths inside and behind the glass, its radius where the ray meets the
   scene, and the mip level of the scene colour (or the environment) whose
-  texels are that wide. The same glass blurs the same amount of the world at
-  every resolution and distance, and the blur grows with what lies behind.
+  texels are that wide, read twice (the lobe's narrow peak and its wide
+  tail). The same glass blurs the same amount of the world at every
+  resolution and distance, and the blur grows with what lies behind.
 use: SnellRoughCone c = snellRoughConeTransmit(m.roughness, eta, insideLength, bounces);
      float lod = snellRoughConeSceneLod(c, distanceBehind, hitPosition, scene.clipFromView,
                                         SNELL_TEXTURE_SIZE(sceneColor, 0), v.sceneColorLevels);
      float envLod = snellRoughConeEnvironmentLod(c, v.environmentLevels);
      SnellRoughCone r = snellRoughConeReflect(m.roughness);   // the first surface's reflection
+     SnellRoughTaps t = snellRoughConeTaps(lod, v.sceneColorLevels);  // the lobe as two reads
+     vec4 color = snellRoughConeSample(sceneColor, uv, t);   // snellRoughConeFetches(t) fetches
+     vec4 sky = snellRoughConeSampleEnvironment(environment, dirWorld,
+                                                snellRoughConeTaps(envLod, v.environmentLevels));
   roughness     perceptual roughness in [0, 1]; the GGX width is alpha = roughness^2
   eta           n_outside / n_inside at the entry (snellIorToEta(iorOutside, ior))
   insideLength  the path's length inside the glass (view units)
@@ -22,6 +27,10 @@ use: SnellRoughCone c = snellRoughConeTransmit(m.roughness, eta, insideLength, b
                 texels (an equirectangular map with a full chain)
 options: SNELL_ROUGH_CONE_LOD_SCALE (default 3.0): texels of the chosen level
   per unit of the cone's radius, fitted against the rough ray trace (below).
+  SNELL_ROUGH_CONE_TAIL_WEIGHT (default 0.34): the wide read's share of a rough
+  read; 0 reads once, at the cone's level (one fetch instead of two).
+  SNELL_ROUGH_CONE_CORE_OFFSET (default -0.52) and SNELL_ROUGH_CONE_TAIL_OFFSET
+  (default 1.14): the two reads' levels from the cone's (below).
 contract:
   - a cone is a radius at the surface it leaves and two angles (radians):
     radius(d) = sqrt((radius + angle d)^2 + (exitAngle d)^2) at distance d.
@@ -57,6 +66,28 @@ contract:
     exitAngle^2) radians at 2^(levels - 1) / (2 pi) texels per radian.
   - every result is finite; a cone of a smooth surface (roughness 0) gives
     level 0 exactly.
+  - snellRoughConeTaps(lod, levels): GGX's lobe is heavy-tailed (its slopes
+    are Student's t with 2 degrees of freedom: a narrow peak, and a fifth of
+    the light beyond twice its median), which one read, a bell, cannot be.
+    Two reads mixed stand for it: l = lod clamped to [0, levels - 1] (NaN: 0);
+    for l > 0 and a positive tail weight w, coreLod = clamp(l + CORE_OFFSET),
+    tailLod = clamp(l + TAIL_OFFSET) (both to [0, levels - 1]), tailWeight = w;
+    else (smooth glass, level 0, no chain) one read: coreLod = tailLod = l,
+    tailWeight 0. At the top level the tail is clamped to it and the core
+    still reads below (the mix stays the lobe's shape as far as the chain
+    allows).
+  - snellRoughConeSample(tex, uv, t): SNELL_SAMPLE_LOD at coreLod, mixed with
+    SNELL_SAMPLE_LOD at tailLod by tailWeight when it is positive;
+    snellRoughConeSampleEnvironment the same through SNELL_SAMPLE_ENVIRONMENT.
+    snellRoughConeFetches(t): 2 with a tail, else 1.
+  - the constants: with a read at level L taken as a Gaussian of standard
+    deviation proportional to 2^L, the mixture of two Gaussians nearest
+    to the t lobe (squared difference of their spectra, weighted as the
+    1 / f^2 power spectrum of natural images weighs it) against the single
+    Gaussian nearest to it: the core 0.70x its width (-0.52 levels) with
+    weight 0.66, the tail 2.2x (+1.14 levels) with 0.34. The single read's
+    level (SNELL_ROUGH_CONE_LOD_SCALE) stays the one fitted against the ray
+    trace; the two reads take their levels from it.
 source: the rough BTDF of B. Walter, S. Marschner, H. Li, K. Torrance,
   "Microfacet Models for Refraction through Rough Surfaces" (EGSR 2007): GGX
   (eq. 33) with width alpha, refraction about the microfacet normal (eq. 40);
@@ -64,7 +95,12 @@ source: the rough BTDF of B. Walter, S. Marschner, H. Li, K. Torrance,
   colour's mip chain, its radius growing with the distance behind the
   object and both interfaces' lobes combined: C. de Rousiers, A. Bousseau,
   K. Subr, N. Holzschuch, R. Ramamoorthi, "Real-Time Rendering of Rough
-  Refraction" (TVCG 2012), cone tracing at the exit interface. The scale was
+  Refraction" (TVCG 2012), cone tracing at the exit interface. GGX's slopes
+  as Student's t with 2 degrees of freedom: E. Heitz, "Understanding the
+  Masking-Shadowing Function in Microfacet-Based BRDFs" (JCGT 2014), its GGX
+  slope distribution P22; natural images' 1 / f^2 power
+  spectrum: D. J. Field, "Relations between the statistics of natural images
+  and the response properties of cortical cells" (JOSA A 1987). The scale was
   fitted on the rough sphere_painting scenes against the lab's GGX ray trace
   and checked on the rough bunny (docs/lab/rough/README.md).
 */
@@ -72,9 +108,19 @@ source: the rough BTDF of B. Walter, S. Marschner, H. Li, K. Torrance,
 #define SNELL_SHADE_ROUGH_CONE_GLSL
 #include "../prelude.glsl"
 #include "technique_options.glsl"
+#include "environment.glsl"
 
 #ifndef SNELL_ROUGH_CONE_LOD_SCALE
 #  define SNELL_ROUGH_CONE_LOD_SCALE 3.0f
+#endif
+#ifndef SNELL_ROUGH_CONE_TAIL_WEIGHT
+#  define SNELL_ROUGH_CONE_TAIL_WEIGHT 0.34f
+#endif
+#ifndef SNELL_ROUGH_CONE_CORE_OFFSET
+#  define SNELL_ROUGH_CONE_CORE_OFFSET (-0.52f)
+#endif
+#ifndef SNELL_ROUGH_CONE_TAIL_OFFSET
+#  define SNELL_ROUGH_CONE_TAIL_OFFSET 1.14f
 #endif
 
 struct SnellRoughCone {
@@ -172,6 +218,49 @@ SNELL_FN float snellRoughConeEnvironmentLod(SNELL_IN(SnellRoughCone) c, int leve
   // 2^(levels - 1) texels over 2 pi, with levels - 1 capped so the power stays finite.
   float texelsPerRadian = exp2(float(min(levels - 1, 100))) / (2.0f * SNELL_PI);
   return snellRoughConeLevel(snellRoughConeHypot(c.angle, c.exitAngle), texelsPerRadian, levels);
+}
+
+/* The two reads a rough read takes at a cone's level (lod from snellRoughConeSceneLod or
+   snellRoughConeEnvironmentLod, levels: that texture's): the lobe's peak and its tail. */
+struct SnellRoughTaps {
+  float coreLod;
+  float tailLod;
+  float tailWeight;  // the tail read's share; 0: one read, at coreLod
+};
+
+SNELL_FN SnellRoughTaps snellRoughConeTaps(float lod, int levels) {
+  float top = float(max(levels - 1, 0));
+  float l = lod > 0.0f ? min(lod, top) : 0.0f;
+  SnellRoughTaps t;
+  t.coreLod = l;
+  t.tailLod = l;
+  t.tailWeight = 0.0f;
+  if (l > 0.0f && SNELL_ROUGH_CONE_TAIL_WEIGHT > 0.0f) {
+    t.coreLod = clamp(l + SNELL_ROUGH_CONE_CORE_OFFSET, 0.0f, top);
+    t.tailLod = clamp(l + SNELL_ROUGH_CONE_TAIL_OFFSET, 0.0f, top);
+    t.tailWeight = SNELL_ROUGH_CONE_TAIL_WEIGHT;
+  }
+  return t;
+}
+
+SNELL_FN int snellRoughConeFetches(SNELL_IN(SnellRoughTaps) t) {
+  return t.tailWeight > 0.0f ? 2 : 1;
+}
+
+SNELL_FN vec4 snellRoughConeSample(SNELL_TEX2D tex, vec2 uv, SNELL_IN(SnellRoughTaps) t) {
+  vec4 c = SNELL_SAMPLE_LOD(tex, uv, t.coreLod);
+  if (t.tailWeight > 0.0f) {
+    c = mix(c, SNELL_SAMPLE_LOD(tex, uv, t.tailLod), t.tailWeight);
+  }
+  return c;
+}
+
+SNELL_FN vec4 snellRoughConeSampleEnvironment(SNELL_ENVIRONMENT_TEX env, vec3 dir, SNELL_IN(SnellRoughTaps) t) {
+  vec4 c = SNELL_SAMPLE_ENVIRONMENT(env, dir, t.coreLod);
+  if (t.tailWeight > 0.0f) {
+    c = mix(c, SNELL_SAMPLE_ENVIRONMENT(env, dir, t.tailLod), t.tailWeight);
+  }
+  return c;
 }
 
 #endif

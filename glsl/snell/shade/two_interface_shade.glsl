@@ -42,19 +42,21 @@ contract (snellTwoInterfaceExitRough(origin, dir, cone, ..., slot, v)):
     snellRoughConeSceneLod(cone, |q - origin|, q, scene.clipFromView, its
     base size, v.sceneColorLevels): the cone's width where the ray meets
     the scene, in that buffer's texels. A cone of radius and angles 0 (smooth
-    glass) reads level 0.
+    glass) reads level 0. Each read is snellRoughConeSample (or
+    snellRoughConeSampleEnvironment) at snellRoughConeTaps(that level, the
+    texture's levels): at level 0 one SNELL_SAMPLE_LOD, above it two (the
+    lobe's peak and tail), each counted.
   - dir zero or not finite, or origin not finite: color 0, fellBack, 0 fetches.
-  - slot.source ENVIRONMENT: color = SNELL_SAMPLE_ENVIRONMENT(env,
-    world(dir / |dir|), envLod).xyz, 1 fetch, hit = snellHitMiss(0), fellBack
-    false.
+  - slot.source ENVIRONMENT: color = the environment read along
+    world(dir / |dir|) at envLod, hit = snellHitMiss(0), fellBack false.
   - any other source (BUFFERS; WYMAN reads as BUFFERS here): hit =
     snellIntersectWith(origin, dir, scene..., slot.intersect), then the
     foreground rule, snellRejectForeground(hit, origin, sceneDepth, scene,
     SNELL_FOREGROUND_TOLERANCE) (it reads the texel containing the hit)
     (intersect/foreground.glsl: 1 fetch when the strategy hit; a hit on a
     surface nearer the camera than the whole ray is refused, so a foreground
-    never shows through the object); valid: color =
-    SNELL_SAMPLE_LOD(sceneColor, hit.uv, sceneLod).xyz (+1 fetch). Invalid (ray
+    never shows through the object); valid: color = the scene colour read
+    at hit.uv and sceneLod. Invalid (ray
     leaves the screen, points towards the camera where a search cannot
     follow, lands on an empty texel): fellBack = true and slot.fallback
     ENVIRONMENT: the environment along dir; EDGE_FADE: q = origin +
@@ -62,8 +64,8 @@ contract (snellTwoInterfaceExitRough(origin, dir, cone, ..., slot, v)):
     slot.edgeFadeWidth) (0 when q does not project), color = mix(environment,
     sceneColor at the projection clamped to [0,1]^2, w) (the scene read only
     when w > 0). Never black unless the environment is.
-  - fetches: the strategy's, the foreground rule's read, and one per colour
-    or environment read.
+  - fetches: the strategy's, the foreground rule's read, and the colour and
+    environment reads' (snellRoughConeFetches: 1 on smooth glass, 2 on rough).
 contract (snellTwoInterfaceExit(origin, dir, ..., slot, m, v)): the above
   with the cone of a ray through a thin sheet of the material:
   snellRoughConeTransmit(m.roughness, snellIorToEta(m.iorOutside, m.ior), 0, 0).
@@ -89,8 +91,8 @@ contract (snellTwoInterfaceRefraction):
     that passed behind a surface's silhouette is not taken for a hit on it;
     its fetches added). A hit nearer than the back hit
     (|hit - P1| < the path's entryLength) ends the path on that surface:
-    colour = sceneColor at the hit (1 fetch; at the level of the entry
-    lobe's width there: the cone below with its angles set to 0, at
+    colour = sceneColor at the hit (read as above, at the level of the
+    entry lobe's width there: the cone below with its angles set to 0, at
     distance 0), exitPoint = the hit,
     exitDirection = T1, exitHit = the hit, pathLength = |hit - P1|, no tir,
     no bounces, no fallback, insideHit = true (the single / green trace's).
@@ -182,7 +184,8 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExitRough(vec3 origin, vec3 dir,
       !SNELL_FINITE(origin.z)) {
     return e;
   }
-  float envLod = snellRoughConeEnvironmentLod(cone, v.environmentLevels);
+  SnellRoughTaps envTaps = snellRoughConeTaps(snellRoughConeEnvironmentLod(cone, v.environmentLevels),
+                                              v.environmentLevels);
   ivec2 colorSize = SNELL_TEXTURE_SIZE(sceneColor, 0);
   vec3 world = d.x * v.envX + d.y * v.envY + d.z * v.envZ;
   if (slot.source != SNELL_SOURCE_ENVIRONMENT) {
@@ -192,14 +195,15 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExitRough(vec3 origin, vec3 dir,
     if (e.hit.valid) {
       float lod = snellRoughConeSceneLod(cone, length(e.hit.position - origin), e.hit.position, scene.clipFromView,
                                          colorSize, v.sceneColorLevels);
-      vec4 c = SNELL_SAMPLE_LOD(sceneColor, e.hit.uv, lod);
+      SnellRoughTaps taps = snellRoughConeTaps(lod, v.sceneColorLevels);
+      vec4 c = snellRoughConeSample(sceneColor, e.hit.uv, taps);
       e.color = vec3(c.x, c.y, c.z);
-      e.fetches = e.fetches + 1;
+      e.fetches = e.fetches + snellRoughConeFetches(taps);
       e.fellBack = false;
       return e;
     }
-    vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, envLod);
-    e.fetches = e.fetches + 1;
+    vec4 env = snellRoughConeSampleEnvironment(environment, world, envTaps);
+    e.fetches = e.fetches + snellRoughConeFetches(envTaps);
     e.color = vec3(env.x, env.y, env.z);
     if (slot.fallback == SNELL_FALLBACK_EDGE_FADE) {
       vec3 q = origin + slot.fallbackDistance * d;
@@ -209,16 +213,17 @@ SNELL_FN SnellTwoInterfaceExit snellTwoInterfaceExitRough(vec3 origin, vec3 dir,
         vec2 uv = clamp(sp.uv, vec2(0.0f, 0.0f), vec2(1.0f, 1.0f));
         float lod = snellRoughConeSceneLod(cone, slot.fallbackDistance, q, scene.clipFromView, colorSize,
                                            v.sceneColorLevels);
-        vec4 c = SNELL_SAMPLE_LOD(sceneColor, uv, lod);
-        e.fetches = e.fetches + 1;
+        SnellRoughTaps taps = snellRoughConeTaps(lod, v.sceneColorLevels);
+        vec4 c = snellRoughConeSample(sceneColor, uv, taps);
+        e.fetches = e.fetches + snellRoughConeFetches(taps);
         e.color = mix(e.color, vec3(c.x, c.y, c.z), w);
       }
     }
     return e;
   }
-  vec4 env = SNELL_SAMPLE_ENVIRONMENT(environment, world, envLod);
+  vec4 env = snellRoughConeSampleEnvironment(environment, world, envTaps);
   e.color = vec3(env.x, env.y, env.z);
-  e.fetches = 1;
+  e.fetches = snellRoughConeFetches(envTaps);
   e.fellBack = false;
   return e;
 }
@@ -296,11 +301,12 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
       entry.exitAngle = 0.0f;
       float lod = snellRoughConeSceneLod(entry, 0.0f, ih.position, scene.clipFromView,
                                          SNELL_TEXTURE_SIZE(sceneColor, 0), v.sceneColorLevels);
-      vec4 c = SNELL_SAMPLE_LOD(sceneColor, ih.uv, lod);
+      SnellRoughTaps taps = snellRoughConeTaps(lod, v.sceneColorLevels);
+      vec4 c = snellRoughConeSample(sceneColor, ih.uv, taps);
       e.color = vec3(c.x, c.y, c.z);
       e.hit = ih;
       e.fellBack = false;
-      e.fetches = 1;
+      e.fetches = snellRoughConeFetches(taps);
     } else {
       e = snellTwoInterfaceExitRough(p.exitPoint, p.exitDirection, cone, SNELL_SCENE_BUFFER_ARGS, leave, v);
     }
