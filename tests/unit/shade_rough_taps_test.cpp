@@ -5,6 +5,8 @@
 
 #include <snell/snell.hpp>
 
+#include "support/rough_read.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -45,8 +47,8 @@ struct LobeFit {
 
 // The constants are the fit the contract names: a brute-force search over single Gaussians, then over
 // mixtures of two, finds the library's offsets (relative to the single one) and weight within its steps,
-// and the library's mixture is within 2 % of the best one found. The mixture halves nothing by luck: it
-// is over ten times nearer the lobe than the best single read.
+// and the library's mixture is within 2 % of the best one found and over ten times nearer the lobe than the
+// best single read.
 TEST(ShadeRoughTaps, TheConstantsAreTheTwoGaussianFitOfTheGgxLobe) {
   const LobeFit fit;
   double bestSingle = 1e30, sigma0 = 0.0;
@@ -80,18 +82,18 @@ TEST(ShadeRoughTaps, TheConstantsAreTheTwoGaussianFitOfTheGgxLobe) {
 }
 
 TEST(ShadeRoughTaps, LevelsFollowTheContract) {
-  const double core = -0.52, tail = 1.14, weight = 0.34;  // the contract's constants
+  using snell_test::kRoughCoreOffset, snell_test::kRoughTailOffset, snell_test::kRoughTailWeight;
   for (int levels : {2, 5, 10}) {
     const double top = levels - 1;
     for (int i = 1; i <= 200; ++i) {
       const float lod = 0.05f * float(i);
       const SnellRoughTaps t = snellRoughConeTaps(lod, levels);
       const double l = std::min(double(lod), top);
-      const double c = std::clamp(l + core, 0.0, top), w = std::clamp(l + tail, 0.0, top);
+      const double c = std::clamp(l + kRoughCoreOffset, 0.0, top), w = std::clamp(l + kRoughTailOffset, 0.0, top);
       EXPECT_NEAR(t.coreLod, c, 1e-6) << lod << " of " << levels;
       EXPECT_NEAR(t.tailLod, w, 1e-6) << lod << " of " << levels;
       EXPECT_GT(t.tailLod, t.coreLod);
-      EXPECT_NEAR(t.tailWeight, weight, 1e-7);
+      EXPECT_NEAR(t.tailWeight, kRoughTailWeight, 1e-7);
       EXPECT_EQ(snellRoughConeFetches(t), 2);
     }
   }
@@ -112,9 +114,9 @@ TEST(ShadeRoughTaps, LevelZeroAndBadInputReadOnceAtTheBase) {
   }
   // Beyond the chain: the tail at the top level, the core still below it.
   const SnellRoughTaps inf = snellRoughConeTaps(std::numeric_limits<float>::infinity(), 6);
-  EXPECT_NEAR(inf.coreLod, 5.0f - 0.52f, 1e-6);
+  EXPECT_NEAR(inf.coreLod, 5.0 + snell_test::kRoughCoreOffset, 1e-6);
   EXPECT_EQ(inf.tailLod, 5.0f);
-  EXPECT_NEAR(inf.tailWeight, 0.34f, 1e-7);
+  EXPECT_NEAR(inf.tailWeight, snell_test::kRoughTailWeight, 1e-7);
 }
 
 // The reads against the texture's own samples mixed in double; at level 0 the read is the texture's read to

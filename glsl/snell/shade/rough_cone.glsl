@@ -98,9 +98,9 @@ source: the rough BTDF of B. Walter, S. Marschner, H. Li, K. Torrance,
   Refraction" (TVCG 2012), cone tracing at the exit interface. GGX's slopes
   as Student's t with 2 degrees of freedom: E. Heitz, "Understanding the
   Masking-Shadowing Function in Microfacet-Based BRDFs" (JCGT 2014), its GGX
-  slope distribution P22; natural images' 1 / f^2 power
-  spectrum: D. J. Field, "Relations between the statistics of natural images
-  and the response properties of cortical cells" (JOSA A 1987). The scale was
+  slope distribution P22; natural images' 1 / f^2 power spectrum: D. J.
+  Field, "Relations between the statistics of natural images and the
+  response properties of cortical cells" (JOSA A 1987). The scale was
   fitted on the rough sphere_painting scenes against the lab's GGX ray trace
   and checked on the rough bunny (docs/lab/rough/README.md).
 */
