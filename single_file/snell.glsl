@@ -5515,6 +5515,104 @@ SNELL_FN float snellRoughnessToLod(float roughness, int levels) {
 
 #endif
 /*
+description: the scene colour's mip chain for rough reads, each level a
+  tent-filtered (separable [1 3 3 1] / 8) half of the one below instead of
+  glGenerateMipmap's 2x2 box. A box chain is not shift-invariant: what a
+  texel of level L holds depends on where the image falls on its 2^L grid,
+  so a blurred read changes as the camera moves by a fraction of a pixel,
+  and a third of its spread is texels moved to their block's centre. The
+  tent's response has a triple zero at the level's Nyquist frequency (the
+  box's a single one), so far less of the finer level aliases into the
+  coarser one, and a read at level L is close to a Gaussian of width
+  proportional to 2^L at every offset: the bell the rough cone's two taps
+  assume (rough_cone.glsl).
+use: level L+1 from level L, one fragment (or compute) invocation per texel
+     px of level L+1 (fragment: px = ivec2(gl_FragCoord.xy)):
+       out = snellColorPyramidReduce(colorTex, L, px);
+     a full GL pass is glsl/passes/color_pyramid.frag (driven level by level
+     by snell::gpu::ColorPyramidPass); C++: snell::snellBuildColorPyramid(base)
+     (include/snell/color_pyramid.hpp). Sample the result with trilinear
+     filtering (GL_LINEAR_MIPMAP_LINEAR), as snellRoughConeSample does.
+contract:
+  - level L has size (W, H) = SNELL_TEXTURE_SIZE(tex, L) (at least 1 each);
+    level L+1 has (max(1, W/2), max(1, H/2)) (GL's floor sizes); px is
+    clamped into it. lod must name a level of tex.
+  - per axis, the output texel's centre in level L's texel units (centres at
+    integers) is c = (px + 0.5) W / max(1, W/2) - 0.5 (2 px + 0.5 for even
+    W), and the four texels floor(c) - 1 .. floor(c) + 2, clamped to the
+    level's edge as GL's clamp-to-edge does, weigh (1 - f, 2 - f, 1 + f, f) / 4,
+    f = c - floor(c): the tent max(0, 1 - |x - c| / 2) at each, halved (the
+    four tent values sum to 2), so the weights sum to 1 (for even W, f = 1/2:
+    1/8, 3/8, 3/8, 1/8). The 2D weights are the product of the two axes'
+    (16 fetches).
+  - a constant level gives the same constant, and a level affine in x and y
+    the affine function at the centres away from the edge taps, both to
+    float rounding.
+  - a texel with a non-finite channel counts as 0 in every channel, so one
+    NaN or infinity does not spread through the chain; the result is finite
+    whenever the finite texels' sums do not overflow.
+  - the sums run in a fixed order (rows, then columns within a row), with c
+    and f computed from integers, so the GPU pass and the C++ build agree to
+    float rounding of the products.
+  - the standard deviation of a level-L trilinear read is about 0.65 x 2^L
+    texels of level 0 (the box chain's: 0.5 x 2^L): the chain's levels
+    variance 0.75 (4^L - 1) / 3, the bilinear read's 4^L / 6.
+source: the REDUCE of P. J. Burt, E. H. Adelson, "The Laplacian Pyramid as
+  a Compact Image Code" (IEEE Trans. Comm. 1983), eq. 1 (each level a
+  weighted sum of the one below, a separable, symmetric, normalised,
+  Gaussian-like kernel), here with the even-length kernel [1 3 3 1] / 8 that
+  centres each texel of level L+1 between its parents (GL's floor sizes).
+*/
+#ifndef SNELL_SHADE_COLOR_PYRAMID_GLSL
+#define SNELL_SHADE_COLOR_PYRAMID_GLSL
+
+
+/* A texel as the reduce reads it: a non-finite channel makes it 0. */
+SNELL_FN vec4 snellColorPyramidTexel(vec4 t) {
+  bool finite = SNELL_FINITE(t.x) && SNELL_FINITE(t.y) && SNELL_FINITE(t.z) && SNELL_FINITE(t.w);
+  return finite ? t : vec4(0.0f);
+}
+
+/* One axis of a reduce: the first of the four texels it reads and their weights. */
+struct SnellColorPyramidAxis {
+  int first;
+  vec4 weights;
+};
+
+SNELL_FN SnellColorPyramidAxis snellColorPyramidAxis(int px, int size) {
+  int w = max(size, 1);
+  int outSize = max(w / 2, 1);
+  int p = clamp(px, 0, outSize - 1);
+  // c = ((2 p + 1) w - outSize) / (2 outSize): its floor and fraction from integers (the numerator is >= 0).
+  int num = (2 * p + 1) * w - outSize;
+  int den = 2 * outSize;
+  int b = num / den;
+  float f = float(num - b * den) / float(den);
+  SnellColorPyramidAxis a;
+  a.first = b - 1;
+  a.weights = vec4(1.0f - f, 2.0f - f, 1.0f + f, f) * 0.25f;
+  return a;
+}
+
+SNELL_FN vec4 snellColorPyramidReduce(SNELL_TEX2D colorTex, int lod, ivec2 px) {
+  ivec2 size = max(SNELL_TEXTURE_SIZE(colorTex, lod), ivec2(1, 1));
+  SnellColorPyramidAxis ax = snellColorPyramidAxis(px.x, size.x);
+  SnellColorPyramidAxis ay = snellColorPyramidAxis(px.y, size.y);
+  vec4 sum = vec4(0.0f);
+  for (int j = 0; j < 4; ++j) {
+    int y = clamp(ay.first + j, 0, size.y - 1);
+    vec4 row = vec4(0.0f);
+    for (int i = 0; i < 4; ++i) {
+      int x = clamp(ax.first + i, 0, size.x - 1);
+      row += ax.weights[i] * snellColorPyramidTexel(SNELL_TEXEL_FETCH(colorTex, ivec2(x, y), lod));
+    }
+    sum += ay.weights[j] * row;
+  }
+  return sum;
+}
+
+#endif
+/*
 description: how wide rough (frosted) glass blurs what it shows, as a cone of
   light around the ray: from the roughness, the relative IOR and the path's
   lengths inside and behind the glass, its radius where the ray meets the
@@ -5531,6 +5629,13 @@ use: SnellRoughCone c = snellRoughConeTransmit(m.roughness, eta, insideLength, b
      vec4 color = snellRoughConeSample(sceneColor, uv, t);   // snellRoughConeFetches(t) fetches
      vec4 sky = snellRoughConeSampleEnvironment(environment, dirWorld,
                                                 snellRoughConeTaps(envLod, v.environmentLevels));
+  the scene colour's and the environment's chains built by the colour
+  pyramid (color_pyramid.glsl: snell::gpu::ColorPyramidPass after each draw
+  of the scene colour, snellBuildColorPyramid for an image), whose levels
+  blur as the bells the levels below assume. glGenerateMipmap's box chain
+  also works: the same level then blurs 0.77x as wide (part of it the
+  texels' misplacement, a third of its variance; define SNELL_ROUGH_CONE_LOD_SCALE 3.0 for the same
+  blur), and the read changes as the camera moves by a fraction of a pixel.
   roughness     perceptual roughness in [0, 1]; the GGX width is alpha = roughness^2
   eta           n_outside / n_inside at the entry (snellIorToEta(iorOutside, ior))
   insideLength  the path's length inside the glass (view units)
@@ -5541,8 +5646,10 @@ use: SnellRoughCone c = snellRoughConeTransmit(m.roughness, eta, insideLength, b
   levels        the texture's mip levels (base included); the environment's
                 base level is taken to span 2 pi radians over 2^(levels - 1)
                 texels (an equirectangular map with a full chain)
-options: SNELL_ROUGH_CONE_LOD_SCALE (default 3.0): texels of the chosen level
-  per unit of the cone's radius, fitted against the rough ray trace (below).
+options: SNELL_ROUGH_CONE_LOD_SCALE (default 2.32): texels of the chosen level
+  per unit of the cone's radius: 3, fitted against the rough ray trace with
+  a box chain (below), times 0.5 / 0.645, the two chains' widths at a level
+  (color_pyramid.glsl), so the colour pyramid blurs as wide as the fit.
   SNELL_ROUGH_CONE_TAIL_WEIGHT (default 0.34): the wide read's share of a rough
   read; 0 reads once, at the cone's level (one fetch instead of two).
   SNELL_ROUGH_CONE_CORE_OFFSET (default -0.52) and SNELL_ROUGH_CONE_TAIL_OFFSET
@@ -5618,7 +5725,8 @@ source: the rough BTDF of B. Walter, S. Marschner, H. Li, K. Torrance,
   Field, "Relations between the statistics of natural images and the
   response properties of cortical cells" (JOSA A 1987). The scale was
   fitted on the rough sphere_painting scenes against the lab's GGX ray trace
-  and checked on the rough bunny (docs/lab/rough/README.md).
+  through a box chain, checked on the rough bunny, and carried over to the
+  colour pyramid at equal width (docs/lab/rough/README.md).
 */
 #ifndef SNELL_SHADE_ROUGH_CONE_GLSL
 #define SNELL_SHADE_ROUGH_CONE_GLSL
@@ -6004,7 +6112,7 @@ SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
 #endif
 
 #ifndef SNELL_ROUGH_CONE_LOD_SCALE
-#  define SNELL_ROUGH_CONE_LOD_SCALE 3.0f
+#  define SNELL_ROUGH_CONE_LOD_SCALE 2.32f
 #endif
 #ifndef SNELL_ROUGH_CONE_TAIL_WEIGHT
 #  define SNELL_ROUGH_CONE_TAIL_WEIGHT 0.34f
@@ -7669,7 +7777,8 @@ contract:
     its firefly limit min(rgb, normalize(rgb) / saturate(b / 2)), which never
     acts (b < 0 in front of the camera makes saturate 0); the chains' own
     kernels (Filament's 21-tap Gaussian per level, HDRP's and Godot's
-    Gaussian pyramids: the host's mip chain is what is read); HDRP's halo
+    Gaussian pyramids, three.js's box chain: the host's mip chain is what
+    is read; the lab's is snell's colour pyramid); HDRP's halo
     shrink at the blurred level and its clear-coat roughness.
 source: three.js r187 (npm three@0.187.0, MIT),
   src/renderers/shaders/ShaderChunk/transmission_pars_fragment.glsl.js

@@ -792,6 +792,52 @@ SNELL_FN float snellRoughnessToLod(float roughness, int levels) {
 
 #endif
 
+#ifndef SNELL_SHADE_COLOR_PYRAMID_GLSL
+#define SNELL_SHADE_COLOR_PYRAMID_GLSL
+
+SNELL_FN vec4 snellColorPyramidTexel(vec4 t) {
+  bool finite = SNELL_FINITE(t.x) && SNELL_FINITE(t.y) && SNELL_FINITE(t.z) && SNELL_FINITE(t.w);
+  return finite ? t : vec4(0.0f);
+}
+
+struct SnellColorPyramidAxis {
+  int first;
+  vec4 weights;
+};
+
+SNELL_FN SnellColorPyramidAxis snellColorPyramidAxis(int px, int size) {
+  int w = max(size, 1);
+  int outSize = max(w / 2, 1);
+  int p = clamp(px, 0, outSize - 1);
+  int num = (2 * p + 1) * w - outSize;
+  int den = 2 * outSize;
+  int b = num / den;
+  float f = float(num - b * den) / float(den);
+  SnellColorPyramidAxis a;
+  a.first = b - 1;
+  a.weights = vec4(1.0f - f, 2.0f - f, 1.0f + f, f) * 0.25f;
+  return a;
+}
+
+SNELL_FN vec4 snellColorPyramidReduce(SNELL_TEX2D colorTex, int lod, ivec2 px) {
+  ivec2 size = max(SNELL_TEXTURE_SIZE(colorTex, lod), ivec2(1, 1));
+  SnellColorPyramidAxis ax = snellColorPyramidAxis(px.x, size.x);
+  SnellColorPyramidAxis ay = snellColorPyramidAxis(px.y, size.y);
+  vec4 sum = vec4(0.0f);
+  for (int j = 0; j < 4; ++j) {
+    int y = clamp(ay.first + j, 0, size.y - 1);
+    vec4 row = vec4(0.0f);
+    for (int i = 0; i < 4; ++i) {
+      int x = clamp(ax.first + i, 0, size.x - 1);
+      row += ax.weights[i] * snellColorPyramidTexel(SNELL_TEXEL_FETCH(colorTex, ivec2(x, y), lod));
+    }
+    sum += ay.weights[j] * row;
+  }
+  return sum;
+}
+
+#endif
+
 #ifndef SNELL_SHADE_ROUGH_CONE_GLSL
 #define SNELL_SHADE_ROUGH_CONE_GLSL
 
@@ -2648,7 +2694,7 @@ SNELL_FN vec4 snellSampleEquirect(SNELL_TEX2D env, vec3 dir, float lod) {
 #endif
 
 #ifndef SNELL_ROUGH_CONE_LOD_SCALE
-#  define SNELL_ROUGH_CONE_LOD_SCALE 3.0f
+#  define SNELL_ROUGH_CONE_LOD_SCALE 2.32f
 #endif
 #ifndef SNELL_ROUGH_CONE_TAIL_WEIGHT
 #  define SNELL_ROUGH_CONE_TAIL_WEIGHT 0.34f

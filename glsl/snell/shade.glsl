@@ -12,6 +12,7 @@
 #include "shade/refractive_texture_map.glsl"
 #include "shade/dispersion.glsl"
 #include "shade/roughness.glsl"
+#include "shade/color_pyramid.glsl"
 #include "shade/rough_cone.glsl"
 #include "shade/environment_cube_face.glsl"
 #include "shade/environment.glsl"

@@ -7,4 +7,5 @@ namespace snell {
 #include "snell/snell.glsl"
 }  // namespace snell
 
+#include "color_pyramid.hpp"
 #include "depth_pyramid.hpp"

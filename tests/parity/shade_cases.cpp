@@ -506,6 +506,37 @@ std::vector<ParityIO> roughConeInputs() {
   }
   return v;
 }
+
+// A colour texel with each channel hostile (NaN, infinities, denormals, huge) at times, for the colour
+// pyramid's reading of it; and an output texel and a level size along one axis of its reduce (even, odd,
+// 1, below 1; the texel in range, beyond it, negative).
+std::vector<ParityIO> colorTexelInputs() {
+  InputGen g(631);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < 10000; ++i) {
+    vec4 t(g.uniform(-2.0f, 8.0f), g.uniform(0.0f, 1.0f), g.uniform(0.0f, 100.0f), g.uniform(0.0f, 1.0f));
+    for (int k = 0; k < 4; ++k)
+      if (g.chance(0.1f)) t[k] = hostile(g);
+    ParityIO in{};
+    in.v[0] = t;
+    v.push_back(in);
+  }
+  return v;
+}
+
+std::vector<ParityIO> colorAxisInputs() {
+  InputGen g(632);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < 10000; ++i) {
+    const int size = g.chance(0.05f) ? g.integer(-3, 1) : g.integer(1, 4096);
+    const int half = std::max(1, size / 2);
+    const int px = g.chance(0.05f) ? g.integer(-5, half + 5) : g.integer(0, half - 1);
+    ParityIO in{};
+    in.v[0] = vec4(float(px), float(size), 0.0f, 0.0f);
+    v.push_back(in);
+  }
+  return v;
+}
 }  // namespace
 
 namespace parity_shade {
@@ -865,5 +896,21 @@ SNELL_PARITY_CASE(snellRoughConeFetches, roughConeInputs,
                   (int, fetches, 0, exact),
                   {},
                   fetches = snellRoughConeFetches(snellRoughConeTaps(lod, levels));)
+
+// Non-finite channels are tested by their bits: the same texel on every runtime.
+SNELL_PARITY_CASE(snellColorPyramidTexel, colorTexelInputs,
+                  (vec4, texel, 0),
+                  (vec4, read, 0, exact),
+                  {},
+                  read = snellColorPyramidTexel(texel);)
+
+// Integer arithmetic and one division of integers' floats: the first texel exactly, the weights to rounding.
+SNELL_PARITY_CASE(snellColorPyramidAxis, colorAxisInputs,
+                  (int, px, 0)(int, size, 1),
+                  (int, first, 0, exact)(vec4, weights, 1, within(1e-6f, 1e-6f)),
+                  {},
+                  SnellColorPyramidAxis a = snellColorPyramidAxis(px, size);
+                  first = a.first;
+                  weights = a.weights;)
 
 }  // namespace parity_shade

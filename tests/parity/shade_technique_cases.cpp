@@ -47,6 +47,36 @@ inline std::vector<ParityIO> roughReadInputs() {
   return v;
 }
 
+// The colour pyramid's reduce of the technique's scene colour (96 x 96: even levels, then 3 -> 1) and of its
+// environment: an output texel of level lod + 1 (at times beyond it: clamped).
+inline std::vector<ParityIO> colorReduceInputs() {
+  buildTextures();
+  InputGen g(833);
+  std::vector<ParityIO> v;
+  for (int i = 0; i < kInputs; ++i) {
+    const int which = g.chance(0.5f) ? 0 : 1;
+    const Texture2D& t = which ? techEnv : techSceneColor;
+    const int lod = g.integer(0, t.levelCount() - 2);
+    const glm::ivec2 next = t.size(lod + 1);
+    const int slack = g.chance(0.05f) ? 3 : 0;
+    ParityIO in{};
+    in.v[0] = glm::vec4(float(g.integer(-slack, next.x - 1 + slack)), float(g.integer(-slack, next.y - 1 + slack)),
+                        float(lod), float(which));
+    v.push_back(in);
+  }
+  return v;
+}
+
+SNELL_PARITY_CASE(snellColorPyramidReduce, colorReduceInputs,
+                  (ivec2, px, 0)(int, lod, 2)(bool, environment, 3),
+                  (vec4, texel, 0, within(1e-5f, 1e-5f)),
+                  techExtras(),
+                  if (environment) {
+                    texel = snellColorPyramidReduce(techEnv, lod, px);
+                  } else {
+                    texel = snellColorPyramidReduce(techSceneColor, lod, px);
+                  })
+
 SNELL_PARITY_CASE(snellRoughConeSample, roughReadInputs,
                   (vec2, uv, 0)(float, lod, 2)(int, levels, 3),
                   (vec4, color, 0, within(1e-4f, 1e-4f)),

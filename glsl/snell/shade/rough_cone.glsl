@@ -15,6 +15,13 @@ use: SnellRoughCone c = snellRoughConeTransmit(m.roughness, eta, insideLength, b
      vec4 color = snellRoughConeSample(sceneColor, uv, t);   // snellRoughConeFetches(t) fetches
      vec4 sky = snellRoughConeSampleEnvironment(environment, dirWorld,
                                                 snellRoughConeTaps(envLod, v.environmentLevels));
+  the scene colour's and the environment's chains built by the colour
+  pyramid (color_pyramid.glsl: snell::gpu::ColorPyramidPass after each draw
+  of the scene colour, snellBuildColorPyramid for an image), whose levels
+  blur as the bells the levels below assume. glGenerateMipmap's box chain
+  also works: the same level then blurs 0.77x as wide (part of it the
+  texels' misplacement, a third of its variance; define SNELL_ROUGH_CONE_LOD_SCALE 3.0 for the same
+  blur), and the read changes as the camera moves by a fraction of a pixel.
   roughness     perceptual roughness in [0, 1]; the GGX width is alpha = roughness^2
   eta           n_outside / n_inside at the entry (snellIorToEta(iorOutside, ior))
   insideLength  the path's length inside the glass (view units)
@@ -25,8 +32,10 @@ use: SnellRoughCone c = snellRoughConeTransmit(m.roughness, eta, insideLength, b
   levels        the texture's mip levels (base included); the environment's
                 base level is taken to span 2 pi radians over 2^(levels - 1)
                 texels (an equirectangular map with a full chain)
-options: SNELL_ROUGH_CONE_LOD_SCALE (default 3.0): texels of the chosen level
-  per unit of the cone's radius, fitted against the rough ray trace (below).
+options: SNELL_ROUGH_CONE_LOD_SCALE (default 2.32): texels of the chosen level
+  per unit of the cone's radius: 3, fitted against the rough ray trace with
+  a box chain (below), times 0.5 / 0.645, the two chains' widths at a level
+  (color_pyramid.glsl), so the colour pyramid blurs as wide as the fit.
   SNELL_ROUGH_CONE_TAIL_WEIGHT (default 0.34): the wide read's share of a rough
   read; 0 reads once, at the cone's level (one fetch instead of two).
   SNELL_ROUGH_CONE_CORE_OFFSET (default -0.52) and SNELL_ROUGH_CONE_TAIL_OFFSET
@@ -102,7 +111,8 @@ source: the rough BTDF of B. Walter, S. Marschner, H. Li, K. Torrance,
   Field, "Relations between the statistics of natural images and the
   response properties of cortical cells" (JOSA A 1987). The scale was
   fitted on the rough sphere_painting scenes against the lab's GGX ray trace
-  and checked on the rough bunny (docs/lab/rough/README.md).
+  through a box chain, checked on the rough bunny, and carried over to the
+  colour pyramid at equal width (docs/lab/rough/README.md).
 */
 #ifndef SNELL_SHADE_ROUGH_CONE_GLSL
 #define SNELL_SHADE_ROUGH_CONE_GLSL
@@ -111,7 +121,7 @@ source: the rough BTDF of B. Walter, S. Marschner, H. Li, K. Torrance,
 #include "environment.glsl"
 
 #ifndef SNELL_ROUGH_CONE_LOD_SCALE
-#  define SNELL_ROUGH_CONE_LOD_SCALE 3.0f
+#  define SNELL_ROUGH_CONE_LOD_SCALE 2.32f
 #endif
 #ifndef SNELL_ROUGH_CONE_TAIL_WEIGHT
 #  define SNELL_ROUGH_CONE_TAIL_WEIGHT 0.34f

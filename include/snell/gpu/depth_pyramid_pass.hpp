@@ -48,17 +48,7 @@ class DepthPyramid {
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     gl.BindTexture(GL_TEXTURE_2D, 0);
-    for (int lod = 0; lod < levels(); ++lod) {
-      GLuint fbo = 0;
-      gl.GenFramebuffers(1, &fbo);
-      fbos_.emplace_back(gl, fbo);
-      gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
-      gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, id, lod);
-      const GLenum buf = GL_COLOR_ATTACHMENT0;
-      gl.DrawBuffers(1, &buf);
-      checkFramebufferComplete(gl, "depth pyramid level " + std::to_string(lod) + " framebuffer");
-    }
-    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    for (int lod = 0; lod < levels(); ++lod) fbos_.push_back(levelFramebuffer(gl, id, lod, "depth pyramid"));
     checkGl(gl, "depth pyramid allocation");
   }
 
@@ -69,14 +59,7 @@ class DepthPyramid {
 
   // One level, read back (glReadPixels from its framebuffer).
   snell::Image readLevel(int lod) const {
-    const ivec2 s = size(lod);
-    snell::Image img(s.x, s.y);
-    gl_->BindFramebuffer(GL_FRAMEBUFFER, framebuffer(lod));
-    gl_->ReadBuffer(GL_COLOR_ATTACHMENT0);
-    gl_->ReadPixels(0, 0, s.x, s.y, GL_RGBA, GL_FLOAT, img.texels.data());
-    gl_->BindFramebuffer(GL_FRAMEBUFFER, 0);
-    checkGl(*gl_, "DepthPyramid::readLevel (glReadPixels)");
-    return img;
+    return readLevelFramebuffer(*gl_, framebuffer(lod), size(lod), "DepthPyramid::readLevel");
   }
 
  private:

@@ -96,6 +96,8 @@ namespace snell::gpu {
   X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                      \
   X(PFNGLTEXIMAGE2DPROC, TexImage2D)                            \
   X(PFNGLTEXPARAMETERIPROC, TexParameteri)                      \
+  X(PFNGLGETTEXPARAMETERIVPROC, GetTexParameteriv)              \
+  X(PFNGLGETTEXLEVELPARAMETERIVPROC, GetTexLevelParameteriv)    \
   X(PFNGLGENERATEMIPMAPPROC, GenerateMipmap)                    \
   X(PFNGLGETTEXIMAGEPROC, GetTexImage)                          \
   X(PFNGLBINDIMAGETEXTUREPROC, BindImageTexture)                \

@@ -286,6 +286,33 @@ inline void checkFramebufferComplete(const GlApi& gl, const std::string& what) {
                      : ""));
 }
 
+// A framebuffer that draws into level `lod` of a 2D texture through colour attachment 0 (a pyramid's level),
+// checked complete; GL_FRAMEBUFFER is left unbound. `what` names it in errors.
+inline GlHandle<detail::DeleteFramebuffer> levelFramebuffer(const GlApi& gl, GLuint texture, int lod,
+                                                           const std::string& what) {
+  GLuint fbo = 0;
+  gl.GenFramebuffers(1, &fbo);
+  GlHandle<detail::DeleteFramebuffer> handle(gl, fbo);
+  gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+  gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, lod);
+  const GLenum buf = GL_COLOR_ATTACHMENT0;
+  gl.DrawBuffers(1, &buf);
+  checkFramebufferComplete(gl, what + " level " + std::to_string(lod) + " framebuffer");
+  gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+  return handle;
+}
+
+// The RGBA float texels of a size.x x size.y level drawn by `fbo` (levelFramebuffer), read back.
+inline snell::Image readLevelFramebuffer(const GlApi& gl, GLuint fbo, glm::ivec2 size, const std::string& what) {
+  snell::Image img(size.x, size.y);
+  gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+  gl.ReadBuffer(GL_COLOR_ATTACHMENT0);
+  gl.ReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_FLOAT, img.texels.data());
+  gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+  checkGl(gl, what + " (glReadPixels)");
+  return img;
+}
+
 // An off-screen render target: RGBA32F colour attachments (float, so shading
 // results come back unquantized) and a DEPTH_COMPONENT32F depth texture
 // (a texture, not a renderbuffer, so refraction passes can sample it).

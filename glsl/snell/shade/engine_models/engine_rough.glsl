@@ -86,7 +86,8 @@ contract:
     its firefly limit min(rgb, normalize(rgb) / saturate(b / 2)), which never
     acts (b < 0 in front of the camera makes saturate 0); the chains' own
     kernels (Filament's 21-tap Gaussian per level, HDRP's and Godot's
-    Gaussian pyramids: the host's mip chain is what is read); HDRP's halo
+    Gaussian pyramids, three.js's box chain: the host's mip chain is what
+    is read; the lab's is snell's colour pyramid); HDRP's halo
     shrink at the blurred level and its clear-coat roughness.
 source: three.js r187 (npm three@0.187.0, MIT),
   src/renderers/shaders/ShaderChunk/transmission_pars_fragment.glsl.js
