@@ -198,7 +198,7 @@ TEST(LabRun, ADispersiveObjectIsDrawnWithAPathPerChannel) {
 }
 
 // Rough glass: the truth samples its microfacets and says how noisy it is; the rows blur their colour reads
-// through the mip chains, which the GPU builds (glGenerateMipmap) and the C++ side reads back, so both sides
+// through the mip chains, which the GPU builds (the colour pyramid pass) and the C++ side reads back, so both sides
 // still agree pixel for pixel (a C++ side without those levels would read level 0 and differ wherever the
 // chain blurs). A smooth ball's table has no truth noise at all.
 TEST(LabRun, ARoughObjectIsBlurredAlikeOnBothSidesAndItsTruthsNoiseReported) {

@@ -4,6 +4,8 @@
 
 #include "lab/error.hpp"
 
+#include <snell/color_pyramid.hpp>
+#include <snell/gpu/color_pyramid_pass.hpp>
 #include <snell/gpu/context.hpp>
 #include <snell/gpu/depth_pyramid_pass.hpp>
 #include <snell/gpu/include_flattener.hpp>
@@ -176,9 +178,7 @@ Texture2D environmentTexture(const SceneFrame& frame) {
   const float s = frame.environment.intensity();
   for (vec4& t : img.texels) t = vec4(vec3(t) * s, 1.0f);
   if (!roughObjects(frame)) return Texture2D(std::move(img), Filter::Linear);
-  Texture2D t(std::move(img), Filter::Linear, MipFilter::Linear);
-  t.generateMipmaps();
-  return t;
+  return snellBuildColorPyramid(std::move(img));
 }
 
 namespace {
@@ -319,6 +319,10 @@ struct GpuLab::Impl {
   std::vector<gpu::Program> refract;
   gpu::Framebuffer sceneFb, fullFb, passFb;
   gpu::DepthPyramid scenePyramid, fullPyramid;
+  // With a rough object: the colour chains of the scene layer and of the whole scene (shade/color_pyramid.glsl),
+  // over sceneFb's and fullFb's colour textures: declared after them, so destroyed first.
+  std::unique_ptr<gpu::ColorPyramidPass> colorPyramidPass;
+  std::unique_ptr<gpu::ColorPyramid> sceneColorPyramid, fullColorPyramid;
   gpu::VertexArray vao;
   std::vector<std::unique_ptr<ObjectPasses>> objects;
   std::unique_ptr<gpu::Texture> colorCopy;  // setColorCopy: what the engine rows read instead of fullFb's colour
@@ -366,20 +370,21 @@ struct GpuLab::Impl {
       pyramidPass.build(o.backPyramid, o.backFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 0.0f);
     }
     for (const Painting& painting : frame.paintings) paintings.push_back(std::make_unique<PaintingBuffers>(gl, painting));
-    // The scene colour is read with bilinear filtering (no mips) on both sides; with a rough object, snell's
-    // rows read the layer's trilinear mip chain, which drawLayer regenerates after each draw.
+    // The scene colour is read with bilinear filtering (no mips) on both sides; with a rough object, through
+    // the trilinear chains that drawStatic and drawLayer rebuild after each draw.
     for (GLuint colorTexture : {sceneFb.colorTexture(0), fullFb.colorTexture(0)}) {
       gl.BindTexture(GL_TEXTURE_2D, colorTexture);
       gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
       gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     }
-    // The whole scene's colour too: the engine rows read it through their engines' blurs (engine_rough.glsl).
-    if (rough)
-      for (GLuint colorTexture : {sceneFb.colorTexture(0), fullFb.colorTexture(0)}) {
-        gl.BindTexture(GL_TEXTURE_2D, colorTexture);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, mipLevels(bufferWidth, bufferHeight) - 1);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-      }
+    // With a rough object both colours carry the colour pyramid (trilinear): the chain snell's rough reads
+    // expect, and the whole scene's, which the engine rows read through their engines' blurs
+    // (engine_rough.glsl; Filament, HDRP and Godot build Gaussian chains of their own, three.js a box one).
+    if (rough) {
+      colorPyramidPass = std::make_unique<gpu::ColorPyramidPass>(gl, dirs.snellGlsl);
+      sceneColorPyramid = std::make_unique<gpu::ColorPyramid>(gl, sceneFb.colorTexture(0), bufferWidth, bufferHeight);
+      fullColorPyramid = std::make_unique<gpu::ColorPyramid>(gl, fullFb.colorTexture(0), bufferWidth, bufferHeight);
+    }
     const GLint normalGl = k.normalFilter == NormalFilter::Linear ? GL_LINEAR : GL_NEAREST;
     std::vector<GLuint> normalTextures = {sceneFb.colorTexture(1), fullFb.colorTexture(1)};
     for (const auto& o : objects) {
@@ -520,12 +525,7 @@ struct GpuLab::Impl {
                         o->rect);
     }
     pyramidPass.build(fullPyramid, fullFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 1.0f);
-    if (rough) {
-      gl.BindTexture(GL_TEXTURE_2D, fullFb.colorTexture(0));
-      gl.GenerateMipmap(GL_TEXTURE_2D);
-      gl.BindTexture(GL_TEXTURE_2D, 0);
-      gpu::checkGl(gl, "the whole scene's colour: its mip chain");
-    }
+    if (rough) colorPyramidPass->build(*fullColorPyramid);
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 
@@ -556,12 +556,7 @@ struct GpuLab::Impl {
       gpu::checkGl(gl, "scene layer: objects drawn before");
     }
     pyramidPass.build(scenePyramid, sceneFb.depthTexture(), k.params.zNear, k.params.zFar, SNELL_DEPTH_GL, 1.0f);
-    if (rough) {
-      gl.BindTexture(GL_TEXTURE_2D, sceneFb.colorTexture(0));
-      gl.GenerateMipmap(GL_TEXTURE_2D);
-      gl.BindTexture(GL_TEXTURE_2D, 0);
-      gpu::checkGl(gl, "scene layer: its colour's mip chain");
-    }
+    if (rough) colorPyramidPass->build(*sceneColorPyramid);
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 

@@ -48,10 +48,10 @@ struct StaticBuffers {
   // k + 1 painting k, -(o + 1) object o (drawn before). The lab's leak count names what leaked with it; no
   // technique reads it, and the memory report leaves it out.
   Image sceneSurface, fullSurface;
-  // With a rough object: the scene layer's colour mip levels 1, 2, ... as the GPU generated them (its
-  // glGenerateMipmap), which the C++ side samples as they are.
+  // With a rough object: the scene layer's colour mip levels 1, 2, ... as the GPU built them (its colour
+  // pyramid pass, shade/color_pyramid.glsl), which the C++ side samples as they are.
   std::vector<Image> sceneColorMips;
-  std::vector<Image> fullColorMips;  // ... and of the whole scene's colour (the engine rows'), with a rough object
+  std::vector<Image> fullColorMips;  // ... and of the whole scene's colour (the engine rows'), the same pass
   Image backDepth, backNormal;                // depth in .x (0 = empty)
   Image frontDepth, frontNormal;              // the object's front faces: depth in .x (1 = empty)
 };
@@ -137,8 +137,9 @@ ShadeConstants shadeConstants(const SceneFrame& frame, std::size_t object, int m
 // keep the file's order. Each object's exit and reflect slots read the ones drawn before it.
 std::vector<std::size_t> drawOrder(const std::vector<ShadeConstants>& objects);
 
-// The environment as both sides sample it: intensity applied, GL_LINEAR, clamp to edge; with a rough
-// object, its box-filtered mip chain too (trilinear).
+// The environment as every row samples it: intensity applied, GL_LINEAR, clamp to edge; with a rough
+// object, its colour pyramid too (snellBuildColorPyramid, trilinear): the chain snell's rough reads expect,
+// and, like the engines' prefiltered environments, a smooth one.
 Texture2D environmentTexture(const SceneFrame& frame);
 // Whether an object of the frame is rough (then the scene colour and the environment carry mip chains).
 bool roughObjects(const SceneFrame& frame);
