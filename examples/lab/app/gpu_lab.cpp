@@ -173,12 +173,16 @@ int mipLevels(int width, int height) {
   return levels;
 }
 
-Texture2D environmentTexture(const SceneFrame& frame) {
+Image environmentImage(const SceneFrame& frame) {
   Image img = frame.environment.image();
   const float s = frame.environment.intensity();
   for (vec4& t : img.texels) t = vec4(vec3(t) * s, 1.0f);
-  if (!roughObjects(frame)) return Texture2D(std::move(img), Filter::Linear);
-  return snellBuildColorPyramid(std::move(img));
+  return img;
+}
+
+Texture2D environmentTexture(const SceneFrame& frame) {
+  if (!roughObjects(frame)) return Texture2D(environmentImage(frame), Filter::Linear);
+  return snellBuildColorPyramid(environmentImage(frame));
 }
 
 namespace {
@@ -635,21 +639,10 @@ StaticBuffers GpuLab::readStatic(std::size_t object) const {
   b.sceneColor = impl_->sceneFb.readColor(0);
   b.fullColor = impl_->fullFb.readColor(0);
   if (impl_->rough) {
-    const gpu::GlApi& gl = impl_->gl;
-    gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
-    const auto readMips = [&](GLuint texture, const Image& base, std::vector<Image>& mips) {
-      gl.BindTexture(GL_TEXTURE_2D, texture);
-      for (int lod = 1; lod < mipLevels(impl_->bufferWidth, impl_->bufferHeight); ++lod) {
-        const Image& above = lod == 1 ? base : mips.back();
-        Image level(std::max(1, above.width / 2), std::max(1, above.height / 2));
-        gl.GetTexImage(GL_TEXTURE_2D, lod, GL_RGBA, GL_FLOAT, level.texels.data());
-        mips.push_back(std::move(level));
-      }
-    };
-    readMips(impl_->sceneFb.colorTexture(0), b.sceneColor, b.sceneColorMips);
-    readMips(impl_->fullFb.colorTexture(0), b.fullColor, b.fullColorMips);
-    gl.BindTexture(GL_TEXTURE_2D, 0);
-    gpu::checkGl(gl, "reading the scene layers' mip chains (glGetTexImage)");
+    for (int lod = 1; lod < impl_->sceneColorPyramid->levels(); ++lod) {
+      b.sceneColorMips.push_back(impl_->sceneColorPyramid->readLevel(lod));
+      b.fullColorMips.push_back(impl_->fullColorPyramid->readLevel(lod));
+    }
   }
   b.sceneNormal = impl_->sceneFb.readColor(1);
   b.sceneDepth = impl_->sceneFb.readDepth();

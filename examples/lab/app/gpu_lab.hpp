@@ -137,6 +137,8 @@ ShadeConstants shadeConstants(const SceneFrame& frame, std::size_t object, int m
 // keep the file's order. Each object's exit and reflect slots read the ones drawn before it.
 std::vector<std::size_t> drawOrder(const std::vector<ShadeConstants>& objects);
 
+// The environment's picture, its intensity applied (what environmentTexture samples, without a chain).
+Image environmentImage(const SceneFrame& frame);
 // The environment as every row samples it: intensity applied, GL_LINEAR, clamp to edge; with a rough
 // object, its colour pyramid too (snellBuildColorPyramid, trilinear): the chain snell's rough reads expect,
 // and, like the engines' prefiltered environments, a smooth one.

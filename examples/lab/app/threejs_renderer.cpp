@@ -32,7 +32,7 @@ ThreeJsRender renderWithThreeJs(const std::string& gltf, const Scene& scene, con
   fs::create_directories(workDir, ec);
   if (ec) throw Error(ErrorKind::Io, "cannot create " + workDir.string() + ": " + ec.message());
   const Camera& c = frame.camera;
-  const Image environment = environmentTexture(frame).level(0);
+  const Image environment = environmentImage(frame);
   writeFloats(workDir / "environment.f32", environment);
   const nlohmann::json camera = {{"position", vec(c.position)},  {"target", vec(c.target)}, {"up", vec(c.up)},
                                  {"fovYDegrees", c.fovYDegrees}, {"near", c.zNear},         {"far", c.zFar},

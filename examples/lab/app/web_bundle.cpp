@@ -178,7 +178,7 @@ void writeWebBundle(const fs::path& dir, const std::string& sceneName, const Sce
     paintings.push_back(pj);
   }
   j["paintings"] = paintings;
-  j["environment"] = writeImage(dir, "environment.f32", environmentTexture(frame).level(0));
+  j["environment"] = writeImage(dir, "environment.f32", environmentImage(frame));
 
   // Every technique a page can run (the table's contenders), with the strategies its slots call on any object
   // as the lab configures them (one program shades every object, as the lab's); and the lab's picture of each
