@@ -302,6 +302,87 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
 
 #endif
 /*
+description: refraction at a rough (GGX) interface as one ray: Snell's law
+  about the mean normal, with cos_t^2 replaced by its mean over the
+  microfacets' slopes, so that the transmitted direction turns smoothly
+  through the critical angle instead of snapping to the surface's tangent.
+use: SnellRefraction r = snellRefractRough(incident, normal, eta, alpha, SNELL_TIR_CRITICAL);
+  incident, normal, eta, policy  as snellRefract (optics/refract.glsl)
+  alpha     the GGX width of the interface's microfacet slopes
+            (snellRoughConeSlope(roughness), shade/rough_cone.glsl); below
+            SNELL_FLT_MIN (0, negative, denormal: GPUs may flush them) or
+            NaN: a smooth interface
+contract:
+  - alpha below SNELL_FLT_MIN or NaN, an invalid r, TIR under ZERO or
+    REFLECT, or eta >= 8 (no pair of real materials): exactly
+    r = snellRefract(incident, normal, eta, policy), bit for bit.
+  - otherwise r.valid and r.tir are snellRefract's (TIR about the mean normal,
+    so that a caller's choice between leaving and reflecting is unchanged),
+    and r.direction is the unit vector
+      t = eta i + (eta cos_i - sqrt(c')) n,  c' = min(1, (c + sqrt(c^2 + w^2)) / 2),
+    with i, n, cos_i as snellRefract forms them (n facing i), the smooth
+    c = cos_t^2 = (1 - eta^2) + eta^2 cos_i^2 (negative under TIR) and
+    w = 2 eta^2 sin_i cos_i min(alpha, 1);
+    (c + sqrt(c^2 + w^2)) / 2 is evaluated as w^2 / (2 (sqrt(c^2 + w^2) - c))
+    for c < 0, where the first form cancels.
+  - c' >= max(c, 0): the rough ray leaves at least as near the normal as the
+    smooth one where Snell allows it, and leaves the surface (c' > 0) under
+    TIR, where the smooth ray grazes; c' -> max(c, 0) far from the critical angle (|c| >> w), and
+    c' = max(c, 0) at normal and grazing incidence (w = 0); t is a continuous function of the
+    incidence with a bounded derivative at the critical angle (the smooth
+    cos_t = sqrt(c) has an infinite one there: a ray near it swings over the
+    scene behind as the object or the camera moves by a fraction of a pixel).
+  - every output is finite; never NaN.
+derivation: a microfacet tilted by slope x in the plane of incidence meets
+  the ray at the incidence angle theta_i - atan(x), so to first order in x its
+  cos_t^2 is c + k x, k = dc/dtheta_i = -2 eta^2 sin_i cos_i. GGX's slopes
+  (Walter et al. 2007, eq. 33 written over slopes: P(x, y) = 1 / (pi alpha^2
+  (1 + (x^2 + y^2) / alpha^2)^2)) have the marginal p(x) = alpha^2 / (2 (x^2 +
+  alpha^2)^(3/2)) in the plane, a Student's t with 2 degrees of freedom, and
+  for it the mean of max(c + k x, 0) (a facet past TIR leaves along the
+  surface, as SNELL_TIR_CRITICAL has it) is exactly (c + sqrt(c^2 + w^2)) / 2
+  with w = |k| alpha (its second derivative in c is the density of k x,
+  w^2 / (2 (c^2 + w^2)^(3/2))). The direction is the
+  one whose cos_t^2 is that mean. First order in the tilt: against the exact
+  mean over both slopes (tests/unit/optics_refract_rough_test.cpp) c' is
+  0.002 high at the critical angle for alpha 0.0225 (roughness 0.15), 0.026
+  for alpha 0.09 (0.3), 0.14 for alpha 0.25 (0.5), where the concave c and the
+  tilts across the plane of incidence pull the exact mean lower.
+source: B. Walter, S. Marschner, H. Li, K. Torrance, "Microfacet Models for
+  Refraction through Rough Surfaces", EGSR 2007, eq. 33 (GGX) and eq. 40
+  (refraction about a microfacet normal); Snell's law as optics/refract.glsl.
+*/
+#ifndef SNELL_OPTICS_REFRACT_ROUGH_GLSL
+#define SNELL_OPTICS_REFRACT_ROUGH_GLSL
+
+
+
+
+SNELL_FN SnellRefraction snellRefractRough(vec3 incident, vec3 normal, float eta, float alpha, int policy) {
+  SnellRefraction r = snellRefract(incident, normal, eta, policy);
+  if (!(alpha >= SNELL_FLT_MIN) || !r.valid || (r.tir && policy != SNELL_TIR_CRITICAL) || eta >= 8.0f) {
+    return r;
+  }
+  vec3 i = snellSafeNormalize(incident);
+  vec3 n = snellSafeNormalize(normal);
+  float cosI = -dot(n, i);
+  if (cosI < 0.0f) {
+    n = -n;
+    cosI = -cosI;
+  }
+  cosI = min(cosI, 1.0f);
+  float sinI = length(i + cosI * n);
+  float eta2 = eta * eta;
+  float c = (1.0f - eta2) + eta2 * (cosI * cosI);
+  float w = 2.0f * eta2 * sinI * cosI * min(alpha, 1.0f);
+  float root = sqrt(c * c + w * w);
+  float mean = c < 0.0f ? (w * w) / (2.0f * (root - c)) : 0.5f * (c + root);
+  r.direction = snellSafeNormalize(eta * i + (eta * cosI - sqrt(min(mean, 1.0f))) * n);
+  return r;
+}
+
+#endif
+/*
 description: G. Oliveira's approximate refracted ray: the incident direction
   plus the inverted normal weighted by a made-up "refraction factor",
   normalized. No angles, no square root of Snell's law; the factor has nothing
@@ -6651,7 +6732,11 @@ contract:
     exitUv = the hit uv, exitNormal = N2, pathLength = entryLength = |P2 -
     P1| (entryLength keeps the first segment's when bounces add more), tir = TIR at
     the second interface (T2 follows the policy: critical-angle tangent or
-    mirror; the reflected ray is not traced further).
+    mirror; the reflected ray is not traced further), exitIncident = T1 (the
+    ray T2 was refracted from, so that a caller can refract it again, as
+    two_interface_shade.glsl does for rough glass); exitIncident = 0 wherever
+    T2 is not snellRefract's result at the last interface (a fallback, an
+    invalid path).
   - fallback (fellBack = true, the path still valid): no back hit (invalid or
     off-screen texel, empty range; a hit so far that |P2 - P1| overflows a
     float, beyond ~1.8e19 view units, counts as none), a zero or NaN stored
@@ -6668,7 +6753,8 @@ contract:
     marchSteps, planeIterations) finds where R leaves; N there is read from that layer's normals (as N2,
     1 fetch), flipped to face R, and the ray refracts out, or reflects again,
     the last allowed interface under tirPolicy. bounces = the reflections
-    taken (one that ends as a fallback counts); exitPoint, exitUv, exitNormal are the last interface's;
+    taken (one that ends as a fallback counts); exitPoint, exitUv, exitNormal are the last interface's,
+    exitIncident the ray inside that met it;
     exitFront = the last interface is a front face (T2 heads towards the
     camera's side: two_interface_shade.glsl resolves it with the reflect
     slot); pathLength adds every segment inside; tir = TIR at the last
@@ -6724,6 +6810,7 @@ struct SnellTwoInterfacePath {
   bool fellBack;
   bool valid;
   bool exitFront;       // the last interface is a front face (after a bounce): T2 heads to the camera's side
+  vec3 exitIncident;    // the ray inside that met the last interface, when T2 is its refraction (else 0)
 };
 
 /* Wyman 2005 / Oliveira & Brauwers 2007 sec. 3: P1, T1 -> P2 (back-face buffer), N2 -> T2 */
@@ -6744,6 +6831,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.fellBack = true;
   p.valid = false;
   p.exitFront = false;
+  p.exitIncident = vec3(0.0f, 0.0f, 0.0f);
   SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy);
   if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_FINITE(frontPosition.x) ||
       !SNELL_FINITE(frontPosition.y) || !SNELL_FINITE(frontPosition.z)) {
@@ -6817,6 +6905,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
         return p;
       }
       p.exitDirection = r2.direction;
+      p.exitIncident = d;
       p.fellBack = false;
       return p;
     }
@@ -6954,6 +7043,13 @@ contract (snellTwoInterfaceRefraction):
     no bounces, no fallback, insideHit = true (the single / green trace's).
     The surface is shaded as the opaque surface it is: its colour, absorbed
     over the path inside, no second refraction.
+  - rough exit (snellRoughConeSlope(m.roughness) = alpha > 0): where the
+    path left by refraction (its exitIncident is not 0; not inside), T2 =
+    snellRefractRough(exitIncident, exitNormal, 1 / eta of that trace, alpha,
+    m.tirPolicy).direction (optics/refract_rough.glsl: Snell's law with cos_t^2
+    averaged over the exit interface's microfacet slopes, smooth through the
+    critical angle), which the exit slot resolves and exitDirection reports;
+    tir stays the mean normal's. Smooth glass keeps the trace's T2, bit for bit.
   - blur: each trace's exit slot reads through the cone
     snellRoughConeTransmit(m.roughness, that trace's eta, pathLength,
     bounces) (both interfaces' lobes: the entry lobe carried over the path
@@ -6985,6 +7081,7 @@ source: Wyman 2005 and Oliveira & Brauwers 2007 (two interfaces, distant
 */
 #ifndef SNELL_SHADE_TWO_INTERFACE_SHADE_GLSL
 #define SNELL_SHADE_TWO_INTERFACE_SHADE_GLSL
+
 
 
 
@@ -7137,6 +7234,7 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
         p.fellBack = false;
         p.exitFront = false;
         p.bounces = 0;
+        p.exitIncident = vec3(0.0f, 0.0f, 0.0f);
       }
       p.fetches = p.fetches + ih.fetches;
     }
@@ -7146,6 +7244,12 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     SnellSlot leave = t.exit;
     if (t.bounces > 0 && p.exitFront) {
       leave = t.reflect;
+    }
+    // Rough glass: the last interface's microfacets turn the exit ray smoothly through the critical angle,
+    // where the smooth ray swings across the scene behind with every fraction of a pixel the picture moves.
+    float alpha = snellRoughConeSlope(m.roughness);
+    if (alpha > 0.0f && dot(p.exitIncident, p.exitIncident) > 0.0f) {
+      p.exitDirection = snellRefractRough(p.exitIncident, p.exitNormal, 1.0f / etaK, alpha, m.tirPolicy).direction;
     }
     // The blur: the entry lobe carried over the path inside and both lobes over the distance behind; an
     // opaque surface inside the glass sees the entry lobe alone.

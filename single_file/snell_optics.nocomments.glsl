@@ -178,6 +178,34 @@ SNELL_FN SnellRefraction snellRefract(vec3 incident, vec3 normal, float eta, int
 
 #endif
 
+#ifndef SNELL_OPTICS_REFRACT_ROUGH_GLSL
+#define SNELL_OPTICS_REFRACT_ROUGH_GLSL
+
+SNELL_FN SnellRefraction snellRefractRough(vec3 incident, vec3 normal, float eta, float alpha, int policy) {
+  SnellRefraction r = snellRefract(incident, normal, eta, policy);
+  if (!(alpha >= SNELL_FLT_MIN) || !r.valid || (r.tir && policy != SNELL_TIR_CRITICAL) || eta >= 8.0f) {
+    return r;
+  }
+  vec3 i = snellSafeNormalize(incident);
+  vec3 n = snellSafeNormalize(normal);
+  float cosI = -dot(n, i);
+  if (cosI < 0.0f) {
+    n = -n;
+    cosI = -cosI;
+  }
+  cosI = min(cosI, 1.0f);
+  float sinI = length(i + cosI * n);
+  float eta2 = eta * eta;
+  float c = (1.0f - eta2) + eta2 * (cosI * cosI);
+  float w = 2.0f * eta2 * sinI * cosI * min(alpha, 1.0f);
+  float root = sqrt(c * c + w * w);
+  float mean = c < 0.0f ? (w * w) / (2.0f * (root - c)) : 0.5f * (c + root);
+  r.direction = snellSafeNormalize(eta * i + (eta * cosI - sqrt(min(mean, 1.0f))) * n);
+  return r;
+}
+
+#endif
+
 #ifndef SNELL_OPTICS_APPROX_REFRACT_GLSL
 #define SNELL_OPTICS_APPROX_REFRACT_GLSL
 

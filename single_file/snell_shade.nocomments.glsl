@@ -3345,6 +3345,7 @@ struct SnellTwoInterfacePath {
   bool fellBack;
   bool valid;
   bool exitFront;
+  vec3 exitIncident;
 };
 
 SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 frontNormal, float eta, float dN,
@@ -3364,6 +3365,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.fellBack = true;
   p.valid = false;
   p.exitFront = false;
+  p.exitIncident = vec3(0.0f, 0.0f, 0.0f);
   SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy);
   if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_FINITE(frontPosition.x) ||
       !SNELL_FINITE(frontPosition.y) || !SNELL_FINITE(frontPosition.z)) {
@@ -3429,6 +3431,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
         return p;
       }
       p.exitDirection = r2.direction;
+      p.exitIncident = d;
       p.fellBack = false;
       return p;
     }
@@ -3491,6 +3494,34 @@ SNELL_FN float snellFresnelDielectric(float cosI, float eta) {
   float rs = (e * c - cosT) / (e * c + cosT);
   float rp = (c - e * cosT) / (c + e * cosT);
   return 0.5f * (rs * rs + rp * rp);
+}
+
+#endif
+
+#ifndef SNELL_OPTICS_REFRACT_ROUGH_GLSL
+#define SNELL_OPTICS_REFRACT_ROUGH_GLSL
+
+SNELL_FN SnellRefraction snellRefractRough(vec3 incident, vec3 normal, float eta, float alpha, int policy) {
+  SnellRefraction r = snellRefract(incident, normal, eta, policy);
+  if (!(alpha >= SNELL_FLT_MIN) || !r.valid || (r.tir && policy != SNELL_TIR_CRITICAL) || eta >= 8.0f) {
+    return r;
+  }
+  vec3 i = snellSafeNormalize(incident);
+  vec3 n = snellSafeNormalize(normal);
+  float cosI = -dot(n, i);
+  if (cosI < 0.0f) {
+    n = -n;
+    cosI = -cosI;
+  }
+  cosI = min(cosI, 1.0f);
+  float sinI = length(i + cosI * n);
+  float eta2 = eta * eta;
+  float c = (1.0f - eta2) + eta2 * (cosI * cosI);
+  float w = 2.0f * eta2 * sinI * cosI * min(alpha, 1.0f);
+  float root = sqrt(c * c + w * w);
+  float mean = c < 0.0f ? (w * w) / (2.0f * (root - c)) : 0.5f * (c + root);
+  r.direction = snellSafeNormalize(eta * i + (eta * cosI - sqrt(min(mean, 1.0f))) * n);
+  return r;
 }
 
 #endif
@@ -3661,12 +3692,17 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
         p.fellBack = false;
         p.exitFront = false;
         p.bounces = 0;
+        p.exitIncident = vec3(0.0f, 0.0f, 0.0f);
       }
       p.fetches = p.fetches + ih.fetches;
     }
     SnellSlot leave = t.exit;
     if (t.bounces > 0 && p.exitFront) {
       leave = t.reflect;
+    }
+    float alpha = snellRoughConeSlope(m.roughness);
+    if (alpha > 0.0f && dot(p.exitIncident, p.exitIncident) > 0.0f) {
+      p.exitDirection = snellRefractRough(p.exitIncident, p.exitNormal, 1.0f / etaK, alpha, m.tirPolicy).direction;
     }
     SnellRoughCone cone = snellRoughConeTransmit(m.roughness, etaK, p.pathLength, p.bounces);
     SnellTwoInterfaceExit e;

@@ -3,6 +3,7 @@
 #define SNELL_OPTICS_GLSL
 #include "optics/safe_normalize.glsl"
 #include "optics/refract.glsl"
+#include "optics/refract_rough.glsl"
 #include "optics/approx_refract.glsl"
 #include "optics/fresnel_dielectric.glsl"
 #include "optics/fresnel_schlick.glsl"

@@ -68,6 +68,30 @@ glm::vec3 atCosine(InputGen& g, glm::vec3 n, float cos) {
   return t * std::sqrt(std::max(0.0f, 1.0f - cos * cos)) + n * cos;
 }
 
+// snellRefract's inputs with a GGX width: smooth (0, negative, NaN), the rough range, above 1, hostile; a
+// third of the rays near the critical angle of glass leaving into air, where the rough ray differs most.
+std::vector<ParityIO> refractRoughInputs() {
+  InputGen g(39);
+  std::vector<ParityIO> v;
+  for (ParityIO in : refractInputs()) {
+    if (g.chance(0.33f)) {
+      glm::vec3 n = g.unitVector();
+      float eta = g.uniform(1.3f, 1.8f);
+      in.v[0] = glm::vec4(atCosine(g, -n, std::min(1.0f, std::max(0.0f, std::sqrt(1.0f - 1.0f / (eta * eta)) + g.uniform(-0.2f, 0.2f)))), eta);
+      in.v[1] = glm::vec4(n, in.v[1].w);
+    }
+    int c = g.integer(0, 19);
+    float alpha = g.uniform(1e-4f, 1.0f);
+    if (c == 0) alpha = 0.0f;
+    if (c == 1) alpha = -g.uniform(0.0f, 1.0f);
+    if (c == 2) alpha = g.uniform(1.0f, 10.0f);
+    if (c == 3) alpha = g.hostile();
+    in.v[2] = glm::vec4(alpha, 0.0f, 0.0f, 0.0f);
+    v.push_back(in);
+  }
+  return v;
+}
+
 // Grazing, normal incidence, normals facing away, factor 0 / large / inf /
 // negative / NaN, unnormalized and hostile vectors.
 std::vector<ParityIO> approxRefractInputs() {
@@ -456,6 +480,15 @@ SNELL_PARITY_CASE(snellRefract, refractInputs,
                   (vec3, direction, 0, within(1e-5f, 1e-5f))(bool, tir, 4, exact)(bool, valid, 5, exact),
                   {},
                   SnellRefraction r = snellRefract(incident, normal, eta, policy);
+                  direction = r.direction;
+                  tir = r.tir;
+                  valid = r.valid;)
+
+SNELL_PARITY_CASE(snellRefractRough, refractRoughInputs,
+                  (vec3, incident, 0)(float, eta, 3)(vec3, normal, 4)(int, policy, 7)(float, alpha, 8),
+                  (vec3, direction, 0, within(1e-5f, 1e-5f))(bool, tir, 4, exact)(bool, valid, 5, exact),
+                  {},
+                  SnellRefraction r = snellRefractRough(incident, normal, eta, alpha, policy);
                   direction = r.direction;
                   tir = r.tir;
                   valid = r.valid;)

@@ -119,6 +119,7 @@ TEST(TwoInterfaceTraceFields, InvalidEntryLeavesEveryFieldAtItsEmptyValue) {
     EXPECT_EQ(p.exitUv, glm::vec2(0.0f));
     EXPECT_EQ(p.pathLength, 0.0f);
     EXPECT_EQ(p.entryLength, 0.0f);
+    EXPECT_EQ(p.exitIncident, glm::vec3(0.0f));
   }
 }
 
@@ -142,6 +143,7 @@ TEST(TwoInterfaceTraceFields, EnvironmentBackSlotReadsNothingAndLeavesAtP1AlongT
   EXPECT_EQ(p.entryLength, 0.0f);
   EXPECT_LT(glm::length(dvec3(p.entryDirection) - t1), 1e-6);
   EXPECT_LT(glm::length(dvec3(p.exitDirection) - t1), 1e-6);
+  EXPECT_EQ(p.exitIncident, glm::vec3(0.0f));  // T2 is no refraction here
 }
 
 // Wyman's variant: one read of the back depth at P1's projection, then snellHitOnSurface at his P2 (2 fetches),
@@ -190,9 +192,51 @@ TEST(TwoInterfaceTraceFields, BackHitNormalFacesT1AndTheCountAddsTheNormalRead) 
     EXPECT_LE(glm::dot(p.exitNormal, p.entryDirection), 0.0f);
     EXPECT_LT(glm::length(dvec3(p.exitNormal) + e.n2), 0.03);
     EXPECT_LT(glm::length(dvec3(p.exitDirection) - e.t2), 0.05);
+    EXPECT_EQ(p.exitIncident, p.entryDirection);
     ++checked;
   }
   EXPECT_EQ(checked, 3);
+}
+
+// Rough glass leaves along the rough refraction of the ray that met the last interface
+// (optics/refract_rough.glsl, tested against GGX's slopes on its own); smooth glass along the trace's ray, bit
+// for bit. On the view axis T1 is (0, 0, -1); back normals stored at phi from it take the exit through the
+// critical angle (41.8 deg): past it the smooth ray grazes the back face, the rough one leaves it.
+TEST(TwoInterfaceShadeFields, RoughGlassLeavesAlongTheRoughRefraction) {
+  Scene s = smallScene();
+  const SnellTechnique t = snellPresetPlaneDepth(3);
+  const float eta = snellIorToEta(1.0f, 1.5f);
+  SnellMaterial m = snellMaterial();
+  m.reflection = false;
+  m.tirPolicy = SNELL_TIR_CRITICAL;
+  const SnellView v = snellView();
+  const glm::vec3 p1(0.0f, 0.0f, -4.0f), n1(0.0f, 0.0f, 1.0f);
+  int pastCritical = 0;
+  for (int deg = 30; deg <= 56; deg += 2) {
+    const double phi = deg * 3.14159265358979323846 / 180.0;
+    const glm::vec3 stored(static_cast<float>(std::sin(phi)), 0.0f, static_cast<float>(std::cos(phi)));
+    s.backNormalMips = Texture2D(Image(s.width, s.height, glm::vec4(stored, 0.0f)));
+    const SnellTwoInterfacePath p = traceIn(s, p1, n1, eta, t, SNELL_TIR_CRITICAL);
+    ASSERT_TRUE(p.hit && !p.fellBack) << deg;
+    ASSERT_EQ(p.exitIncident, glm::vec3(0.0f, 0.0f, -1.0f));
+    m.roughness = 0.0f;
+    const SnellTwoInterfaceResult smooth =
+        snellTwoInterfaceRefraction(p1, n1, 0.0f, TECH_OBJECT_ARGS(s), TECH_SCENE_ARGS(s), t, m, v);
+    m.roughness = 0.3f;
+    const SnellTwoInterfaceResult rough =
+        snellTwoInterfaceRefraction(p1, n1, 0.0f, TECH_OBJECT_ARGS(s), TECH_SCENE_ARGS(s), t, m, v);
+    EXPECT_EQ(smooth.exitDirection, p.exitDirection) << deg;
+    EXPECT_EQ(rough.exitDirection,
+              snellRefractRough(p.exitIncident, p.exitNormal, 1.0f / eta, 0.09f, SNELL_TIR_CRITICAL).direction)
+        << deg;
+    EXPECT_EQ(rough.tir, deg >= 42) << deg;
+    if (p.tir) {
+      EXPECT_LT(std::abs(glm::dot(smooth.exitDirection, p.exitNormal)), 1e-5f) << deg;
+      EXPECT_GT(-glm::dot(rough.exitDirection, p.exitNormal), 0.1f) << deg;
+      ++pastCritical;
+    }
+  }
+  EXPECT_EQ(pastCritical, 8);
 }
 
 // N2 faces T1 after the turn: a stored normal tilted towards T1 by as little as a denormal is negated; one

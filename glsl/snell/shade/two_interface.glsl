@@ -56,7 +56,11 @@ contract:
     exitUv = the hit uv, exitNormal = N2, pathLength = entryLength = |P2 -
     P1| (entryLength keeps the first segment's when bounces add more), tir = TIR at
     the second interface (T2 follows the policy: critical-angle tangent or
-    mirror; the reflected ray is not traced further).
+    mirror; the reflected ray is not traced further), exitIncident = T1 (the
+    ray T2 was refracted from, so that a caller can refract it again, as
+    two_interface_shade.glsl does for rough glass); exitIncident = 0 wherever
+    T2 is not snellRefract's result at the last interface (a fallback, an
+    invalid path).
   - fallback (fellBack = true, the path still valid): no back hit (invalid or
     off-screen texel, empty range; a hit so far that |P2 - P1| overflows a
     float, beyond ~1.8e19 view units, counts as none), a zero or NaN stored
@@ -73,7 +77,8 @@ contract:
     marchSteps, planeIterations) finds where R leaves; N there is read from that layer's normals (as N2,
     1 fetch), flipped to face R, and the ray refracts out, or reflects again,
     the last allowed interface under tirPolicy. bounces = the reflections
-    taken (one that ends as a fallback counts); exitPoint, exitUv, exitNormal are the last interface's;
+    taken (one that ends as a fallback counts); exitPoint, exitUv, exitNormal are the last interface's,
+    exitIncident the ray inside that met it;
     exitFront = the last interface is a front face (T2 heads towards the
     camera's side: two_interface_shade.glsl resolves it with the reflect
     slot); pathLength adds every segment inside; tir = TIR at the last
@@ -129,6 +134,7 @@ struct SnellTwoInterfacePath {
   bool fellBack;
   bool valid;
   bool exitFront;       // the last interface is a front face (after a bounce): T2 heads to the camera's side
+  vec3 exitIncident;    // the ray inside that met the last interface, when T2 is its refraction (else 0)
 };
 
 /* Wyman 2005 / Oliveira & Brauwers 2007 sec. 3: P1, T1 -> P2 (back-face buffer), N2 -> T2 */
@@ -149,6 +155,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
   p.fellBack = true;
   p.valid = false;
   p.exitFront = false;
+  p.exitIncident = vec3(0.0f, 0.0f, 0.0f);
   SnellRefraction r1 = snellRefract(frontPosition, frontNormal, eta, tirPolicy);
   if (!r1.valid || dot(r1.direction, r1.direction) == 0.0f || !SNELL_FINITE(frontPosition.x) ||
       !SNELL_FINITE(frontPosition.y) || !SNELL_FINITE(frontPosition.z)) {
@@ -222,6 +229,7 @@ SNELL_FN SnellTwoInterfacePath snellTwoInterfaceTrace(vec3 frontPosition, vec3 f
         return p;
       }
       p.exitDirection = r2.direction;
+      p.exitIncident = d;
       p.fellBack = false;
       return p;
     }

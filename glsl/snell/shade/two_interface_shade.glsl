@@ -98,6 +98,13 @@ contract (snellTwoInterfaceRefraction):
     no bounces, no fallback, insideHit = true (the single / green trace's).
     The surface is shaded as the opaque surface it is: its colour, absorbed
     over the path inside, no second refraction.
+  - rough exit (snellRoughConeSlope(m.roughness) = alpha > 0): where the
+    path left by refraction (its exitIncident is not 0; not inside), T2 =
+    snellRefractRough(exitIncident, exitNormal, 1 / eta of that trace, alpha,
+    m.tirPolicy).direction (optics/refract_rough.glsl: Snell's law with cos_t^2
+    averaged over the exit interface's microfacet slopes, smooth through the
+    critical angle), which the exit slot resolves and exitDirection reports;
+    tir stays the mean normal's. Smooth glass keeps the trace's T2, bit for bit.
   - blur: each trace's exit slot reads through the cone
     snellRoughConeTransmit(m.roughness, that trace's eta, pathLength,
     bounces) (both interfaces' lobes: the entry lobe carried over the path
@@ -135,6 +142,7 @@ source: Wyman 2005 and Oliveira & Brauwers 2007 (two interfaces, distant
 #include "../optics/safe_normalize.glsl"
 #include "../optics/ior_to_eta.glsl"
 #include "../optics/fresnel_dielectric.glsl"
+#include "../optics/refract_rough.glsl"
 #include "../optics/beer_lambert.glsl"
 #include "../intersect/hit.glsl"
 #include "rough_cone.glsl"
@@ -281,6 +289,7 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
         p.fellBack = false;
         p.exitFront = false;
         p.bounces = 0;
+        p.exitIncident = vec3(0.0f, 0.0f, 0.0f);
       }
       p.fetches = p.fetches + ih.fetches;
     }
@@ -290,6 +299,12 @@ SNELL_FN SnellTwoInterfaceResult snellTwoInterfaceRefraction(vec3 frontPosition,
     SnellSlot leave = t.exit;
     if (t.bounces > 0 && p.exitFront) {
       leave = t.reflect;
+    }
+    // Rough glass: the last interface's microfacets turn the exit ray smoothly through the critical angle,
+    // where the smooth ray swings across the scene behind with every fraction of a pixel the picture moves.
+    float alpha = snellRoughConeSlope(m.roughness);
+    if (alpha > 0.0f && dot(p.exitIncident, p.exitIncident) > 0.0f) {
+      p.exitDirection = snellRefractRough(p.exitIncident, p.exitNormal, 1.0f / etaK, alpha, m.tirPolicy).direction;
     }
     // The blur: the entry lobe carried over the path inside and both lobes over the distance behind; an
     // opaque surface inside the glass sees the entry lobe alone.
